@@ -1,0 +1,268 @@
+#include "vtkHAVSTestUtilities.h"
+
+#include <cstdlib>
+#include "vtkNew.h"
+
+namespace havstest
+{
+namespace
+{
+std::string EnvOr(const char* name, const char* fallback)
+{
+  const char* v = std::getenv(name);
+  return (v && *v) ? std::string(v) : std::string(fallback);
+}
+}
+
+std::string DataDir()
+{
+  return EnvOr("HAVS_DATA_DIR", "../shared/data");
+}
+
+std::string OutputDir()
+{
+  return EnvOr("HAVS_TEST_OUTPUT_DIR", ".");
+}
+
+std::string BaselineDir()
+{
+  return EnvOr("HAVS_BASELINE_DIR", "Testing/Baseline");
+}
+
+int& Failures()
+{
+  static int failures = 0;
+  return failures;
+}
+
+bool Check(bool condition, const std::string& what)
+{
+  if (!condition)
+  {
+    ++Failures();
+    std::cerr << "CHECK FAILED: " << what << std::endl;
+  }
+  return condition;
+}
+
+bool CheckNear(double a, double b, double tol, const std::string& what)
+{
+  const bool ok = std::isfinite(a) && std::isfinite(b) && std::fabs(a - b) <= tol;
+  if (!ok)
+  {
+    ++Failures();
+    std::cerr << "CHECK FAILED: " << what << ": " << a << " vs " << b << " (tol " << tol << ")"
+              << std::endl;
+  }
+  return ok;
+}
+}
+
+#include "vtkCellData.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataSetTriangleFilter.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkHAVSRenderWindowFactory.h"
+#include "vtkImageData.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkMultiBlockPLOT3DReader.h"
+#include "vtkPNGReader.h"
+#include "vtkPNGWriter.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkStructuredGrid.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridReader.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+
+namespace havstest
+{
+vtkSmartPointer<vtkUnstructuredGrid> MakeBox(int nx, int ny, int nz, double h, double a, double b)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(nx + 1, ny + 1, nz + 1);
+  image->SetSpacing(h, h, h);
+  vtkNew<vtkDoubleArray> s;
+  s->SetName("s");
+  s->SetNumberOfTuples(image->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    image->GetPoint(i, x);
+    s->SetValue(i, a + b * x[2]);
+  }
+  image->GetPointData()->SetScalars(s);
+  vtkNew<vtkDataSetTriangleFilter> tets;
+  tets->SetInputData(image);
+  tets->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = tets->GetOutput();
+  return grid;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> ReadPlot3D(
+  const std::string& xyz, const std::string& q, int scalarFunction)
+{
+  vtkNew<vtkMultiBlockPLOT3DReader> reader;
+  reader->SetXYZFileName((DataDir() + "/" + xyz).c_str());
+  reader->SetQFileName((DataDir() + "/" + q).c_str());
+  reader->AutoDetectFormatOn();
+  reader->SetScalarFunctionNumber(scalarFunction);
+  reader->Update();
+  vtkDataSet* block = vtkDataSet::SafeDownCast(reader->GetOutput()->GetBlock(0));
+  if (!block)
+  {
+    return nullptr;
+  }
+  vtkNew<vtkDataSetTriangleFilter> tets;
+  tets->SetInputData(block);
+  tets->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = tets->GetOutput();
+  return grid;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> ReadLoxPostVtk()
+{
+  vtkNew<vtkUnstructuredGridReader> reader;
+  reader->SetFileName((DataDir() + "/post.vtk").c_str());
+  reader->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
+  grid->GetPointData()->SetActiveScalars("Pressure");
+  return grid;
+}
+
+vtkSmartPointer<vtkVolumeProperty> MakeConstantProperty(
+  double r, double g, double b, double opacity, double unitDistance)
+{
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(-1e6, r, g, b);
+  color->AddRGBPoint(1e6, r, g, b);
+  vtkNew<vtkPiecewiseFunction> alpha;
+  alpha->AddPoint(-1e6, opacity);
+  alpha->AddPoint(1e6, opacity);
+  property->SetColor(color);
+  property->SetScalarOpacity(alpha);
+  property->SetScalarOpacityUnitDistance(unitDistance);
+  property->ShadeOff();
+  property->SetInterpolationTypeToLinear();
+  return property;
+}
+
+vtkSmartPointer<vtkVolumeProperty> MakeRampProperty(
+  double lo, double hi, double maxOpacity, double unitDistance)
+{
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(lo, 0.1, 0.2, 1.0);
+  color->AddRGBPoint(lo + 0.5 * (hi - lo), 0.2, 1.0, 0.3);
+  color->AddRGBPoint(hi, 1.0, 0.3, 0.1);
+  vtkNew<vtkPiecewiseFunction> alpha;
+  alpha->AddPoint(lo, 0.0);
+  alpha->AddPoint(lo + 0.3 * (hi - lo), 0.3 * maxOpacity);
+  alpha->AddPoint(hi, maxOpacity);
+  property->SetColor(color);
+  property->SetScalarOpacity(alpha);
+  property->SetScalarOpacityUnitDistance(unitDistance);
+  property->ShadeOff();
+  property->SetInterpolationTypeToLinear();
+  return property;
+}
+
+vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height)
+{
+  vtkSmartPointer<vtkRenderWindow> window;
+  window.TakeReference(vtkHAVSRenderWindowFactory::CreateRenderWindow());
+  if (window)
+  {
+    window->SetSize(width, height);
+    window->SetMultiSamples(0);
+  }
+  return window;
+}
+
+std::vector<float> ReadRGBA(vtkRenderWindow* window)
+{
+  const int* size = window->GetSize();
+  vtkNew<vtkFloatArray> data;
+  window->GetRGBAPixelData(0, 0, size[0] - 1, size[1] - 1, 0, data);
+  std::vector<float> out(data->GetPointer(0), data->GetPointer(0) + 4 * size[0] * size[1]);
+  return out;
+}
+
+ImageDifference Compare(const std::vector<float>& a, const std::vector<float>& b)
+{
+  ImageDifference d;
+  if (a.size() != b.size() || a.empty())
+  {
+    d.RMSE = d.Max = d.FractionOver1 = 1e30;
+    return d;
+  }
+  double sum = 0;
+  size_t over = 0;
+  for (size_t p = 0; p < a.size() / 4; ++p)
+  {
+    bool off = false;
+    for (int c = 0; c < 4; ++c)
+    {
+      const double e = std::fabs(double(a[4 * p + c]) - double(b[4 * p + c]));
+      const double err = std::isfinite(e) ? e : 1.0;
+      sum += err * err;
+      d.Max = std::max(d.Max, err);
+      off = off || err > 1.0 / 255.0;
+    }
+    over += off ? 1 : 0;
+  }
+  d.RMSE = std::sqrt(sum / a.size());
+  d.FractionOver1 = double(over) / double(a.size() / 4);
+  return d;
+}
+
+void WritePNG(const std::vector<float>& rgba, int width, int height, const std::string& name)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+  auto* out = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (size_t i = 0; i < rgba.size(); ++i)
+  {
+    const float v = std::isfinite(rgba[i]) ? std::min(std::max(rgba[i], 0.0f), 1.0f) : 0.0f;
+    out[i] = static_cast<unsigned char>(v * 255.0f + 0.5f);
+  }
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName((OutputDir() + "/" + name).c_str());
+  writer->Write();
+}
+
+std::vector<float> ReadPNG(const std::string& path, int* width, int* height)
+{
+  vtkNew<vtkPNGReader> reader;
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    return {};
+  }
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  *width = dims[0];
+  *height = dims[1];
+  const int nc = image->GetNumberOfScalarComponents();
+  std::vector<float> out(static_cast<size_t>(dims[0]) * dims[1] * 4, 1.0f);
+  auto* in = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (size_t p = 0; p < static_cast<size_t>(dims[0]) * dims[1]; ++p)
+  {
+    for (int c = 0; c < std::min(nc, 4); ++c)
+    {
+      out[4 * p + c] = in[nc * p + c] / 255.0f;
+    }
+  }
+  return out;
+}
+}

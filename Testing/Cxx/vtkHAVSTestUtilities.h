@@ -1,0 +1,86 @@
+/**
+ * @file vtkHAVSTestUtilities.h
+ * @brief Small helpers shared by the vtkHAVS ctest programs (not part of the module).
+ */
+#ifndef vtkHAVSTestUtilities_h
+#define vtkHAVSTestUtilities_h
+
+#include <cmath>
+#include <iostream>
+#include <string>
+
+namespace havstest
+{
+/// Directory of the real data sets (shared/data), from HAVS_DATA_DIR.
+std::string DataDir();
+/// Directory where tests write images and logs, from HAVS_TEST_OUTPUT_DIR.
+std::string OutputDir();
+/// Directory of the baseline images, from HAVS_BASELINE_DIR.
+std::string BaselineDir();
+
+/// Counts failed checks; a test returns Failures() ? EXIT_FAILURE : EXIT_SUCCESS.
+int& Failures();
+
+/// Prints and counts a failed check.
+bool Check(bool condition, const std::string& what);
+/// |a - b| <= tol, printed on failure.
+bool CheckNear(double a, double b, double tol, const std::string& what);
+}
+
+#endif
+
+#include "vtkSmartPointer.h"
+
+#include <vector>
+
+class vtkColorTransferFunction;
+class vtkPiecewiseFunction;
+class vtkRenderWindow;
+class vtkRenderer;
+class vtkUnstructuredGrid;
+class vtkVolume;
+class vtkVolumeMapper;
+class vtkVolumeProperty;
+class vtkImageData;
+
+namespace havstest
+{
+/// A box [0,nx*h]x[0,ny*h]x[0,nz*h] of 5 tets per cube (vtkDataSetTriangleFilter),
+/// point scalar "s" = a + b*z.
+vtkSmartPointer<vtkUnstructuredGrid> MakeBox(int nx, int ny, int nz, double h, double a, double b);
+
+/// PLOT3D data set from shared/data, tetrahedralized; function 100 density, 110 pressure...
+vtkSmartPointer<vtkUnstructuredGrid> ReadPlot3D(
+  const std::string& xyz, const std::string& q, int scalarFunction);
+
+/// shared/data/post.vtk with its Pressure array as the active scalars.
+vtkSmartPointer<vtkUnstructuredGrid> ReadLoxPostVtk();
+
+/// A property with the given constant colour and opacity.
+vtkSmartPointer<vtkVolumeProperty> MakeConstantProperty(
+  double r, double g, double b, double opacity, double unitDistance);
+
+/// A property ramping opacity and colour over [lo, hi] (not empty, not opaque).
+vtkSmartPointer<vtkVolumeProperty> MakeRampProperty(double lo, double hi, double maxOpacity,
+  double unitDistance);
+
+/// Render window from the project's factory, of the given size.
+vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height);
+
+/// Reads the window's RGBA (float, [0,1]) after a render.
+std::vector<float> ReadRGBA(vtkRenderWindow* window);
+
+/// RMSE and maximum absolute difference over RGBA in [0,1].
+struct ImageDifference
+{
+  double RMSE = 0;
+  double Max = 0;
+  double FractionOver1 = 0; ///< share of pixels with a channel off by more than 1/255
+};
+ImageDifference Compare(const std::vector<float>& a, const std::vector<float>& b);
+
+/// Writes RGBA floats as PNG into the output directory.
+void WritePNG(const std::vector<float>& rgba, int width, int height, const std::string& name);
+/// Reads a PNG as RGBA floats; empty on failure.
+std::vector<float> ReadPNG(const std::string& path, int* width, int* height);
+}

@@ -1,0 +1,24 @@
+#version 430 core
+// vtkHAVS: maximum / minimum intensity draw pass. No sorting is needed: the
+// scalar is linear inside each tetrahedron, so its extremum along a ray lies
+// on a face; blending with GL_MAX (of 1 - s for the minimum) over the face fragments in front
+// of the opaque geometry finds it.
+//HAVS::Defines
+//HAVS::KBufferLib
+
+in vec3 havsPositionRC;
+in float havsScalar;
+
+uniform int havsMinimum; // 1: store 1 - s, so that GL_MAX finds the minimum
+
+layout(location = 0) out vec4 havsExtremum;
+
+void main()
+{
+  if (havsDistance(havsPositionRC) > havsOpaqueDistance(gl_FragCoord.xy))
+  {
+    discard;
+  }
+  float s = clamp(havsScalar, 0.0, 1.0);
+  havsExtremum = vec4(havsMinimum != 0 ? 1.0 - s : s, 1.0, 0.0, 0.0);
+}

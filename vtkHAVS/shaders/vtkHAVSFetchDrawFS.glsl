@@ -1,0 +1,33 @@
+#version 430 core
+#extension GL_EXT_shader_framebuffer_fetch : require
+// vtkHAVS k-buffer, framebuffer-fetch path: draw pass.
+// The colour and the k entries live in RGBA32F colour attachments that the
+// shader reads (inout, coherent framebuffer fetch) and writes back; fetch is
+// ordered by primitive within the draw call, so the read-modify-write is
+// race-free. Attachment 0: premultiplied colour; attachment 1 + i/2 holds
+// entries 2i', 2i'+1 (xy, zw).
+//HAVS::Defines
+//HAVS::KBufferLib
+
+in vec3 havsPositionRC;
+in float havsScalar;
+
+uniform usamplerBuffer havsFaceIsBoundary; // per primitive, in draw order
+
+//HAVS::FetchDeclarations
+
+void main()
+{
+  vec4 color = havsColor;
+  vec2 E[HAVS_K];
+  //HAVS::FetchLoad
+  if (havsRayEnded(color, E[0]))
+  {
+    discard;
+  }
+  bool boundary = texelFetch(havsFaceIsBoundary, gl_PrimitiveID).r != 0u;
+  vec2 f = havsFragmentEntry(havsPositionRC, havsScalar, boundary);
+  havsInsert(color, E, f, havsOpaqueDistance(gl_FragCoord.xy));
+  havsColor = color;
+  //HAVS::FetchStore
+}

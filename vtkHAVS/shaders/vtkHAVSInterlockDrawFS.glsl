@@ -1,0 +1,47 @@
+#version 430 core
+//HAVS::InterlockExtension
+// vtkHAVS k-buffer, fragment-shader-interlock path (NVIDIA): draw pass.
+// The colour and the k entries of every pixel live in a shader storage buffer;
+// the read-modify-write runs inside an *ordered* pixel interlock, so fragments
+// of one pixel are processed one at a time in primitive order.
+//HAVS::Defines
+//HAVS::KBufferLib
+
+layout(pixel_interlock_ordered) in;
+
+in vec3 havsPositionRC;
+in float havsScalar;
+
+uniform usamplerBuffer havsFaceIsBoundary;
+
+layout(std430, binding = 0) buffer HAVSPixelEntries
+{
+  vec4 havsPixelData[]; // per pixel: colour, then HAVS_K entries (2 per vec4)
+};
+
+void main()
+{
+  bool boundary = texelFetch(havsFaceIsBoundary, gl_PrimitiveID).r != 0u;
+  vec2 f = havsFragmentEntry(havsPositionRC, havsScalar, boundary);
+  float opaqueDistance = havsOpaqueDistance(gl_FragCoord.xy);
+  int base = (int(gl_FragCoord.y) * int(havsViewportSize.x) + int(gl_FragCoord.x)) * HAVS_PIXEL_STRIDE;
+
+  //HAVS::InterlockBegin
+  vec4 color = havsPixelData[base];
+  vec2 E[HAVS_K];
+  for (int i = 0; i < HAVS_K; ++i)
+  {
+    vec4 pair = havsPixelData[base + 1 + i / 2];
+    E[i] = (i % 2 == 0) ? pair.xy : pair.zw;
+  }
+  if (!havsRayEnded(color, E[0]))
+  {
+    havsInsert(color, E, f, opaqueDistance);
+    havsPixelData[base] = color;
+    for (int i = 0; i < HAVS_K; i += 2)
+    {
+      havsPixelData[base + 1 + i / 2] = vec4(E[i], (i + 1 < HAVS_K) ? E[i + 1] : vec2(HAVS_EMPTY, 0.0));
+    }
+  }
+  //HAVS::InterlockEnd
+}

@@ -1,0 +1,171 @@
+// vtkHAVS k-buffer library, shared by every k-buffer path (framebuffer fetch,
+// fragment-shader interlock, fragment lists). Inserted into the fragment
+// shaders at //HAVS::KBufferLib.
+//
+// A k-buffer of HAVS_K entries per pixel. Entry = vec2(distance, code):
+//   distance  the eye distance of a fragment (world units along the ray for a
+//             perspective camera, along the direction of projection for a
+//             parallel one), so that the difference of two is a segment length;
+//   code      the scalar in [0, 1]; + 2 when the fragment lies on a boundary
+//             face seen from inside (an exit from the mesh).
+// E[0] is the front: the last fragment already composited up to (the ray has
+// been integrated to it). E[1 .. HAVS_K-1] hold fragments still waiting.
+// Each arriving fragment fills an empty slot; when none is left, the nearest
+// of the waiting ones and the new one leaves, and the segment from the front
+// to it is composited (lazy pop). The image is exact iff the fragments leave
+// in depth order, i.e. iff k = HAVS_K entries suffice for the pixel.
+//
+// A segment whose front is an exit fragment lies outside the mesh (holes,
+// cavities, gaps between components): it contributes nothing (boundary tagging).
+
+const float HAVS_EMPTY = 3.0e38;     // an empty waiting slot
+const float HAVS_NO_FRONT = -2.0e38; // nothing composited yet
+const float HAVS_DONE = -3.0e38;     // the ray has ended (opaque surface reached)
+
+uniform sampler3D havsTable;     // pre-integrated segments (front s, back s, length)
+uniform vec2 havsScalarTexel;    // ((N-1)/N, 0.5/N): [0,1] -> texel centres
+uniform vec2 havsLengthTexel;    // same along the length axis
+uniform float havsInvMaxLength;  // 1 / the table's longest length
+uniform float havsTerminationOpacity;
+
+uniform sampler2D havsOpaqueDepth; // window depth of the opaque geometry
+uniform mat4 havsDCRC;             // clip -> eye-relative world
+uniform vec2 havsViewportSize;
+uniform int havsParallel;
+uniform vec3 havsDirectionOfProjection;
+
+bool havsIsExit(float code)
+{
+  return code > 1.5;
+}
+
+float havsScalarOf(float code)
+{
+  return code > 1.5 ? code - 2.0 : code;
+}
+
+float havsDistance(vec3 positionRC)
+{
+  return havsParallel != 0 ? dot(positionRC, havsDirectionOfProjection) : length(positionRC);
+}
+
+// Eye distance of the opaque surface at this pixel, HAVS_EMPTY when none.
+float havsOpaqueDistance(vec2 fragCoord)
+{
+  float z = texelFetch(havsOpaqueDepth, ivec2(fragCoord), 0).r;
+  if (z >= 1.0)
+  {
+    return HAVS_EMPTY;
+  }
+  vec4 ndc = vec4(fragCoord / havsViewportSize * 2.0 - 1.0, z * 2.0 - 1.0, 1.0);
+  vec4 p = havsDCRC * ndc;
+  return havsDistance(p.xyz / p.w);
+}
+
+// Premultiplied colour and opacity of the segment from a to b.
+vec4 havsSegment(vec2 a, vec2 b)
+{
+  float len = b.x - a.x;
+  if (havsIsExit(a.y) || !(len > 0.0))
+  {
+    return vec4(0.0);
+  }
+  vec3 t = vec3(havsScalarOf(a.y), havsScalarOf(b.y), min(len * havsInvMaxLength, 1.0));
+  vec3 coord = vec3(t.xy * havsScalarTexel.x + havsScalarTexel.y,
+    t.z * havsLengthTexel.x + havsLengthTexel.y);
+  return texture(havsTable, coord);
+}
+
+// Moves the front to p (the next fragment in depth order), compositing the
+// segment between them front to back; ends the ray at the opaque surface,
+// cutting the last segment there with its scalar interpolated.
+void havsAdvance(inout vec4 color, inout vec2 front, vec2 p, float opaqueDistance)
+{
+  if (front.x == HAVS_DONE)
+  {
+    return;
+  }
+  if (p.x > opaqueDistance)
+  {
+    if (front.x > HAVS_NO_FRONT && !havsIsExit(front.y) && opaqueDistance > front.x)
+    {
+      float t = clamp((opaqueDistance - front.x) / (p.x - front.x), 0.0, 1.0);
+      vec2 cut = vec2(opaqueDistance, mix(havsScalarOf(front.y), havsScalarOf(p.y), t));
+      color += (1.0 - color.a) * havsSegment(front, cut);
+    }
+    front = vec2(HAVS_DONE, 0.0);
+    return;
+  }
+  if (front.x > HAVS_NO_FRONT)
+  {
+    color += (1.0 - color.a) * havsSegment(front, p);
+  }
+  front = p;
+}
+
+bool havsRayEnded(vec4 color, vec2 front)
+{
+  return front.x == HAVS_DONE || color.a >= havsTerminationOpacity;
+}
+
+// Inserts fragment f into the k-buffer E (E[0] = front).
+void havsInsert(inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float opaqueDistance)
+{
+  vec2 leaving = f;
+#if HAVS_K > 1
+  int nearest = 0;
+  for (int i = 1; i < HAVS_K; ++i)
+  {
+    if (E[i].x >= HAVS_EMPTY)
+    {
+      E[i] = f;
+      return;
+    }
+    if (E[i].x < leaving.x)
+    {
+      leaving = E[i];
+      nearest = i;
+    }
+  }
+  if (nearest > 0)
+  {
+    E[nearest] = f;
+  }
+#endif
+  havsAdvance(color, E[0], leaving, opaqueDistance);
+}
+
+// After the last fragment: the waiting entries leave in depth order.
+void havsFlush(inout vec4 color, inout vec2 E[HAVS_K], float opaqueDistance)
+{
+  for (int n = 1; n < HAVS_K; ++n)
+  {
+    int nearest = 0;
+    float nearestDistance = HAVS_EMPTY;
+    for (int i = 1; i < HAVS_K; ++i)
+    {
+      if (E[i].x < nearestDistance)
+      {
+        nearestDistance = E[i].x;
+        nearest = i;
+      }
+    }
+    if (nearest == 0)
+    {
+      return;
+    }
+    havsAdvance(color, E[0], E[nearest], opaqueDistance);
+    E[nearest].x = HAVS_EMPTY;
+  }
+}
+
+// The k-buffer entry of the fragment being shaded.
+vec2 havsFragmentEntry(vec3 positionRC, float scalar, bool boundary)
+{
+  float code = clamp(scalar, 0.0, 1.0);
+  if (boundary && !gl_FrontFacing)
+  {
+    code += 2.0;
+  }
+  return vec2(havsDistance(positionRC), code);
+}

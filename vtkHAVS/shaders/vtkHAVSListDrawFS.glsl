@@ -1,0 +1,37 @@
+#version 430 core
+// vtkHAVS k-buffer, fragment-list fallback (no framebuffer fetch, no
+// interlock): draw pass. Every fragment is appended to its pixel's linked
+// list (atomic node counter, atomic head exchange); nothing is composited
+// here, so the arbitrary order in which fragments arrive does not matter.
+// The resolve pass sorts each list exactly.
+//HAVS::Defines
+//HAVS::KBufferLib
+
+in vec3 havsPositionRC;
+in float havsScalar;
+
+uniform usamplerBuffer havsFaceIsBoundary;
+uniform uint havsNodeCapacity;
+
+layout(r32ui, binding = 0) uniform coherent uimage2D havsListHeads;
+
+layout(std430, binding = 1) buffer HAVSListNodes
+{
+  uvec4 havsNodes[]; // distance bits, code bits, next node, unused
+};
+layout(std430, binding = 2) buffer HAVSListCounter
+{
+  uint havsNodeCount;
+};
+
+void main()
+{
+  bool boundary = texelFetch(havsFaceIsBoundary, gl_PrimitiveID).r != 0u;
+  vec2 f = havsFragmentEntry(havsPositionRC, havsScalar, boundary);
+  uint node = atomicAdd(havsNodeCount, 1u);
+  if (node < havsNodeCapacity)
+  {
+    uint next = imageAtomicExchange(havsListHeads, ivec2(gl_FragCoord.xy), node);
+    havsNodes[node] = uvec4(floatBitsToUint(f.x), floatBitsToUint(f.y), next, 0u);
+  }
+}

@@ -1,0 +1,26 @@
+#version 430 core
+//HAVS::ResolveExtension
+// vtkHAVS: per-pixel pass after the faces. Reads what the draw pass left for
+// this pixel (//HAVS::ResolveLoad differs per path), lets the waiting
+// entries leave in depth order (flush) and writes the premultiplied result
+// into the result texture.
+//HAVS::Defines
+//HAVS::KBufferLib
+
+//HAVS::ResolveDeclarations
+
+layout(location = 0) out vec4 havsResult;
+
+void main()
+{
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float opaqueDistance = havsOpaqueDistance(gl_FragCoord.xy);
+  vec4 color = vec4(0.0);
+  vec2 E[HAVS_K];
+  //HAVS::ResolveLoad
+  if (!havsRayEnded(color, E[0]))
+  {
+    havsFlush(color, E, opaqueDistance);
+  }
+  havsResult = color;
+}

@@ -1,0 +1,592 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSVolumeMapper.cxx
+
+=========================================================================*/
+#include "vtkHAVSVolumeMapper.h"
+
+#include "vtkHAVSFaceSet.h"
+#include "vtkHAVSFaceSorter.h"
+#include "vtkHAVSKBufferRenderer.h"
+#include "vtkHAVSPreIntegrationTable.h"
+
+#include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPoints.h"
+#include "vtkRenderer.h"
+#include "vtkTimerLog.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+vtkStandardNewMacro(vtkHAVSVolumeMapper);
+
+namespace
+{
+/// Row-major VTK matrix -> column-major floats for OpenGL.
+void ToGL(const vtkMatrix4x4* m, float out[16])
+{
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      out[c * 4 + r] = static_cast<float>(m->GetElement(r, c));
+    }
+  }
+}
+
+void Translation(vtkMatrix4x4* m, double x, double y, double z)
+{
+  m->Identity();
+  m->SetElement(0, 3, x);
+  m->SetElement(1, 3, y);
+  m->SetElement(2, 3, z);
+}
+
+bool IsConstantOne(vtkPiecewiseFunction* f)
+{
+  if (!f)
+  {
+    return true;
+  }
+  double node[4];
+  for (int i = 0; i < f->GetSize(); ++i)
+  {
+    f->GetNodeValue(i, node);
+    if (node[1] != 1.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+struct vtkHAVSVolumeMapper::Internals
+{
+  vtkNew<vtkHAVSFaceSet> Faces;
+  vtkNew<vtkHAVSFaceSorter> Sorter;
+  vtkNew<vtkHAVSPreIntegrationTable> Table;
+  vtkNew<vtkHAVSKBufferRenderer> Renderer;
+
+  // Mesh as uploaded: points shifted by Shift (float precision for huge
+  // coordinates), scalars mapped to [0, 1] over ScalarRange.
+  std::vector<float> PointsMC;
+  std::vector<float> Scalars;
+  double Shift[3] = { 0, 0, 0 };
+  double ScalarRange[2] = { 0, 1 };
+  int Component = 0;
+  bool MeshValid = false;
+  vtkTimeStamp MeshBuildTime;
+  vtkMTimeType MeshUploadTime = 0;
+
+  std::vector<uint32_t> SortedTriangles;
+  std::vector<uint8_t> SortedBoundary;
+  bool OrderUploaded = false;
+
+  vtkMTimeType TableUploadTime = 0;
+  vtkTimeStamp TableBuildTime;
+
+  bool WarnedShading = false;
+  bool WarnedGradient = false;
+  bool WarnedComponents = false;
+  bool WarnedPath = false;
+  bool WarnedK = false;
+};
+
+//------------------------------------------------------------------------------
+vtkHAVSVolumeMapper::vtkHAVSVolumeMapper()
+  : Internal(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkHAVSVolumeMapper::~vtkHAVSVolumeMapper()
+{
+  this->ReleaseGraphicsResources(nullptr);
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSVolumeMapper::IsKBufferPathSupported(vtkRenderWindow* window, int path)
+{
+  return vtkHAVSKBufferRenderer::IsPathSupported(
+    vtkOpenGLRenderWindow::SafeDownCast(window), path);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkHAVSVolumeMapper::GetActiveKBufferPathName()
+{
+  return vtkHAVSKBufferRenderer::GetPathName(this->ActiveKBufferPath);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkHAVSVolumeMapper::GetNumberOfFaces()
+{
+  return this->Internal->Faces->GetNumberOfFaces();
+}
+
+vtkIdType vtkHAVSVolumeMapper::GetNumberOfBoundaryFaces()
+{
+  return this->Internal->Faces->GetNumberOfBoundaryFaces();
+}
+
+vtkIdType vtkHAVSVolumeMapper::GetNumberOfTetrahedra()
+{
+  return this->Internal->Faces->GetNumberOfTetrahedra();
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSVolumeMapper::UpdateMesh(vtkVolume* volume)
+{
+  Internals& in = *this->Internal;
+  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(this->GetInput());
+  if (!this->GetInput())
+  {
+    vtkErrorMacro("No input.");
+    in.MeshValid = false;
+    return false;
+  }
+  if (!grid)
+  {
+    vtkErrorMacro("The input is a " << this->GetInput()->GetClassName()
+                                    << "; vtkHAVSVolumeMapper needs a vtkUnstructuredGrid.");
+    in.MeshValid = false;
+    return false;
+  }
+  const bool needed = grid->GetMTime() > in.MeshBuildTime || this->GetMTime() > in.MeshBuildTime ||
+    !in.MeshBuildTime.GetMTime();
+  if (!needed)
+  {
+    return in.MeshValid;
+  }
+  in.MeshBuildTime.Modified();
+  in.MeshValid = false;
+  in.OrderUploaded = false;
+  in.Sorter->Invalidate();
+
+  if (grid->GetNumberOfPoints() == 0 || grid->GetNumberOfCells() == 0)
+  {
+    vtkErrorMacro("The input grid is empty (" << grid->GetNumberOfPoints() << " points, "
+                                              << grid->GetNumberOfCells() << " cells).");
+    return false;
+  }
+
+  int cellFlag = -1;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(grid, this->ScalarMode,
+    this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  if (!scalars)
+  {
+    vtkErrorMacro("The input has no scalars to render (scalar mode "
+      << this->GetScalarModeAsString() << (this->ArrayName ? ", array " : "")
+      << (this->ArrayName ? this->ArrayName : "") << ").");
+    return false;
+  }
+  if (cellFlag != 0)
+  {
+    vtkErrorMacro("Cell scalars are not supported by vtkHAVSVolumeMapper yet; use point scalars "
+                  "(e.g. vtkCellDataToPointData).");
+    return false;
+  }
+
+  this->UpdateProgress(0.0);
+  if (!in.Faces->Build(grid))
+  {
+    vtkErrorMacro("No tetrahedra to render in the input.");
+    return false;
+  }
+  this->UpdateProgress(0.6);
+  if (in.Faces->GetNumberOfSkippedCells() > 0)
+  {
+    vtkWarningMacro(<< in.Faces->GetNumberOfSkippedCells()
+                    << " cells that are not tetrahedra were skipped (tetrahedralize the input, "
+                       "e.g. with vtkDataSetTriangleFilter).");
+  }
+  if (in.Faces->GetNumberOfDegenerateTetrahedra() > 0)
+  {
+    vtkWarningMacro(<< in.Faces->GetNumberOfDegenerateTetrahedra()
+                    << " degenerate (zero-volume) tetrahedra were dropped.");
+  }
+
+  // Component: independent components are rendered from the first one.
+  const int components = scalars->GetNumberOfComponents();
+  in.Component = 0;
+  vtkVolumeProperty* property = volume->GetProperty();
+  if (components > 1 && !in.WarnedComponents)
+  {
+    vtkWarningMacro("The scalars have " << components << " components"
+                                        << (property->GetIndependentComponents()
+                                               ? " (independent)"
+                                               : " (dependent)")
+                                        << "; vtkHAVSVolumeMapper renders the first one only.");
+    in.WarnedComponents = true;
+  }
+
+  // Points, shifted by the bounds centre so that floats keep their precision.
+  const vtkIdType numPoints = grid->GetNumberOfPoints();
+  double bounds[6];
+  grid->GetPoints()->GetBounds(bounds);
+  for (int i = 0; i < 3; ++i)
+  {
+    in.Shift[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
+  }
+  in.PointsMC.resize(3 * numPoints);
+  vtkIdType nonFinitePoints = 0;
+  for (vtkIdType p = 0; p < numPoints; ++p)
+  {
+    double x[3];
+    grid->GetPoint(p, x);
+    for (int i = 0; i < 3; ++i)
+    {
+      double v = x[i] - in.Shift[i];
+      if (!std::isfinite(v))
+      {
+        ++nonFinitePoints;
+        v = 0.0;
+      }
+      in.PointsMC[3 * p + i] = static_cast<float>(v);
+    }
+  }
+  if (nonFinitePoints > 0)
+  {
+    vtkErrorMacro(<< nonFinitePoints << " non-finite point coordinates; the mesh is not rendered.");
+    return false;
+  }
+
+  // Scalars mapped to [0, 1] over the finite range; NaN/Inf replaced.
+  double range[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest() };
+  vtkIdType nonFinite = 0;
+  for (vtkIdType p = 0; p < numPoints; ++p)
+  {
+    const double s = scalars->GetComponent(p, in.Component);
+    if (std::isfinite(s))
+    {
+      range[0] = std::min(range[0], s);
+      range[1] = std::max(range[1], s);
+    }
+    else
+    {
+      ++nonFinite;
+    }
+  }
+  if (range[0] > range[1])
+  {
+    vtkErrorMacro("Every scalar value is NaN or infinite; nothing to render.");
+    return false;
+  }
+  if (nonFinite > 0)
+  {
+    vtkWarningMacro(<< nonFinite
+                    << " NaN/infinite scalar values were replaced by the lowest finite value ("
+                    << range[0] << ").");
+  }
+  in.ScalarRange[0] = range[0];
+  in.ScalarRange[1] = range[1];
+  const double span = range[1] - range[0];
+  in.Scalars.resize(numPoints);
+  for (vtkIdType p = 0; p < numPoints; ++p)
+  {
+    double s = scalars->GetComponent(p, in.Component);
+    if (!std::isfinite(s))
+    {
+      s = range[0];
+    }
+    in.Scalars[p] = span > 0.0 ? static_cast<float>((s - range[0]) / span) : 0.0f;
+  }
+  this->UpdateProgress(1.0);
+  in.MeshValid = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSVolumeMapper::UpdateTable(vtkVolume* volume)
+{
+  Internals& in = *this->Internal;
+  vtkVolumeProperty* property = volume->GetProperty();
+  if (property->GetShade(in.Component) && !in.WarnedShading)
+  {
+    vtkWarningMacro("Shading is not supported by vtkHAVSVolumeMapper; the volume is unshaded.");
+    in.WarnedShading = true;
+  }
+  if (!in.WarnedGradient && !property->GetDisableGradientOpacity(in.Component) &&
+    property->HasGradientOpacity(in.Component) &&
+    !IsConstantOne(property->GetGradientOpacity(in.Component)))
+  {
+    vtkWarningMacro("Gradient opacity is not supported by vtkHAVSVolumeMapper; it is ignored.");
+    in.WarnedGradient = true;
+  }
+
+  // The longest segment inside one tetrahedron is its longest edge; in world
+  // space after the volume's matrix, at most that times the largest stretch.
+  vtkMatrix4x4* m = volume->GetMatrix();
+  double stretch = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double column[3] = { m->GetElement(0, c), m->GetElement(1, c), m->GetElement(2, c) };
+    stretch = std::max(stretch, vtkMath::Norm(column));
+  }
+  const double maxLength = std::max(in.Faces->GetLongestEdge() * stretch, 1e-30);
+
+  in.Table->SetScalarResolution(this->TableScalarResolution);
+  in.Table->SetLengthResolution(this->TableLengthResolution);
+  if (in.Table->NeedsRebuild(property, in.Component, in.ScalarRange, maxLength))
+  {
+    this->UpdateProgress(0.0);
+    const double start = vtkTimerLog::GetUniversalTime();
+    if (!in.Table->Build(property, in.Component, in.ScalarRange, maxLength))
+    {
+      vtkErrorMacro("The pre-integrated transfer-function table could not be built.");
+      return false;
+    }
+    this->LastTableSeconds = vtkTimerLog::GetUniversalTime() - start;
+    in.TableBuildTime.Modified();
+    this->UpdateProgress(1.0);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkHAVSVolumeMapper::ChoosePath(vtkRenderWindow* window)
+{
+  auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (this->KBufferPath != KBufferPathAutomatic)
+  {
+    if (vtkHAVSKBufferRenderer::IsPathSupported(glWindow, this->KBufferPath))
+    {
+      return this->KBufferPath;
+    }
+    if (!this->Internal->WarnedPath)
+    {
+      vtkWarningMacro("The k-buffer path " << vtkHAVSKBufferRenderer::GetPathName(this->KBufferPath)
+                                           << " is not supported by this OpenGL context; "
+                                              "choosing automatically.");
+      this->Internal->WarnedPath = true;
+    }
+  }
+  for (int path : { KBufferPathFramebufferFetch, KBufferPathFragmentShaderInterlock,
+         KBufferPathFragmentLists })
+  {
+    if (vtkHAVSKBufferRenderer::IsPathSupported(glWindow, path))
+    {
+      return path;
+    }
+  }
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
+{
+  Internals& in = *this->Internal;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!window)
+  {
+    vtkErrorMacro("vtkHAVSVolumeMapper needs an OpenGL render window.");
+    return;
+  }
+  if (this->GetNumberOfInputConnections(0) > 0)
+  {
+    this->GetInputAlgorithm()->Update();
+  }
+  if (!this->UpdateMesh(volume) || !this->UpdateTable(volume))
+  {
+    return;
+  }
+
+  int width = 0, height = 0, originX = 0, originY = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &originX, &originY);
+  if (width <= 0 || height <= 0)
+  {
+    return;
+  }
+
+  const int path = this->ChoosePath(window);
+  if (path == 0)
+  {
+    vtkErrorMacro("This OpenGL context has none of the k-buffer paths (it needs OpenGL 4.3 with "
+                  "EXT_shader_framebuffer_fetch, or fragment-shader interlock, or OpenGL 4.4).");
+    return;
+  }
+  int k = this->KBufferSize;
+  const int maxK = vtkHAVSKBufferRenderer::GetMaximumK(path);
+  if (k > maxK)
+  {
+    if (!in.WarnedK)
+    {
+      vtkWarningMacro("k = " << k << " exceeds the " << vtkHAVSKBufferRenderer::GetPathName(path)
+                             << " path's maximum; using k = " << maxK << ".");
+      in.WarnedK = true;
+    }
+    k = maxK;
+  }
+
+  // Matrices, in double; the eye-relative ones keep precision far from the origin.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  vtkMatrix4x4* volumeMatrix = volume->GetMatrix();
+  vtkNew<vtkMatrix4x4> shift, modelToWorld, worldToClip, eyeShift, mcrc, mcdc, clipToWorld, dcrc;
+  Translation(shift, in.Shift[0], in.Shift[1], in.Shift[2]);
+  vtkMatrix4x4::Multiply4x4(volumeMatrix, shift, modelToWorld);
+  worldToClip->DeepCopy(
+    camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
+  double eye[3], direction[3];
+  camera->GetPosition(eye);
+  camera->GetDirectionOfProjection(direction);
+  Translation(eyeShift, -eye[0], -eye[1], -eye[2]);
+  vtkMatrix4x4::Multiply4x4(eyeShift, modelToWorld, mcrc);
+  vtkMatrix4x4::Multiply4x4(worldToClip, modelToWorld, mcdc);
+  vtkMatrix4x4::Invert(worldToClip, clipToWorld);
+  vtkMatrix4x4::Multiply4x4(eyeShift, clipToWorld, dcrc);
+
+  vtkHAVSKBufferRenderer::FrameParameters frame;
+  ToGL(mcrc, frame.MCRC);
+  ToGL(mcdc, frame.MCDC);
+  ToGL(dcrc, frame.DCRC);
+  for (int i = 0; i < 3; ++i)
+  {
+    frame.DirectionOfProjection[i] = static_cast<float>(direction[i]);
+  }
+  frame.Parallel = camera->GetParallelProjection() != 0;
+  frame.FlipFacing = vtkMatrix4x4::Determinant(volumeMatrix) < 0.0;
+  frame.Path = path;
+  frame.K = k;
+  switch (this->BlendMode)
+  {
+    case vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND:
+      frame.BlendMode = 1;
+      break;
+    case vtkVolumeMapper::MINIMUM_INTENSITY_BLEND:
+      frame.BlendMode = 2;
+      break;
+    case vtkVolumeMapper::COMPOSITE_BLEND:
+      frame.BlendMode = 0;
+      break;
+    default:
+      vtkErrorMacro("Blend mode " << this->BlendMode
+                                  << " is not supported by vtkHAVSVolumeMapper (composite, "
+                                     "maximum and minimum intensity are).");
+      return;
+  }
+  frame.TerminationOpacity = static_cast<float>(this->EarlyRayTerminationOpacity);
+  frame.MeasureStages = this->MeasureStageTimes;
+  frame.KeepResult = this->KeepFloatResult;
+
+  // Face order: composite needs the centroid sort; the extremum modes do not.
+  const double sortStart = vtkTimerLog::GetUniversalTime();
+  bool orderChanged = false;
+  if (frame.BlendMode == 0)
+  {
+    double m[16];
+    vtkMatrix4x4::DeepCopy(m, volumeMatrix);
+    orderChanged = in.Sorter->Sort(in.Faces, m, eye, direction, frame.Parallel);
+  }
+  if (orderChanged || in.SortedTriangles.empty())
+  {
+    const std::vector<uint32_t>& faceVertices = in.Faces->GetFaceVertices();
+    const std::vector<uint8_t>& boundary = in.Faces->GetBoundaryFlags();
+    const vtkIdType numFaces = in.Faces->GetNumberOfFaces();
+    in.SortedTriangles.resize(3 * numFaces);
+    in.SortedBoundary.resize(numFaces);
+    const std::vector<uint32_t>* order = frame.BlendMode == 0 ? &in.Sorter->GetOrder() : nullptr;
+    for (vtkIdType i = 0; i < numFaces; ++i)
+    {
+      const uint32_t f = order ? (*order)[i] : static_cast<uint32_t>(i);
+      in.SortedTriangles[3 * i] = faceVertices[3 * f];
+      in.SortedTriangles[3 * i + 1] = faceVertices[3 * f + 1];
+      in.SortedTriangles[3 * i + 2] = faceVertices[3 * f + 2];
+      in.SortedBoundary[i] = boundary[f];
+    }
+    in.OrderUploaded = false;
+  }
+  this->LastSortReused = !orderChanged;
+  this->LastSortSeconds = vtkTimerLog::GetUniversalTime() - sortStart;
+
+  // Uploads: everything after a new context, else what changed.
+  const bool fresh = in.Renderer->PrepareWindow(window);
+  if (fresh || in.MeshUploadTime < in.MeshBuildTime.GetMTime())
+  {
+    in.Renderer->SetGeometry(in.PointsMC, in.Scalars);
+    in.MeshUploadTime = in.MeshBuildTime.GetMTime();
+    in.OrderUploaded = false;
+  }
+  if (fresh || !in.OrderUploaded)
+  {
+    in.Renderer->SetFaceOrder(in.SortedTriangles, in.SortedBoundary);
+    in.OrderUploaded = true;
+  }
+  if (fresh || in.TableUploadTime < in.TableBuildTime.GetMTime())
+  {
+    in.Renderer->SetTable(in.Table->GetTable(), in.Table->GetScalarResolution(),
+      in.Table->GetLengthResolution(), in.Table->GetMaxLength(), in.Table->GetTransferFunction1D());
+    in.TableUploadTime = in.TableBuildTime.GetMTime();
+  }
+
+  if (!in.Renderer->Render(renderer, frame))
+  {
+    return;
+  }
+  this->ActiveKBufferPath = path;
+  this->ActiveKBufferSize = frame.BlendMode == 0 ? k : 0;
+  this->LastDrawSeconds = in.Renderer->GetLastDrawSeconds();
+  this->LastFlushSeconds = in.Renderer->GetLastFlushSeconds();
+  this->LastCompositeSeconds = in.Renderer->GetLastCompositeSeconds();
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSVolumeMapper::GetFloatResult(vtkFloatArray* rgba, int size[2])
+{
+  const std::vector<float>& result = this->Internal->Renderer->GetLastResult();
+  if (!rgba || result.empty())
+  {
+    return false;
+  }
+  size[0] = this->Internal->Renderer->GetLastResultWidth();
+  size[1] = this->Internal->Renderer->GetLastResultHeight();
+  rgba->SetNumberOfComponents(4);
+  rgba->SetNumberOfTuples(static_cast<vtkIdType>(size[0]) * size[1]);
+  std::copy(result.begin(), result.end(), rgba->GetPointer(0));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Internal->Renderer->ReleaseGraphicsResources(window);
+  this->Internal->OrderUploaded = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "KBufferSize: " << this->KBufferSize << "\n";
+  os << indent << "KBufferPath (requested): "
+     << (this->KBufferPath == KBufferPathAutomatic
+            ? "Automatic"
+            : vtkHAVSKBufferRenderer::GetPathName(this->KBufferPath))
+     << "\n";
+  os << indent << "Active k-buffer path: " << this->GetActiveKBufferPathName()
+     << " (k = " << this->ActiveKBufferSize << ")\n";
+  os << indent << "EarlyRayTerminationOpacity: " << this->EarlyRayTerminationOpacity << "\n";
+  os << indent << "Table: " << this->TableScalarResolution << " x " << this->TableScalarResolution
+     << " x " << this->TableLengthResolution << "\n";
+  os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";
+  os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
+  os << indent << "Last stage times (s): sort " << this->LastSortSeconds << ", draw "
+     << this->LastDrawSeconds << ", flush " << this->LastFlushSeconds << ", composite "
+     << this->LastCompositeSeconds << ", table " << this->LastTableSeconds << "\n";
+  os << indent << "Faces: " << this->Internal->Faces->GetNumberOfFaces() << " ("
+     << this->Internal->Faces->GetNumberOfBoundaryFaces() << " boundary), tetrahedra "
+     << this->Internal->Faces->GetNumberOfTetrahedra() << "\n";
+}
