@@ -524,7 +524,7 @@ bool vtkHAVSKBufferRenderer::Render(vtkRenderer* renderer, const FrameParameters
       glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, far.data());
       vtkWarningMacro("Multisampled framebuffer: opaque geometry does not end the volume's rays.");
     }
-    in.OpaqueDepth->Deactivate();
+  in.OpaqueDepth->Deactivate();
   }
 
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
@@ -577,6 +577,7 @@ bool vtkHAVSKBufferRenderer::Render(vtkRenderer* renderer, const FrameParameters
   bool ok = true;
   std::string resolveFS = vtkHAVSResolveFS;
   int resolveK = p.K;
+  bool listVote = false;
   std::vector<vtkTextureObject*> resolveTextures;
 
   if (p.BlendMode == 1 || p.BlendMode == 2)
@@ -661,7 +662,7 @@ bool vtkHAVSKBufferRenderer::Render(vtkRenderer* renderer, const FrameParameters
     if (ok)
     {
       setCommonUniforms(program);
-      in.DrawFaces(p.FlipFacing);
+  in.DrawFaces(p.FlipFacing);
     }
 
     std::ostringstream rdecl, rload;
@@ -803,22 +804,34 @@ bool vtkHAVSKBufferRenderer::Render(vtkRenderer* renderer, const FrameParameters
       glBufferData(GL_SHADER_STORAGE_BUFFER, size_t(in.ListCapacity) * 16, nullptr, GL_DYNAMIC_COPY);
     }
     state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    // The list walk. Where shader group vote exists, the loop runs until no
+    // invocation of the group has nodes left and every invocation loads an
+    // in-range node each turn: llvmpipe (Mesa 22.3) returns wrong data for a
+    // storage-buffer load inside a loop whose trip count differs between the
+    // invocations of a group (measured: lists cut after one node).
+    const bool vote = HasGLExtension("GL_ARB_shader_group_vote");
     std::ostringstream rload;
     rload << "E[0] = vec2(HAVS_NO_FRONT, 0.0);\n"
           << "  for (int i = 1; i < HAVS_K; ++i) { E[i] = vec2(HAVS_EMPTY, 0.0); }\n"
           << "  uint node = imageLoad(havsListHeads, pixel).r;\n"
-          << "  for (uint n = 0u; node != 0xFFFFFFFFu && node < havsNodeCapacity && n < "
-             "havsNodeCapacity; ++n)\n"
+          << "  for (uint n = 0u; n < uint(havsNodeCapacity); ++n)\n"
           << "  {\n"
-          << "    uvec4 entry = havsNodes[node];\n"
-          << "    havsInsert(color, E, vec2(uintBitsToFloat(entry.x), uintBitsToFloat(entry.y)), "
-             "opaqueDistance);\n"
-          << "    node = entry.z;\n"
+          << "    bool walking = node < uint(havsNodeCapacity);\n"
+          << (vote ? "    if (!anyInvocationARB(walking)) { break; }\n"
+                   : "    if (!walking) { break; }\n")
+          << "    uvec4 entry = havsNodes[walking ? node : 0u];\n"
+          << "    if (walking)\n"
+          << "    {\n"
+          << "      havsInsertBackToFront(color, E, vec2(uintBitsToFloat(entry.x), "
+             "uintBitsToFloat(entry.y)), opaqueDistance);\n"
+          << "      node = entry.z;\n"
+          << "    }\n"
           << "  }\n";
+    listVote = vote;
     Replace(resolveFS, "//HAVS::ResolveDeclarations",
       "layout(r32ui, binding = 0) uniform readonly uimage2D havsListHeads;\n"
       "layout(std430, binding = 1) readonly buffer HAVSListNodes { uvec4 havsNodes[]; };\n"
-      "uniform uint havsNodeCapacity;\n");
+      "uniform int havsNodeCapacity;\n");
     Replace(resolveFS, "//HAVS::ResolveLoad", rload.str());
     resolveK = ListResolveCapacity;
   }
@@ -869,7 +882,9 @@ bool vtkHAVSKBufferRenderer::Render(vtkRenderer* renderer, const FrameParameters
     {
       resolveFS = ComposeShader(resolveFS.c_str(), resolveK, 1);
     }
-    Replace(resolveFS, "//HAVS::ResolveExtension", "");
+    Replace(resolveFS, "//HAVS::ResolveExtension",
+      std::string(listVote ? "#extension GL_ARB_shader_group_vote : require\n" : "") +
+        (p.Path == FragmentLists ? "#define HAVS_BACK_TO_FRONT\n" : ""));
     in.ResultFramebuffer->Bind();
     in.ResultFramebuffer->ActivateDrawBuffers(1);
     for (vtkTextureObject* t : resolveTextures)

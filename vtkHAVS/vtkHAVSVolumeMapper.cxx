@@ -149,6 +149,12 @@ vtkIdType vtkHAVSVolumeMapper::GetNumberOfTetrahedra()
 }
 
 //------------------------------------------------------------------------------
+vtkHAVSFaceSorter* vtkHAVSVolumeMapper::GetFaceSorter()
+{
+  return this->Internal->Sorter;
+}
+
+//------------------------------------------------------------------------------
 bool vtkHAVSVolumeMapper::UpdateMesh(vtkVolume* volume)
 {
   Internals& in = *this->Internal;
@@ -458,18 +464,18 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     frame.DirectionOfProjection[i] = static_cast<float>(direction[i]);
   }
   frame.Parallel = camera->GetParallelProjection() != 0;
-  frame.FlipFacing = vtkMatrix4x4::Determinant(volumeMatrix) < 0.0;
+  frame.FlipFacing = volumeMatrix->Determinant() < 0.0;
   frame.Path = path;
   frame.K = k;
   switch (this->BlendMode)
   {
-    case vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND:
+    case vtkUnstructuredGridVolumeMapper::MAXIMUM_INTENSITY_BLEND:
       frame.BlendMode = 1;
       break;
-    case vtkVolumeMapper::MINIMUM_INTENSITY_BLEND:
+    case vtkHAVSVolumeMapper::MINIMUM_INTENSITY_BLEND:
       frame.BlendMode = 2;
       break;
-    case vtkVolumeMapper::COMPOSITE_BLEND:
+    case vtkUnstructuredGridVolumeMapper::COMPOSITE_BLEND:
       frame.BlendMode = 0;
       break;
     default:

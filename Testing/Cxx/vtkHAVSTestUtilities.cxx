@@ -266,3 +266,105 @@ std::vector<float> ReadPNG(const std::string& path, int* width, int* height)
   return out;
 }
 }
+
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkHAVSVolumeMapper.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+
+#include <map>
+#include <memory>
+
+namespace havstest
+{
+VolumeScene MakeScene(vtkUnstructuredGrid* grid, vtkAbstractVolumeMapper* mapper,
+  vtkVolumeProperty* property, int width, int height)
+{
+  VolumeScene scene;
+  scene.Window = MakeWindow(width, height);
+  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  scene.Window->AddRenderer(scene.Renderer);
+  mapper->SetInputDataObject(grid);
+  scene.Volume = vtkSmartPointer<vtkVolume>::New();
+  scene.Volume->SetMapper(mapper);
+  scene.Volume->SetProperty(property);
+  scene.Renderer->AddVolume(scene.Volume);
+  return scene;
+}
+
+void PlaceCamera(vtkRenderer* renderer, double azimuth, double elevation, bool parallel)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetParallelProjection(parallel ? 1 : 0);
+  renderer->ResetCamera();
+  camera->Azimuth(azimuth);
+  camera->Elevation(elevation);
+  camera->OrthogonalizeViewUp();
+  renderer->ResetCamera();
+  renderer->ResetCameraClippingRange();
+}
+
+std::vector<float> FloatResult(vtkHAVSVolumeMapper* mapper)
+{
+  vtkNew<vtkFloatArray> result;
+  int size[2] = { 0, 0 };
+  if (!mapper->GetFloatResult(result, size))
+  {
+    return {};
+  }
+  return std::vector<float>(
+    result->GetPointer(0), result->GetPointer(0) + 4 * size[0] * size[1]);
+}
+
+namespace
+{
+std::map<vtkObject*, std::unique_ptr<Messages>>& MessageStore()
+{
+  static std::map<vtkObject*, std::unique_ptr<Messages>> store;
+  return store;
+}
+
+void OnMessage(vtkObject* caller, unsigned long event, void*, void* callData)
+{
+  Messages* m = MessageStore()[caller].get();
+  if (event == vtkCommand::ErrorEvent)
+  {
+    ++m->Errors;
+  }
+  else
+  {
+    ++m->Warnings;
+  }
+  if (callData)
+  {
+    m->Text += static_cast<const char*>(callData);
+    m->Text += "\n";
+  }
+}
+}
+
+Messages* CountMessages(vtkObject* object)
+{
+  auto& slot = MessageStore()[object];
+  slot.reset(new Messages);
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetCallback(OnMessage);
+  object->AddObserver(vtkCommand::ErrorEvent, callback);
+  object->AddObserver(vtkCommand::WarningEvent, callback);
+  return slot.get();
+}
+
+bool AllFinite(const std::vector<float>& values)
+{
+  for (float v : values)
+  {
+    if (!std::isfinite(v))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}

@@ -84,3 +84,41 @@ void WritePNG(const std::vector<float>& rgba, int width, int height, const std::
 /// Reads a PNG as RGBA floats; empty on failure.
 std::vector<float> ReadPNG(const std::string& path, int* width, int* height);
 }
+
+class vtkHAVSVolumeMapper;
+class vtkAbstractVolumeMapper;
+class vtkObject;
+
+namespace havstest
+{
+/// A window of the factory with one renderer showing `grid` through `mapper`.
+struct VolumeScene
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkVolume> Volume;
+};
+VolumeScene MakeScene(vtkUnstructuredGrid* grid, vtkAbstractVolumeMapper* mapper,
+  vtkVolumeProperty* property, int width, int height);
+
+/// Places the camera: looking at the grid's centre from (azimuth, elevation)
+/// degrees, perspective unless parallel is set; resets the clipping range.
+void PlaceCamera(vtkRenderer* renderer, double azimuth, double elevation, bool parallel);
+
+/// The mapper's kept float result (KeepFloatResultOn before rendering).
+std::vector<float> FloatResult(vtkHAVSVolumeMapper* mapper);
+
+/// Counts the error and warning events an object sends (and what they said).
+struct Messages
+{
+  int Errors = 0;
+  int Warnings = 0;
+  std::string Text;
+};
+/// Starts counting on `object`; the returned pointer stays valid while the
+/// object lives.
+Messages* CountMessages(vtkObject* object);
+
+/// True when every value is finite.
+bool AllFinite(const std::vector<float>& values);
+}

@@ -5,8 +5,8 @@
 // the bounds centre, float); RC = world coordinates relative to the eye
 // (world minus camera position, computed in double on the CPU so that huge
 // coordinates keep their precision); DC = clip coordinates.
-in vec3 vertexMC;
-in float scalarNormalized; // the point scalar mapped to [0, 1] over the table range
+layout(location = 0) in vec3 vertexMC;
+layout(location = 1) in float scalarNormalized; // the point scalar mapped to [0, 1] over the table range
 
 uniform mat4 havsMCRC; // model -> eye-relative world (volume matrix included)
 uniform mat4 havsMCDC; // model -> clip

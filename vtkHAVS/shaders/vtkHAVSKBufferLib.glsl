@@ -1,6 +1,6 @@
 // vtkHAVS k-buffer library, shared by every k-buffer path (framebuffer fetch,
 // fragment-shader interlock, fragment lists). Inserted into the fragment
-// shaders at //HAVS::KBufferLib.
+// shaders at the KBufferLib marker.
 //
 // A k-buffer of HAVS_K entries per pixel. Entry = vec2(distance, code):
 //   distance  the eye distance of a fragment (world units along the ray for a
@@ -168,4 +168,74 @@ vec2 havsFragmentEntry(vec3 positionRC, float scalar, bool boundary)
     code += 2.0;
   }
   return vec2(havsDistance(positionRC), code);
+}
+
+// Back to front, for the fragment-list resolve: a pixel's list comes out in
+// reverse draw order, nearly sorted far to near, so the same k-buffer runs
+// mirrored. E[0] is the back: the fragment the ray has been integrated from
+// (everything behind it is composited); the farthest waiting fragment leaves
+// and the segment from it to the back is composited under ("under" operator
+// reversed: the new segment goes in front). Exact when the fragments leave in
+// depth order, in particular for any list no longer than HAVS_K - 1.
+void havsRetreat(inout vec4 color, inout vec2 back, vec2 p, float opaqueDistance)
+{
+  if (back.x > HAVS_NO_FRONT && p.x < opaqueDistance)
+  {
+    vec2 b = back;
+    if (back.x > opaqueDistance)
+    {
+      float t = clamp((opaqueDistance - p.x) / (back.x - p.x), 0.0, 1.0);
+      b = vec2(opaqueDistance, mix(havsScalarOf(p.y), havsScalarOf(back.y), t));
+    }
+    vec4 segment = havsSegment(p, b);
+    color = segment + (1.0 - segment.a) * color;
+  }
+  back = p;
+}
+
+void havsInsertBackToFront(inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float opaqueDistance)
+{
+  vec2 leaving = f;
+  int farthest = 0;
+  for (int i = 1; i < HAVS_K; ++i)
+  {
+    if (E[i].x >= HAVS_EMPTY)
+    {
+      E[i] = f;
+      return;
+    }
+    if (E[i].x > leaving.x)
+    {
+      leaving = E[i];
+      farthest = i;
+    }
+  }
+  if (farthest > 0)
+  {
+    E[farthest] = f;
+  }
+  havsRetreat(color, E[0], leaving, opaqueDistance);
+}
+
+void havsFlushBackToFront(inout vec4 color, inout vec2 E[HAVS_K], float opaqueDistance)
+{
+  for (int n = 1; n < HAVS_K; ++n)
+  {
+    int farthest = 0;
+    float farthestDistance = HAVS_NO_FRONT;
+    for (int i = 1; i < HAVS_K; ++i)
+    {
+      if (E[i].x < HAVS_EMPTY && E[i].x > farthestDistance)
+      {
+        farthestDistance = E[i].x;
+        farthest = i;
+      }
+    }
+    if (farthest == 0)
+    {
+      return;
+    }
+    havsRetreat(color, E[0], E[farthest], opaqueDistance);
+    E[farthest].x = HAVS_EMPTY;
+  }
 }

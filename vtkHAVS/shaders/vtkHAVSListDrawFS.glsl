@@ -11,7 +11,7 @@ in vec3 havsPositionRC;
 in float havsScalar;
 
 uniform usamplerBuffer havsFaceIsBoundary;
-uniform uint havsNodeCapacity;
+uniform int havsNodeCapacity;
 
 layout(r32ui, binding = 0) uniform coherent uimage2D havsListHeads;
 
@@ -29,7 +29,7 @@ void main()
   bool boundary = texelFetch(havsFaceIsBoundary, gl_PrimitiveID).r != 0u;
   vec2 f = havsFragmentEntry(havsPositionRC, havsScalar, boundary);
   uint node = atomicAdd(havsNodeCount, 1u);
-  if (node < havsNodeCapacity)
+  if (node < uint(havsNodeCapacity))
   {
     uint next = imageAtomicExchange(havsListHeads, ivec2(gl_FragCoord.xy), node);
     havsNodes[node] = uvec4(floatBitsToUint(f.x), floatBitsToUint(f.y), next, 0u);

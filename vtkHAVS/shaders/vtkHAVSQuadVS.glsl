@@ -1,9 +1,8 @@
 #version 430 core
-// vtkHAVS: full-viewport quad for the per-pixel passes (clear, flush, resolve,
-// composite). The quad's corners come in NDC.
-in vec4 ndCoordIn;
-
+// vtkHAVS: one triangle covering the viewport, for the per-pixel passes
+// (clear, resolve, composite). No vertex buffer: corners from gl_VertexID.
 void main()
 {
-  gl_Position = ndCoordIn;
+  vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+  gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
 }

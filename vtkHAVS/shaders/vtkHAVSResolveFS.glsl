@@ -1,7 +1,7 @@
 #version 430 core
 //HAVS::ResolveExtension
 // vtkHAVS: per-pixel pass after the faces. Reads what the draw pass left for
-// this pixel (//HAVS::ResolveLoad differs per path), lets the waiting
+// this pixel (the ResolveLoad marker differs per path), lets the waiting
 // entries leave in depth order (flush) and writes the premultiplied result
 // into the result texture.
 //HAVS::Defines
@@ -18,9 +18,13 @@ void main()
   vec4 color = vec4(0.0);
   vec2 E[HAVS_K];
   //HAVS::ResolveLoad
+#ifdef HAVS_BACK_TO_FRONT
+  havsFlushBackToFront(color, E, opaqueDistance);
+#else
   if (!havsRayEnded(color, E[0]))
   {
     havsFlush(color, E, opaqueDistance);
   }
+#endif
   havsResult = color;
 }

@@ -1,0 +1,220 @@
+// Bad input gets a clear error or warning and a defined result: no crash, no
+// NaN pixel, and a good input afterwards renders correctly (no corrupted
+// later frame).
+#include "vtkHAVSTestUtilities.h"
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkHAVSVolumeMapper.h"
+#include "vtkHexahedron.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+namespace
+{
+struct Outcome
+{
+  int Errors = 0;
+  int Warnings = 0;
+  std::vector<float> Window;
+  std::vector<float> Result;
+  std::string Text;
+};
+
+Outcome RenderOnce(vtkUnstructuredGrid* grid, const std::string& name)
+{
+  auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
+  vtkNew<vtkHAVSVolumeMapper> mapper;
+  mapper->KeepFloatResultOn();
+  havstest::Messages* messages = havstest::CountMessages(mapper);
+  auto scene = havstest::MakeScene(grid, mapper, property, 48, 48);
+  scene.Renderer->GetActiveCamera();
+  scene.Renderer->ResetCamera(0, 1, 0, 1, 0, 1);
+  scene.Window->Render();
+  Outcome out;
+  out.Errors = messages->Errors;
+  out.Warnings = messages->Warnings;
+  out.Text = messages->Text;
+  out.Window = havstest::ReadRGBA(scene.Window);
+  out.Result = havstest::FloatResult(mapper);
+  std::cout << name << ": " << out.Errors << " errors, " << out.Warnings << " warnings: "
+            << out.Text << std::endl;
+  havstest::Check(havstest::AllFinite(out.Window), name + ": finite window");
+  havstest::Check(havstest::AllFinite(out.Result), name + ": finite result");
+  return out;
+}
+
+bool Contains(const std::string& text, const std::string& what)
+{
+  return text.find(what) != std::string::npos;
+}
+
+bool AllZeroAlphaBackground(const std::vector<float>& rgba)
+{
+  for (size_t p = 0; p < rgba.size() / 4; ++p)
+  {
+    if (rgba[4 * p] != 0.0f || rgba[4 * p + 1] != 0.0f || rgba[4 * p + 2] != 0.0f)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+int main()
+{
+  // Empty grid.
+  {
+    vtkNew<vtkUnstructuredGrid> empty;
+    Outcome o = RenderOnce(empty, "empty grid");
+    havstest::Check(o.Errors == 1 && Contains(o.Text, "empty"), "empty grid: one clear error");
+    havstest::Check(AllZeroAlphaBackground(o.Window), "empty grid: nothing drawn");
+  }
+  // No scalars.
+  {
+    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    grid->GetPointData()->SetScalars(nullptr);
+    grid->GetPointData()->RemoveArray("s");
+    Outcome o = RenderOnce(grid, "no scalars");
+    havstest::Check(o.Errors == 1 && Contains(o.Text, "no scalars"), "no scalars: clear error");
+    havstest::Check(AllZeroAlphaBackground(o.Window), "no scalars: nothing drawn");
+  }
+  // NaN and infinite scalars.
+  {
+    auto grid = havstest::MakeBox(3, 3, 3, 1.0 / 3, 0.0, 1.0);
+    vtkDataArray* s = grid->GetPointData()->GetScalars();
+    s->SetComponent(0, 0, std::numeric_limits<double>::quiet_NaN());
+    s->SetComponent(5, 0, std::numeric_limits<double>::infinity());
+    s->SetComponent(7, 0, -std::numeric_limits<double>::infinity());
+    Outcome o = RenderOnce(grid, "NaN/Inf scalars");
+    havstest::Check(o.Warnings >= 1 && Contains(o.Text, "NaN"), "NaN scalars: warning");
+    havstest::Check(!o.Result.empty(), "NaN scalars: still rendered");
+  }
+  // All scalars NaN.
+  {
+    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    vtkDataArray* s = grid->GetPointData()->GetScalars();
+    for (vtkIdType i = 0; i < s->GetNumberOfTuples(); ++i)
+    {
+      s->SetComponent(i, 0, std::numeric_limits<double>::quiet_NaN());
+    }
+    Outcome o = RenderOnce(grid, "all-NaN scalars");
+    havstest::Check(o.Errors == 1, "all-NaN scalars: error");
+  }
+  // A hexahedron next to tetrahedra: skipped with a warning; only hexahedra: error.
+  {
+    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    vtkIdType hex[8] = { 0, 1, 4, 3, 9, 10, 13, 12 };
+    grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+    Outcome o = RenderOnce(grid, "tets + a hexahedron");
+    havstest::Check(o.Warnings >= 1 && Contains(o.Text, "not tetrahedra"), "hex: warning");
+    havstest::Check(!o.Result.empty(), "hex: the tetrahedra still render");
+
+    vtkNew<vtkUnstructuredGrid> hexOnly;
+    hexOnly->SetPoints(grid->GetPoints());
+    hexOnly->GetPointData()->ShallowCopy(grid->GetPointData());
+    hexOnly->Allocate(1);
+    hexOnly->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+    Outcome h = RenderOnce(hexOnly, "only a hexahedron");
+    havstest::Check(h.Errors >= 1, "only hexahedra: error");
+  }
+  // Degenerate (flat) tetrahedra among good ones.
+  {
+    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    vtkIdType flat[4] = { 0, 1, 2, 2 }; // repeated point
+    grid->InsertNextCell(VTK_TETRA, 4, flat);
+    vtkIdType coplanar[4] = { 0, 1, 3, 4 }; // four points in the plane z = 0
+    grid->InsertNextCell(VTK_TETRA, 4, coplanar);
+    Outcome o = RenderOnce(grid, "degenerate tetrahedra");
+    havstest::Check(o.Warnings >= 1 && Contains(o.Text, "degenerate"), "degenerate: warning");
+  }
+  // Huge coordinates: the box moved by 1e7 renders as the box at the origin.
+  {
+    auto grid = havstest::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
+    auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
+    vtkNew<vtkHAVSVolumeMapper> near, far;
+    near->KeepFloatResultOn();
+    far->KeepFloatResultOn();
+    auto a = havstest::MakeScene(grid, near, property, 48, 48);
+    havstest::PlaceCamera(a.Renderer, 30, 20, false);
+    a.Window->Render();
+    vtkNew<vtkUnstructuredGrid> moved;
+    moved->DeepCopy(grid);
+    // Double-precision points: a float cannot hold 1e7 + 0.25.
+    vtkNew<vtkPoints> pts;
+    pts->SetDataTypeToDouble();
+    pts->SetNumberOfPoints(grid->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      grid->GetPoint(i, x);
+      pts->SetPoint(i, x[0] + 1e7, x[1] - 1e7, x[2] + 1e7);
+    }
+    moved->SetPoints(pts);
+    auto b = havstest::MakeScene(moved, far, property, 48, 48);
+    vtkCamera* ca = a.Renderer->GetActiveCamera();
+    vtkCamera* cb = b.Renderer->GetActiveCamera();
+    double p[3], f[3];
+    ca->GetPosition(p);
+    ca->GetFocalPoint(f);
+    cb->SetPosition(p[0] + 1e7, p[1] - 1e7, p[2] + 1e7);
+    cb->SetFocalPoint(f[0] + 1e7, f[1] - 1e7, f[2] + 1e7);
+    cb->SetViewUp(ca->GetViewUp());
+    cb->SetViewAngle(ca->GetViewAngle());
+    cb->SetClippingRange(ca->GetClippingRange());
+    b.Window->Render();
+    const auto d = havstest::Compare(havstest::FloatResult(near), havstest::FloatResult(far));
+    std::cout << "huge coordinates (1e7 offset): RMSE " << d.RMSE << ", max " << d.Max
+              << std::endl;
+    havstest::Check(d.RMSE < 5e-3, "huge coordinates render as at the origin");
+  }
+  // A zero-size viewport: nothing happens, no error.
+  {
+    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
+    vtkNew<vtkHAVSVolumeMapper> mapper;
+    havstest::Messages* messages = havstest::CountMessages(mapper);
+    auto scene = havstest::MakeScene(grid, mapper, property, 48, 48);
+    scene.Renderer->SetViewport(0.2, 0.2, 0.2, 0.2);
+    scene.Window->Render();
+    havstest::Check(messages->Errors == 0, "zero-size viewport: no error");
+  }
+  // After bad input, a good input renders correctly with the same mapper.
+  {
+    auto property = havstest::MakeConstantProperty(0.2, 0.6, 0.9, 0.5, 0.5);
+    vtkNew<vtkHAVSVolumeMapper> mapper;
+    mapper->KeepFloatResultOn();
+    mapper->SetEarlyRayTerminationOpacity(1.0);
+    vtkNew<vtkUnstructuredGrid> empty;
+    havstest::CountMessages(mapper);
+    auto scene = havstest::MakeScene(empty, mapper, property, 48, 48);
+    vtkCamera* camera = scene.Renderer->GetActiveCamera();
+    camera->ParallelProjectionOn();
+    camera->SetFocalPoint(0.5, 0.5, 0.5);
+    camera->SetPosition(0.5, 0.5, 10.0);
+    camera->SetParallelScale(0.8);
+    scene.Renderer->ResetCameraClippingRange();
+    scene.Window->Render();
+    auto good = havstest::MakeBox(4, 4, 4, 0.25, 0.5, 0.0);
+    mapper->SetInputData(good);
+    scene.Window->Render();
+    const std::vector<float> result = havstest::FloatResult(mapper);
+    const float alpha = result.empty() ? -1.0f : result[4 * (24 * 48 + 24) + 3];
+    std::cout << "good input after bad: centre alpha " << alpha << std::endl;
+    havstest::Check(std::fabs(alpha - (1.0 - std::exp(-1.0))) < 1e-3,
+      "a good input after a bad one renders the closed form");
+  }
+  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+}

@@ -1,0 +1,90 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSFaceSet.h
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSFaceSet
+ * @brief   The unique triangular faces of a tetrahedral grid, boundary flagged.
+ *
+ * Build() takes the VTK_TETRA cells of a vtkUnstructuredGrid (other cells
+ * are counted as skipped; degenerate tetrahedra — repeated points or
+ * |volume| <= 1e-12 * (longest edge)^3 — are counted and dropped) and stores
+ * each face once: a face of one tetrahedron is a boundary face, of two an
+ * internal one, of more a non-manifold one (counted, kept as internal).
+ * Boundary faces are wound so that (p1 - p0) x (p2 - p0) points out of the
+ * mesh, away from the cell's fourth vertex, decided in double precision from
+ * the coordinates: an inverted cell cannot flip it.
+ */
+#ifndef vtkHAVSFaceSet_h
+#define vtkHAVSFaceSet_h
+
+#include "vtkHAVSModule.h" // For export macro
+#include "vtkObject.h"
+
+#include <cstdint> // For uint32_t
+#include <vector>  // For std::vector
+
+class vtkUnstructuredGrid;
+
+class VTKHAVS_EXPORT vtkHAVSFaceSet : public vtkObject
+{
+public:
+  static vtkHAVSFaceSet* New();
+  vtkTypeMacro(vtkHAVSFaceSet, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Extracts the faces. Returns false, with an error, for a null grid, a grid
+   * without points, too many points for 32-bit ids, or no usable tetrahedron;
+   * every array is then empty.
+   */
+  bool Build(vtkUnstructuredGrid* grid);
+
+  ///@{
+  vtkIdType GetNumberOfFaces() const { return static_cast<vtkIdType>(this->Boundary.size()); }
+  vtkGetMacro(NumberOfBoundaryFaces, vtkIdType);
+  vtkGetMacro(NumberOfTetrahedra, vtkIdType);
+  vtkGetMacro(NumberOfSkippedCells, vtkIdType);
+  vtkGetMacro(NumberOfDegenerateTetrahedra, vtkIdType);
+  vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
+  ///@}
+
+  /// Three point ids per face.
+  const std::vector<uint32_t>& GetFaceVertices() const { return this->Vertices; }
+  /// 1 for a boundary face, 0 for an internal one.
+  const std::vector<uint8_t>& GetBoundaryFlags() const { return this->Boundary; }
+  /// Three floats per face: the centroid minus GetCentroidOrigin() (the
+  /// bounds centre), so that floats keep their precision far from the origin.
+  const std::vector<float>& GetCentroids() const { return this->Centroids; }
+  const double* GetCentroidOrigin() const { return this->CentroidOrigin; }
+  /// The longest edge of the used tetrahedra, in the grid's coordinates.
+  vtkGetMacro(LongestEdge, double);
+  /// Modified at each Build.
+  vtkMTimeType GetBuildTime() const { return this->BuildTime.GetMTime(); }
+
+protected:
+  vtkHAVSFaceSet() = default;
+  ~vtkHAVSFaceSet() override = default;
+
+private:
+  vtkHAVSFaceSet(const vtkHAVSFaceSet&) = delete;
+  void operator=(const vtkHAVSFaceSet&) = delete;
+
+  void Clear();
+
+  std::vector<uint32_t> Vertices;
+  std::vector<uint8_t> Boundary;
+  std::vector<float> Centroids;
+  vtkIdType NumberOfBoundaryFaces = 0;
+  vtkIdType NumberOfTetrahedra = 0;
+  vtkIdType NumberOfSkippedCells = 0;
+  vtkIdType NumberOfDegenerateTetrahedra = 0;
+  vtkIdType NumberOfNonManifoldFaces = 0;
+  double LongestEdge = 0.0;
+  double CentroidOrigin[3] = { 0.0, 0.0, 0.0 };
+  vtkTimeStamp BuildTime;
+};
+
+#endif

@@ -1,0 +1,93 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSFaceSorter.h
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSFaceSorter
+ * @brief   Per-frame front-to-back centroid sort of a vtkHAVSFaceSet.
+ *
+ * The key of a face is its centroid's squared world-space distance to the eye
+ * (perspective) or its depth along the direction of projection (parallel),
+ * after the volume's model-to-world matrix; keys are computed in parallel and
+ * sorted with vtkHAVSRadixSorter. The sort is reused (Sort() returns false)
+ * while the face set, the matrix, the eye, the direction and the projection
+ * are all unchanged.
+ */
+#ifndef vtkHAVSFaceSorter_h
+#define vtkHAVSFaceSorter_h
+
+#include "vtkHAVSModule.h" // For export macro
+#include "vtkNew.h"        // For vtkNew
+#include "vtkObject.h"
+
+#include <array>   // For std::array
+#include <cstdint> // For uint32_t
+#include <vector>  // For std::vector
+
+class vtkHAVSFaceSet;
+class vtkHAVSRadixSorter;
+
+class VTKHAVS_EXPORT vtkHAVSFaceSorter : public vtkObject
+{
+public:
+  static vtkHAVSFaceSorter* New();
+  vtkTypeMacro(vtkHAVSFaceSorter, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Sorts the faces nearest first. `modelToWorld` is a row-major 4x4 matrix
+   * (vtkMatrix4x4 element order). Returns true when it sorted, false when the
+   * previous order still holds.
+   */
+  bool Sort(vtkHAVSFaceSet* faces, const double modelToWorld[16], const double eyeWorld[3],
+    const double directionOfProjectionWorld[3], bool parallelProjection);
+
+  /// Forces the next Sort() to sort.
+  void Invalidate() { this->Valid = false; }
+
+  /// Face indices, nearest first.
+  const std::vector<uint32_t>& GetOrder() const { return this->Order; }
+
+  ///@{
+  /// Wall time of the last real sort, and how many real sorts ran.
+  vtkGetMacro(LastSortSeconds, double);
+  vtkGetMacro(NumberOfSorts, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Test aid: after sorting, reverse the order inside every block of this many
+   * consecutive faces (1, the default, leaves it alone), so that each face ends
+   * at most BlockReversal - 1 places from its sorted position. Used to feed the
+   * k-buffer a nearly sorted stream of known disorder.
+   */
+  vtkSetClampMacro(BlockReversal, int, 1, 1 << 20);
+  vtkGetMacro(BlockReversal, int);
+  ///@}
+
+protected:
+  vtkHAVSFaceSorter();
+  ~vtkHAVSFaceSorter() override;
+
+private:
+  vtkHAVSFaceSorter(const vtkHAVSFaceSorter&) = delete;
+  void operator=(const vtkHAVSFaceSorter&) = delete;
+
+  vtkNew<vtkHAVSRadixSorter> Radix;
+  std::vector<float> Keys;
+  std::vector<uint32_t> Order;
+  bool Valid = false;
+  vtkMTimeType LastFaceBuildTime = 0;
+  vtkMTimeType LastSortMTime = 0;
+  std::array<double, 16> LastMatrix{};
+  std::array<double, 3> LastEye{};
+  std::array<double, 3> LastDirection{};
+  bool LastParallel = false;
+  double LastSortSeconds = 0.0;
+  vtkIdType NumberOfSorts = 0;
+  int BlockReversal = 1;
+};
+
+#endif

@@ -1,0 +1,226 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSVolumeMapper.h
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSVolumeMapper
+ * @brief   Unstructured-grid volume mapper: HAVS with a GPU k-buffer.
+ *
+ * Hardware-Assisted Visibility Sorting (Callahan et al.): the unique
+ * triangular faces of the tetrahedra are sorted by centroid distance on the
+ * CPU (parallel LSD radix sort) and rasterized in that order; per pixel a
+ * k-buffer of k entries finishes the sort, and each ray segment between two
+ * consecutive fragments is coloured from a pre-integrated transfer-function
+ * table and composited front to back. Boundary faces are oriented outward, so
+ * a segment that starts at an exit from the mesh (a hole, a cavity, a gap
+ * between parts) contributes nothing.
+ *
+ * Optical model (as VTK's unstructured-grid integrators): extinction
+ * opacity(s) / ScalarOpacityUnitDistance, emission colour(s) times extinction,
+ * scalar linear along each segment, lengths in world space after the volume's
+ * matrix.
+ *
+ * Input: a vtkUnstructuredGrid of tetrahedra with point scalars (chosen with
+ * SetScalarMode / SelectScalarArray). Other cells are skipped with a warning;
+ * cell scalars are not supported yet (error). Blend modes: composite, maximum
+ * and minimum intensity (these skip the sort).
+ *
+ * The k-buffer path (see vtkHAVSKBufferRenderer) is chosen automatically —
+ * framebuffer fetch, else ordered fragment-shader interlock, else per-pixel
+ * fragment lists sorted exactly at resolve — or forced with SetKBufferPath.
+ *
+ * The face sort is reused while neither the camera nor the volume's matrix
+ * changes: a transfer-function edit only rebuilds the table.
+ */
+#ifndef vtkHAVSVolumeMapper_h
+#define vtkHAVSVolumeMapper_h
+
+#include "vtkHAVSModule.h" // For export macro
+#include "vtkUnstructuredGridVolumeMapper.h"
+
+#include <memory> // For std::unique_ptr
+
+class vtkFloatArray;
+class vtkHAVSFaceSet;
+class vtkHAVSFaceSorter;
+class vtkHAVSKBufferRenderer;
+class vtkHAVSPreIntegrationTable;
+class vtkRenderWindow;
+
+class VTKHAVS_EXPORT vtkHAVSVolumeMapper : public vtkUnstructuredGridVolumeMapper
+{
+public:
+  static vtkHAVSVolumeMapper* New();
+  vtkTypeMacro(vtkHAVSVolumeMapper, vtkUnstructuredGridVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum KBufferPaths
+  {
+    KBufferPathAutomatic = 0,
+    KBufferPathFramebufferFetch = 1,
+    KBufferPathFragmentShaderInterlock = 2,
+    KBufferPathFragmentLists = 3
+  };
+
+  /**
+   * Minimum intensity projection (the superclass has composite and maximum
+   * intensity): the same value as vtkVolumeMapper's.
+   */
+  static constexpr int MINIMUM_INTENSITY_BLEND = 2;
+  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
+
+  ///@{
+  /**
+   * k: the number of k-buffer entries per pixel (the composited front plus
+   * k - 1 waiting fragments; the incoming fragment is not counted). 1 … 14 on
+   * the framebuffer-fetch path, up to 64 with interlock. The fragment-list
+   * path sorts up to 64 fragments per pixel exactly whatever k is. Default 6.
+   */
+  vtkSetClampMacro(KBufferSize, int, 1, 64);
+  vtkGetMacro(KBufferSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Which k-buffer path to use; Automatic (default) takes the best one the
+   * context has. A forced path the context lacks falls back to Automatic with
+   * a warning.
+   */
+  vtkSetClampMacro(KBufferPath, int, KBufferPathAutomatic, KBufferPathFragmentLists);
+  vtkGetMacro(KBufferPath, int);
+  void SetKBufferPathToAutomatic() { this->SetKBufferPath(KBufferPathAutomatic); }
+  void SetKBufferPathToFramebufferFetch() { this->SetKBufferPath(KBufferPathFramebufferFetch); }
+  void SetKBufferPathToFragmentShaderInterlock()
+  {
+    this->SetKBufferPath(KBufferPathFragmentShaderInterlock);
+  }
+  void SetKBufferPathToFragmentLists() { this->SetKBufferPath(KBufferPathFragmentLists); }
+  ///@}
+
+  /**
+   * Whether `window` (an OpenGL window, initialized) can run `path`.
+   */
+  static bool IsKBufferPathSupported(vtkRenderWindow* window, int path);
+
+  ///@{
+  /**
+   * The path and k the last frame ran with (0 and "None" before a frame).
+   */
+  vtkGetMacro(ActiveKBufferPath, int);
+  const char* GetActiveKBufferPathName();
+  vtkGetMacro(ActiveKBufferSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Early ray termination: a pixel stops taking fragments once its opacity
+   * reaches this value. 1 turns it off. Default 0.999 (the error it allows is
+   * below 1/255).
+   */
+  vtkSetClampMacro(EarlyRayTerminationOpacity, double, 0.0, 1.0);
+  vtkGetMacro(EarlyRayTerminationOpacity, double);
+  ///@}
+
+  ///@{
+  /**
+   * Size of the pre-integrated table: entries along the front and back
+   * scalar axes (default 128) and along the segment length (default 128).
+   */
+  vtkSetClampMacro(TableScalarResolution, int, 2, 1024);
+  vtkGetMacro(TableScalarResolution, int);
+  vtkSetClampMacro(TableLengthResolution, int, 2, 1024);
+  vtkGetMacro(TableLengthResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * When on, the mapper waits for the GPU at the end of each stage so that
+   * the stage times below are real (costs a little). Off by default.
+   */
+  vtkSetMacro(MeasureStageTimes, bool);
+  vtkGetMacro(MeasureStageTimes, bool);
+  vtkBooleanMacro(MeasureStageTimes, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Stage times of the last frame, in seconds.
+   */
+  vtkGetMacro(LastSortSeconds, double);
+  vtkGetMacro(LastDrawSeconds, double);
+  vtkGetMacro(LastFlushSeconds, double);
+  vtkGetMacro(LastCompositeSeconds, double);
+  vtkGetMacro(LastTableSeconds, double);
+  /// True when the last frame reused the previous face order.
+  vtkGetMacro(LastSortReused, bool);
+  ///@}
+
+  ///@{
+  /**
+   * When on, each frame's premultiplied float RGBA result (before it is
+   * blended into the window) is kept and can be read with GetFloatResult().
+   */
+  vtkSetMacro(KeepFloatResult, bool);
+  vtkGetMacro(KeepFloatResult, bool);
+  vtkBooleanMacro(KeepFloatResult, bool);
+  ///@}
+
+  /**
+   * The last frame's result (4 components, width*height tuples, bottom row
+   * first, the renderer's viewport). Returns false when none is kept.
+   */
+  bool GetFloatResult(vtkFloatArray* rgba, int size[2]);
+
+  ///@{
+  /**
+   * Mesh statistics of the current input.
+   */
+  vtkIdType GetNumberOfFaces();
+  vtkIdType GetNumberOfBoundaryFaces();
+  vtkIdType GetNumberOfTetrahedra();
+  ///@}
+
+  /**
+   * The per-frame centroid sorter (for its statistics and test aids).
+   */
+  vtkHAVSFaceSorter* GetFaceSorter();
+
+  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkHAVSVolumeMapper();
+  ~vtkHAVSVolumeMapper() override;
+
+  int KBufferSize = 6;
+  int KBufferPath = KBufferPathAutomatic;
+  int ActiveKBufferPath = 0;
+  int ActiveKBufferSize = 0;
+  double EarlyRayTerminationOpacity = 0.999;
+  int TableScalarResolution = 128;
+  int TableLengthResolution = 128;
+  bool MeasureStageTimes = false;
+  bool KeepFloatResult = false;
+
+  double LastSortSeconds = 0.0;
+  double LastDrawSeconds = 0.0;
+  double LastFlushSeconds = 0.0;
+  double LastCompositeSeconds = 0.0;
+  double LastTableSeconds = 0.0;
+  bool LastSortReused = false;
+
+private:
+  vtkHAVSVolumeMapper(const vtkHAVSVolumeMapper&) = delete;
+  void operator=(const vtkHAVSVolumeMapper&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+
+  bool UpdateMesh(vtkVolume* volume);
+  bool UpdateTable(vtkVolume* volume);
+  int ChoosePath(vtkRenderWindow* window);
+};
+
+#endif
