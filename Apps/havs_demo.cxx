@@ -160,8 +160,13 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const Options& o)
 vtkSmartPointer<vtkVolumeProperty> MakeProperty(const double range[2], double unitDistance)
 {
   const double lo = range[0], hi = range[1], span = hi - lo;
+  // Every opacity node is also a colour node: VTK's
+  // vtkUnstructuredGridLinearRayIntegrator (the ray-cast and ZSweep mappers'
+  // exact integrator) splits segments at the colour nodes but, reading VTK
+  // 9.2's source, only at the first opacity node, so it is exact only then.
   vtkNew<vtkColorTransferFunction> color;
   color->AddRGBPoint(lo, 0.05, 0.1, 0.9);
+  color->AddRGBPoint(lo + 0.25 * span, 0.075, 0.5, 0.6);
   color->AddRGBPoint(lo + 0.5 * span, 0.1, 0.9, 0.3);
   color->AddRGBPoint(hi, 0.95, 0.3, 0.05);
   vtkNew<vtkPiecewiseFunction> opacity;

@@ -158,7 +158,11 @@ vtkSmartPointer<vtkVolumeProperty> MakeRampProperty(
 {
   auto property = vtkSmartPointer<vtkVolumeProperty>::New();
   vtkNew<vtkColorTransferFunction> color;
+  // Every opacity node is a colour node too, so that VTK's linear ray
+  // integrator (which splits segments at colour nodes and only at the first
+  // opacity node) integrates this property exactly.
   color->AddRGBPoint(lo, 0.1, 0.2, 1.0);
+  color->AddRGBPoint(lo + 0.3 * (hi - lo), 0.16, 0.68, 0.58);
   color->AddRGBPoint(lo + 0.5 * (hi - lo), 0.2, 1.0, 0.3);
   color->AddRGBPoint(hi, 1.0, 0.3, 0.1);
   vtkNew<vtkPiecewiseFunction> alpha;

@@ -1,0 +1,174 @@
+// vtkHAVSPreIntegrationTable against closed forms and the adaptive reference:
+// - constant opacity and colour: every entry is 1 - exp(-tau L), c * alpha;
+// - opacity linear over the range, constant colour: alpha = 1 - exp(-L (tau_f + tau_b) / 2);
+// - a property with midpoints, sharpness and HSV colour: random lookups
+//   against IntegrateSegment within a stated bound at 128^3, with a negative
+//   control (an 8^3 table must miss the bound);
+// - IntegrateSegment composes: (f -> b, L) = (f -> m, L/2) over (m -> b, L/2);
+// - NeedsRebuild follows the property; degenerate inputs stay finite.
+#include "vtkHAVSTestUtilities.h"
+
+#include "vtkColorTransferFunction.h"
+#include "vtkHAVSPreIntegrationTable.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <random>
+
+namespace
+{
+vtkSmartPointer<vtkVolumeProperty> Fancy()
+{
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  vtkNew<vtkColorTransferFunction> color;
+  color->SetColorSpaceToHSV();
+  color->AddRGBPoint(0.0, 0.0, 0.0, 1.0, 0.3, 0.8);
+  color->AddRGBPoint(0.4, 0.0, 1.0, 0.0);
+  color->AddRGBPoint(1.0, 1.0, 0.2, 0.0);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(0.35, 0.6, 0.7, 0.2);
+  opacity->AddPoint(0.6, 0.1);
+  opacity->AddPoint(1.0, 0.9);
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetScalarOpacityUnitDistance(0.5);
+  return property;
+}
+
+double MaxLookupError(vtkVolumeProperty* property, int resolution, double maxLength)
+{
+  vtkNew<vtkHAVSPreIntegrationTable> table;
+  table->SetScalarResolution(resolution);
+  table->SetLengthResolution(resolution);
+  const double range[2] = { 0.0, 1.0 };
+  table->Build(property, 0, range, maxLength);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  double worst = 0.0;
+  for (int i = 0; i < 400; ++i)
+  {
+    const double sf = u(random), sb = u(random), len = u(random) * maxLength;
+    double got[4], want[4];
+    table->Lookup(sf, sb, len, got);
+    vtkHAVSPreIntegrationTable::IntegrateSegment(property, 0, sf, sb, len, want);
+    for (int c = 0; c < 4; ++c)
+    {
+      worst = std::max(worst, std::fabs(got[c] - want[c]));
+    }
+  }
+  return worst;
+}
+}
+
+int main()
+{
+  const double range[2] = { 0.0, 1.0 };
+  vtkNew<vtkHAVSPreIntegrationTable> table;
+  table->SetScalarResolution(32);
+  table->SetLengthResolution(32);
+
+  // Constant: tau = 0.5 / 0.25 = 2.
+  auto constant = havstest::MakeConstantProperty(0.2, 0.6, 0.9, 0.5, 0.25);
+  havstest::Check(table->Build(constant, 0, range, 1.5), "constant builds");
+  double worst = 0.0;
+  const float* t = table->GetTable();
+  for (int l = 0; l < 32; ++l)
+  {
+    const double alpha = 1.0 - std::exp(-2.0 * 1.5 * l / 31.0);
+    for (int i = 0; i < 32 * 32; ++i)
+    {
+      const float* e = t + 4 * (static_cast<size_t>(l) * 32 * 32 + i);
+      worst = std::max<double>({ worst, std::fabs(double(e[3]) - alpha), std::fabs(double(e[0]) - 0.2 * alpha),
+        std::fabs(double(e[2]) - 0.9 * alpha) });
+    }
+  }
+  std::cout << "constant: max error " << worst << std::endl;
+  havstest::Check(worst < 1e-5, "constant entries equal the closed form");
+
+  // Linear opacity 0 -> 1 over the range, unit distance 1, constant colour.
+  auto ramp = havstest::MakeConstantProperty(0.2, 0.6, 0.9, 1.0, 1.0);
+  ramp->GetScalarOpacity()->RemoveAllPoints();
+  ramp->GetScalarOpacity()->AddPoint(0.0, 0.0);
+  ramp->GetScalarOpacity()->AddPoint(1.0, 1.0);
+  table->Build(ramp, 0, range, 2.0);
+  worst = 0.0;
+  for (int l = 0; l < 32; l += 3)
+  {
+    for (int b = 0; b < 32; b += 3)
+    {
+      for (int f = 0; f < 32; f += 3)
+      {
+        const double len = 2.0 * l / 31.0;
+        const double alpha = 1.0 - std::exp(-len * (f / 31.0 + b / 31.0) / 2.0);
+        const float* e = t + 4 * ((static_cast<size_t>(l) * 32 + b) * 32 + f);
+        worst = std::max<double>({ worst, std::fabs(double(e[3]) - alpha), std::fabs(double(e[1]) - 0.6 * alpha) });
+      }
+    }
+  }
+  std::cout << "linear ramp: max error " << worst << std::endl;
+  havstest::Check(worst < 1e-4, "linear ramp entries equal the closed form");
+
+  // A property with midpoints, sharpness and HSV interpolation.
+  auto fancy = Fancy();
+  const double fine = MaxLookupError(fancy, 128, 1.0);
+  const double finer = MaxLookupError(fancy, 256, 1.0);
+  const double coarse = MaxLookupError(fancy, 8, 1.0);
+  std::cout << "lookup vs IntegrateSegment: 8^3 " << coarse << ", 128^3 " << fine << ", 256^3 "
+            << finer << std::endl;
+  const double bound = 0.01;
+  havstest::Check(fine < bound, "128^3 table within 0.01 of the adaptive integral");
+  havstest::Check(finer < fine, "a finer table is closer");
+  havstest::Check(coarse > bound, "negative control: an 8^3 table misses the bound");
+
+  // Composition of the reference.
+  double whole[4], front[4], back[4];
+  vtkHAVSPreIntegrationTable::IntegrateSegment(fancy, 0, 0.1, 0.9, 0.8, whole);
+  vtkHAVSPreIntegrationTable::IntegrateSegment(fancy, 0, 0.1, 0.5, 0.4, front);
+  vtkHAVSPreIntegrationTable::IntegrateSegment(fancy, 0, 0.5, 0.9, 0.4, back);
+  double composed = 0.0;
+  for (int c = 0; c < 4; ++c)
+  {
+    composed = std::max(composed, std::fabs(whole[c] - (front[c] + (1 - front[3]) * back[c])));
+  }
+  havstest::Check(composed < 1e-5, "IntegrateSegment composes front to back");
+
+  // NeedsRebuild.
+  table->Build(fancy, 0, range, 1.0);
+  havstest::Check(!table->NeedsRebuild(fancy, 0, range, 1.0), "fresh table needs no rebuild");
+  fancy->GetRGBTransferFunction()->AddRGBPoint(0.7, 1, 1, 1);
+  havstest::Check(table->NeedsRebuild(fancy, 0, range, 1.0), "colour edit needs a rebuild");
+  table->Build(fancy, 0, range, 1.0);
+  fancy->SetScalarOpacityUnitDistance(0.7);
+  havstest::Check(table->NeedsRebuild(fancy, 0, range, 1.0), "unit distance edit needs a rebuild");
+  table->Build(fancy, 0, range, 1.0);
+  const double range2[2] = { 0.0, 2.0 };
+  havstest::Check(table->NeedsRebuild(fancy, 0, range2, 1.0), "range change needs a rebuild");
+  table->SetScalarResolution(16);
+  havstest::Check(table->NeedsRebuild(fancy, 0, range, 1.0), "size change needs a rebuild");
+
+  // Degenerate inputs: defined, finite.
+  const double flat[2] = { 0.5, 0.5 };
+  havstest::Check(table->Build(fancy, 0, flat, 1.0), "degenerate range builds");
+  const double nanRange[2] = { std::numeric_limits<double>::quiet_NaN(), 1.0 };
+  havstest::Check(!table->Build(fancy, 0, nanRange, 1.0), "NaN range fails");
+  havstest::Check(!table->Build(nullptr, 0, range, 1.0), "null property fails");
+  table->Build(fancy, 0, range, 0.0);
+  bool finite = true;
+  for (size_t i = 0; i < 16 * 16 * 16 * 4; ++i)
+  {
+    finite = finite && std::isfinite(table->GetTable()[i]);
+  }
+  havstest::Check(finite, "tables stay finite");
+
+  // Timing of the default size (no assertion).
+  vtkNew<vtkHAVSPreIntegrationTable> big;
+  big->Build(fancy, 0, range, 1.0);
+  std::cout << "128^3 table build: " << big->GetLastBuildSeconds() << " s" << std::endl;
+  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+}
