@@ -26,6 +26,10 @@ namespace
 void CheckScene(vtkUnstructuredGrid* grid, const std::string& scene, bool parallel)
 {
   const int size = 128;
+  if (!havstest::Check(grid != nullptr, scene + ": input read"))
+  {
+    return;
+  }
   double range[2];
   grid->GetPointData()->GetScalars()->GetRange(range);
   double bounds[6];

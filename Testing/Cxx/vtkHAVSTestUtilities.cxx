@@ -131,6 +131,11 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadLoxPostVtk()
   reader->SetFileName((DataDir() + "/post.vtk").c_str());
   reader->Update();
   vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
+  if (!grid || grid->GetNumberOfCells() == 0 || !grid->GetPointData()->GetArray("Pressure"))
+  {
+    std::cerr << "cannot read " << DataDir() << "/post.vtk" << std::endl;
+    return nullptr;
+  }
   grid->GetPointData()->SetActiveScalars("Pressure");
   return grid;
 }
