@@ -8,7 +8,7 @@
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLState.h"
-#include "vtk_glew.h"
+#include "vtkHAVSOpenGL.h"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -240,7 +240,7 @@ void vtkHAVSEGLRenderWindow::Render()
 //------------------------------------------------------------------------------
 void vtkHAVSEGLRenderWindow::OpenGLInitContext()
 {
-#if defined(GLEW_OK) && VTKHAVS_VTK_VERSION_NUMBER < 94
+#if defined(VTKHAVS_USES_GLEW)
   if (!this->Initialized)
   {
     this->ContextCreationTime.Modified();

@@ -17,19 +17,9 @@
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
-#include "vtk_glew.h"
+#include "vtkHAVSOpenGL.h"
 
-#include "vtkHAVSClearFS.h"
-#include "vtkHAVSCompositeFS.h"
-#include "vtkHAVSExtremumDrawFS.h"
-#include "vtkHAVSExtremumResolveFS.h"
-#include "vtkHAVSFaceVS.h"
-#include "vtkHAVSFetchDrawFS.h"
-#include "vtkHAVSInterlockDrawFS.h"
-#include "vtkHAVSKBufferLib.h"
-#include "vtkHAVSListDrawFS.h"
-#include "vtkHAVSQuadVS.h"
-#include "vtkHAVSResolveFS.h"
+#include "vtkHAVSKBufferShaders.h"
 
 #include <algorithm>
 #include <cstring>
@@ -41,15 +31,6 @@ namespace
 {
 const float kEmpty = 3.0e38f;
 const float kNoFront = -2.0e38f;
-
-void Replace(std::string& text, const std::string& marker, const std::string& with)
-{
-  const size_t at = text.find(marker);
-  if (at != std::string::npos)
-  {
-    text.replace(at, marker.size(), with);
-  }
-}
 
 bool HasGLExtension(const char* name)
 {
@@ -72,23 +53,6 @@ bool HasGLVersion(int major, int minor)
   glGetIntegerv(GL_MAJOR_VERSION, &maj);
   glGetIntegerv(GL_MINOR_VERSION, &min);
   return maj > major || (maj == major && min >= minor);
-}
-
-int EntryAttachments(int k)
-{
-  return (k + 1) / 2;
-}
-
-/// The fragment-shader source of a pass: the template with the k-buffer
-/// library and the defines inserted.
-std::string ComposeShader(const char* templ, int k, int pixelStride)
-{
-  std::string source = templ;
-  std::ostringstream defines;
-  defines << "#define HAVS_K " << k << "\n#define HAVS_PIXEL_STRIDE " << pixelStride << "\n";
-  Replace(source, "//HAVS::Defines", defines.str());
-  Replace(source, "//HAVS::KBufferLib", vtkHAVSKBufferLib);
-  return source;
 }
 
 vtkSmartPointer<vtkTextureObject> NewFloatTexture(vtkOpenGLRenderWindow* window, int w, int h)
@@ -272,6 +236,384 @@ struct vtkHAVSKBufferRenderer::Internals
     glDrawElements(GL_TRIANGLES, this->IndexCount, GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
     glFrontFace(GL_CCW);
+  }
+
+  /// (Re)allocates the per-size targets: opaque depth, result.
+  void Resize(int width, int height)
+  {
+    if (this->Size[0] == width && this->Size[1] == height)
+    {
+      return;
+    }
+    this->ReleaseSizeDependent();
+    this->OpaqueDepth = vtkSmartPointer<vtkTextureObject>::New();
+    this->OpaqueDepth->SetContext(this->Window);
+    this->OpaqueDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    this->Result = NewFloatTexture(this->Window, width, height);
+    this->ResultFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->ResultFramebuffer->SetContext(this->Window);
+    this->Window->GetState()->PushFramebufferBindings();
+    this->ResultFramebuffer->Bind();
+    this->ResultFramebuffer->AddColorAttachment(0, this->Result);
+    this->Window->GetState()->PopFramebufferBindings();
+    this->Size[0] = width;
+    this->Size[1] = height;
+  }
+
+  /// Copies the depth of the framebuffer VTK renders into (the opaque
+  /// geometry drawn before the volume) for the viewport.
+  void CaptureOpaqueDepth(int x, int y, int width, int height)
+  {
+    GLint sampleBuffers = 0;
+    glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+    this->OpaqueDepth->Activate();
+    if (sampleBuffers == 0)
+    {
+      glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, x, y, width, height);
+    }
+    else
+    {
+      // A multisampled framebuffer cannot be copied from: no opaque cut.
+      std::vector<float> far(static_cast<size_t>(width) * height, 1.0f);
+      glTexSubImage2D(
+        GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, far.data());
+      vtkGenericWarningMacro(
+        "vtkHAVS: multisampled framebuffer; opaque geometry does not end the volume's rays.");
+    }
+    this->OpaqueDepth->Deactivate();
+  }
+
+  vtkShaderProgram* FaceProgram(const std::string& fragmentShader, const FrameParameters& p)
+  {
+    vtkShaderProgram* program =
+      this->Program(vtkHAVSKBufferShaders::FaceVertexShader(), fragmentShader);
+    if (program)
+    {
+      this->SetCommonUniforms(program, p);
+    }
+    return program;
+  }
+
+  vtkShaderProgram* QuadProgram(const std::string& fragmentShader, const FrameParameters& p)
+  {
+    vtkShaderProgram* program =
+      this->Program(vtkHAVSKBufferShaders::QuadVertexShader(), fragmentShader);
+    if (program)
+    {
+      this->SetCommonUniforms(program, p);
+    }
+    return program;
+  }
+
+  void SetCommonUniforms(vtkShaderProgram* program, const FrameParameters& p)
+  {
+    program->SetUniformi("havsTable", this->Table->GetTextureUnit());
+    const float ns = static_cast<float>(this->ScalarResolution);
+    const float nl = static_cast<float>(this->LengthResolution);
+    const float scalarTexel[2] = { (ns - 1.0f) / ns, 0.5f / ns };
+    const float lengthTexel[2] = { (nl - 1.0f) / nl, 0.5f / nl };
+    program->SetUniform2f("havsScalarTexel", scalarTexel);
+    program->SetUniform2f("havsLengthTexel", lengthTexel);
+    program->SetUniformf("havsInvMaxLength", static_cast<float>(1.0 / this->MaxLength));
+    program->SetUniformf("havsTerminationOpacity", p.TerminationOpacity);
+    program->SetUniformi("havsOpaqueDepth", this->OpaqueDepth->GetTextureUnit());
+    program->SetUniformMatrix4x4("havsDCRC", const_cast<float*>(p.DCRC));
+    const float viewport[2] = { static_cast<float>(this->Size[0]),
+      static_cast<float>(this->Size[1]) };
+    program->SetUniform2f("havsViewportSize", viewport);
+    program->SetUniformi("havsParallel", p.Parallel ? 1 : 0);
+    program->SetUniform3f("havsDirectionOfProjection", p.DirectionOfProjection);
+    program->SetUniformMatrix4x4("havsMCRC", const_cast<float*>(p.MCRC));
+    program->SetUniformMatrix4x4("havsMCDC", const_cast<float*>(p.MCDC));
+    program->SetUniformi("havsFaceIsBoundary", this->BoundaryTexture->GetTextureUnit());
+    program->SetUniformi("havsMinimum", p.BlendMode == 2 ? 1 : 0);
+    program->SetUniformi("havsNodeCapacity", static_cast<int>(this->ListCapacity));
+  }
+
+  /// Maximum / minimum intensity: the faces with GL_MAX blending into the
+  /// result (no k-buffer, no sort needed).
+  bool DrawExtremum(const FrameParameters& p)
+  {
+    vtkOpenGLState* state = this->Window->GetState();
+    this->ResultFramebuffer->Bind();
+    this->ResultFramebuffer->ActivateDrawBuffers(1);
+    const float zero[4] = { 0, 0, 0, 0 };
+    glClearBufferfv(GL_COLOR, 0, zero);
+    vtkShaderProgram* program = this->FaceProgram(vtkHAVSKBufferShaders::ExtremumDrawShader(), p);
+    if (!program)
+    {
+      return false;
+    }
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendEquation(GL_MAX);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+    this->DrawFaces(p.FlipFacing);
+    state->vtkglBlendEquation(GL_FUNC_ADD);
+    state->vtkglDisable(GL_BLEND);
+    return true;
+  }
+
+  /// The extremal scalar of each pixel coloured from the 1D transfer function.
+  bool ResolveExtremum(const FrameParameters& p)
+  {
+    // The draw wrote the result texture; the resolve reads a copy of it.
+    auto extremum = NewFloatTexture(this->Window, this->Size[0], this->Size[1]);
+    this->ResultFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+    this->ResultFramebuffer->ActivateReadBuffer(0);
+    extremum->Activate();
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, this->Size[0], this->Size[1]);
+    this->ResultFramebuffer->Bind();
+    this->ResultFramebuffer->ActivateDrawBuffers(1);
+    this->TransferFunction1D->Activate();
+    vtkShaderProgram* program =
+      this->QuadProgram(vtkHAVSKBufferShaders::ExtremumResolveShader(), p);
+    if (program)
+    {
+      program->SetUniformi("havsExtremumTexture", extremum->GetTextureUnit());
+      program->SetUniformi("havsTransferFunction", this->TransferFunction1D->GetTextureUnit());
+      this->DrawFullViewport();
+    }
+    this->TransferFunction1D->Deactivate();
+    extremum->Deactivate();
+    extremum->ReleaseGraphicsResources(this->Window);
+    return program != nullptr;
+  }
+
+  /// Clears the k-buffer of the path and draws the faces through it.
+  bool DrawKBuffer(const FrameParameters& p, std::uint64_t& fragmentCount)
+  {
+    switch (p.Path)
+    {
+      case FramebufferFetch:
+        return this->DrawFetch(p);
+      case FragmentShaderInterlock:
+        return this->DrawInterlock(p);
+      case FragmentLists:
+        return this->DrawLists(p, fragmentCount);
+      default:
+        return false;
+    }
+  }
+
+  bool DrawFetch(const FrameParameters& p)
+  {
+    const int attachments = vtkHAVSKBufferShaders::FetchAttachments(p.K);
+    if (this->FetchK != p.K || !this->FetchFramebuffer)
+    {
+      for (auto& t : this->FetchTargets)
+      {
+        t->ReleaseGraphicsResources(this->Window);
+      }
+      this->FetchTargets.clear();
+      if (this->FetchFramebuffer)
+      {
+        this->FetchFramebuffer->ReleaseGraphicsResources(this->Window);
+      }
+      this->FetchFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      this->FetchFramebuffer->SetContext(this->Window);
+      this->FetchFramebuffer->Bind();
+      for (int a = 0; a < attachments; ++a)
+      {
+        this->FetchTargets.push_back(NewFloatTexture(this->Window, this->Size[0], this->Size[1]));
+        this->FetchFramebuffer->AddColorAttachment(a, this->FetchTargets.back());
+      }
+      this->FetchK = p.K;
+    }
+    this->FetchFramebuffer->Bind();
+    this->FetchFramebuffer->ActivateDrawBuffers(attachments);
+    const float zero[4] = { 0, 0, 0, 0 };
+    const float firstPair[4] = { kNoFront, 0, kEmpty, 0 };
+    const float emptyPair[4] = { kEmpty, 0, kEmpty, 0 };
+    glClearBufferfv(GL_COLOR, 0, zero);
+    for (int a = 1; a < attachments; ++a)
+    {
+      glClearBufferfv(GL_COLOR, a, a == 1 ? firstPair : emptyPair);
+    }
+    vtkShaderProgram* program = this->FaceProgram(vtkHAVSKBufferShaders::FetchDrawShader(p.K), p);
+    if (program)
+    {
+      this->DrawFaces(p.FlipFacing);
+    }
+    return program != nullptr;
+  }
+
+  bool DrawInterlock(const FrameParameters& p)
+  {
+    const size_t bytes = static_cast<size_t>(this->Size[0]) * this->Size[1] *
+      vtkHAVSKBufferShaders::InterlockPixelStride(p.K) * 4 * sizeof(float);
+    if (!this->PixelEntries || this->PixelEntriesBytes != bytes)
+    {
+      if (!this->PixelEntries)
+      {
+        glGenBuffers(1, &this->PixelEntries);
+      }
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->PixelEntries);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, bytes, nullptr, GL_DYNAMIC_COPY);
+      this->PixelEntriesBytes = bytes;
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->PixelEntries);
+    this->ResultFramebuffer->Bind();
+    this->ResultFramebuffer->ActivateDrawBuffers(1);
+    vtkOpenGLState* state = this->Window->GetState();
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    vtkShaderProgram* clear =
+      this->QuadProgram(vtkHAVSKBufferShaders::InterlockClearShader(p.K), p);
+    if (clear)
+    {
+      this->DrawFullViewport();
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+    const bool arb = HasGLExtension("GL_ARB_fragment_shader_interlock");
+    vtkShaderProgram* program =
+      clear ? this->FaceProgram(vtkHAVSKBufferShaders::InterlockDrawShader(p.K, arb), p) : nullptr;
+    if (program)
+    {
+      this->DrawFaces(p.FlipFacing);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    return program != nullptr;
+  }
+
+  bool DrawLists(const FrameParameters& p, std::uint64_t& fragmentCount)
+  {
+    const int width = this->Size[0], height = this->Size[1];
+    if (!this->ListHeads || this->ListHeadsSize[0] != width || this->ListHeadsSize[1] != height)
+    {
+      if (this->ListHeads)
+      {
+        glDeleteTextures(1, &this->ListHeads);
+      }
+      glGenTextures(1, &this->ListHeads);
+      glBindTexture(GL_TEXTURE_2D, this->ListHeads);
+      glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32UI, width, height);
+      glBindTexture(GL_TEXTURE_2D, 0);
+      this->ListHeadsSize[0] = width;
+      this->ListHeadsSize[1] = height;
+    }
+    if (!this->ListCounter)
+    {
+      glGenBuffers(1, &this->ListCounter);
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ListCounter);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
+      glGenBuffers(1, &this->ListNodes);
+    }
+    const GLuint wanted = static_cast<GLuint>(
+      std::max<size_t>(static_cast<size_t>(width) * height * 4, size_t(1) << 20));
+    if (this->ListCapacity < wanted)
+    {
+      this->ListCapacity = wanted;
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ListNodes);
+      glBufferData(
+        GL_SHADER_STORAGE_BUFFER, size_t(this->ListCapacity) * 16, nullptr, GL_DYNAMIC_COPY);
+    }
+    this->ResultFramebuffer->Bind();
+    this->ResultFramebuffer->ActivateDrawBuffers(1);
+    vtkOpenGLState* state = this->Window->GetState();
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    bool ok = true;
+    // Draw; when the node pool overflows, grow it to fit and draw again.
+    for (int attempt = 0; ok && attempt < 2; ++attempt)
+    {
+      const GLuint noNode = 0xFFFFFFFFu, zero = 0;
+      glClearTexImage(this->ListHeads, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &noNode);
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ListCounter);
+      glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &zero);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->ListNodes);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, this->ListCounter);
+      glBindImageTexture(0, this->ListHeads, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+      vtkShaderProgram* program = this->FaceProgram(vtkHAVSKBufferShaders::ListDrawShader(), p);
+      ok = program != nullptr;
+      if (!ok)
+      {
+        break;
+      }
+      this->DrawFaces(p.FlipFacing);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+        GL_BUFFER_UPDATE_BARRIER_BIT);
+      GLuint count = 0;
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ListCounter);
+      glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &count);
+      fragmentCount = count;
+      if (count <= this->ListCapacity)
+      {
+        break;
+      }
+      this->ListCapacity = count + count / 4;
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ListNodes);
+      glBufferData(
+        GL_SHADER_STORAGE_BUFFER, size_t(this->ListCapacity) * 16, nullptr, GL_DYNAMIC_COPY);
+    }
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    return ok;
+  }
+
+  /// Flush: the entries left leave in depth order into the result texture.
+  bool Resolve(const FrameParameters& p)
+  {
+    this->ResultFramebuffer->Bind();
+    this->ResultFramebuffer->ActivateDrawBuffers(1);
+    const bool vote = p.Path == FragmentLists && HasGLExtension("GL_ARB_shader_group_vote");
+    if (p.Path == FramebufferFetch)
+    {
+      for (auto& t : this->FetchTargets)
+      {
+        t->Activate();
+      }
+    }
+    else if (p.Path == FragmentLists)
+    {
+      glBindImageTexture(0, this->ListHeads, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->ListNodes);
+    }
+    else
+    {
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->PixelEntries);
+    }
+    vtkShaderProgram* program =
+      this->QuadProgram(vtkHAVSKBufferShaders::ResolveShader(p.Path, p.K, vote), p);
+    if (program)
+    {
+      if (p.Path == FramebufferFetch)
+      {
+        program->SetUniformi("havsColorTexture", this->FetchTargets[0]->GetTextureUnit());
+        for (size_t a = 1; a < this->FetchTargets.size(); ++a)
+        {
+          program->SetUniformi(("havsEntryTexture" + std::to_string(a - 1)).c_str(),
+            this->FetchTargets[a]->GetTextureUnit());
+        }
+      }
+      this->DrawFullViewport();
+    }
+    if (p.Path == FramebufferFetch)
+    {
+      for (auto& t : this->FetchTargets)
+      {
+        t->Deactivate();
+      }
+    }
+    return program != nullptr;
+  }
+
+  /// The premultiplied result over VTK's framebuffer (viewport already set).
+  bool Composite(int originX, int originY)
+  {
+    vtkOpenGLState* state = this->Window->GetState();
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    vtkShaderProgram* program = this->Program(
+      vtkHAVSKBufferShaders::QuadVertexShader(), vtkHAVSKBufferShaders::CompositeShader());
+    if (!program)
+    {
+      return false;
+    }
+    this->Result->Activate();
+    program->SetUniformi("havsResultTexture", this->Result->GetTextureUnit());
+    const float origin[2] = { static_cast<float>(originX), static_cast<float>(originY) };
+    program->SetUniform2f("havsViewportOrigin", origin);
+    this->DrawFullViewport();
+    this->Result->Deactivate();
+    return true;
   }
 };
 
@@ -488,484 +830,68 @@ bool vtkHAVSKBufferRenderer::Render(vtkRenderer* renderer, const FrameParameters
     return true;
   }
   vtkOpenGLState* state = window->GetState();
+  in.Resize(width, height);
+  in.CaptureOpaqueDepth(originX, originY, width, height);
 
-  // Per-size targets.
-  if (in.Size[0] != width || in.Size[1] != height)
   {
-    in.ReleaseSizeDependent();
-    in.OpaqueDepth = vtkSmartPointer<vtkTextureObject>::New();
-    in.OpaqueDepth->SetContext(window);
-    in.OpaqueDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
-    in.Result = NewFloatTexture(window, width, height);
-    in.ResultFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    in.ResultFramebuffer->SetContext(window);
-    state->PushFramebufferBindings();
-    in.ResultFramebuffer->Bind();
-    in.ResultFramebuffer->AddColorAttachment(0, in.Result);
-    state->PopFramebufferBindings();
-    in.Size[0] = width;
-    in.Size[1] = height;
-  }
+    vtkOpenGLState::ScopedglViewport viewportSaver(state);
+    vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+    vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_CULL_FACE);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDepthMask(GL_FALSE);
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    state->vtkglViewport(0, 0, width, height);
 
-  // 1. The opaque geometry's depth, from the framebuffer VTK renders into.
-  {
-    GLint readFramebuffer = 0, sampleBuffers = 0;
-    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
-    glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+    in.Table->Activate();
     in.OpaqueDepth->Activate();
-    if (sampleBuffers == 0)
+    in.BoundaryTexture->Activate();
+    state->PushFramebufferBindings();
+
+    const double t0 = p.MeasureStages ? (glFinish(), Now()) : 0.0;
+    const bool extremum = p.BlendMode == 1 || p.BlendMode == 2;
+    bool ok = extremum ? in.DrawExtremum(p) : in.DrawKBuffer(p, this->LastFragmentCount);
+    const double t1 = p.MeasureStages ? (glFinish(), Now()) : 0.0;
+    ok = ok && (extremum ? in.ResolveExtremum(p) : in.Resolve(p));
+    if (ok && p.KeepResult)
     {
-      glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, originX, originY, width, height);
+      this->LastResult.resize(static_cast<size_t>(width) * height * 4);
+      in.ResultFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+      in.ResultFramebuffer->ActivateReadBuffer(0);
+      glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, this->LastResult.data());
+      this->LastSize[0] = width;
+      this->LastSize[1] = height;
     }
-    else
-    {
-      // A multisampled framebuffer cannot be copied from: no opaque cut.
-      std::vector<float> far(static_cast<size_t>(width) * height, 1.0f);
-      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, far.data());
-      vtkWarningMacro("Multisampled framebuffer: opaque geometry does not end the volume's rays.");
-    }
-  in.OpaqueDepth->Deactivate();
-  }
+    const double t2 = p.MeasureStages ? (glFinish(), Now()) : 0.0;
 
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+    in.BoundaryTexture->Deactivate();
+    in.OpaqueDepth->Deactivate();
+    in.Table->Deactivate();
+    state->PopFramebufferBindings();
 
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_CULL_FACE);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglDepthMask(GL_FALSE);
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  state->vtkglViewport(0, 0, width, height);
-
-  const std::string faceVS = vtkHAVSFaceVS;
-  const std::string quadVS = vtkHAVSQuadVS;
-
-  auto setCommonUniforms = [&](vtkShaderProgram* program) {
-    program->SetUniformi("havsTable", in.Table->GetTextureUnit());
-    const float ns = static_cast<float>(in.ScalarResolution);
-    const float nl = static_cast<float>(in.LengthResolution);
-    const float scalarTexel[2] = { (ns - 1.0f) / ns, 0.5f / ns };
-    const float lengthTexel[2] = { (nl - 1.0f) / nl, 0.5f / nl };
-    program->SetUniform2f("havsScalarTexel", scalarTexel);
-    program->SetUniform2f("havsLengthTexel", lengthTexel);
-    program->SetUniformf("havsInvMaxLength", static_cast<float>(1.0 / in.MaxLength));
-    program->SetUniformf("havsTerminationOpacity", p.TerminationOpacity);
-    program->SetUniformi("havsOpaqueDepth", in.OpaqueDepth->GetTextureUnit());
-    program->SetUniformMatrix4x4("havsDCRC", const_cast<float*>(p.DCRC));
-    const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
-    program->SetUniform2f("havsViewportSize", viewport);
-    program->SetUniformi("havsParallel", p.Parallel ? 1 : 0);
-    program->SetUniform3f("havsDirectionOfProjection", p.DirectionOfProjection);
-    program->SetUniformMatrix4x4("havsMCRC", const_cast<float*>(p.MCRC));
-    program->SetUniformMatrix4x4("havsMCDC", const_cast<float*>(p.MCDC));
-    program->SetUniformi("havsFaceIsBoundary", in.BoundaryTexture->GetTextureUnit());
-  };
-
-  in.Table->Activate();
-  in.OpaqueDepth->Activate();
-  in.BoundaryTexture->Activate();
-  state->PushFramebufferBindings();
-
-  double t0 = p.MeasureStages ? (glFinish(), Now()) : 0.0;
-  bool ok = true;
-  std::string resolveFS = vtkHAVSResolveFS;
-  int resolveK = p.K;
-  bool listVote = false;
-  std::vector<vtkTextureObject*> resolveTextures;
-
-  if (p.BlendMode == 1 || p.BlendMode == 2)
-  {
-    // Maximum / minimum intensity: no k-buffer, no sort needed.
-    in.ResultFramebuffer->Bind();
-    in.ResultFramebuffer->ActivateDrawBuffers(1);
-    const float zero[4] = { 0, 0, 0, 0 };
-    glClearBufferfv(GL_COLOR, 0, zero);
-    vtkShaderProgram* program = in.Program(faceVS, ComposeShader(vtkHAVSExtremumDrawFS, 1, 1));
-    ok = program != nullptr;
     if (ok)
     {
-      setCommonUniforms(program);
-      program->SetUniformi("havsMinimum", p.BlendMode == 2 ? 1 : 0);
-      state->vtkglEnable(GL_BLEND);
-      state->vtkglBlendEquation(GL_MAX);
-      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-      in.DrawFaces(p.FlipFacing);
-      state->vtkglBlendEquation(GL_FUNC_ADD);
-      state->vtkglDisable(GL_BLEND);
+      state->vtkglViewport(originX, originY, width, height);
+      ok = in.Composite(originX, originY);
     }
+    const double t3 = p.MeasureStages ? (glFinish(), Now()) : 0.0;
+    this->LastDrawSeconds = t1 - t0;
+    this->LastFlushSeconds = t2 - t1;
+    this->LastCompositeSeconds = t3 - t2;
+    if (!ok)
+    {
+      vtkErrorMacro("A vtkHAVS shader could not be built for the "
+        << GetPathName(p.Path) << " path with k = " << p.K << "; see the shader log above.");
+    }
+    return ok;
   }
-  else if (p.Path == FramebufferFetch)
-  {
-    const int attachments = 1 + EntryAttachments(p.K);
-    if (in.FetchK != p.K || !in.FetchFramebuffer)
-    {
-      for (auto& t : in.FetchTargets)
-      {
-        t->ReleaseGraphicsResources(window);
-      }
-      in.FetchTargets.clear();
-      if (in.FetchFramebuffer)
-      {
-        in.FetchFramebuffer->ReleaseGraphicsResources(window);
-      }
-      in.FetchFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-      in.FetchFramebuffer->SetContext(window);
-      in.FetchFramebuffer->Bind();
-      for (int a = 0; a < attachments; ++a)
-      {
-        in.FetchTargets.push_back(NewFloatTexture(window, width, height));
-        in.FetchFramebuffer->AddColorAttachment(a, in.FetchTargets.back());
-      }
-      in.FetchK = p.K;
-    }
-    in.FetchFramebuffer->Bind();
-    in.FetchFramebuffer->ActivateDrawBuffers(attachments);
-    const float zero[4] = { 0, 0, 0, 0 };
-    const float firstPair[4] = { kNoFront, 0, kEmpty, 0 };
-    const float emptyPair[4] = { kEmpty, 0, kEmpty, 0 };
-    glClearBufferfv(GL_COLOR, 0, zero);
-    for (int a = 1; a < attachments; ++a)
-    {
-      glClearBufferfv(GL_COLOR, a, a == 1 ? firstPair : emptyPair);
-    }
-
-    std::ostringstream decl, load, store;
-    decl << "layout(location = 0) inout vec4 havsColor;\n";
-    for (int a = 0; a + 1 < attachments; ++a)
-    {
-      decl << "layout(location = " << a + 1 << ") inout vec4 havsEntries" << a << ";\n";
-    }
-    for (int i = 0; i < p.K; ++i)
-    {
-      load << "E[" << i << "] = havsEntries" << i / 2 << (i % 2 ? ".zw" : ".xy") << ";\n  ";
-    }
-    for (int a = 0; a + 1 < attachments; ++a)
-    {
-      const int second = 2 * a + 1;
-      store << "havsEntries" << a << " = vec4(E[" << 2 * a << "], "
-            << (second < p.K ? "E[" + std::to_string(second) + "]" : "vec2(HAVS_EMPTY, 0.0)")
-            << ");\n  ";
-    }
-    std::string fs = ComposeShader(vtkHAVSFetchDrawFS, p.K, 1);
-    Replace(fs, "//HAVS::FetchDeclarations", decl.str());
-    Replace(fs, "//HAVS::FetchLoad", load.str());
-    Replace(fs, "//HAVS::FetchStore", store.str());
-    vtkShaderProgram* program = in.Program(faceVS, fs);
-    ok = program != nullptr;
-    if (ok)
-    {
-      setCommonUniforms(program);
-  in.DrawFaces(p.FlipFacing);
-    }
-
-    std::ostringstream rdecl, rload;
-    rdecl << "uniform sampler2D havsColorTexture;\n";
-    rload << "color = texelFetch(havsColorTexture, pixel, 0);\n  ";
-    for (int a = 0; a + 1 < attachments; ++a)
-    {
-      rdecl << "uniform sampler2D havsEntryTexture" << a << ";\n";
-      rload << "vec4 pair" << a << " = texelFetch(havsEntryTexture" << a << ", pixel, 0);\n  ";
-    }
-    for (int i = 0; i < p.K; ++i)
-    {
-      rload << "E[" << i << "] = pair" << i / 2 << (i % 2 ? ".zw" : ".xy") << ";\n  ";
-    }
-    Replace(resolveFS, "//HAVS::ResolveDeclarations", rdecl.str());
-    Replace(resolveFS, "//HAVS::ResolveLoad", rload.str());
-    for (auto& t : in.FetchTargets)
-    {
-      resolveTextures.push_back(t);
-    }
-  }
-  else if (p.Path == FragmentShaderInterlock)
-  {
-    const int stride = 1 + EntryAttachments(p.K);
-    const size_t bytes = static_cast<size_t>(width) * height * stride * 4 * sizeof(float);
-    if (!in.PixelEntries || in.PixelEntriesBytes != bytes)
-    {
-      if (!in.PixelEntries)
-      {
-        glGenBuffers(1, &in.PixelEntries);
-      }
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, in.PixelEntries);
-      glBufferData(GL_SHADER_STORAGE_BUFFER, bytes, nullptr, GL_DYNAMIC_COPY);
-      in.PixelEntriesBytes = bytes;
-    }
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.PixelEntries);
-    in.ResultFramebuffer->Bind();
-    in.ResultFramebuffer->ActivateDrawBuffers(1);
-    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-
-    vtkShaderProgram* clear = in.Program(quadVS, ComposeShader(vtkHAVSClearFS, p.K, stride));
-    const bool arb = HasGLExtension("GL_ARB_fragment_shader_interlock");
-    std::string fs = ComposeShader(vtkHAVSInterlockDrawFS, p.K, stride);
-    Replace(fs, "//HAVS::InterlockExtension",
-      arb ? "#extension GL_ARB_fragment_shader_interlock : require"
-          : "#extension GL_NV_fragment_shader_interlock : require");
-    Replace(fs, "//HAVS::InterlockBegin",
-      arb ? "beginInvocationInterlockARB();" : "beginInvocationInterlockNV();");
-    Replace(fs, "//HAVS::InterlockEnd",
-      arb ? "endInvocationInterlockARB();" : "endInvocationInterlockNV();");
-    ok = clear != nullptr;
-    if (ok)
-    {
-      setCommonUniforms(clear);
-      in.DrawFullViewport();
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-      vtkShaderProgram* program = in.Program(faceVS, fs);
-      ok = program != nullptr;
-      if (ok)
-      {
-        setCommonUniforms(program);
-        in.DrawFaces(p.FlipFacing);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-      }
-    }
-    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    Replace(resolveFS, "//HAVS::ResolveDeclarations",
-      "layout(std430, binding = 0) buffer HAVSPixelEntries { vec4 havsPixelData[]; };\n");
-    Replace(resolveFS, "//HAVS::ResolveLoad",
-      "int base = (pixel.y * int(havsViewportSize.x) + pixel.x) * HAVS_PIXEL_STRIDE;\n"
-      "  color = havsPixelData[base];\n"
-      "  for (int i = 0; i < HAVS_K; ++i)\n"
-      "  {\n"
-      "    vec4 pair = havsPixelData[base + 1 + i / 2];\n"
-      "    E[i] = (i % 2 == 0) ? pair.xy : pair.zw;\n"
-      "  }\n");
-    resolveFS = ComposeShader(resolveFS.c_str(), p.K, stride);
-  }
-  else if (p.Path == FragmentLists)
-  {
-    if (!in.ListHeads || in.ListHeadsSize[0] != width || in.ListHeadsSize[1] != height)
-    {
-      if (in.ListHeads)
-      {
-        glDeleteTextures(1, &in.ListHeads);
-      }
-      glGenTextures(1, &in.ListHeads);
-      glBindTexture(GL_TEXTURE_2D, in.ListHeads);
-      glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32UI, width, height);
-      glBindTexture(GL_TEXTURE_2D, 0);
-      in.ListHeadsSize[0] = width;
-      in.ListHeadsSize[1] = height;
-    }
-    if (!in.ListCounter)
-    {
-      glGenBuffers(1, &in.ListCounter);
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, in.ListCounter);
-      glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
-      glGenBuffers(1, &in.ListNodes);
-    }
-    const GLuint wanted = static_cast<GLuint>(
-      std::max<size_t>(static_cast<size_t>(width) * height * 4, size_t(1) << 20));
-    if (in.ListCapacity < wanted)
-    {
-      in.ListCapacity = wanted;
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, in.ListNodes);
-      glBufferData(GL_SHADER_STORAGE_BUFFER, size_t(in.ListCapacity) * 16, nullptr, GL_DYNAMIC_COPY);
-    }
-    vtkShaderProgram* program = in.Program(faceVS, ComposeShader(vtkHAVSListDrawFS, p.K, 1));
-    ok = program != nullptr;
-    in.ResultFramebuffer->Bind();
-    in.ResultFramebuffer->ActivateDrawBuffers(1);
-    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    // Draw; when the node pool overflows, grow it to fit and draw again.
-    for (int attempt = 0; ok && attempt < 2; ++attempt)
-    {
-      const GLuint noNode = 0xFFFFFFFFu, zero = 0;
-      glClearTexImage(in.ListHeads, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &noNode);
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, in.ListCounter);
-      glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &zero);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, in.ListNodes);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, in.ListCounter);
-      glBindImageTexture(0, in.ListHeads, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-      setCommonUniforms(program);
-      program->SetUniformi("havsNodeCapacity", static_cast<int>(in.ListCapacity));
-      in.DrawFaces(p.FlipFacing);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-        GL_BUFFER_UPDATE_BARRIER_BIT);
-      GLuint count = 0;
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, in.ListCounter);
-      glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &count);
-      this->LastFragmentCount = count;
-      if (count <= in.ListCapacity)
-      {
-        break;
-      }
-      in.ListCapacity = count + count / 4;
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, in.ListNodes);
-      glBufferData(GL_SHADER_STORAGE_BUFFER, size_t(in.ListCapacity) * 16, nullptr, GL_DYNAMIC_COPY);
-    }
-    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    // The list walk. Where shader group vote exists, the loop runs until no
-    // invocation of the group has nodes left and every invocation loads an
-    // in-range node each turn: llvmpipe (Mesa 22.3) returns wrong data for a
-    // storage-buffer load inside a loop whose trip count differs between the
-    // invocations of a group (measured: lists cut after one node).
-    const bool vote = HasGLExtension("GL_ARB_shader_group_vote");
-    std::ostringstream rload;
-    rload << "E[0] = vec2(HAVS_NO_FRONT, 0.0);\n"
-          << "  for (int i = 1; i < HAVS_K; ++i) { E[i] = vec2(HAVS_EMPTY, 0.0); }\n"
-          << "  uint node = imageLoad(havsListHeads, pixel).r;\n"
-          << "  for (uint n = 0u; n < uint(havsNodeCapacity); ++n)\n"
-          << "  {\n"
-          << "    bool walking = node < uint(havsNodeCapacity);\n"
-          << (vote ? "    if (!anyInvocationARB(walking)) { break; }\n"
-                   : "    if (!walking) { break; }\n")
-          << "    uvec4 entry = havsNodes[walking ? node : 0u];\n"
-          << "    if (walking)\n"
-          << "    {\n"
-          << "      havsInsertBackToFront(color, E, vec2(uintBitsToFloat(entry.x), "
-             "uintBitsToFloat(entry.y)), opaqueDistance);\n"
-          << "      node = entry.z;\n"
-          << "    }\n"
-          << "  }\n";
-    listVote = vote;
-    Replace(resolveFS, "//HAVS::ResolveDeclarations",
-      "layout(r32ui, binding = 0) uniform readonly uimage2D havsListHeads;\n"
-      "layout(std430, binding = 1) readonly buffer HAVSListNodes { uvec4 havsNodes[]; };\n"
-      "uniform int havsNodeCapacity;\n");
-    Replace(resolveFS, "//HAVS::ResolveLoad", rload.str());
-    resolveK = ListResolveCapacity;
-  }
-  else
-  {
-    vtkErrorMacro("Unknown k-buffer path " << p.Path);
-    ok = false;
-  }
-
-  double t1 = p.MeasureStages ? (glFinish(), Now()) : 0.0;
-
-  // 2. Resolve: flush what is left into the result texture.
-  if (ok && (p.BlendMode == 1 || p.BlendMode == 2))
-  {
-    // The extremum pass wrote straight into the result; colour it now.
-    // Copy it aside first, since the resolve writes the same texture.
-    auto extremum = NewFloatTexture(window, width, height);
-    in.ResultFramebuffer->Bind(GL_READ_FRAMEBUFFER);
-    in.ResultFramebuffer->ActivateReadBuffer(0);
-    extremum->Activate();
-    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, width, height);
-    in.ResultFramebuffer->Bind();
-    in.ResultFramebuffer->ActivateDrawBuffers(1);
-    vtkShaderProgram* program = in.Program(quadVS, vtkHAVSExtremumResolveFS);
-    ok = program != nullptr;
-    if (ok)
-    {
-      in.TransferFunction1D->Activate();
-      program->SetUniformi("havsExtremumTexture", extremum->GetTextureUnit());
-      program->SetUniformi("havsTransferFunction", in.TransferFunction1D->GetTextureUnit());
-      const float ns = static_cast<float>(in.ScalarResolution);
-      const float scalarTexel[2] = { (ns - 1.0f) / ns, 0.5f / ns };
-      program->SetUniform2f("havsScalarTexel", scalarTexel);
-      program->SetUniformi("havsMinimum", p.BlendMode == 2 ? 1 : 0);
-      in.DrawFullViewport();
-      in.TransferFunction1D->Deactivate();
-    }
-    extremum->Deactivate();
-    extremum->ReleaseGraphicsResources(window);
-  }
-  else if (ok)
-  {
-    if (p.Path == FramebufferFetch)
-    {
-      resolveFS = ComposeShader(resolveFS.c_str(), p.K, 1);
-    }
-    else if (p.Path == FragmentLists)
-    {
-      resolveFS = ComposeShader(resolveFS.c_str(), resolveK, 1);
-    }
-    Replace(resolveFS, "//HAVS::ResolveExtension",
-      std::string(listVote ? "#extension GL_ARB_shader_group_vote : require\n" : "") +
-        (p.Path == FragmentLists ? "#define HAVS_BACK_TO_FRONT\n" : ""));
-    in.ResultFramebuffer->Bind();
-    in.ResultFramebuffer->ActivateDrawBuffers(1);
-    for (vtkTextureObject* t : resolveTextures)
-    {
-      t->Activate();
-    }
-    vtkShaderProgram* program = in.Program(quadVS, resolveFS);
-    ok = program != nullptr;
-    if (ok)
-    {
-      setCommonUniforms(program);
-      if (p.Path == FramebufferFetch)
-      {
-        program->SetUniformi("havsColorTexture", resolveTextures[0]->GetTextureUnit());
-        for (size_t a = 1; a < resolveTextures.size(); ++a)
-        {
-          program->SetUniformi(("havsEntryTexture" + std::to_string(a - 1)).c_str(),
-            resolveTextures[a]->GetTextureUnit());
-        }
-      }
-      else if (p.Path == FragmentLists)
-      {
-        program->SetUniformi("havsNodeCapacity", static_cast<int>(in.ListCapacity));
-        glBindImageTexture(0, in.ListHeads, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, in.ListNodes);
-      }
-      else
-      {
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.PixelEntries);
-      }
-      in.DrawFullViewport();
-    }
-    for (vtkTextureObject* t : resolveTextures)
-    {
-      t->Deactivate();
-    }
-  }
-  if (p.KeepResult && ok)
-  {
-    this->LastResult.resize(static_cast<size_t>(width) * height * 4);
-    in.ResultFramebuffer->Bind(GL_READ_FRAMEBUFFER);
-    in.ResultFramebuffer->ActivateReadBuffer(0);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, this->LastResult.data());
-    this->LastSize[0] = width;
-    this->LastSize[1] = height;
-  }
-  double t2 = p.MeasureStages ? (glFinish(), Now()) : 0.0;
-
-  in.BoundaryTexture->Deactivate();
-  in.OpaqueDepth->Deactivate();
-  in.Table->Deactivate();
-  state->PopFramebufferBindings();
-
-  // 3. Composite the premultiplied result over VTK's framebuffer.
-  if (ok)
-  {
-    state->vtkglViewport(originX, originY, width, height);
-    state->vtkglEnable(GL_BLEND);
-    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    vtkShaderProgram* program = in.Program(quadVS, vtkHAVSCompositeFS);
-    ok = program != nullptr;
-    if (ok)
-    {
-      in.Result->Activate();
-      program->SetUniformi("havsResultTexture", in.Result->GetTextureUnit());
-      const float origin[2] = { static_cast<float>(originX), static_cast<float>(originY) };
-      program->SetUniform2f("havsViewportOrigin", origin);
-      in.DrawFullViewport();
-      in.Result->Deactivate();
-    }
-  }
-  double t3 = p.MeasureStages ? (glFinish(), Now()) : 0.0;
-  this->LastDrawSeconds = t1 - t0;
-  this->LastFlushSeconds = t2 - t1;
-  this->LastCompositeSeconds = t3 - t2;
-  if (!ok)
-  {
-    vtkErrorMacro("A vtkHAVS shader could not be built for the "
-      << GetPathName(p.Path) << " path with k = " << p.K << "; see the shader log above.");
-  }
-  return ok;
 }
 
 //------------------------------------------------------------------------------

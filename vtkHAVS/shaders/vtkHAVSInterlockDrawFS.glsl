@@ -1,4 +1,4 @@
-#version 430 core
+#version 450 core
 //HAVS::InterlockExtension
 // vtkHAVS k-buffer, fragment-shader-interlock path (NVIDIA): draw pass.
 // The colour and the k entries of every pixel live in a shader storage buffer;

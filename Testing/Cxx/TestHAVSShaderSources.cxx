@@ -1,0 +1,74 @@
+// Every generated shader source is valid GLSL, checked with glslangValidator
+// (Khronos' reference compiler) — also the interlock path, which needs a GPU
+// with fragment-shader interlock to run (NVIDIA) and so cannot be rendered
+// here. The framebuffer-fetch draw shader is not checked this way
+// (glslang does not know EXT_shader_framebuffer_fetch on desktop GL); Mesa
+// compiles it in every rendering test. Negative control: a broken source must
+// be rejected, so that a missing or permissive validator cannot pass the test.
+#include "vtkHAVSTestUtilities.h"
+
+#include "vtkHAVSKBufferRenderer.h"
+#include "vtkHAVSKBufferShaders.h"
+
+#include <cstdlib>
+#include <fstream>
+
+namespace
+{
+bool Validate(const std::string& source, const std::string& name, const std::string& stage)
+{
+  const std::string path = havstest::OutputDir() + "/" + name + "." + stage;
+  std::ofstream(path) << source;
+  const std::string command = "glslangValidator " + path + " > " + path + ".log 2>&1";
+  const bool ok = std::system(command.c_str()) == 0;
+  if (!ok)
+  {
+    std::ifstream log(path + ".log");
+    std::cerr << name << ":\n" << log.rdbuf() << std::endl;
+  }
+  return ok;
+}
+}
+
+int main()
+{
+  if (!havstest::Check(std::system("glslangValidator --version > /dev/null 2>&1") == 0,
+        "glslangValidator is installed (Debian package glslang-tools)"))
+  {
+    return EXIT_FAILURE;
+  }
+  havstest::Check(!Validate("#version 450 core\nvoid main() { undefined(); }\n", "broken", "frag"),
+    "negative control: a broken shader is rejected");
+
+  int checked = 0;
+  auto check = [&](const std::string& source, const std::string& name, const char* stage) {
+    havstest::Check(Validate(source, name, stage), name + " compiles");
+    ++checked;
+  };
+  check(vtkHAVSKBufferShaders::FaceVertexShader(), "face", "vert");
+  check(vtkHAVSKBufferShaders::QuadVertexShader(), "quad", "vert");
+  check(vtkHAVSKBufferShaders::ListDrawShader(), "list_draw", "frag");
+  check(vtkHAVSKBufferShaders::ExtremumDrawShader(), "extremum_draw", "frag");
+  check(vtkHAVSKBufferShaders::ExtremumResolveShader(), "extremum_resolve", "frag");
+  check(vtkHAVSKBufferShaders::CompositeShader(), "composite", "frag");
+  check(vtkHAVSKBufferShaders::ResolveShader(vtkHAVSKBufferRenderer::FragmentLists, 1, true),
+    "list_resolve_vote", "frag");
+  check(vtkHAVSKBufferShaders::ResolveShader(vtkHAVSKBufferRenderer::FragmentLists, 1, false),
+    "list_resolve", "frag");
+  for (int k : { 1, 2, 3, 6, 13, 14 })
+  {
+    check(vtkHAVSKBufferShaders::ResolveShader(vtkHAVSKBufferRenderer::FramebufferFetch, k, false),
+      "fetch_resolve_k" + std::to_string(k), "frag");
+  }
+  for (int k : { 1, 2, 3, 6, 14, 15, 32, 64 })
+  {
+    const std::string suffix = "_k" + std::to_string(k);
+    check(vtkHAVSKBufferShaders::InterlockDrawShader(k, true), "interlock_draw" + suffix, "frag");
+    check(vtkHAVSKBufferShaders::InterlockClearShader(k), "interlock_clear" + suffix, "frag");
+    check(vtkHAVSKBufferShaders::ResolveShader(
+            vtkHAVSKBufferRenderer::FragmentShaderInterlock, k, false),
+      "interlock_resolve" + suffix, "frag");
+  }
+  std::cout << checked << " shader sources checked with glslangValidator" << std::endl;
+  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+}

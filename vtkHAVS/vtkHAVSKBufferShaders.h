@@ -1,0 +1,57 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSKBufferShaders.h
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSKBufferShaders
+ * @brief   The GLSL sources of every vtkHAVS pass, generated for a k and a path.
+ *
+ * The templates are the `.glsl` files of vtkHAVS/shaders, embedded at build
+ * time; `//HAVS::` markers in them are replaced here: the defines (HAVS_K,
+ * the per-pixel stride), the shared k-buffer library, the per-path
+ * declarations and loads. No OpenGL: the sources can be generated and checked
+ * (e.g. by glslangValidator) on a machine without the matching GPU.
+ */
+#ifndef vtkHAVSKBufferShaders_h
+#define vtkHAVSKBufferShaders_h
+
+#include "vtkHAVSModule.h" // For export macro
+
+#include <string> // For std::string
+
+class VTKHAVS_EXPORT vtkHAVSKBufferShaders
+{
+public:
+  /// Vertex shader of the passes that rasterize the faces.
+  static std::string FaceVertexShader();
+  /// Vertex shader of the full-viewport passes.
+  static std::string QuadVertexShader();
+
+  /// Framebuffer-fetch draw pass: entries in 1 + (k+1)/2 colour attachments.
+  static std::string FetchDrawShader(int k);
+  /// Interlock draw pass; `arb`: ARB_fragment_shader_interlock, else NV.
+  static std::string InterlockDrawShader(int k, bool arb);
+  /// Interlock clear pass (per-pixel storage to empty).
+  static std::string InterlockClearShader(int k);
+  /// Fragment-list draw pass (append to per-pixel lists).
+  static std::string ListDrawShader();
+
+  /// Resolve (flush) pass of a path (vtkHAVSKBufferRenderer::Path values);
+  /// `groupVote`: the fragment-list walk uses ARB_shader_group_vote.
+  static std::string ResolveShader(int path, int k, bool groupVote);
+  /// Number of storage slots (vec4) per pixel on the interlock path.
+  static int InterlockPixelStride(int k) { return 1 + (k + 1) / 2; }
+  /// Colour attachments of the framebuffer-fetch path.
+  static int FetchAttachments(int k) { return 1 + (k + 1) / 2; }
+
+  /// Maximum / minimum intensity passes.
+  static std::string ExtremumDrawShader();
+  static std::string ExtremumResolveShader();
+
+  /// Composites the result over VTK's framebuffer.
+  static std::string CompositeShader();
+};
+
+#endif
