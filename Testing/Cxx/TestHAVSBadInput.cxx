@@ -5,6 +5,8 @@
 
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkDoubleArray.h"
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkHexahedron.h"
@@ -139,6 +141,37 @@ int main()
     grid->InsertNextCell(VTK_TETRA, 4, coplanar);
     Outcome o = RenderOnce(grid, "degenerate tetrahedra");
     havstest::Check(o.Warnings >= 1 && Contains(o.Text, "degenerate"), "degenerate: warning");
+  }
+  // Cell scalars: a clear error (not supported yet).
+  {
+    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    vtkNew<vtkDoubleArray> cellScalars;
+    cellScalars->SetName("c");
+    cellScalars->SetNumberOfTuples(grid->GetNumberOfCells());
+    cellScalars->Fill(0.5);
+    grid->GetPointData()->SetScalars(nullptr);
+    grid->GetPointData()->RemoveArray("s");
+    grid->GetCellData()->SetScalars(cellScalars);
+    Outcome o = RenderOnce(grid, "cell scalars");
+    havstest::Check(o.Errors == 1 && Contains(o.Text, "Cell scalars"), "cell scalars: clear error");
+  }
+  // Unsupported property features: one warning each, not one per frame.
+  {
+    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
+    property->ShadeOn();
+    property->GetGradientOpacity()->AddPoint(0.0, 0.2);
+    property->GetGradientOpacity()->AddPoint(1.0, 1.0);
+    vtkNew<vtkHAVSVolumeMapper> mapper;
+    havstest::Messages* messages = havstest::CountMessages(mapper);
+    auto scene = havstest::MakeScene(grid, mapper, property, 32, 32);
+    scene.Window->Render();
+    scene.Window->Render();
+    std::cout << "shading + gradient opacity: " << messages->Warnings << " warnings: "
+              << messages->Text << std::endl;
+    havstest::Check(messages->Warnings == 2 && Contains(messages->Text, "Shading") &&
+        Contains(messages->Text, "Gradient opacity"),
+      "shading and gradient opacity: one warning each");
   }
   // Huge coordinates: the box moved by 1e7 renders as the box at the origin.
   {
