@@ -30,14 +30,7 @@ void CheckScene(vtkUnstructuredGrid* grid, const std::string& scene, bool parall
   {
     return;
   }
-  double range[2];
-  grid->GetPointData()->GetScalars()->GetRange(range);
-  double bounds[6];
-  grid->GetBounds(bounds);
-  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-  auto property = havstest::MakeRampProperty(range[0], range[1], 0.8, diagonal / 8.0);
+  auto property = havstest::MakeRampPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> mapper;
   auto s = havstest::MakeScene(grid, mapper, property, size, size);
   s.Renderer->SetBackground(0.1, 0.1, 0.15);

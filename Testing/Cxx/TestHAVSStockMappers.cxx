@@ -70,12 +70,7 @@ int main(int argc, char* argv[])
   }
   double range[2];
   grid->GetPointData()->GetScalars()->GetRange(range);
-  double bounds[6];
-  grid->GetBounds(bounds);
-  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-  auto property = havstest::MakeRampProperty(range[0], range[1], 0.8, diagonal / 8.0);
+  auto property = havstest::MakeRampPropertyFor(grid);
   std::cout << dataset << ": " << grid->GetNumberOfCells() << " tets, scalar range [" << range[0]
             << ", " << range[1] << "], " << size << "^2" << std::endl;
 

@@ -182,6 +182,13 @@ vtkSmartPointer<vtkVolumeProperty> MakeRampProperty(
   return property;
 }
 
+vtkSmartPointer<vtkVolumeProperty> MakeRampPropertyFor(vtkUnstructuredGrid* grid)
+{
+  double range[2];
+  grid->GetPointData()->GetScalars()->GetRange(range);
+  return MakeRampProperty(range[0], range[1], 0.8, grid->GetLength() / 8.0);
+}
+
 vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height)
 {
   vtkSmartPointer<vtkRenderWindow> window;
