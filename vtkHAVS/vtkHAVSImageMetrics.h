@@ -1,0 +1,77 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSImageMetrics.h
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSImageMetrics
+ * @brief   Error between two premultiplied RGBA images in [0, 1].
+ *
+ * The one comparison used by the tests, the demo and the benchmark: RMSE over
+ * all channels, PSNR (peak 1), the largest absolute channel error, and the
+ * share of pixels with a channel off by more than 1/255 and 4/255. A
+ * non-finite value counts as an error of 1. DifferenceImage() paints the
+ * per-pixel largest error in false colour (black 0, blue, green, yellow, red
+ * at >= Scale).
+ */
+#ifndef vtkHAVSImageMetrics_h
+#define vtkHAVSImageMetrics_h
+
+#include "vtkHAVSModule.h" // For export macro
+#include "vtkObject.h"
+
+class vtkFloatArray;
+class vtkUnsignedCharArray;
+
+class VTKHAVS_EXPORT vtkHAVSImageMetrics : public vtkObject
+{
+public:
+  static vtkHAVSImageMetrics* New();
+  vtkTypeMacro(vtkHAVSImageMetrics, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Compares two 4-component arrays of the same size. Returns false (and
+   * sets every metric to its worst) when they do not match in size.
+   */
+  bool Compare(vtkFloatArray* a, vtkFloatArray* b);
+
+  /// The same on raw RGBA floats (`pixels` * 4 values each).
+  bool Compare(const float* a, const float* b, vtkIdType pixels);
+
+  vtkGetMacro(RMSE, double);
+  vtkGetMacro(PSNR, double);
+  vtkGetMacro(MaxAbsError, double);
+  vtkGetMacro(FractionOver1, double);
+  vtkGetMacro(FractionOver4, double);
+
+  ///@{
+  /// The error that maps to full red in DifferenceImage (default 16/255).
+  vtkSetMacro(Scale, double);
+  vtkGetMacro(Scale, double);
+  ///@}
+
+  /**
+   * False-colour image (RGB, 3 components) of the per-pixel largest channel
+   * error between a and b.
+   */
+  void DifferenceImage(vtkFloatArray* a, vtkFloatArray* b, vtkUnsignedCharArray* rgb);
+
+protected:
+  vtkHAVSImageMetrics() = default;
+  ~vtkHAVSImageMetrics() override = default;
+
+private:
+  vtkHAVSImageMetrics(const vtkHAVSImageMetrics&) = delete;
+  void operator=(const vtkHAVSImageMetrics&) = delete;
+
+  double RMSE = 0.0;
+  double PSNR = 0.0;
+  double MaxAbsError = 0.0;
+  double FractionOver1 = 0.0;
+  double FractionOver4 = 0.0;
+  double Scale = 16.0 / 255.0;
+};
+
+#endif

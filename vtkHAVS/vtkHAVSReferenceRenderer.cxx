@@ -1,0 +1,573 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSReferenceRenderer.cxx
+
+=========================================================================*/
+#include "vtkHAVSReferenceRenderer.h"
+
+#include "vtkHAVSFaceSet.h"
+#include "vtkHAVSPreIntegrationTable.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+
+vtkStandardNewMacro(vtkHAVSReferenceRenderer);
+
+namespace
+{
+/// A pixel's ray: origin, unit direction, and the distance of the origin
+/// from the eye along the ray's measure.
+struct Ray
+{
+  double Origin[3];
+  double Direction[3];
+  double Offset;
+  // Woop et al.'s shear into the ray's frame.
+  int Kx, Ky, Kz;
+  double Sx, Sy, Sz;
+};
+
+struct RayCamera
+{
+  double ClipToWorld[16];
+  double WorldToClip[16];
+  double Eye[3];
+  double DirectionOfProjection[3];
+  bool Parallel;
+  int Width, Height;
+
+  void Unproject(double x, double y, double z, double out[3]) const
+  {
+    const double* m = this->ClipToWorld;
+    double p[4];
+    for (int r = 0; r < 4; ++r)
+    {
+      p[r] = m[4 * r] * x + m[4 * r + 1] * y + m[4 * r + 2] * z + m[4 * r + 3];
+    }
+    for (int r = 0; r < 3; ++r)
+    {
+      out[r] = p[r] / p[3];
+    }
+  }
+
+  Ray PixelRay(int i, int j) const
+  {
+    const double x = (i + 0.5) / this->Width * 2.0 - 1.0;
+    const double y = (j + 0.5) / this->Height * 2.0 - 1.0;
+    double nearPoint[3], farPoint[3];
+    this->Unproject(x, y, -1.0, nearPoint);
+    this->Unproject(x, y, 1.0, farPoint);
+    Ray ray;
+    for (int k = 0; k < 3; ++k)
+    {
+      ray.Direction[k] = farPoint[k] - nearPoint[k];
+    }
+    vtkMath::Normalize(ray.Direction);
+    if (this->Parallel)
+    {
+      std::copy(nearPoint, nearPoint + 3, ray.Origin);
+      double d[3];
+      vtkMath::Subtract(nearPoint, this->Eye, d);
+      ray.Offset = vtkMath::Dot(d, this->DirectionOfProjection);
+    }
+    else
+    {
+      std::copy(this->Eye, this->Eye + 3, ray.Origin);
+      ray.Offset = 0.0;
+    }
+    // The dominant axis goes last; the other two follow it cyclically.
+    ray.Kz = 0;
+    for (int k = 1; k < 3; ++k)
+    {
+      if (std::fabs(ray.Direction[k]) > std::fabs(ray.Direction[ray.Kz]))
+      {
+        ray.Kz = k;
+      }
+    }
+    ray.Kx = (ray.Kz + 1) % 3;
+    ray.Ky = (ray.Kx + 1) % 3;
+    ray.Sx = ray.Direction[ray.Kx] / ray.Direction[ray.Kz];
+    ray.Sy = ray.Direction[ray.Ky] / ray.Direction[ray.Kz];
+    ray.Sz = 1.0 / ray.Direction[ray.Kz];
+    return ray;
+  }
+
+  /// Pixel-centre coordinates (x, y) of a world point; false behind the eye.
+  bool Project(const double p[3], double& px, double& py) const
+  {
+    const double* m = this->WorldToClip;
+    double c[4];
+    for (int r = 0; r < 4; ++r)
+    {
+      c[r] = m[4 * r] * p[0] + m[4 * r + 1] * p[1] + m[4 * r + 2] * p[2] + m[4 * r + 3];
+    }
+    if (!(c[3] > 0.0))
+    {
+      return false;
+    }
+    px = (c[0] / c[3] + 1.0) * 0.5 * this->Width - 0.5;
+    py = (c[1] / c[3] + 1.0) * 0.5 * this->Height - 0.5;
+    return true;
+  }
+};
+
+/// A vertex in the ray's sheared frame.
+struct Sheared
+{
+  double X, Y, Z;
+};
+
+Sheared Shear(const Ray& ray, const double v[3])
+{
+  const double a[3] = { v[0] - ray.Origin[0], v[1] - ray.Origin[1], v[2] - ray.Origin[2] };
+  return { a[ray.Kx] - ray.Sx * a[ray.Kz], a[ray.Ky] - ray.Sy * a[ray.Kz], ray.Sz * a[ray.Kz] };
+}
+
+/// Edge function of the directed edge a -> b at the ray (the origin of the
+/// sheared frame), and its sign under the symbolic perturbation (e, e^2).
+double EdgeFunction(const Sheared& a, const Sheared& b)
+{
+  return a.X * b.Y - a.Y * b.X;
+}
+
+int PerturbedSign(const Sheared& a, const Sheared& b, double e0)
+{
+  if (e0 != 0.0)
+  {
+    return e0 > 0.0 ? 1 : -1;
+  }
+  const double first = a.Y - b.Y; // coefficient of e
+  if (first != 0.0)
+  {
+    return first > 0.0 ? 1 : -1;
+  }
+  const double second = b.X - a.X; // coefficient of e^2
+  if (second != 0.0)
+  {
+    return second > 0.0 ? 1 : -1;
+  }
+  return 0;
+}
+
+/// Watertight ray-triangle test; on a hit, the distance along the ray and
+/// the barycentric weights.
+bool Intersect(const Ray& ray, const double* v0, const double* v1, const double* v2,
+  double& t, double w[3])
+{
+  const Sheared a = Shear(ray, v0), b = Shear(ray, v1), c = Shear(ray, v2);
+  const double u = EdgeFunction(b, c), v = EdgeFunction(c, a), x = EdgeFunction(a, b);
+  const int su = PerturbedSign(b, c, u), sv = PerturbedSign(c, a, v), sx = PerturbedSign(a, b, x);
+  if (su == 0 || su != sv || sv != sx)
+  {
+    return false;
+  }
+  const double det = u + v + x;
+  if (det == 0.0)
+  {
+    return false; // the ray lies in the triangle's plane
+  }
+  t = (u * a.Z + v * b.Z + x * c.Z) / det;
+  w[0] = u / det;
+  w[1] = v / det;
+  w[2] = x / det;
+  return t > 0.0;
+}
+
+struct PixelHit
+{
+  vtkIdType Pixel;
+  vtkHAVSReferenceRenderer::Fragment Hit;
+};
+}
+
+//------------------------------------------------------------------------------
+vtkHAVSReferenceRenderer::vtkHAVSReferenceRenderer()
+{
+  this->Image->SetNumberOfComponents(4);
+}
+
+vtkHAVSReferenceRenderer::~vtkHAVSReferenceRenderer() = default;
+
+void vtkHAVSReferenceRenderer::SetInputData(vtkUnstructuredGrid* grid)
+{
+  this->Input = grid;
+  this->Modified();
+}
+
+void vtkHAVSReferenceRenderer::SetProperty(vtkVolumeProperty* property)
+{
+  this->Property = property;
+  this->Modified();
+}
+
+void vtkHAVSReferenceRenderer::SetCamera(vtkCamera* camera)
+{
+  this->Camera = camera;
+  this->Modified();
+}
+
+void vtkHAVSReferenceRenderer::SetVolumeMatrix(vtkMatrix4x4* matrix)
+{
+  if (matrix)
+  {
+    this->VolumeMatrix->DeepCopy(matrix);
+  }
+  else
+  {
+    this->VolumeMatrix->Identity();
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSReferenceRenderer::ReportProgress(double progress)
+{
+  this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSReferenceRenderer::ComputeFragments()
+{
+  this->Fragments.clear();
+  this->PixelStart.assign(1, 0);
+  if (!this->Input || !this->Camera || this->Size[0] <= 0 || this->Size[1] <= 0)
+  {
+    vtkErrorMacro("Needs an input grid, a camera and a positive size.");
+    return false;
+  }
+  vtkDataArray* scalars = this->Input->GetPointData()->GetScalars();
+  if (!scalars)
+  {
+    vtkErrorMacro("The input has no point scalars.");
+    return false;
+  }
+  if (!this->Faces->Build(this->Input))
+  {
+    return false;
+  }
+  this->ReportProgress(0.0);
+
+  // World-space points and finite scalars (NaN/Inf -> the lowest finite value).
+  const vtkIdType numPoints = this->Input->GetNumberOfPoints();
+  std::vector<double> world(3 * numPoints);
+  std::vector<double> values(numPoints);
+  double range[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest() };
+  for (vtkIdType p = 0; p < numPoints; ++p)
+  {
+    double x[4] = { 0, 0, 0, 1 }, y[4];
+    this->Input->GetPoint(p, x);
+    this->VolumeMatrix->MultiplyPoint(x, y);
+    for (int k = 0; k < 3; ++k)
+    {
+      world[3 * p + k] = y[k] / y[3];
+    }
+    values[p] = scalars->GetComponent(p, 0);
+    if (std::isfinite(values[p]))
+    {
+      range[0] = std::min(range[0], values[p]);
+      range[1] = std::max(range[1], values[p]);
+    }
+  }
+  if (range[0] > range[1])
+  {
+    range[0] = range[1] = 0.0;
+  }
+  for (double& v : values)
+  {
+    v = std::isfinite(v) ? v : range[0];
+  }
+  this->ScalarRange[0] = range[0];
+  this->ScalarRange[1] = range[1];
+
+  // The camera, as the mapper sees it for an image of this size.
+  RayCamera cam;
+  cam.Width = this->Size[0];
+  cam.Height = this->Size[1];
+  vtkNew<vtkMatrix4x4> worldToClip, clipToWorld;
+  worldToClip->DeepCopy(this->Camera->GetCompositeProjectionTransformMatrix(
+    static_cast<double>(this->Size[0]) / this->Size[1], -1, 1));
+  vtkMatrix4x4::Invert(worldToClip, clipToWorld);
+  vtkMatrix4x4::DeepCopy(cam.WorldToClip, worldToClip);
+  vtkMatrix4x4::DeepCopy(cam.ClipToWorld, clipToWorld);
+  this->Camera->GetPosition(cam.Eye);
+  this->Camera->GetDirectionOfProjection(cam.DirectionOfProjection);
+  cam.Parallel = this->Camera->GetParallelProjection() != 0;
+  const bool mirrored = this->VolumeMatrix->Determinant() < 0.0;
+
+  // Face-driven traversal: each face tests the pixel centres of its screen box.
+  const std::vector<uint32_t>& faceVertices = this->Faces->GetFaceVertices();
+  const std::vector<uint8_t>& boundary = this->Faces->GetBoundaryFlags();
+  vtkSMPThreadLocal<std::vector<PixelHit>> localHits;
+  const int width = this->Size[0], height = this->Size[1];
+  vtkSMPTools::For(0, this->Faces->GetNumberOfFaces(), [&](vtkIdType begin, vtkIdType end) {
+    std::vector<PixelHit>& hits = localHits.Local();
+    for (vtkIdType f = begin; f < end; ++f)
+    {
+      const uint32_t* ids = &faceVertices[3 * f];
+      const double* v[3] = { &world[3 * ids[0]], &world[3 * ids[1]], &world[3 * ids[2]] };
+      int box[4] = { 0, width - 1, 0, height - 1 };
+      double lo[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max() };
+      double hi[2] = { std::numeric_limits<double>::lowest(),
+        std::numeric_limits<double>::lowest() };
+      bool projected = true;
+      for (int k = 0; k < 3 && projected; ++k)
+      {
+        double px, py;
+        projected = cam.Project(v[k], px, py);
+        lo[0] = std::min(lo[0], px);
+        lo[1] = std::min(lo[1], py);
+        hi[0] = std::max(hi[0], px);
+        hi[1] = std::max(hi[1], py);
+      }
+      if (projected)
+      {
+        // One pixel of margin: the exact test decides.
+        box[0] = std::max(box[0], static_cast<int>(std::floor(lo[0])) - 1);
+        box[1] = std::min(box[1], static_cast<int>(std::ceil(hi[0])) + 1);
+        box[2] = std::max(box[2], static_cast<int>(std::floor(lo[1])) - 1);
+        box[3] = std::min(box[3], static_cast<int>(std::ceil(hi[1])) + 1);
+      }
+      double normal[3], e1[3], e2[3];
+      vtkMath::Subtract(v[1], v[0], e1);
+      vtkMath::Subtract(v[2], v[0], e2);
+      vtkMath::Cross(e1, e2, normal);
+      if (mirrored)
+      {
+        vtkMath::MultiplyScalar(normal, -1.0);
+      }
+      for (int j = box[2]; j <= box[3]; ++j)
+      {
+        for (int i = box[0]; i <= box[1]; ++i)
+        {
+          const Ray ray = cam.PixelRay(i, j);
+          double t, w[3];
+          if (!Intersect(ray, v[0], v[1], v[2], t, w))
+          {
+            continue;
+          }
+          PixelHit hit;
+          hit.Pixel = static_cast<vtkIdType>(j) * width + i;
+          hit.Hit.Distance = ray.Offset + t;
+          hit.Hit.Scalar = w[0] * values[ids[0]] + w[1] * values[ids[1]] + w[2] * values[ids[2]];
+          hit.Hit.Face = static_cast<uint32_t>(f);
+          hit.Hit.Boundary = boundary[f] != 0;
+          hit.Hit.Exit = hit.Hit.Boundary && vtkMath::Dot(normal, ray.Direction) > 0.0;
+          hits.push_back(hit);
+        }
+      }
+    }
+  });
+  this->ReportProgress(0.5);
+
+  // Per-pixel lists (counting sort by pixel), each sorted by distance.
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  this->PixelStart.assign(pixels + 1, 0);
+  for (auto& hits : localHits)
+  {
+    for (const PixelHit& h : hits)
+    {
+      ++this->PixelStart[h.Pixel + 1];
+    }
+  }
+  for (vtkIdType p = 0; p < pixels; ++p)
+  {
+    this->PixelStart[p + 1] += this->PixelStart[p];
+  }
+  this->Fragments.resize(this->PixelStart[pixels]);
+  std::vector<vtkIdType> cursor(this->PixelStart.begin(), this->PixelStart.end() - 1);
+  for (auto& hits : localHits)
+  {
+    for (const PixelHit& h : hits)
+    {
+      this->Fragments[cursor[h.Pixel]++] = h.Hit;
+    }
+    std::vector<PixelHit>().swap(hits);
+  }
+  vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType p = begin; p < end; ++p)
+    {
+      std::sort(this->Fragments.begin() + this->PixelStart[p],
+        this->Fragments.begin() + this->PixelStart[p + 1],
+        [](const Fragment& a, const Fragment& b) {
+          return a.Distance < b.Distance || (a.Distance == b.Distance && a.Face < b.Face);
+        });
+    }
+  });
+  this->ReportProgress(1.0);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSReferenceRenderer::IntegrateSegmentExact(
+  vtkVolumeProperty* property, double sf, double sb, double length, double rgba[4])
+{
+  // Split at every node of the opacity and colour functions between sf and sb.
+  std::vector<double> cuts = { 0.0, 1.0 };
+  if (sf != sb)
+  {
+    const double lo = std::min(sf, sb), hi = std::max(sf, sb);
+    auto addNode = [&](double x) {
+      if (x > lo && x < hi)
+      {
+        cuts.push_back((x - sf) / (sb - sf));
+      }
+    };
+    vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+    double node[6];
+    for (int i = 0; i < opacity->GetSize(); ++i)
+    {
+      opacity->GetNodeValue(i, node);
+      addNode(node[0]);
+    }
+    if (property->GetColorChannels(0) == 1)
+    {
+      vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(0);
+      for (int i = 0; i < gray->GetSize(); ++i)
+      {
+        gray->GetNodeValue(i, node);
+        addNode(node[0]);
+      }
+    }
+    else
+    {
+      vtkColorTransferFunction* color = property->GetRGBTransferFunction(0);
+      for (int i = 0; i < color->GetSize(); ++i)
+      {
+        color->GetNodeValue(i, node);
+        addNode(node[0]);
+      }
+    }
+    std::sort(cuts.begin(), cuts.end());
+  }
+  double color[3] = { 0, 0, 0 }, transmittance = 1.0;
+  for (size_t i = 0; i + 1 < cuts.size(); ++i)
+  {
+    const double a = cuts[i], b = cuts[i + 1];
+    if (b <= a)
+    {
+      continue;
+    }
+    double piece[4];
+    vtkHAVSPreIntegrationTable::IntegrateSegment(
+      property, 0, sf + (sb - sf) * a, sf + (sb - sf) * b, length * (b - a), piece);
+    for (int c = 0; c < 3; ++c)
+    {
+      color[c] += transmittance * piece[c];
+    }
+    transmittance *= 1.0 - piece[3];
+  }
+  rgba[0] = color[0];
+  rgba[1] = color[1];
+  rgba[2] = color[2];
+  rgba[3] = 1.0 - transmittance;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSReferenceRenderer::IntegrateRay(
+  vtkVolumeProperty* property, const Fragment* begin, const Fragment* end, double rgba[4])
+{
+  double color[3] = { 0, 0, 0 }, transmittance = 1.0;
+  bool inside = false;
+  const Fragment* group = begin;
+  while (group != end)
+  {
+    // Fragments at the same distance: a crossing of a shared edge or vertex
+    // (once, by the tie-break), or a graze (an even number of boundary hits).
+    const Fragment* next = group;
+    int boundaryHits = 0;
+    while (next != end && next->Distance == group->Distance)
+    {
+      boundaryHits += next->Boundary ? 1 : 0;
+      ++next;
+    }
+    if (boundaryHits % 2 == 1)
+    {
+      inside = !inside;
+    }
+    if (inside && next != end)
+    {
+      double segment[4];
+      IntegrateSegmentExact(
+        property, group->Scalar, next->Scalar, next->Distance - group->Distance, segment);
+      for (int c = 0; c < 3; ++c)
+      {
+        color[c] += transmittance * segment[c];
+      }
+      transmittance *= 1.0 - segment[3];
+    }
+    group = next;
+  }
+  rgba[0] = color[0];
+  rgba[1] = color[1];
+  rgba[2] = color[2];
+  rgba[3] = 1.0 - transmittance;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSReferenceRenderer::Render()
+{
+  if (!this->Property)
+  {
+    vtkErrorMacro("No volume property.");
+    return false;
+  }
+  if (!this->ComputeFragments())
+  {
+    return false;
+  }
+  const vtkIdType pixels = static_cast<vtkIdType>(this->Size[0]) * this->Size[1];
+  this->Image->SetNumberOfComponents(4);
+  this->Image->SetNumberOfTuples(pixels);
+  float* out = this->Image->GetPointer(0);
+  // VTK's function objects are not promised to be thread-safe: one copy of
+  // the property per thread, made one at a time (DeepCopy creates missing
+  // functions in the source).
+  vtkSMPThreadLocal<vtkSmartPointer<vtkVolumeProperty>> localProperty;
+  std::mutex copying;
+  vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
+    vtkSmartPointer<vtkVolumeProperty>& property = localProperty.Local();
+    if (!property)
+    {
+      std::lock_guard<std::mutex> lock(copying);
+      property = vtkSmartPointer<vtkVolumeProperty>::New();
+      property->DeepCopy(this->Property);
+    }
+    for (vtkIdType p = begin; p < end; ++p)
+    {
+      double rgba[4];
+      IntegrateRay(property, this->GetPixelFragmentsBegin(p), this->GetPixelFragmentsEnd(p), rgba);
+      for (int c = 0; c < 4; ++c)
+      {
+        out[4 * p + c] = static_cast<float>(rgba[c]);
+      }
+    }
+  });
+  this->Image->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+  os << indent << "Fragments: " << this->Fragments.size() << "\n";
+}
