@@ -155,6 +155,12 @@ vtkHAVSFaceSorter* vtkHAVSVolumeMapper::GetFaceSorter()
 }
 
 //------------------------------------------------------------------------------
+vtkHAVSPreIntegrationTable* vtkHAVSVolumeMapper::GetPreIntegrationTable()
+{
+  return this->Internal->Table;
+}
+
+//------------------------------------------------------------------------------
 bool vtkHAVSVolumeMapper::UpdateMesh(vtkVolume* volume)
 {
   Internals& in = *this->Internal;

@@ -183,9 +183,16 @@ public:
   ///@}
 
   /**
-   * The per-frame centroid sorter (for its statistics and test aids).
+   * The per-frame centroid sorter (its order is the draw order of the last
+   * frame; statistics and test aids).
    */
   vtkHAVSFaceSorter* GetFaceSorter();
+
+  /**
+   * The pre-integrated table of the last frame (e.g. for the software
+   * k-buffer, which must sample the same table).
+   */
+  vtkHAVSPreIntegrationTable* GetPreIntegrationTable();
 
   void Render(vtkRenderer* renderer, vtkVolume* volume) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;

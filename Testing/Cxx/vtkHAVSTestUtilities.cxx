@@ -255,6 +255,17 @@ void WritePNG(const std::vector<float>& rgba, int width, int height, const std::
   writer->Write();
 }
 
+void WriteRGB(vtkUnsignedCharArray* rgb, int width, int height, const std::string& name)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, height, 1);
+  image->GetPointData()->SetScalars(rgb);
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName((OutputDir() + "/" + name).c_str());
+  writer->Write();
+}
+
 std::vector<float> ReadPNG(const std::string& path, int* width, int* height)
 {
   vtkNew<vtkPNGReader> reader;

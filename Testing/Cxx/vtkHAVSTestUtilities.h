@@ -42,6 +42,7 @@ class vtkVolume;
 class vtkVolumeMapper;
 class vtkVolumeProperty;
 class vtkImageData;
+class vtkUnsignedCharArray;
 
 namespace havstest
 {
@@ -85,6 +86,8 @@ ImageDifference Compare(const std::vector<float>& a, const std::vector<float>& b
 
 /// Writes RGBA floats as PNG into the output directory.
 void WritePNG(const std::vector<float>& rgba, int width, int height, const std::string& name);
+/// Writes a 3-component unsigned char image as PNG into the output directory.
+void WriteRGB(vtkUnsignedCharArray* rgb, int width, int height, const std::string& name);
 /// Reads a PNG as RGBA floats; empty on failure.
 std::vector<float> ReadPNG(const std::string& path, int* width, int* height);
 }

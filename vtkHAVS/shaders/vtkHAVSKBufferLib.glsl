@@ -7,7 +7,8 @@
 //             perspective camera, along the direction of projection for a
 //             parallel one), so that the difference of two is a segment length;
 //   code      the scalar in [0, 1]; + 2 when the fragment lies on a boundary
-//             face seen from inside (an exit from the mesh).
+//             face seen from inside (an exit from the mesh), + 4 on a boundary
+//             face seen from outside (an entry).
 // E[0] is the front: the last fragment already composited up to (the ray has
 // been integrated to it). E[1 .. HAVS_K-1] hold fragments still waiting.
 // Each arriving fragment fills an empty slot; when none is left, the nearest
@@ -17,6 +18,12 @@
 //
 // A segment whose front is an exit fragment lies outside the mesh (holes,
 // cavities, gaps between components): it contributes nothing (boundary tagging).
+//
+// Fragments at the same distance (up to float rounding) leave in the order
+// internal, exit, entry: a ray crossing a seam of coincident boundary faces
+// (an exit and an entry at one point, as where a mesh has duplicated points)
+// goes on inside, and a ray leaving through an edge shared by an internal and
+// a boundary face ends outside.
 
 const float HAVS_EMPTY = 3.0e38;     // an empty waiting slot
 const float HAVS_NO_FRONT = -2.0e38; // nothing composited yet
@@ -36,12 +43,20 @@ uniform vec3 havsDirectionOfProjection;
 
 bool havsIsExit(float code)
 {
-  return code > 1.5;
+  return code > 1.5 && code < 3.5;
 }
 
 float havsScalarOf(float code)
 {
-  return code > 1.5 ? code - 2.0 : code;
+  return code > 3.5 ? code - 4.0 : (code > 1.5 ? code - 2.0 : code);
+}
+
+// The order in which fragments leave: distance, ties broken internal < exit
+// < entry (see above); a tie is a difference below float rounding.
+float havsLeaveKey(vec2 e)
+{
+  float rank = e.y > 3.5 ? 2.0 : (e.y > 1.5 ? 1.0 : 0.0);
+  return e.x + rank * 4.0e-6 * abs(e.x);
 }
 
 float havsDistance(vec3 positionRC)
@@ -114,6 +129,7 @@ void havsInsert(inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float opaqueDist
   vec2 leaving = f;
 #if HAVS_K > 1
   int nearest = 0;
+  float leavingKey = havsLeaveKey(f);
   for (int i = 1; i < HAVS_K; ++i)
   {
     if (E[i].x >= HAVS_EMPTY)
@@ -121,9 +137,11 @@ void havsInsert(inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float opaqueDist
       E[i] = f;
       return;
     }
-    if (E[i].x < leaving.x)
+    float key = havsLeaveKey(E[i]);
+    if (key < leavingKey)
     {
       leaving = E[i];
+      leavingKey = key;
       nearest = i;
     }
   }
@@ -141,12 +159,13 @@ void havsFlush(inout vec4 color, inout vec2 E[HAVS_K], float opaqueDistance)
   for (int n = 1; n < HAVS_K; ++n)
   {
     int nearest = 0;
-    float nearestDistance = HAVS_EMPTY;
+    float nearestKey = HAVS_EMPTY;
     for (int i = 1; i < HAVS_K; ++i)
     {
-      if (E[i].x < nearestDistance)
+      float key = E[i].x < HAVS_EMPTY ? havsLeaveKey(E[i]) : HAVS_EMPTY;
+      if (key < nearestKey)
       {
-        nearestDistance = E[i].x;
+        nearestKey = key;
         nearest = i;
       }
     }
@@ -163,9 +182,9 @@ void havsFlush(inout vec4 color, inout vec2 E[HAVS_K], float opaqueDistance)
 vec2 havsFragmentEntry(vec3 positionRC, float scalar, bool boundary)
 {
   float code = clamp(scalar, 0.0, 1.0);
-  if (boundary && !gl_FrontFacing)
+  if (boundary)
   {
-    code += 2.0;
+    code += gl_FrontFacing ? 4.0 : 2.0;
   }
   return vec2(havsDistance(positionRC), code);
 }
@@ -197,6 +216,7 @@ void havsInsertBackToFront(inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float
 {
   vec2 leaving = f;
   int farthest = 0;
+  float leavingKey = havsLeaveKey(f);
   for (int i = 1; i < HAVS_K; ++i)
   {
     if (E[i].x >= HAVS_EMPTY)
@@ -204,9 +224,11 @@ void havsInsertBackToFront(inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float
       E[i] = f;
       return;
     }
-    if (E[i].x > leaving.x)
+    float key = havsLeaveKey(E[i]);
+    if (key > leavingKey)
     {
       leaving = E[i];
+      leavingKey = key;
       farthest = i;
     }
   }
@@ -222,12 +244,13 @@ void havsFlushBackToFront(inout vec4 color, inout vec2 E[HAVS_K], float opaqueDi
   for (int n = 1; n < HAVS_K; ++n)
   {
     int farthest = 0;
-    float farthestDistance = HAVS_NO_FRONT;
+    float farthestKey = HAVS_NO_FRONT;
     for (int i = 1; i < HAVS_K; ++i)
     {
-      if (E[i].x < HAVS_EMPTY && E[i].x > farthestDistance)
+      float key = E[i].x < HAVS_EMPTY ? havsLeaveKey(E[i]) : HAVS_NO_FRONT;
+      if (key > farthestKey)
       {
-        farthestDistance = E[i].x;
+        farthestKey = key;
         farthest = i;
       }
     }
