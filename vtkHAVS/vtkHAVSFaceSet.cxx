@@ -7,53 +7,343 @@
 #include "vtkHAVSFaceSet.h"
 
 #include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
 #include "vtkCellType.h"
-#include "vtkMath.h"
+#include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
-#include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 vtkStandardNewMacro(vtkHAVSFaceSet);
 
 namespace
 {
-/// A face instance: sorted ids (the key), the ids in the cell's order, the
-/// cell's fourth point (to orient it outward).
-struct FaceInstance
-{
-  std::array<uint32_t, 3> Key;
-  std::array<uint32_t, 3> Ids;
-  uint32_t Opposite;
+/// Local point indices of the four faces of a tetrahedron; the last entry is
+/// the point opposite the face.
+constexpr int TetrahedronFaces[4][4] = { { 0, 1, 2, 3 }, { 0, 1, 3, 2 }, { 0, 2, 3, 1 },
+  { 1, 2, 3, 0 } };
 
-  bool operator<(const FaceInstance& other) const { return this->Key < other.Key; }
+enum CellStatus : uint8_t
+{
+  NotATetrahedron,
+  DegenerateTetrahedron,
+  UsedTetrahedron
 };
 
-double Distance(const double a[3], const double b[3])
+/// Every cell as four point ids (meaningful for tetrahedra only) and a status.
+struct CellTable
 {
-  return std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+  std::vector<uint32_t> PointIds;
+  std::vector<uint8_t> Status;
+};
+
+/// What ReadCells found; also the per-thread partial result.
+struct CellCounts
+{
+  vtkIdType Used = 0;
+  vtkIdType Skipped = 0;
+  vtkIdType Degenerate = 0;
+  double LongestEdgeSquared = 0.0;
+};
+
+/// One face of a used tetrahedron, filed under its smallest point id: the two
+/// other ids ascending, and the tetrahedron's fourth point (to orient the face).
+struct FaceUse
+{
+  uint32_t Middle;
+  uint32_t Largest;
+  uint32_t Opposite;
+
+  bool operator<(const FaceUse& other) const
+  {
+    return std::tie(this->Middle, this->Largest, this->Opposite) <
+      std::tie(other.Middle, other.Largest, other.Opposite);
+  }
+  bool SameFace(const FaceUse& other) const
+  {
+    return this->Middle == other.Middle && this->Largest == other.Largest;
+  }
+};
+
+/// The end of the run of uses of `run`'s face in a sorted bucket.
+const FaceUse* EndOfFace(const FaceUse* run, const FaceUse* last)
+{
+  const FaceUse* end = run + 1;
+  while (end != last && end->SameFace(*run))
+  {
+    ++end;
+  }
+  return end;
+}
+
+/// Face uses grouped by smallest point id: bucket p is Uses[Start[p], Start[p + 1]).
+struct FaceUseBuckets
+{
+  std::vector<vtkIdType> Start;
+  std::vector<FaceUse> Uses;
+};
+
+/// Boundary and non-manifold faces, also per thread.
+struct FaceCounts
+{
+  vtkIdType Boundary = 0;
+  vtkIdType NonManifold = 0;
+};
+
+/// Face `face` of the tetrahedron `ids`: its ids ascending, then the opposite point.
+void SortedFace(const uint32_t* ids, int face, uint32_t out[4])
+{
+  const int* local = TetrahedronFaces[face];
+  uint32_t a = ids[local[0]], b = ids[local[1]], c = ids[local[2]];
+  if (a > b)
+  {
+    std::swap(a, b);
+  }
+  if (b > c)
+  {
+    std::swap(b, c);
+  }
+  if (a > b)
+  {
+    std::swap(a, b);
+  }
+  out[0] = a;
+  out[1] = b;
+  out[2] = c;
+  out[3] = ids[local[3]];
+}
+
+/// ((x1 - x0) x (x2 - x0)) . (x3 - x0): six times the signed volume of the
+/// tetrahedron x0 x1 x2 x3, positive when x3 lies on the side the normal of
+/// the triangle x0 x1 x2 points to.
+double TripleProduct(const double* x0, const double* x1, const double* x2, const double* x3)
+{
+  double a[3], b[3], d[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    a[k] = x1[k] - x0[k];
+    b[k] = x2[k] - x0[k];
+    d[k] = x3[k] - x0[k];
+  }
+  return d[0] * (a[1] * b[2] - a[2] * b[1]) + d[1] * (a[2] * b[0] - a[0] * b[2]) +
+    d[2] * (a[0] * b[1] - a[1] * b[0]);
+}
+
+/// The point coordinates as doubles, three per point.
+std::vector<double> CopyCoordinates(vtkPoints* points)
+{
+  vtkDataArray* data = points->GetData();
+  std::vector<double> coordinates(3 * static_cast<size_t>(points->GetNumberOfPoints()));
+  vtkSMPTools::For(0, points->GetNumberOfPoints(), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      data->GetTuple(i, &coordinates[3 * i]);
+    }
+  });
+  return coordinates;
+}
+
+/// Fills a CellTable from the grid's cells, whatever the storage type of the
+/// cell array: tetrahedra with repeated points or |volume| <= 1e-12 *
+/// (longest edge)^3 are degenerate.
+struct ReadCells
+{
+  template <typename CellStateT>
+  void operator()(CellStateT& state, const unsigned char* types, const double* coordinates,
+    CellTable& table, vtkSMPThreadLocal<CellCounts>& counts) const
+  {
+    using ValueType = typename CellStateT::ValueType;
+    const ValueType* offsets = state.GetOffsets()->GetPointer(0);
+    const ValueType* connectivity = state.GetConnectivity()->GetPointer(0);
+    vtkSMPTools::For(0, state.GetNumberOfCells(), [&](vtkIdType begin, vtkIdType end) {
+      CellCounts& local = counts.Local();
+      for (vtkIdType cell = begin; cell < end; ++cell)
+      {
+        const ValueType first = offsets[cell];
+        if (types[cell] != VTK_TETRA || offsets[cell + 1] - first != 4)
+        {
+          table.Status[cell] = NotATetrahedron;
+          ++local.Skipped;
+          continue;
+        }
+        uint32_t* ids = &table.PointIds[4 * cell];
+        const double* x[4];
+        for (int i = 0; i < 4; ++i)
+        {
+          ids[i] = static_cast<uint32_t>(connectivity[first + i]);
+          x[i] = coordinates + 3 * static_cast<size_t>(ids[i]);
+        }
+        double longestSquared = 0.0;
+        for (int i = 0; i < 4; ++i)
+        {
+          for (int j = i + 1; j < 4; ++j)
+          {
+            const double d[3] = { x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2] };
+            longestSquared = std::max(longestSquared, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+          }
+        }
+        const double sixVolume = TripleProduct(x[0], x[1], x[2], x[3]);
+        const double longest = std::sqrt(longestSquared);
+        const bool repeated = ids[0] == ids[1] || ids[0] == ids[2] || ids[0] == ids[3] ||
+          ids[1] == ids[2] || ids[1] == ids[3] || ids[2] == ids[3];
+        // Written so that a NaN volume is degenerate too.
+        if (repeated || !(std::fabs(sixVolume) / 6.0 > 1e-12 * longest * longest * longest))
+        {
+          table.Status[cell] = DegenerateTetrahedron;
+          ++local.Degenerate;
+          continue;
+        }
+        table.Status[cell] = UsedTetrahedron;
+        ++local.Used;
+        local.LongestEdgeSquared = std::max(local.LongestEdgeSquared, longestSquared);
+      }
+    });
+  }
+};
+
+/// Files the four faces of every used tetrahedron under their smallest point id
+/// (a counting sort: count per bucket, prefix sum, scatter).
+FaceUseBuckets FileFaceUses(const CellTable& table, vtkIdType numberOfPoints)
+{
+  const vtkIdType numberOfCells = static_cast<vtkIdType>(table.Status.size());
+  std::vector<std::atomic<vtkIdType>> cursor(static_cast<size_t>(numberOfPoints));
+  auto forEachFaceUse = [&](auto&& visit) {
+    vtkSMPTools::For(0, numberOfCells, [&](vtkIdType begin, vtkIdType end) {
+      uint32_t face[4];
+      for (vtkIdType cell = begin; cell < end; ++cell)
+      {
+        if (table.Status[cell] != UsedTetrahedron)
+        {
+          continue;
+        }
+        for (int f = 0; f < 4; ++f)
+        {
+          SortedFace(&table.PointIds[4 * cell], f, face);
+          visit(face);
+        }
+      }
+    });
+  };
+
+  forEachFaceUse(
+    [&](const uint32_t* face) { cursor[face[0]].fetch_add(1, std::memory_order_relaxed); });
+  FaceUseBuckets buckets;
+  buckets.Start.resize(static_cast<size_t>(numberOfPoints) + 1);
+  buckets.Start[0] = 0;
+  for (vtkIdType p = 0; p < numberOfPoints; ++p)
+  {
+    buckets.Start[p + 1] = buckets.Start[p] + cursor[p].load(std::memory_order_relaxed);
+    cursor[p].store(buckets.Start[p], std::memory_order_relaxed);
+  }
+  buckets.Uses.resize(static_cast<size_t>(buckets.Start[numberOfPoints]));
+  forEachFaceUse([&](const uint32_t* face) {
+    const vtkIdType at = cursor[face[0]].fetch_add(1, std::memory_order_relaxed);
+    buckets.Uses[at] = FaceUse{ face[1], face[2], face[3] };
+  });
+  return buckets;
+}
+
+/// Sorts every bucket (so that equal faces are adjacent and the order does not
+/// depend on the scatter's thread interleaving) and fills faceStart: the faces
+/// of bucket p are numbered faceStart[p] .. faceStart[p + 1] - 1.
+FaceCounts SortBuckets(FaceUseBuckets& buckets, std::vector<vtkIdType>& faceStart)
+{
+  const vtkIdType numberOfBuckets = static_cast<vtkIdType>(buckets.Start.size()) - 1;
+  faceStart.assign(buckets.Start.size(), 0);
+  vtkSMPThreadLocal<FaceCounts> counts;
+  vtkSMPTools::For(0, numberOfBuckets, [&](vtkIdType begin, vtkIdType end) {
+    FaceCounts& local = counts.Local();
+    for (vtkIdType p = begin; p < end; ++p)
+    {
+      FaceUse* first = buckets.Uses.data() + buckets.Start[p];
+      FaceUse* last = buckets.Uses.data() + buckets.Start[p + 1];
+      std::sort(first, last);
+      vtkIdType faces = 0;
+      for (const FaceUse* run = first; run != last;)
+      {
+        const FaceUse* runEnd = EndOfFace(run, last);
+        const auto uses = runEnd - run;
+        local.Boundary += uses == 1 ? 1 : 0;
+        local.NonManifold += uses > 2 ? 1 : 0;
+        ++faces;
+        run = runEnd;
+      }
+      faceStart[p + 1] = faces;
+    }
+  });
+  for (vtkIdType p = 0; p < numberOfBuckets; ++p)
+  {
+    faceStart[p + 1] += faceStart[p];
+  }
+  FaceCounts total;
+  for (const FaceCounts& local : counts)
+  {
+    total.Boundary += local.Boundary;
+    total.NonManifold += local.NonManifold;
+  }
+  return total;
+}
+
+/// Writes one face per run of the sorted buckets: ids (boundary faces wound
+/// away from their tetrahedron's fourth point, internal ones ascending),
+/// boundary flag and centroid minus `origin`. The arrays are already sized.
+void WriteFaces(const FaceUseBuckets& buckets, const std::vector<vtkIdType>& faceStart,
+  const std::vector<double>& coordinates, const double origin[3], std::vector<uint32_t>& vertices,
+  std::vector<uint8_t>& boundaryFlags, std::vector<float>& centroids)
+{
+  const vtkIdType numberOfBuckets = static_cast<vtkIdType>(buckets.Start.size()) - 1;
+  auto point = [&](uint32_t id) { return &coordinates[3 * static_cast<size_t>(id)]; };
+  vtkSMPTools::For(0, numberOfBuckets, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType p = begin; p < end; ++p)
+    {
+      const FaceUse* run = buckets.Uses.data() + buckets.Start[p];
+      const FaceUse* last = buckets.Uses.data() + buckets.Start[p + 1];
+      for (vtkIdType face = faceStart[p]; run != last; ++face)
+      {
+        const FaceUse* runEnd = EndOfFace(run, last);
+        uint32_t ids[3] = { static_cast<uint32_t>(p), run->Middle, run->Largest };
+        const bool boundary = runEnd - run == 1;
+        // Outward: (x1 - x0) x (x2 - x0) must point away from the fourth point.
+        if (boundary &&
+          TripleProduct(point(ids[0]), point(ids[1]), point(ids[2]), point(run->Opposite)) > 0.0)
+        {
+          std::swap(ids[1], ids[2]);
+        }
+        boundaryFlags[face] = boundary ? 1 : 0;
+        for (int k = 0; k < 3; ++k)
+        {
+          vertices[3 * face + k] = ids[k];
+          centroids[3 * face + k] = static_cast<float>(
+            (point(ids[0])[k] + point(ids[1])[k] + point(ids[2])[k]) / 3.0 - origin[k]);
+        }
+        run = runEnd;
+      }
+    }
+  });
 }
 }
 
 //------------------------------------------------------------------------------
 void vtkHAVSFaceSet::Clear()
 {
-  this->Vertices.clear();
-  this->Boundary.clear();
+  this->FaceVertices.clear();
+  this->BoundaryFlags.clear();
   this->Centroids.clear();
   this->NumberOfBoundaryFaces = 0;
+  this->NumberOfNonManifoldFaces = 0;
   this->NumberOfTetrahedra = 0;
   this->NumberOfSkippedCells = 0;
   this->NumberOfDegenerateTetrahedra = 0;
-  this->NumberOfNonManifoldFaces = 0;
   this->LongestEdge = 0.0;
-  this->CentroidOrigin[0] = this->CentroidOrigin[1] = this->CentroidOrigin[2] = 0.0;
+  std::fill(this->CentroidOrigin, this->CentroidOrigin + 3, 0.0);
 }
 
 //------------------------------------------------------------------------------
@@ -61,158 +351,76 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
 {
   this->Clear();
   this->BuildTime.Modified();
-  if (!grid || !grid->GetPoints() || grid->GetNumberOfPoints() == 0)
+  if (!grid)
   {
-    vtkErrorMacro("No grid or no points.");
-    return false;
-  }
-  if (grid->GetNumberOfPoints() >= static_cast<vtkIdType>(std::numeric_limits<uint32_t>::max()))
-  {
-    vtkErrorMacro("Too many points (" << grid->GetNumberOfPoints() << ") for 32-bit ids.");
+    vtkErrorMacro("Build: no grid.");
     return false;
   }
   vtkPoints* points = grid->GetPoints();
-  double bounds[6];
-  points->GetBounds(bounds);
-  for (int i = 0; i < 3; ++i)
+  const vtkIdType numberOfPoints = points ? points->GetNumberOfPoints() : 0;
+  if (numberOfPoints == 0)
   {
-    this->CentroidOrigin[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
+    vtkErrorMacro("Build: the grid has no points.");
+    return false;
   }
-  const double* origin = this->CentroidOrigin;
-
-  // Face instances of the usable tetrahedra.
-  std::vector<FaceInstance> instances;
-  instances.reserve(4 * static_cast<size_t>(grid->GetNumberOfCells()));
-  static const int faceOfTet[4][4] = { { 0, 1, 2, 3 }, { 0, 1, 3, 2 }, { 0, 2, 3, 1 },
-    { 1, 2, 3, 0 } };
-  auto cells = vtk::TakeSmartPointer(grid->GetCells()->NewIterator());
-  vtkIdType cellId = 0;
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++cellId)
+  if (static_cast<uint64_t>(numberOfPoints) > std::numeric_limits<uint32_t>::max())
   {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    cells->GetCurrentCell(npts, pts);
-    if (grid->GetCellType(cellId) != VTK_TETRA || npts != 4)
-    {
-      ++this->NumberOfSkippedCells;
-      continue;
-    }
-    double x[4][3];
-    for (int i = 0; i < 4; ++i)
-    {
-      points->GetPoint(pts[i], x[i]);
-    }
-    double longest = 0.0;
-    for (int i = 0; i < 4; ++i)
-    {
-      for (int j = i + 1; j < 4; ++j)
-      {
-        longest = std::max(longest, Distance(x[i], x[j]));
-      }
-    }
-    double e1[3], e2[3], e3[3], c[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      e1[k] = x[1][k] - x[0][k];
-      e2[k] = x[2][k] - x[0][k];
-      e3[k] = x[3][k] - x[0][k];
-    }
-    vtkMath::Cross(e1, e2, c);
-    const double volume6 = vtkMath::Dot(c, e3);
-    const bool repeated = pts[0] == pts[1] || pts[0] == pts[2] || pts[0] == pts[3] ||
-      pts[1] == pts[2] || pts[1] == pts[3] || pts[2] == pts[3];
-    if (repeated || !(std::fabs(volume6) / 6.0 > 1e-12 * longest * longest * longest))
-    {
-      ++this->NumberOfDegenerateTetrahedra;
-      continue;
-    }
-    ++this->NumberOfTetrahedra;
-    this->LongestEdge = std::max(this->LongestEdge, longest);
-    for (const auto& f : faceOfTet)
-    {
-      FaceInstance inst;
-      inst.Ids = { static_cast<uint32_t>(pts[f[0]]), static_cast<uint32_t>(pts[f[1]]),
-        static_cast<uint32_t>(pts[f[2]]) };
-      inst.Key = inst.Ids;
-      std::sort(inst.Key.begin(), inst.Key.end());
-      inst.Opposite = static_cast<uint32_t>(pts[f[3]]);
-      instances.push_back(inst);
-    }
-  }
-  if (this->NumberOfTetrahedra == 0)
-  {
-    vtkErrorMacro("No usable tetrahedra (" << this->NumberOfSkippedCells << " other cells, "
-                                           << this->NumberOfDegenerateTetrahedra
-                                           << " degenerate tetrahedra).");
-    const vtkIdType skipped = this->NumberOfSkippedCells;
-    const vtkIdType degenerate = this->NumberOfDegenerateTetrahedra;
-    this->Clear();
-    this->NumberOfSkippedCells = skipped;
-    this->NumberOfDegenerateTetrahedra = degenerate;
+    vtkErrorMacro("Build: " << numberOfPoints << " points do not fit 32-bit point ids.");
     return false;
   }
 
-  vtkSMPTools::Sort(instances.begin(), instances.end());
-
-  // Runs of equal keys are one face.
-  std::vector<size_t> runStarts;
-  runStarts.reserve(instances.size() / 2 + 1);
-  for (size_t i = 0; i < instances.size(); ++i)
+  // The cells: which are usable tetrahedra.
+  const vtkIdType numberOfCells = grid->GetNumberOfCells();
+  const std::vector<double> coordinates = CopyCoordinates(points);
+  CellTable table;
+  CellCounts cells;
+  if (numberOfCells > 0)
   {
-    if (i == 0 || instances[i].Key != instances[i - 1].Key)
+    table.PointIds.resize(4 * static_cast<size_t>(numberOfCells));
+    table.Status.resize(static_cast<size_t>(numberOfCells));
+    vtkSMPThreadLocal<CellCounts> counts;
+    grid->GetCells()->Visit(ReadCells{}, grid->GetCellTypesArray()->GetPointer(0),
+      coordinates.data(), table, counts);
+    for (const CellCounts& local : counts)
     {
-      runStarts.push_back(i);
+      cells.Used += local.Used;
+      cells.Skipped += local.Skipped;
+      cells.Degenerate += local.Degenerate;
+      cells.LongestEdgeSquared = std::max(cells.LongestEdgeSquared, local.LongestEdgeSquared);
     }
   }
-  const size_t numFaces = runStarts.size();
-  runStarts.push_back(instances.size());
-  this->Vertices.resize(3 * numFaces);
-  this->Boundary.resize(numFaces);
-  this->Centroids.resize(3 * numFaces);
-
-  vtkSMPTools::For(0, static_cast<vtkIdType>(numFaces), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType f = begin; f < end; ++f)
-    {
-      const FaceInstance& inst = instances[runStarts[f]];
-      const size_t uses = runStarts[f + 1] - runStarts[f];
-      std::array<uint32_t, 3> ids = inst.Ids;
-      double p[3][3], o[3];
-      for (int i = 0; i < 3; ++i)
-      {
-        points->GetPoint(ids[i], p[i]);
-      }
-      if (uses == 1)
-      {
-        // Outward: the normal must point away from the opposite vertex.
-        points->GetPoint(inst.Opposite, o);
-        double a[3], b[3], n[3], d[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          a[k] = p[1][k] - p[0][k];
-          b[k] = p[2][k] - p[0][k];
-          d[k] = o[k] - p[0][k];
-        }
-        vtkMath::Cross(a, b, n);
-        if (vtkMath::Dot(n, d) > 0.0)
-        {
-          std::swap(ids[1], ids[2]);
-        }
-      }
-      this->Boundary[f] = uses == 1 ? 1 : 0;
-      for (int i = 0; i < 3; ++i)
-      {
-        this->Vertices[3 * f + i] = ids[i];
-        this->Centroids[3 * f + i] =
-          static_cast<float>((p[0][i] + p[1][i] + p[2][i]) / 3.0 - origin[i]);
-      }
-    }
-  });
-  for (size_t f = 0; f < numFaces; ++f)
+  this->NumberOfSkippedCells = cells.Skipped;
+  this->NumberOfDegenerateTetrahedra = cells.Degenerate;
+  if (cells.Used == 0)
   {
-    const size_t uses = runStarts[f + 1] - runStarts[f];
-    this->NumberOfBoundaryFaces += uses == 1 ? 1 : 0;
-    this->NumberOfNonManifoldFaces += uses > 2 ? 1 : 0;
+    vtkErrorMacro("Build: no usable tetrahedra (" << numberOfCells << " cells, "
+                                                  << cells.Skipped << " not tetrahedra, "
+                                                  << cells.Degenerate << " degenerate).");
+    return false;
   }
+  this->NumberOfTetrahedra = cells.Used;
+  this->LongestEdge = std::sqrt(cells.LongestEdgeSquared);
+
+  // The unique faces: equal runs of the sorted buckets.
+  FaceUseBuckets buckets = FileFaceUses(table, numberOfPoints);
+  std::vector<vtkIdType> faceStart;
+  const FaceCounts faceCounts = SortBuckets(buckets, faceStart);
+  this->NumberOfBoundaryFaces = faceCounts.Boundary;
+  this->NumberOfNonManifoldFaces = faceCounts.NonManifold;
+  const size_t numberOfFaces = static_cast<size_t>(faceStart.back());
+  this->FaceVertices.resize(3 * numberOfFaces);
+  this->BoundaryFlags.resize(numberOfFaces);
+  this->Centroids.resize(3 * numberOfFaces);
+
+  double bounds[6];
+  points->GetBounds(bounds);
+  for (int k = 0; k < 3; ++k)
+  {
+    this->CentroidOrigin[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
+  }
+
+  WriteFaces(buckets, faceStart, coordinates, this->CentroidOrigin, this->FaceVertices,
+    this->BoundaryFlags, this->Centroids);
   return true;
 }
 
@@ -220,10 +428,13 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
 void vtkHAVSFaceSet::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Faces: " << this->GetNumberOfFaces() << " (" << this->NumberOfBoundaryFaces
-     << " boundary, " << this->NumberOfNonManifoldFaces << " non-manifold)\n";
-  os << indent << "Tetrahedra: " << this->NumberOfTetrahedra << " (skipped cells "
-     << this->NumberOfSkippedCells << ", degenerate " << this->NumberOfDegenerateTetrahedra
-     << ")\n";
+  os << indent << "NumberOfFaces: " << this->GetNumberOfFaces() << "\n";
+  os << indent << "NumberOfBoundaryFaces: " << this->NumberOfBoundaryFaces << "\n";
+  os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
+  os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
+  os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";
+  os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
   os << indent << "LongestEdge: " << this->LongestEdge << "\n";
+  os << indent << "CentroidOrigin: (" << this->CentroidOrigin[0] << ", " << this->CentroidOrigin[1]
+     << ", " << this->CentroidOrigin[2] << ")\n";
 }

@@ -26,6 +26,13 @@ vtkHAVSFaceSorter::~vtkHAVSFaceSorter() = default;
 bool vtkHAVSFaceSorter::Sort(vtkHAVSFaceSet* faces, const double modelToWorld[16],
   const double eyeWorld[3], const double directionOfProjectionWorld[3], bool parallelProjection)
 {
+  if (!faces)
+  {
+    vtkErrorMacro("Sort: no face set.");
+    this->Order.clear();
+    this->Valid = false;
+    return false;
+  }
   std::array<double, 16> matrix;
   std::array<double, 3> eye, direction;
   std::copy(modelToWorld, modelToWorld + 16, matrix.begin());
@@ -33,35 +40,43 @@ bool vtkHAVSFaceSorter::Sort(vtkHAVSFaceSet* faces, const double modelToWorld[16
   std::copy(directionOfProjectionWorld, directionOfProjectionWorld + 3, direction.begin());
   if (this->Valid && faces->GetBuildTime() == this->LastFaceBuildTime &&
     this->GetMTime() == this->LastSortMTime && matrix == this->LastMatrix &&
-    parallelProjection == this->LastParallel && direction == this->LastDirection &&
-    (parallelProjection || eye == this->LastEye))
+    eye == this->LastEye && direction == this->LastDirection &&
+    parallelProjection == this->LastParallel)
   {
     return false;
   }
+
   const double start = vtkTimerLog::GetUniversalTime();
-  const std::vector<float>& centroids = faces->GetCentroids();
-  const vtkIdType n = faces->GetNumberOfFaces();
-  this->Keys.resize(n);
+  // World position minus eye of a centroid c (stored relative to the face
+  // set's origin o): M3x3 c + (M (o, 1) - eye), the constant part in double.
   const double* m = matrix.data();
   const double* origin = faces->GetCentroidOrigin();
+  double offset[3];
+  for (int r = 0; r < 3; ++r)
+  {
+    offset[r] = m[4 * r] * origin[0] + m[4 * r + 1] * origin[1] + m[4 * r + 2] * origin[2] +
+      m[4 * r + 3] - eye[r];
+  }
+  const float* centroids = faces->GetCentroids().data();
+  const vtkIdType n = faces->GetNumberOfFaces();
+  this->Keys.resize(static_cast<size_t>(n));
+  float* keys = this->Keys.data();
   vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType f = begin; f < end; ++f)
     {
-      const double c[3] = { centroids[3 * f] + origin[0], centroids[3 * f + 1] + origin[1],
-        centroids[3 * f + 2] + origin[2] };
+      const float* c = centroids + 3 * f;
       double w[3];
       for (int r = 0; r < 3; ++r)
       {
-        w[r] = m[4 * r] * c[0] + m[4 * r + 1] * c[1] + m[4 * r + 2] * c[2] + m[4 * r + 3] -
-          eye[r];
+        w[r] = m[4 * r] * c[0] + m[4 * r + 1] * c[1] + m[4 * r + 2] * c[2] + offset[r];
       }
       const double key = parallelProjection
         ? w[0] * direction[0] + w[1] * direction[1] + w[2] * direction[2]
         : w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-      this->Keys[f] = static_cast<float>(key);
+      keys[f] = static_cast<float>(key);
     }
   });
-  this->Radix->Sort(this->Keys.data(), static_cast<size_t>(n), this->Order);
+  this->RadixSorter->Sort(keys, static_cast<size_t>(n), this->Order);
   if (this->BlockReversal > 1)
   {
     for (size_t b = 0; b < this->Order.size(); b += this->BlockReversal)

@@ -12,8 +12,8 @@
  * (perspective) or its depth along the direction of projection (parallel),
  * after the volume's model-to-world matrix; keys are computed in parallel and
  * sorted with vtkHAVSRadixSorter. The sort is reused (Sort() returns false)
- * while the face set, the matrix, the eye, the direction and the projection
- * are all unchanged.
+ * while the face set's build, the matrix, the eye, the direction, the
+ * projection and this object's settings are all unchanged.
  */
 #ifndef vtkHAVSFaceSorter_h
 #define vtkHAVSFaceSorter_h
@@ -38,8 +38,12 @@ public:
 
   /**
    * Sorts the faces nearest first. `modelToWorld` is a row-major 4x4 matrix
-   * (vtkMatrix4x4 element order). Returns true when it sorted, false when the
-   * previous order still holds.
+   * (vtkMatrix4x4 element order), affine: its last row is not used. The key
+   * of a face is the squared distance from the eye to its world-space
+   * centroid (perspective), or the centroid's offset from the eye along the
+   * direction of projection (parallel). Returns true when it sorted, false
+   * when the previous order still holds (or, with an error, for a null face
+   * set).
    */
   bool Sort(vtkHAVSFaceSet* faces, const double modelToWorld[16], const double eyeWorld[3],
     const double directionOfProjectionWorld[3], bool parallelProjection);
@@ -75,7 +79,7 @@ private:
   vtkHAVSFaceSorter(const vtkHAVSFaceSorter&) = delete;
   void operator=(const vtkHAVSFaceSorter&) = delete;
 
-  vtkNew<vtkHAVSRadixSorter> Radix;
+  vtkNew<vtkHAVSRadixSorter> RadixSorter;
   std::vector<float> Keys;
   std::vector<uint32_t> Order;
   bool Valid = false;

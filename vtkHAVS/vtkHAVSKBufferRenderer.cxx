@@ -6,6 +6,7 @@
 =========================================================================*/
 #include "vtkHAVSKBufferRenderer.h"
 
+#include "vtkCommand.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -79,6 +80,7 @@ double Now()
 struct vtkHAVSKBufferRenderer::Internals
 {
   vtkOpenGLRenderWindow* Window = nullptr;
+  unsigned long WindowDeleteObserver = 0;
 
   // Mesh
   GLuint VertexArray = 0;
@@ -703,14 +705,20 @@ bool vtkHAVSKBufferRenderer::PrepareWindow(vtkOpenGLRenderWindow* window)
     window->MakeCurrent();
     return !(in.HaveGeometry && in.HaveOrder && in.HaveTable);
   }
-  if (in.Window)
-  {
-    in.Window->MakeCurrent();
-    in.ReleaseAll();
-  }
+  this->ReleaseGraphicsResources(in.Window);
   in.Window = window;
+  // A window that goes away while this mapper is not among its props (so that
+  // it is not told to release) takes the resources with it: watch for that.
+  in.WindowDeleteObserver = window->AddObserver(
+    vtkCommand::DeleteEvent, this, &vtkHAVSKBufferRenderer::OnWindowDeleted);
   window->MakeCurrent();
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSKBufferRenderer::OnWindowDeleted(vtkObject* window, unsigned long, void*)
+{
+  this->ReleaseGraphicsResources(vtkWindow::SafeDownCast(window));
 }
 
 //------------------------------------------------------------------------------
@@ -908,6 +916,7 @@ void vtkHAVSKBufferRenderer::ReleaseGraphicsResources(vtkWindow* window)
   }
   in.Window->MakeCurrent();
   in.ReleaseAll();
+  in.Window->RemoveObserver(in.WindowDeleteObserver);
   in.Window = nullptr;
 }
 

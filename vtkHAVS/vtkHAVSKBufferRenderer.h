@@ -140,6 +140,9 @@ private:
   vtkHAVSKBufferRenderer(const vtkHAVSKBufferRenderer&) = delete;
   void operator=(const vtkHAVSKBufferRenderer&) = delete;
 
+  /// Releases the resources when their window is deleted.
+  void OnWindowDeleted(vtkObject* window, unsigned long event, void* data);
+
   struct Internals;
   std::unique_ptr<Internals> Internal;
 

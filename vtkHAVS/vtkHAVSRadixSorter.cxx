@@ -12,13 +12,35 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 vtkStandardNewMacro(vtkHAVSRadixSorter);
 
 namespace
 {
-constexpr size_t kSerialBelow = 65536;
-constexpr int kRadix = 256;
+/// Fewer keys than this are sorted serially, in one chunk.
+constexpr size_t SerialBelow = 65536;
+/// No chunk is made smaller than this.
+constexpr size_t MinimumChunkSize = 4096;
+constexpr int NumberOfBuckets = 256;
+constexpr int NumberOfPasses = 4;
+
+/// Calls work(chunk) for every chunk; in parallel when there are several.
+template <typename Work>
+void ForEachChunk(size_t chunks, Work&& work)
+{
+  if (chunks == 1)
+  {
+    work(size_t(0));
+    return;
+  }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(chunks), 1, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType chunk = begin; chunk < end; ++chunk)
+    {
+      work(static_cast<size_t>(chunk));
+    }
+  });
+}
 }
 
 //------------------------------------------------------------------------------
@@ -30,13 +52,20 @@ uint32_t vtkHAVSRadixSorter::FloatToSortableKey(float value)
   }
   uint32_t bits;
   std::memcpy(&bits, &value, sizeof(bits));
-  // Negative: flip every bit (larger magnitude sorts first); positive: set the sign bit.
+  // Negative: flip every bit (a larger magnitude sorts first); positive: set
+  // the sign bit (above every negative). Only a NaN could reach 0xFFFFFFFF.
   return (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);
 }
 
 //------------------------------------------------------------------------------
 void vtkHAVSRadixSorter::Sort(const float* keys, size_t n, std::vector<uint32_t>& order)
 {
+  if (n > std::numeric_limits<uint32_t>::max())
+  {
+    vtkErrorMacro("Sort: " << n << " keys do not fit 32-bit indices.");
+    order.clear();
+    return;
+  }
   order.resize(n);
   if (n == 0)
   {
@@ -45,99 +74,76 @@ void vtkHAVSRadixSorter::Sort(const float* keys, size_t n, std::vector<uint32_t>
   this->Keys.resize(n);
   this->KeysScratch.resize(n);
   this->OrderScratch.resize(n);
-  const size_t chunks = n < kSerialBelow
-    ? 1
-    : std::min<size_t>(4 * std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()), n / 4096 + 1);
+  const size_t threads =
+    static_cast<size_t>(std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()));
+  const size_t chunks = n < SerialBelow ? 1 : std::min(4 * threads, n / MinimumChunkSize);
   const size_t chunkSize = (n + chunks - 1) / chunks;
-  this->Histograms.assign(chunks * kRadix, 0);
+  auto chunkBegin = [&](size_t chunk) { return std::min(n, chunk * chunkSize); };
+  auto chunkEnd = [&](size_t chunk) { return std::min(n, (chunk + 1) * chunkSize); };
+  this->BucketCounts.resize(chunks * NumberOfBuckets);
+  size_t* counts = this->BucketCounts.data();
 
   uint32_t* inKeys = this->Keys.data();
   uint32_t* outKeys = this->KeysScratch.data();
   uint32_t* inOrder = order.data();
   uint32_t* outOrder = this->OrderScratch.data();
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
+  ForEachChunk(chunks, [&](size_t chunk) {
+    for (size_t i = chunkBegin(chunk); i < chunkEnd(chunk); ++i)
     {
       inKeys[i] = FloatToSortableKey(keys[i]);
       inOrder[i] = static_cast<uint32_t>(i);
     }
   });
 
-  size_t* histograms = this->Histograms.data();
-  for (int pass = 0; pass < 4; ++pass)
+  for (int pass = 0; pass < NumberOfPasses; ++pass)
   {
     const int shift = 8 * pass;
-    auto histogramChunk = [&](size_t c) {
-      size_t* h = histograms + c * kRadix;
-      std::fill(h, h + kRadix, size_t(0));
-      const size_t begin = c * chunkSize, end = std::min(n, begin + chunkSize);
-      for (size_t i = begin; i < end; ++i)
+    auto bucketOf = [shift](uint32_t key) { return (key >> shift) & 0xFFu; };
+
+    ForEachChunk(chunks, [&](size_t chunk) {
+      size_t* chunkCounts = counts + chunk * NumberOfBuckets;
+      std::fill(chunkCounts, chunkCounts + NumberOfBuckets, size_t(0));
+      for (size_t i = chunkBegin(chunk); i < chunkEnd(chunk); ++i)
       {
-        ++h[(inKeys[i] >> shift) & 0xFF];
+        ++chunkCounts[bucketOf(inKeys[i])];
       }
-    };
-    auto scatterChunk = [&](size_t c) {
-      size_t* offsets = histograms + c * kRadix;
-      const size_t begin = c * chunkSize, end = std::min(n, begin + chunkSize);
-      for (size_t i = begin; i < end; ++i)
-      {
-        const size_t at = offsets[(inKeys[i] >> shift) & 0xFF]++;
-        outKeys[at] = inKeys[i];
-        outOrder[at] = inOrder[i];
-      }
-    };
-    if (chunks == 1)
+    });
+
+    // A byte shared by every key leaves the order as it is.
+    const uint32_t firstBucket = bucketOf(inKeys[0]);
+    size_t inFirstBucket = 0;
+    for (size_t chunk = 0; chunk < chunks; ++chunk)
     {
-      histogramChunk(0);
+      inFirstBucket += counts[chunk * NumberOfBuckets + firstBucket];
     }
-    else
-    {
-      vtkSMPTools::For(0, static_cast<vtkIdType>(chunks), [&](vtkIdType b, vtkIdType e) {
-        for (vtkIdType c = b; c < e; ++c)
-        {
-          histogramChunk(static_cast<size_t>(c));
-        }
-      });
-    }
-    // Skip a pass whose byte is the same everywhere.
-    bool trivial = false;
-    for (int bucket = 0; bucket < kRadix && !trivial; ++bucket)
-    {
-      size_t total = 0;
-      for (size_t c = 0; c < chunks; ++c)
-      {
-        total += histograms[c * kRadix + bucket];
-      }
-      trivial = total == n;
-    }
-    if (trivial)
+    if (inFirstBucket == n)
     {
       continue;
     }
-    // Exclusive prefix over (bucket, chunk): chunk c's start for each bucket.
-    size_t running = 0;
-    for (int bucket = 0; bucket < kRadix; ++bucket)
+
+    // Counts to output offsets: bucket by bucket, and within a bucket chunk
+    // by chunk, so that equal bytes keep their input order.
+    size_t offset = 0;
+    for (int bucket = 0; bucket < NumberOfBuckets; ++bucket)
     {
-      for (size_t c = 0; c < chunks; ++c)
+      for (size_t chunk = 0; chunk < chunks; ++chunk)
       {
-        const size_t count = histograms[c * kRadix + bucket];
-        histograms[c * kRadix + bucket] = running;
-        running += count;
+        size_t& slot = counts[chunk * NumberOfBuckets + bucket];
+        const size_t count = slot;
+        slot = offset;
+        offset += count;
       }
     }
-    if (chunks == 1)
-    {
-      scatterChunk(0);
-    }
-    else
-    {
-      vtkSMPTools::For(0, static_cast<vtkIdType>(chunks), [&](vtkIdType b, vtkIdType e) {
-        for (vtkIdType c = b; c < e; ++c)
-        {
-          scatterChunk(static_cast<size_t>(c));
-        }
-      });
-    }
+
+    ForEachChunk(chunks, [&](size_t chunk) {
+      size_t* chunkOffsets = counts + chunk * NumberOfBuckets;
+      for (size_t i = chunkBegin(chunk); i < chunkEnd(chunk); ++i)
+      {
+        const size_t at = chunkOffsets[bucketOf(inKeys[i])]++;
+        outKeys[at] = inKeys[i];
+        outOrder[at] = inOrder[i];
+      }
+    });
     std::swap(inKeys, outKeys);
     std::swap(inOrder, outOrder);
   }

@@ -128,6 +128,22 @@ void TestResizeReleaseAndTwoWindows()
   d = havstest::Compare(havstest::FloatResult(mapper), reference);
   havstest::Check(d.Max < 1e-5, "and back in the first window");
 
+  // A third window shows the volume, lets it go, and is deleted while the
+  // mapper's resources live in it (the window cannot tell the mapper): the
+  // mapper must not touch the dead context afterwards.
+  {
+    auto third = havstest::MakeWindow(50, 40);
+    vtkNew<vtkRenderer> renderer3;
+    third->AddRenderer(renderer3);
+    renderer3->AddVolume(a.Volume);
+    renderer3->SetActiveCamera(a.Renderer->GetActiveCamera());
+    third->Render();
+    renderer3->RemoveVolume(a.Volume);
+  }
+  second->Render();
+  d = havstest::Compare(havstest::FloatResult(mapper), reference);
+  havstest::Check(d.Max < 1e-5, "after a window holding its resources was deleted");
+
   // The first window goes away; the mapper renders on in the second.
   a.Window->RemoveRenderer(a.Renderer);
   a.Window = nullptr;
