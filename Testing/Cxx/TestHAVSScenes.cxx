@@ -286,6 +286,11 @@ void TestExtremumBlend()
   // s = z over [0, 1]: the maximum along every ray through the box is 1, the minimum 0.
   auto grid = havstest::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
   auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
+  // Opaque enough at both ends that neither answer is zero.
+  property->GetScalarOpacity()->RemoveAllPoints();
+  property->GetScalarOpacity()->AddPoint(0.0, 0.3);
+  property->GetScalarOpacity()->AddPoint(1.0, 0.8);
+  float centreAlpha[2] = { -1.0f, -1.0f };
   for (int minimum = 0; minimum < 2; ++minimum)
   {
     vtkNew<vtkHAVSVolumeMapper> mapper;
@@ -313,7 +318,10 @@ void TestExtremumBlend()
     havstest::Check(std::fabs(p[3] - a) < 1e-2 && std::fabs(p[0] - rgb[0] * a) < 1e-2,
       "extremum blend colour");
     havstest::Check(mapper->GetActiveKBufferSize() == 0, "extremum blend needs no k-buffer");
+    centreAlpha[minimum] = p[3];
   }
+  havstest::Check(std::fabs(centreAlpha[0] - centreAlpha[1]) > 0.4,
+    "maximum and minimum intensity differ (0.8 against 0.3)");
 }
 }
 
