@@ -68,15 +68,7 @@ int main(int argc, char* argv[])
   const double rmseBound = argc > 2 ? std::atof(argv[2]) : 0.005;
   const double maxBound = argc > 3 ? std::atof(argv[3]) : 0.1;
   const int size = argc > 4 ? std::atoi(argv[4]) : 128;
-  vtkSmartPointer<vtkUnstructuredGrid> grid;
-  if (dataset == "bluntfin")
-    grid = havstest::ReadPlot3D("bluntfinxyz.bin", "bluntfinq.bin", 100);
-  else if (dataset == "loxpost")
-    grid = havstest::ReadPlot3D("postxyz.bin", "postq.bin", 110);
-  else if (dataset == "combustor")
-    grid = havstest::ReadPlot3D("combxyz.bin", "combq.bin", 100);
-  else
-    grid = havstest::ReadLoxPostVtk();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = havstest::ReadDataSet(dataset);
   if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "data set read: " + dataset))
   {
     return EXIT_FAILURE;

@@ -47,6 +47,22 @@ void ViewBoxAlongZ(vtkRenderer* renderer, double zCentre)
   renderer->ResetCameraClippingRange();
 }
 
+/// A volume of `grid` through its own HAVS mapper (float result kept, early
+/// ray termination off) added to `renderer`.
+vtkSmartPointer<vtkVolume> AddExactVolume(
+  vtkRenderer* renderer, vtkUnstructuredGrid* grid, vtkVolumeProperty* property)
+{
+  vtkNew<vtkHAVSVolumeMapper> mapper;
+  mapper->SetInputData(grid);
+  mapper->KeepFloatResultOn();
+  mapper->SetEarlyRayTerminationOpacity(1.0);
+  auto volume = vtkSmartPointer<vtkVolume>::New();
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  renderer->AddVolume(volume);
+  return volume;
+}
+
 float PixelAlpha(const std::vector<float>& rgba, int width, int i, int j)
 {
   return rgba[4 * (j * width + i) + 3];
@@ -162,21 +178,9 @@ void TestTwoVolumesAndViewports()
   auto window = havstest::MakeWindow(128, 64);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
-  vtkNew<vtkHAVSVolumeMapper> m1, m2;
-  vtkNew<vtkVolume> v1, v2;
-  m1->SetInputData(grid);
-  m2->SetInputData(grid);
-  m1->KeepFloatResultOn();
-  m2->KeepFloatResultOn();
-  m1->SetEarlyRayTerminationOpacity(1.0);
-  m2->SetEarlyRayTerminationOpacity(1.0);
-  v1->SetMapper(m1);
-  v2->SetMapper(m2);
-  v1->SetProperty(property);
-  v2->SetProperty(property);
+  auto v1 = AddExactVolume(renderer, grid, property);
+  auto v2 = AddExactVolume(renderer, grid, property);
   v2->SetPosition(1.5, 0.0, 0.0);
-  renderer->AddVolume(v1);
-  renderer->AddVolume(v2);
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->ParallelProjectionOn();
   camera->SetFocalPoint(1.25, 0.5, 0.5);
@@ -203,20 +207,8 @@ void TestTwoVolumesAndViewports()
   right->SetViewport(0.5, 0.0, 1.0, 1.0);
   split->AddRenderer(left);
   split->AddRenderer(right);
-  vtkNew<vtkHAVSVolumeMapper> m3, m4;
-  vtkNew<vtkVolume> v3, v4;
-  m3->SetInputData(grid);
-  m4->SetInputData(grid);
-  m3->KeepFloatResultOn();
-  m4->KeepFloatResultOn();
-  m3->SetEarlyRayTerminationOpacity(1.0);
-  m4->SetEarlyRayTerminationOpacity(1.0);
-  v3->SetMapper(m3);
-  v4->SetMapper(m4);
-  v3->SetProperty(property);
-  v4->SetProperty(property);
-  left->AddVolume(v3);
-  right->AddVolume(v4);
+  auto* m3 = vtkHAVSVolumeMapper::SafeDownCast(AddExactVolume(left, grid, property)->GetMapper());
+  auto* m4 = vtkHAVSVolumeMapper::SafeDownCast(AddExactVolume(right, grid, property)->GetMapper());
   ViewBoxAlongZ(left, 0.5);
   ViewBoxAlongZ(right, 0.5);
   right->GetActiveCamera()->SetParallelScale(1.2);

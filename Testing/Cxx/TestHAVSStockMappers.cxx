@@ -51,19 +51,7 @@ int main(int argc, char* argv[])
   const std::string dataset = argc > 1 ? argv[1] : "loxpostvtk";
   const double bound = argc > 2 ? std::atof(argv[2]) : 0.02;
   const int size = argc > 3 ? std::atoi(argv[3]) : 128;
-  vtkSmartPointer<vtkUnstructuredGrid> grid;
-  if (dataset == "bluntfin")
-  {
-    grid = havstest::ReadPlot3D("bluntfinxyz.bin", "bluntfinq.bin", 100);
-  }
-  else if (dataset == "loxpost")
-  {
-    grid = havstest::ReadPlot3D("postxyz.bin", "postq.bin", 110);
-  }
-  else
-  {
-    grid = havstest::ReadLoxPostVtk();
-  }
+  vtkSmartPointer<vtkUnstructuredGrid> grid = havstest::ReadDataSet(dataset);
   if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "data set read: " + dataset))
   {
     return EXIT_FAILURE;

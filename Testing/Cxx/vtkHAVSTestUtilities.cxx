@@ -125,6 +125,23 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadPlot3D(
   return grid;
 }
 
+vtkSmartPointer<vtkUnstructuredGrid> ReadDataSet(const std::string& name)
+{
+  if (name == "bluntfin")
+  {
+    return ReadPlot3D("bluntfinxyz.bin", "bluntfinq.bin", 100);
+  }
+  if (name == "loxpost")
+  {
+    return ReadPlot3D("postxyz.bin", "postq.bin", 110);
+  }
+  if (name == "combustor")
+  {
+    return ReadPlot3D("combxyz.bin", "combq.bin", 100);
+  }
+  return ReadLoxPostVtk();
+}
+
 vtkSmartPointer<vtkUnstructuredGrid> ReadLoxPostVtk()
 {
   vtkNew<vtkUnstructuredGridReader> reader;

@@ -54,6 +54,11 @@ vtkSmartPointer<vtkUnstructuredGrid> MakeBox(int nx, int ny, int nz, double h, d
 vtkSmartPointer<vtkUnstructuredGrid> ReadPlot3D(
   const std::string& xyz, const std::string& q, int scalarFunction);
 
+/// A data set of shared/data by name, tetrahedralized as its README says:
+/// bluntfin (density), loxpost (PLOT3D, pressure), combustor (density),
+/// loxpostvtk (post.vtk, Pressure). nullptr when it cannot be read.
+vtkSmartPointer<vtkUnstructuredGrid> ReadDataSet(const std::string& name);
+
 /// shared/data/post.vtk with its Pressure array as the active scalars.
 vtkSmartPointer<vtkUnstructuredGrid> ReadLoxPostVtk();
 
