@@ -23,6 +23,7 @@
 #include "vtkHAVSKBufferShaders.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 
@@ -69,6 +70,32 @@ vtkSmartPointer<vtkTextureObject> NewFloatTexture(vtkOpenGLRenderWindow* window,
   texture->SetWrapT(vtkTextureObject::ClampToEdge);
   texture->Allocate2D(w, h, 4, VTK_FLOAT);
   return texture;
+}
+
+/// HAVS_EMULATE_INTERLOCK=1 on llvmpipe: run the interlock path without the
+/// interlock. llvmpipe shades each tile in one thread, a pixel's fragments one
+/// at a time in primitive order, so the storage-buffer k-buffer is race-free
+/// there without it; this tests the path's layout, clear and resolve on a
+/// machine without an interlock GPU. Ignored anywhere else.
+bool InterlockEmulated()
+{
+  const char* requested = std::getenv("HAVS_EMULATE_INTERLOCK");
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return requested && std::string(requested) == "1" && renderer &&
+    std::strstr(renderer, "llvmpipe") != nullptr;
+}
+
+vtkHAVSKBufferShaders::InterlockKind AvailableInterlock()
+{
+  if (HasGLExtension("GL_ARB_fragment_shader_interlock"))
+  {
+    return vtkHAVSKBufferShaders::InterlockARB;
+  }
+  if (HasGLExtension("GL_NV_fragment_shader_interlock"))
+  {
+    return vtkHAVSKBufferShaders::InterlockNV;
+  }
+  return vtkHAVSKBufferShaders::InterlockNone;
 }
 
 double Now()
@@ -465,9 +492,9 @@ struct vtkHAVSKBufferRenderer::Internals
       this->DrawFullViewport();
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
-    const bool arb = HasGLExtension("GL_ARB_fragment_shader_interlock");
-    vtkShaderProgram* program =
-      clear ? this->FaceProgram(vtkHAVSKBufferShaders::InterlockDrawShader(p.K, arb), p) : nullptr;
+    vtkShaderProgram* program = clear
+      ? this->FaceProgram(vtkHAVSKBufferShaders::InterlockDrawShader(p.K, AvailableInterlock()), p)
+      : nullptr;
     if (program)
     {
       this->DrawFaces(p.FlipFacing);
@@ -688,7 +715,7 @@ bool vtkHAVSKBufferRenderer::IsPathSupported(vtkOpenGLRenderWindow* window, int 
     }
     case FragmentShaderInterlock:
       return HasGLExtension("GL_ARB_fragment_shader_interlock") ||
-        HasGLExtension("GL_NV_fragment_shader_interlock");
+        HasGLExtension("GL_NV_fragment_shader_interlock") || InterlockEmulated();
     case FragmentLists:
       return HasGLVersion(4, 4) || HasGLExtension("GL_ARB_clear_texture");
     default:

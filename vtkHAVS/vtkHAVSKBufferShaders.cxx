@@ -86,16 +86,21 @@ std::string vtkHAVSKBufferShaders::FetchDrawShader(int k)
   return source;
 }
 
-std::string vtkHAVSKBufferShaders::InterlockDrawShader(int k, bool arb)
+std::string vtkHAVSKBufferShaders::InterlockDrawShader(int k, InterlockKind kind)
 {
+  static const char* const extension[] = { "#extension GL_ARB_fragment_shader_interlock : require",
+    "#extension GL_NV_fragment_shader_interlock : require", "" };
+  static const char* const layout[] = { "layout(pixel_interlock_ordered) in;",
+    "layout(pixel_interlock_ordered) in;", "" };
+  static const char* const begin[] = { "beginInvocationInterlockARB();",
+    "beginInvocationInterlockNV();", "" };
+  static const char* const end[] = { "endInvocationInterlockARB();", "endInvocationInterlockNV();",
+    "" };
   std::string source = Compose(vtkHAVSInterlockDrawFS, k, InterlockPixelStride(k));
-  Replace(source, "//HAVS::InterlockExtension",
-    arb ? "#extension GL_ARB_fragment_shader_interlock : require"
-        : "#extension GL_NV_fragment_shader_interlock : require");
-  Replace(source, "//HAVS::InterlockBegin",
-    arb ? "beginInvocationInterlockARB();" : "beginInvocationInterlockNV();");
-  Replace(source, "//HAVS::InterlockEnd",
-    arb ? "endInvocationInterlockARB();" : "endInvocationInterlockNV();");
+  Replace(source, "//HAVS::InterlockExtension", extension[kind]);
+  Replace(source, "//HAVS::InterlockLayout", layout[kind]);
+  Replace(source, "//HAVS::InterlockBegin", begin[kind]);
+  Replace(source, "//HAVS::InterlockEnd", end[kind]);
   return source;
 }
 

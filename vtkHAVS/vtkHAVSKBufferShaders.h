@@ -31,8 +31,17 @@ public:
 
   /// Framebuffer-fetch draw pass: entries in 1 + (k+1)/2 colour attachments.
   static std::string FetchDrawShader(int k);
-  /// Interlock draw pass; `arb`: ARB_fragment_shader_interlock, else NV.
-  static std::string InterlockDrawShader(int k, bool arb);
+  /// How the interlock draw pass guards its read-modify-write.
+  enum InterlockKind
+  {
+    InterlockARB,  ///< ARB_fragment_shader_interlock, ordered
+    InterlockNV,   ///< NV_fragment_shader_interlock, ordered
+    InterlockNone, ///< none: only for a rasterizer that shades a pixel's
+                   ///< fragments one at a time in primitive order (llvmpipe),
+                   ///< to test the path's storage layout, clear and resolve
+  };
+  /// Interlock draw pass.
+  static std::string InterlockDrawShader(int k, InterlockKind kind);
   /// Interlock clear pass (per-pixel storage to empty).
   static std::string InterlockClearShader(int k);
   /// Fragment-list draw pass (append to per-pixel lists).

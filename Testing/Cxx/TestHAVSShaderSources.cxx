@@ -63,7 +63,7 @@ int main()
   for (int k : { 1, 2, 3, 6, 14, 15, 32, 64 })
   {
     const std::string suffix = "_k" + std::to_string(k);
-    check(vtkHAVSKBufferShaders::InterlockDrawShader(k, true), "interlock_draw" + suffix, "frag");
+    check(vtkHAVSKBufferShaders::InterlockDrawShader(k, vtkHAVSKBufferShaders::InterlockARB), "interlock_draw" + suffix, "frag");
     check(vtkHAVSKBufferShaders::InterlockClearShader(k), "interlock_clear" + suffix, "frag");
     check(vtkHAVSKBufferShaders::ResolveShader(
             vtkHAVSKBufferRenderer::FragmentShaderInterlock, k, false),

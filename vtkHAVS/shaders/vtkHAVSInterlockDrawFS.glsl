@@ -7,7 +7,7 @@
 //HAVS::Defines
 //HAVS::KBufferLib
 
-layout(pixel_interlock_ordered) in;
+//HAVS::InterlockLayout
 
 in vec3 havsPositionRC;
 in float havsScalar;

@@ -1,0 +1,21 @@
+#version 430 core
+// vtkHAVS: maximum / minimum intensity resolve: colour and opacity of the
+// extremal scalar from the sampled transfer function.
+uniform sampler2D havsExtremumTexture;
+uniform sampler1D havsTransferFunction; // rgb colour, opacity
+uniform vec2 havsScalarTexel;
+uniform int havsMinimum;
+
+layout(location = 0) out vec4 havsResult;
+
+void main()
+{
+  vec4 e = texelFetch(havsExtremumTexture, ivec2(gl_FragCoord.xy), 0);
+  if (e.y < 0.5)
+  {
+    havsResult = vec4(0.0);
+    return;
+  }
+  vec4 c = texture(havsTransferFunction, (havsMinimum != 0 ? 1.0 - e.x : e.x) * havsScalarTexel.x + havsScalarTexel.y);
+  havsResult = vec4(c.rgb * c.a, c.a);
+}

@@ -1,0 +1,304 @@
+#version 430 core
+
+// vtkHAVS: per-pixel pass after the faces. Reads what the draw pass left for
+// this pixel (the ResolveLoad marker differs per path), lets the waiting
+// entries leave in depth order (flush) and writes the premultiplied result
+// into the result texture.
+#define HAVS_K 1
+#define HAVS_PIXEL_STRIDE 2
+
+// vtkHAVS k-buffer library, shared by every k-buffer path (framebuffer fetch,
+// fragment-shader interlock, fragment lists). Inserted into the fragment
+// shaders at the KBufferLib marker.
+//
+// A k-buffer of HAVS_K entries per pixel. Entry = vec2(distance, code):
+//   distance  the eye distance of a fragment (world units along the ray for a
+//             perspective camera, along the direction of projection for a
+//             parallel one), so that the difference of two is a segment length;
+//   code      the scalar in [0, 1]; + 2 when the fragment lies on a boundary
+//             face seen from inside (an exit from the mesh), + 4 on a boundary
+//             face seen from outside (an entry).
+// E[0] is the front: the last fragment already composited up to (the ray has
+// been integrated to it). E[1 .. HAVS_K-1] hold fragments still waiting.
+// Each arriving fragment fills an empty slot; when none is left, the nearest
+// of the waiting ones and the new one leaves, and the segment from the front
+// to it is composited (lazy pop). The image is exact iff the fragments leave
+// in depth order, i.e. iff k = HAVS_K entries suffice for the pixel.
+//
+// A segment whose front is an exit fragment lies outside the mesh (holes,
+// cavities, gaps between components): it contributes nothing (boundary tagging).
+//
+// Fragments at the same distance (up to float rounding) leave in the order
+// internal, exit, entry: a ray crossing a seam of coincident boundary faces
+// (an exit and an entry at one point, as where a mesh has duplicated points)
+// goes on inside, and a ray leaving through an edge shared by an internal and
+// a boundary face ends outside.
+
+const float HAVS_EMPTY = 3.0e38;     // an empty waiting slot
+const float HAVS_NO_FRONT = -2.0e38; // nothing composited yet
+const float HAVS_DONE = -3.0e38;     // the ray has ended (opaque surface reached)
+
+uniform sampler3D havsTable;     // pre-integrated segments (front s, back s, length)
+uniform vec2 havsScalarTexel;    // ((N-1)/N, 0.5/N): [0,1] -> texel centres
+uniform vec2 havsLengthTexel;    // same along the length axis
+uniform float havsInvMaxLength;  // 1 / the table's longest length
+uniform float havsTerminationOpacity;
+
+uniform sampler2D havsOpaqueDepth; // window depth of the opaque geometry
+uniform mat4 havsDCRC;             // clip -> eye-relative world
+uniform vec2 havsViewportSize;
+uniform int havsParallel;
+uniform vec3 havsDirectionOfProjection;
+
+bool havsIsExit(float code)
+{
+  return code > 1.5 && code < 3.5;
+}
+
+float havsScalarOf(float code)
+{
+  return code > 3.5 ? code - 4.0 : (code > 1.5 ? code - 2.0 : code);
+}
+
+// The order in which fragments leave: distance, ties broken internal < exit
+// < entry (see above); a tie is a difference below float rounding.
+float havsLeaveKey(vec2 e)
+{
+  float rank = e.y > 3.5 ? 2.0 : (e.y > 1.5 ? 1.0 : 0.0);
+  return e.x + rank * 4.0e-6 * abs(e.x);
+}
+
+float havsDistance(vec3 positionRC)
+{
+  return havsParallel != 0 ? dot(positionRC, havsDirectionOfProjection) : length(positionRC);
+}
+
+// Eye distance of the opaque surface at this pixel, HAVS_EMPTY when none.
+float havsOpaqueDistance(vec2 fragCoord)
+{
+  float z = texelFetch(havsOpaqueDepth, ivec2(fragCoord), 0).r;
+  if (z >= 1.0)
+  {
+    return HAVS_EMPTY;
+  }
+  vec4 ndc = vec4(fragCoord / havsViewportSize * 2.0 - 1.0, z * 2.0 - 1.0, 1.0);
+  vec4 p = havsDCRC * ndc;
+  return havsDistance(p.xyz / p.w);
+}
+
+// Premultiplied colour and opacity of the segment from a to b.
+vec4 havsSegment(vec2 a, vec2 b)
+{
+  float len = b.x - a.x;
+  if (havsIsExit(a.y) || !(len > 0.0))
+  {
+    return vec4(0.0);
+  }
+  vec3 t = vec3(havsScalarOf(a.y), havsScalarOf(b.y), min(len * havsInvMaxLength, 1.0));
+  vec3 coord = vec3(t.xy * havsScalarTexel.x + havsScalarTexel.y,
+    t.z * havsLengthTexel.x + havsLengthTexel.y);
+  return texture(havsTable, coord);
+}
+
+// Moves the front to p (the next fragment in depth order), compositing the
+// segment between them front to back; ends the ray at the opaque surface,
+// cutting the last segment there with its scalar interpolated.
+void havsAdvance(inout vec4 color, inout vec2 front, vec2 p, float opaqueDistance)
+{
+  if (front.x == HAVS_DONE)
+  {
+    return;
+  }
+  if (p.x > opaqueDistance)
+  {
+    if (front.x > HAVS_NO_FRONT && !havsIsExit(front.y) && opaqueDistance > front.x)
+    {
+      float t = clamp((opaqueDistance - front.x) / (p.x - front.x), 0.0, 1.0);
+      vec2 cut = vec2(opaqueDistance, mix(havsScalarOf(front.y), havsScalarOf(p.y), t));
+      color += (1.0 - color.a) * havsSegment(front, cut);
+    }
+    front = vec2(HAVS_DONE, 0.0);
+    return;
+  }
+  if (front.x > HAVS_NO_FRONT)
+  {
+    color += (1.0 - color.a) * havsSegment(front, p);
+  }
+  front = p;
+}
+
+bool havsRayEnded(vec4 color, vec2 front)
+{
+  return front.x == HAVS_DONE || color.a >= havsTerminationOpacity;
+}
+
+// Inserts fragment f into the k-buffer E (E[0] = front).
+void havsInsert(inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float opaqueDistance)
+{
+  vec2 leaving = f;
+#if HAVS_K > 1
+  int nearest = 0;
+  float leavingKey = havsLeaveKey(f);
+  for (int i = 1; i < HAVS_K; ++i)
+  {
+    if (E[i].x >= HAVS_EMPTY)
+    {
+      E[i] = f;
+      return;
+    }
+    float key = havsLeaveKey(E[i]);
+    if (key < leavingKey)
+    {
+      leaving = E[i];
+      leavingKey = key;
+      nearest = i;
+    }
+  }
+  if (nearest > 0)
+  {
+    E[nearest] = f;
+  }
+#endif
+  havsAdvance(color, E[0], leaving, opaqueDistance);
+}
+
+// After the last fragment: the waiting entries leave in depth order.
+void havsFlush(inout vec4 color, inout vec2 E[HAVS_K], float opaqueDistance)
+{
+  for (int n = 1; n < HAVS_K; ++n)
+  {
+    int nearest = 0;
+    float nearestKey = HAVS_EMPTY;
+    for (int i = 1; i < HAVS_K; ++i)
+    {
+      float key = E[i].x < HAVS_EMPTY ? havsLeaveKey(E[i]) : HAVS_EMPTY;
+      if (key < nearestKey)
+      {
+        nearestKey = key;
+        nearest = i;
+      }
+    }
+    if (nearest == 0)
+    {
+      return;
+    }
+    havsAdvance(color, E[0], E[nearest], opaqueDistance);
+    E[nearest].x = HAVS_EMPTY;
+  }
+}
+
+// The k-buffer entry of the fragment being shaded.
+vec2 havsFragmentEntry(vec3 positionRC, float scalar, bool boundary)
+{
+  float code = clamp(scalar, 0.0, 1.0);
+  if (boundary)
+  {
+    code += gl_FrontFacing ? 4.0 : 2.0;
+  }
+  return vec2(havsDistance(positionRC), code);
+}
+
+// Back to front, for the fragment-list resolve: a pixel's list comes out in
+// reverse draw order, nearly sorted far to near, so the same k-buffer runs
+// mirrored. E[0] is the back: the fragment the ray has been integrated from
+// (everything behind it is composited); the farthest waiting fragment leaves
+// and the segment from it to the back is composited under ("under" operator
+// reversed: the new segment goes in front). Exact when the fragments leave in
+// depth order, in particular for any list no longer than HAVS_K - 1.
+void havsRetreat(inout vec4 color, inout vec2 back, vec2 p, float opaqueDistance)
+{
+  if (back.x > HAVS_NO_FRONT && p.x < opaqueDistance)
+  {
+    vec2 b = back;
+    if (back.x > opaqueDistance)
+    {
+      float t = clamp((opaqueDistance - p.x) / (back.x - p.x), 0.0, 1.0);
+      b = vec2(opaqueDistance, mix(havsScalarOf(p.y), havsScalarOf(back.y), t));
+    }
+    vec4 segment = havsSegment(p, b);
+    color = segment + (1.0 - segment.a) * color;
+  }
+  back = p;
+}
+
+void havsInsertBackToFront(inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float opaqueDistance)
+{
+  vec2 leaving = f;
+  int farthest = 0;
+  float leavingKey = havsLeaveKey(f);
+  for (int i = 1; i < HAVS_K; ++i)
+  {
+    if (E[i].x >= HAVS_EMPTY)
+    {
+      E[i] = f;
+      return;
+    }
+    float key = havsLeaveKey(E[i]);
+    if (key > leavingKey)
+    {
+      leaving = E[i];
+      leavingKey = key;
+      farthest = i;
+    }
+  }
+  if (farthest > 0)
+  {
+    E[farthest] = f;
+  }
+  havsRetreat(color, E[0], leaving, opaqueDistance);
+}
+
+void havsFlushBackToFront(inout vec4 color, inout vec2 E[HAVS_K], float opaqueDistance)
+{
+  for (int n = 1; n < HAVS_K; ++n)
+  {
+    int farthest = 0;
+    float farthestKey = HAVS_NO_FRONT;
+    for (int i = 1; i < HAVS_K; ++i)
+    {
+      float key = E[i].x < HAVS_EMPTY ? havsLeaveKey(E[i]) : HAVS_NO_FRONT;
+      if (key > farthestKey)
+      {
+        farthestKey = key;
+        farthest = i;
+      }
+    }
+    if (farthest == 0)
+    {
+      return;
+    }
+    havsRetreat(color, E[0], E[farthest], opaqueDistance);
+    E[farthest].x = HAVS_EMPTY;
+  }
+}
+
+
+layout(std430, binding = 0) buffer HAVSPixelEntries { vec4 havsPixelData[]; };
+
+
+layout(location = 0) out vec4 havsResult;
+
+void main()
+{
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float opaqueDistance = havsOpaqueDistance(gl_FragCoord.xy);
+  vec4 color = vec4(0.0);
+  vec2 E[HAVS_K];
+  int base = (pixel.y * int(havsViewportSize.x) + pixel.x) * HAVS_PIXEL_STRIDE;
+  color = havsPixelData[base];
+  for (int i = 0; i < HAVS_K; ++i)
+  {
+    vec4 pair = havsPixelData[base + 1 + i / 2];
+    E[i] = (i % 2 == 0) ? pair.xy : pair.zw;
+  }
+
+#ifdef HAVS_BACK_TO_FRONT
+  havsFlushBackToFront(color, E, opaqueDistance);
+#else
+  if (!havsRayEnded(color, E[0]))
+  {
+    havsFlush(color, E, opaqueDistance);
+  }
+#endif
+  havsResult = color;
+}
