@@ -1,8 +1,0 @@
-#version 430 core
-// vtkHAVS: one triangle covering the viewport, for the per-pixel passes
-// (clear, resolve, composite). No vertex buffer: corners from gl_VertexID.
-void main()
-{
-  vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-  gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
-}
