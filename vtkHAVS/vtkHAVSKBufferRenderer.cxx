@@ -408,6 +408,27 @@ struct vtkHAVSKBufferRenderer::Internals
     return program != nullptr;
   }
 
+  /// Benchmark aid: the sorted faces with a trivial shader (additive), so
+  /// that the time is the rasterization alone.
+  bool DrawRasterBound(const FrameParameters& p)
+  {
+    vtkOpenGLState* state = this->Window->GetState();
+    this->ResultFramebuffer->Bind();
+    this->ResultFramebuffer->ActivateDrawBuffers(1);
+    const float zero[4] = { 0, 0, 0, 0 };
+    glClearBufferfv(GL_COLOR, 0, zero);
+    vtkShaderProgram* program = this->FaceProgram(vtkHAVSKBufferShaders::TrivialShader(), p);
+    if (!program)
+    {
+      return false;
+    }
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+    this->DrawFaces(p.FlipFacing);
+    state->vtkglDisable(GL_BLEND);
+    return true;
+  }
+
   /// Clears the k-buffer of the path and draws the faces through it.
   bool DrawKBuffer(const FrameParameters& p, std::uint64_t& fragmentCount)
   {
@@ -892,9 +913,14 @@ bool vtkHAVSKBufferRenderer::Render(vtkRenderer* renderer, const FrameParameters
 
     const double t0 = p.MeasureStages ? (glFinish(), Now()) : 0.0;
     const bool extremum = p.BlendMode == 1 || p.BlendMode == 2;
-    bool ok = extremum ? in.DrawExtremum(p) : in.DrawKBuffer(p, this->LastFragmentCount);
+    bool ok = p.RasterBoundOnly
+      ? in.DrawRasterBound(p)
+      : (extremum ? in.DrawExtremum(p) : in.DrawKBuffer(p, this->LastFragmentCount));
     const double t1 = p.MeasureStages ? (glFinish(), Now()) : 0.0;
-    ok = ok && (extremum ? in.ResolveExtremum(p) : in.Resolve(p));
+    if (!p.RasterBoundOnly)
+    {
+      ok = ok && (extremum ? in.ResolveExtremum(p) : in.Resolve(p));
+    }
     if (ok && p.KeepResult)
     {
       this->LastResult.resize(static_cast<size_t>(width) * height * 4);
@@ -911,7 +937,7 @@ bool vtkHAVSKBufferRenderer::Render(vtkRenderer* renderer, const FrameParameters
     in.Table->Deactivate();
     state->PopFramebufferBindings();
 
-    if (ok)
+    if (ok && !p.RasterBoundOnly)
     {
       state->vtkglViewport(originX, originY, width, height);
       ok = in.Composite(originX, originY);

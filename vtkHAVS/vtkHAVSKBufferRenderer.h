@@ -88,6 +88,7 @@ public:
     float TerminationOpacity = 1.0f;
     bool MeasureStages = false;
     bool KeepResult = false;
+    bool RasterBoundOnly = false; // benchmark aid: faces with a trivial shader, nothing else
   };
 
   /**

@@ -19,6 +19,7 @@
 #include "vtkHAVSListDrawFS.h"
 #include "vtkHAVSQuadVS.h"
 #include "vtkHAVSResolveFS.h"
+#include "vtkHAVSTrivialFS.h"
 
 #include <sstream>
 
@@ -201,6 +202,11 @@ std::string vtkHAVSKBufferShaders::ExtremumDrawShader()
 std::string vtkHAVSKBufferShaders::ExtremumResolveShader()
 {
   return vtkHAVSExtremumResolveFS;
+}
+
+std::string vtkHAVSKBufferShaders::TrivialShader()
+{
+  return vtkHAVSTrivialFS;
 }
 
 std::string vtkHAVSKBufferShaders::CompositeShader()

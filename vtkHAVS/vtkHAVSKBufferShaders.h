@@ -59,6 +59,9 @@ public:
   static std::string ExtremumDrawShader();
   static std::string ExtremumResolveShader();
 
+  /// Benchmark aid: a trivial fragment shader (rasterization cost alone).
+  static std::string TrivialShader();
+
   /// Composites the result over VTK's framebuffer.
   static std::string CompositeShader();
 };

@@ -493,6 +493,7 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.TerminationOpacity = static_cast<float>(this->EarlyRayTerminationOpacity);
   frame.MeasureStages = this->MeasureStageTimes;
   frame.KeepResult = this->KeepFloatResult;
+  frame.RasterBoundOnly = this->FaceRasterBoundMode;
 
   // Face order: composite needs the centroid sort; the extremum modes do not.
   const double sortStart = vtkTimerLog::GetUniversalTime();
@@ -595,6 +596,7 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << " x " << this->TableLengthResolution << "\n";
   os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
+  os << indent << "FaceRasterBoundMode: " << this->FaceRasterBoundMode << "\n";
   os << indent << "Last stage times (s): sort " << this->LastSortSeconds << ", draw "
      << this->LastDrawSeconds << ", flush " << this->LastFlushSeconds << ", composite "
      << this->LastCompositeSeconds << ", table " << this->LastTableSeconds << "\n";

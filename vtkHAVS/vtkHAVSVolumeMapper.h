@@ -146,6 +146,18 @@ public:
 
   ///@{
   /**
+   * Benchmark aid: draw the sorted faces with a trivial shader and nothing
+   * else (no k-buffer, nothing composited into the window): the time of the
+   * rasterization alone, the lower bound of any face-based method on this
+   * machine. Off by default.
+   */
+  vtkSetMacro(FaceRasterBoundMode, bool);
+  vtkGetMacro(FaceRasterBoundMode, bool);
+  vtkBooleanMacro(FaceRasterBoundMode, bool);
+  ///@}
+
+  ///@{
+  /**
    * Stage times of the last frame, in seconds.
    */
   vtkGetMacro(LastSortSeconds, double);
@@ -210,6 +222,7 @@ protected:
   int TableLengthResolution = 128;
   bool MeasureStageTimes = false;
   bool KeepFloatResult = false;
+  bool FaceRasterBoundMode = false;
 
   double LastSortSeconds = 0.0;
   double LastDrawSeconds = 0.0;

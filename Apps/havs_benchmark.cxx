@@ -1,0 +1,654 @@
+// havs_benchmark: run time against error, every mapper side by side.
+//
+//   havs_benchmark [--quick] [--size N] [--views N] [--repeats N]
+//                  [--datasets a,b,...] [--configs a,b,...] [--output-dir DIR]
+//                  [--cache-dir DIR] [--budget SECONDS]
+//
+// Data sets: bluntfin, loxpost (PLOT3D), combustor, loxpostvtk (post.vtk) from
+// ../shared/data (HAVS_DATA_DIR), and gen1M, gen4M, gen10M: tetrahedralized
+// blocks of 60^3, 94^3 and 127^3 cubes (5 tets each: 1.08M, 4.15M, 10.2M tets)
+// with the analytic field sin(6x) cos(5y) + z, made here.
+// Configurations: HAVS at k = 1, 2, 4, 6, 8, 14 (128^3 table), HAVS k = 14 with
+// 32^3 and 64^3 tables, HAVS fragment lists (exact per-pixel sort),
+// raster-bound (the same faces in the same order with a trivial shader: the
+// lower bound of any face-based method; sort-bound is the sort alone), and
+// VTK's vtkProjectedTetrahedraMapper, vtkUnstructuredGridVolumeZSweepMapper and
+// vtkUnstructuredGridVolumeRayCastMapper (ImageSampleDistance 1,
+// AutoAdjustSampleDistances off, vtkUnstructuredGridLinearRayIntegrator).
+//
+// Each (data set, configuration) runs in its own child process (peak memory
+// only grows), renders the fixed viewpoints (the 6 axis directions and the 8
+// cube diagonals; a warm-up frame first), waits for the GPU before the clock
+// stops, and measures the colour seen in the window against the exact
+// reference (vtkHAVSReferenceRenderer, cached on disk by data set, view and
+// size). A configuration whose frames exceed the time budget stops early and
+// says how many views it measured. Output: CSV, Markdown (with ratios) and,
+// where matplotlib is installed, plots.
+#include "vtkHAVSFaceSet.h"
+#include "vtkHAVSFaceSorter.h"
+#include "vtkHAVSImageMetrics.h"
+#include "vtkHAVSReferenceRenderer.h"
+#include "vtkHAVSRenderWindowFactory.h"
+#include "vtkHAVSVolumeMapper.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataSetTriangleFilter.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkMultiBlockPLOT3DReader.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkProjectedTetrahedraMapper.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkTimerLog.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridLinearRayIntegrator.h"
+#include "vtkUnstructuredGridReader.h"
+#include "vtkUnstructuredGridVolumeRayCastMapper.h"
+#include "vtkUnstructuredGridVolumeZSweepMapper.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+const char* const kPropertyVersion = "ramp1";
+
+struct Options
+{
+  bool Quick = false;
+  bool Worker = false;
+  int Size = 512;
+  int Views = 14;
+  int Repeats = 2;
+  double Budget = 600.0;
+  std::vector<std::string> DataSets;
+  std::vector<std::string> Configs;
+  std::string OutputDir = "Documentation";
+  std::string CacheDir = "build/benchmark-cache";
+  std::string Self;
+};
+
+std::vector<std::string> Split(const std::string& text)
+{
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+  {
+    if (!item.empty())
+    {
+      out.push_back(item);
+    }
+  }
+  return out;
+}
+
+std::string DataDir()
+{
+  const char* d = std::getenv("HAVS_DATA_DIR");
+  return d && *d ? d : "../shared/data";
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> Tetrahedralize(vtkDataSet* data)
+{
+  if (!data)
+  {
+    return nullptr;
+  }
+  vtkNew<vtkDataSetTriangleFilter> tets;
+  tets->SetInputData(data);
+  tets->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = tets->GetOutput();
+  return grid;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> Generated(int n)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(n + 1, n + 1, n + 1);
+  image->SetSpacing(1.0 / n, 1.0 / n, 1.0 / n);
+  vtkNew<vtkDoubleArray> field;
+  field->SetName("field");
+  field->SetNumberOfTuples(image->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    image->GetPoint(i, x);
+    field->SetValue(i, std::sin(6 * x[0]) * std::cos(5 * x[1]) + x[2]);
+  }
+  image->GetPointData()->SetScalars(field);
+  return Tetrahedralize(image);
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> Load(const std::string& name)
+{
+  if (name == "gen1M")
+    return Generated(60);
+  if (name == "gen4M")
+    return Generated(94);
+  if (name == "gen10M")
+    return Generated(127);
+  if (name == "loxpostvtk")
+  {
+    vtkNew<vtkUnstructuredGridReader> reader;
+    reader->SetFileName((DataDir() + "/post.vtk").c_str());
+    reader->Update();
+    vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
+    grid->GetPointData()->SetActiveScalars("Pressure");
+    return grid;
+  }
+  const std::string stem = name == "bluntfin" ? "bluntfin" : name == "combustor" ? "comb" : "post";
+  vtkNew<vtkMultiBlockPLOT3DReader> reader;
+  reader->SetXYZFileName((DataDir() + "/" + stem + "xyz.bin").c_str());
+  reader->SetQFileName((DataDir() + "/" + stem + "q.bin").c_str());
+  reader->AutoDetectFormatOn();
+  reader->SetScalarFunctionNumber(name == "loxpost" ? 110 : 100);
+  reader->Update();
+  return Tetrahedralize(vtkDataSet::SafeDownCast(reader->GetOutput()->GetBlock(0)));
+}
+
+/// Not empty, not opaque; every opacity node is a colour node (so that VTK's
+/// linear ray integrator integrates it exactly).
+vtkSmartPointer<vtkVolumeProperty> MakeProperty(vtkUnstructuredGrid* grid)
+{
+  double r[2];
+  grid->GetPointData()->GetScalars()->GetRange(r);
+  const double span = r[1] - r[0];
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(r[0], 0.1, 0.2, 1.0);
+  color->AddRGBPoint(r[0] + 0.3 * span, 0.16, 0.68, 0.58);
+  color->AddRGBPoint(r[0] + 0.5 * span, 0.2, 1.0, 0.3);
+  color->AddRGBPoint(r[1], 1.0, 0.3, 0.1);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(r[0], 0.0);
+  opacity->AddPoint(r[0] + 0.3 * span, 0.1);
+  opacity->AddPoint(r[1], 0.8);
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetScalarOpacityUnitDistance(grid->GetLength() / 8.0);
+  property->ShadeOff();
+  return property;
+}
+
+/// View i of the 14: 6 axis directions, then 8 cube diagonals.
+void PlaceCamera(vtkCamera* camera, vtkUnstructuredGrid* grid, int view)
+{
+  static const double axes[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 },
+    { 0, 0, 1 }, { 0, 0, -1 } };
+  double d[3];
+  if (view < 6)
+  {
+    std::copy(axes[view], axes[view] + 3, d);
+  }
+  else
+  {
+    const int b = view - 6;
+    d[0] = (b & 1) ? 1 : -1;
+    d[1] = (b & 2) ? 1 : -1;
+    d[2] = (b & 4) ? 1 : -1;
+  }
+  const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  double bounds[6], centre[3];
+  grid->GetBounds(bounds);
+  for (int k = 0; k < 3; ++k)
+  {
+    centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
+  }
+  const double radius = 0.5 * grid->GetLength();
+  const double distance = radius / std::sin(0.5 * 30.0 * M_PI / 180.0);
+  camera->SetViewAngle(30.0);
+  camera->SetFocalPoint(centre);
+  camera->SetPosition(centre[0] + distance * d[0] / norm, centre[1] + distance * d[1] / norm,
+    centre[2] + distance * d[2] / norm);
+  const bool vertical = view == 2 || view == 3;
+  camera->SetViewUp(vertical ? 1 : 0, vertical ? 0 : 1, 0);
+  camera->SetClippingRange(distance - radius * 1.01, distance + radius * 1.01);
+}
+
+double PeakMegabytes()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
+
+/// The exact image of a view, from the cache or computed and cached.
+std::vector<float> ReferenceImage(const Options& o, const std::string& dataset,
+  vtkUnstructuredGrid* grid, vtkVolumeProperty* property, vtkCamera* camera, int view)
+{
+  const size_t values = static_cast<size_t>(o.Size) * o.Size * 4;
+  std::ostringstream key;
+  key << o.CacheDir << "/" << dataset << "_" << kPropertyVersion << "_v" << view << "_" << o.Size
+      << ".f32";
+  std::vector<float> image(values);
+  std::ifstream cached(key.str(), std::ios::binary);
+  if (cached.read(reinterpret_cast<char*>(image.data()), values * sizeof(float)))
+  {
+    return image;
+  }
+  vtkNew<vtkHAVSReferenceRenderer> reference;
+  reference->SetInputData(grid);
+  reference->SetProperty(property);
+  reference->SetCamera(camera);
+  reference->SetSize(o.Size, o.Size);
+  reference->Render();
+  std::copy(reference->GetImage()->GetPointer(0), reference->GetImage()->GetPointer(0) + values,
+    image.begin());
+  std::system(("mkdir -p '" + o.CacheDir + "'").c_str());
+  std::ofstream(key.str(), std::ios::binary)
+    .write(reinterpret_cast<const char*>(image.data()), values * sizeof(float));
+  return image;
+}
+
+double Median(std::vector<double> v)
+{
+  if (v.empty())
+  {
+    return NAN;
+  }
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// One (data set, configuration): prints a RESULT line.
+int RunWorker(const Options& o)
+{
+  const std::string dataset = o.DataSets.at(0), config = o.Configs.at(0);
+  vtkSmartPointer<vtkUnstructuredGrid> grid = Load(dataset);
+  if (!grid || grid->GetNumberOfCells() == 0 || !grid->GetPointData()->GetScalars())
+  {
+    std::cerr << "cannot load " << dataset << std::endl;
+    return EXIT_FAILURE;
+  }
+  auto property = MakeProperty(grid);
+  const vtkIdType tets = grid->GetNumberOfCells();
+
+  std::vector<double> frame, sort, draw, flush, composite;
+  double sumSquares = 0, maxError = 0;
+  double over1 = 0, pixels = 0;
+  int viewsDone = 0;
+  if (config == "sort-bound")
+  {
+    // The centroid sort alone, for every view.
+    vtkNew<vtkHAVSFaceSet> faces;
+    faces->Build(grid);
+    vtkNew<vtkHAVSFaceSorter> sorter;
+    vtkNew<vtkCamera> camera;
+    const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+    for (int view = 0; view < o.Views; ++view)
+    {
+      PlaceCamera(camera, grid, view);
+      double eye[3], dop[3];
+      camera->GetPosition(eye);
+      camera->GetDirectionOfProjection(dop);
+      for (int r = 0; r < o.Repeats; ++r)
+      {
+        sorter->Invalidate();
+        sorter->Sort(faces, identity, eye, dop, false);
+        frame.push_back(1000.0 * sorter->GetLastSortSeconds());
+      }
+      ++viewsDone;
+    }
+  }
+  else
+  {
+    vtkSmartPointer<vtkRenderWindow> window;
+    window.TakeReference(vtkHAVSRenderWindowFactory::CreateRenderWindow());
+    if (!window)
+    {
+      return EXIT_FAILURE;
+    }
+    window->SetSize(o.Size, o.Size);
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetBackground(0, 0, 0);
+    window->AddRenderer(renderer);
+    vtkSmartPointer<vtkUnstructuredGridVolumeMapper> mapper;
+    vtkHAVSVolumeMapper* havs = nullptr;
+    if (config.rfind("havs", 0) == 0 || config == "raster-bound")
+    {
+      auto m = vtkSmartPointer<vtkHAVSVolumeMapper>::New();
+      m->MeasureStageTimesOn();
+      m->SetEarlyRayTerminationOpacity(0.999);
+      if (config == "havs-lists")
+      {
+        m->SetKBufferPathToFragmentLists();
+      }
+      else if (config == "raster-bound")
+      {
+        m->FaceRasterBoundModeOn();
+      }
+      else
+      {
+        const size_t k = config.find("-k");
+        m->SetKBufferSize(k == std::string::npos ? 6 : std::atoi(config.c_str() + k + 2));
+        const size_t t = config.find("-table");
+        const int table = t == std::string::npos ? 128 : std::atoi(config.c_str() + t + 6);
+        m->SetTableScalarResolution(table);
+        m->SetTableLengthResolution(table);
+      }
+      havs = m;
+      mapper = m;
+    }
+    else if (config == "pt")
+    {
+      mapper = vtkSmartPointer<vtkProjectedTetrahedraMapper>::New();
+    }
+    else if (config == "zsweep" || config == "raycast")
+    {
+      if (config == "zsweep")
+      {
+        auto m = vtkSmartPointer<vtkUnstructuredGridVolumeZSweepMapper>::New();
+        m->SetImageSampleDistance(1.0);
+        m->AutoAdjustSampleDistancesOff();
+        m->SetRayIntegrator(vtkNew<vtkUnstructuredGridLinearRayIntegrator>());
+        mapper = m;
+      }
+      else
+      {
+        auto m = vtkSmartPointer<vtkUnstructuredGridVolumeRayCastMapper>::New();
+        m->SetImageSampleDistance(1.0);
+        m->AutoAdjustSampleDistancesOff();
+        m->SetRayIntegrator(vtkNew<vtkUnstructuredGridLinearRayIntegrator>());
+        mapper = m;
+      }
+    }
+    else
+    {
+      std::cerr << "unknown configuration " << config << std::endl;
+      return EXIT_FAILURE;
+    }
+    mapper->SetInputData(grid);
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(mapper);
+    volume->SetProperty(property);
+    renderer->AddVolume(volume);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    PlaceCamera(camera, grid, 0);
+    window->Render(); // warm-up: faces, tables, shaders (twice: drivers compile lazily)
+    window->Render();
+    const double start = vtkTimerLog::GetUniversalTime();
+    for (int view = 0; view < o.Views; ++view)
+    {
+      PlaceCamera(camera, grid, view);
+      for (int r = 0; r < o.Repeats; ++r)
+      {
+        const double t0 = vtkTimerLog::GetUniversalTime();
+        window->Render();
+        window->WaitForCompletion();
+        frame.push_back(1000.0 * (vtkTimerLog::GetUniversalTime() - t0));
+        if (havs)
+        {
+          sort.push_back(1000.0 * havs->GetLastSortSeconds());
+          draw.push_back(1000.0 * havs->GetLastDrawSeconds());
+          flush.push_back(1000.0 * havs->GetLastFlushSeconds());
+          composite.push_back(1000.0 * havs->GetLastCompositeSeconds());
+        }
+      }
+      if (config != "raster-bound")
+      {
+        vtkNew<vtkFloatArray> rgba;
+        window->GetRGBAPixelData(0, 0, o.Size - 1, o.Size - 1, 0, rgba);
+        const std::vector<float> exact =
+          ReferenceImage(o, dataset, grid, property, camera, view);
+        for (size_t p = 0; p < static_cast<size_t>(o.Size) * o.Size; ++p)
+        {
+          double worst = 0;
+          for (int c = 0; c < 3; ++c)
+          {
+            const double e = std::fabs(double(rgba->GetValue(4 * p + c)) - exact[4 * p + c]);
+            sumSquares += e * e;
+            worst = std::max(worst, e);
+          }
+          maxError = std::max(maxError, worst);
+          over1 += worst > 1.0 / 255 ? 1 : 0;
+          pixels += 1;
+        }
+      }
+      ++viewsDone;
+      if (vtkTimerLog::GetUniversalTime() - start > o.Budget)
+      {
+        break;
+      }
+    }
+  }
+  const double rmse = pixels > 0 ? std::sqrt(sumSquares / (3 * pixels)) : NAN;
+  if (pixels == 0)
+  {
+    maxError = NAN;
+  }
+  std::printf("RESULT dataset=%s config=%s tets=%lld views=%d frames=%zu ms_median=%.3f "
+              "ms_min=%.3f ms_max=%.3f sort_ms=%.3f draw_ms=%.3f flush_ms=%.3f "
+              "composite_ms=%.3f rmse=%.6f max=%.6f over1=%.6f peak_mb=%.1f\n",
+    dataset.c_str(), config.c_str(), static_cast<long long>(tets), viewsDone, frame.size(),
+    Median(frame), frame.empty() ? NAN : *std::min_element(frame.begin(), frame.end()),
+    frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort),
+    Median(draw), Median(flush), Median(composite), rmse, maxError,
+    pixels > 0 ? over1 / pixels : NAN, PeakMegabytes());
+  return EXIT_SUCCESS;
+}
+
+std::map<std::string, std::string> ParseResult(const std::string& line)
+{
+  std::map<std::string, std::string> fields;
+  std::stringstream in(line.substr(7));
+  std::string item;
+  while (in >> item)
+  {
+    const size_t eq = item.find('=');
+    if (eq != std::string::npos)
+    {
+      fields[item.substr(0, eq)] = item.substr(eq + 1);
+    }
+  }
+  return fields;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options o;
+  o.Self = argv[0];
+  std::string datasets, configs;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
+    if (a == "--quick")
+      o.Quick = true;
+    else if (a == "--worker")
+      o.Worker = true;
+    else if (a == "--size")
+      o.Size = std::max(16, std::atoi(next().c_str()));
+    else if (a == "--views")
+      o.Views = std::min(14, std::max(1, std::atoi(next().c_str())));
+    else if (a == "--repeats")
+      o.Repeats = std::max(1, std::atoi(next().c_str()));
+    else if (a == "--budget")
+      o.Budget = std::atof(next().c_str());
+    else if (a == "--datasets")
+      datasets = next();
+    else if (a == "--configs")
+      configs = next();
+    else if (a == "--output-dir")
+      o.OutputDir = next();
+    else if (a == "--cache-dir")
+      o.CacheDir = next();
+    else
+    {
+      std::cout << "usage: havs_benchmark [--quick] [--size N] [--views N] [--repeats N] "
+                   "[--datasets a,b] [--configs a,b] [--output-dir DIR] [--cache-dir DIR] "
+                   "[--budget SECONDS]\n";
+      return a == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
+    }
+  }
+  if (o.Quick)
+  {
+    // A small subset; explicit --size, --views, --repeats, --budget win.
+    bool set[4] = { false, false, false, false };
+    for (int i = 1; i < argc; ++i)
+    {
+      const std::string a = argv[i];
+      set[0] = set[0] || a == "--size";
+      set[1] = set[1] || a == "--views";
+      set[2] = set[2] || a == "--repeats";
+      set[3] = set[3] || a == "--budget";
+    }
+    o.Size = set[0] ? o.Size : 256;
+    o.Views = set[1] ? o.Views : 2;
+    o.Repeats = set[2] ? o.Repeats : 1;
+    o.Budget = set[3] ? o.Budget : 60;
+  }
+  o.DataSets = Split(!datasets.empty()
+      ? datasets
+      : (o.Quick ? "loxpostvtk,bluntfin" : "loxpostvtk,bluntfin,combustor,loxpost,gen1M,gen4M,gen10M"));
+  o.Configs = Split(!configs.empty()
+      ? configs
+      : (o.Quick ? "havs-k2,havs-k6,havs-k14,raster-bound,sort-bound,pt,raycast"
+                 : "havs-k1,havs-k2,havs-k4,havs-k6,havs-k8,havs-k14,havs-k14-table32,"
+                   "havs-k14-table64,havs-lists,raster-bound,sort-bound,pt,zsweep,raycast"));
+  if (o.Worker)
+  {
+    return RunWorker(o);
+  }
+
+  // Coordinator: every (data set, configuration) in a child process.
+  std::system(("mkdir -p '" + o.OutputDir + "' '" + o.CacheDir + "'").c_str());
+  const std::string csvPath = o.OutputDir + "/benchmark.csv";
+  std::ofstream csv(csvPath);
+  csv << "dataset,config,tets,views,frames,ms_median,ms_min,ms_max,sort_ms,draw_ms,flush_ms,"
+         "composite_ms,mtets_per_s,rmse,max,over1,peak_mb\n";
+  std::ostringstream markdown;
+  for (const std::string& dataset : o.DataSets)
+  {
+    std::vector<std::map<std::string, std::string>> rows;
+    for (const std::string& config : o.Configs)
+    {
+      std::ostringstream cmd;
+      cmd << "'" << o.Self << "' --worker --datasets " << dataset << " --configs " << config
+          << " --size " << o.Size << " --views " << o.Views << " --repeats " << o.Repeats
+          << " --budget " << o.Budget << " --cache-dir '" << o.CacheDir << "' 2>/dev/null";
+      std::cerr << "havs_benchmark: " << dataset << " / " << config << std::endl;
+      FILE* pipe = popen(cmd.str().c_str(), "r");
+      std::string line, result;
+      char buffer[4096];
+      while (pipe && std::fgets(buffer, sizeof(buffer), pipe))
+      {
+        line = buffer;
+        if (line.rfind("RESULT ", 0) == 0)
+        {
+          result = line;
+        }
+      }
+      if (pipe)
+      {
+        pclose(pipe);
+      }
+      if (result.empty())
+      {
+        std::cerr << "havs_benchmark: " << dataset << " / " << config << " failed" << std::endl;
+        continue;
+      }
+      auto r = ParseResult(result);
+      const double ms = std::atof(r["ms_median"].c_str());
+      const double mtets = ms > 0 ? std::atof(r["tets"].c_str()) / (ms * 1000.0) : NAN;
+      r["mtets_per_s"] = std::to_string(mtets);
+      csv << r["dataset"] << "," << r["config"] << "," << r["tets"] << "," << r["views"] << ","
+          << r["frames"] << "," << r["ms_median"] << "," << r["ms_min"] << "," << r["ms_max"] << ","
+          << r["sort_ms"] << "," << r["draw_ms"] << "," << r["flush_ms"] << ","
+          << r["composite_ms"] << "," << r["mtets_per_s"] << "," << r["rmse"] << "," << r["max"]
+          << "," << r["over1"] << "," << r["peak_mb"] << "\n";
+      csv.flush();
+      rows.push_back(r);
+    }
+    // Ratios against the face-raster bound and against HAVS k = 6.
+    double bound = NAN, havs6 = NAN;
+    for (auto& r : rows)
+    {
+      if (r["config"] == "raster-bound")
+        bound = std::atof(r["ms_median"].c_str());
+      if (r["config"] == "havs-k6")
+        havs6 = std::atof(r["ms_median"].c_str());
+    }
+    markdown << "\n### " << dataset << " (" << (rows.empty() ? "?" : rows[0]["tets"]) << " tets, "
+             << o.Size << "², " << o.Views << " views × " << o.Repeats << ")\n\n"
+             << "| configuration | ms median | min | max | sort | draw | flush | composite | "
+                "Mtets/s | × raster bound | HAVS k=6 speed-up | peak MB | RMSE | max error | px > "
+                "1/255 |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (auto& r : rows)
+    {
+      const double ms = std::atof(r["ms_median"].c_str());
+      char line[1024];
+      std::snprintf(line, sizeof(line),
+        "| %s%s | %.1f | %.1f | %.1f | %s | %s | %s | %s | %.3f | %.2f | %.2f | %.0f | %s | %s | "
+        "%s |\n",
+        r["config"].c_str(),
+        std::atoi(r["views"].c_str()) < o.Views ? (" (" + r["views"] + " views)").c_str() : "",
+        ms, std::atof(r["ms_min"].c_str()), std::atof(r["ms_max"].c_str()),
+        r["sort_ms"] == "nan" ? "-" : r["sort_ms"].c_str(),
+        r["draw_ms"] == "nan" ? "-" : r["draw_ms"].c_str(),
+        r["flush_ms"] == "nan" ? "-" : r["flush_ms"].c_str(),
+        r["composite_ms"] == "nan" ? "-" : r["composite_ms"].c_str(),
+        std::atof(r["mtets_per_s"].c_str()), ms / bound, ms / havs6,
+        std::atof(r["peak_mb"].c_str()), r["rmse"] == "nan" ? "-" : r["rmse"].c_str(),
+        r["max"] == "nan" ? "-" : r["max"].c_str(),
+        r["over1"] == "nan" ? "-" : r["over1"].c_str());
+      markdown << line;
+    }
+  }
+  csv.close();
+  std::string renderer = "(unknown)";
+  {
+    vtkSmartPointer<vtkRenderWindow> window;
+    window.TakeReference(vtkHAVSRenderWindowFactory::CreateRenderWindow());
+    if (window)
+    {
+      window->Render();
+      renderer = window->ReportCapabilities();
+      const size_t a = renderer.find("OpenGL renderer string:");
+      renderer = a == std::string::npos ? "(unknown)" : renderer.substr(a + 24, renderer.find('\n', a) - a - 24);
+    }
+  }
+  std::ostringstream report;
+  report << "# vtkHAVS benchmark: run time against error\n\n"
+         << "Generated by `build/bin/havs_benchmark";
+  for (int i = 1; i < argc; ++i)
+  {
+    report << " " << argv[i];
+  }
+  report << "` (not edited by hand). GL renderer: " << renderer << "; "
+         << vtkSMPTools::GetEstimatedNumberOfThreads() << " threads, SMP backend "
+         << vtkSMPTools::GetBackend() << ". Times are ms per frame with the GPU work finished; "
+         << "error is the window colour against the exact reference. Absolute times mean "
+            "something only on a GPU; compare ratios.\n"
+         << markdown.str()
+         << "\nCSV: `benchmark.csv`. Plots (when matplotlib is installed): `benchmark_time_error.png`, "
+            "`benchmark_time_tets.png`.\n";
+  std::ofstream(o.OutputDir + "/benchmarks.md") << report.str();
+  std::cout << report.str();
+  // Plots, where matplotlib is there.
+  const char* source = std::getenv("HAVS_SOURCE_DIR");
+  const std::string script = std::string(source ? source : ".") + "/Apps/havs_benchmark_plots.py";
+  std::system(("/usr/bin/python3 '" + script + "' '" + csvPath + "' '" + o.OutputDir + "'").c_str());
+  return EXIT_SUCCESS;
+}

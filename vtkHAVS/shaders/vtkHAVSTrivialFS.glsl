@@ -1,0 +1,9 @@
+#version 430 core
+// vtkHAVS benchmark aid: the cheapest fragment shader, to time the faces'
+// rasterization alone (the lower bound of any face-based method).
+layout(location = 0) out vec4 havsCount;
+
+void main()
+{
+  havsCount = vec4(1.0 / 255.0);
+}
