@@ -1,5 +1,5 @@
-"""Plots of havs_benchmark's CSV: time against RMSE (log axes, Pareto front)
-and time against the number of tets. Needs matplotlib (Debian
+"""Plots of havs_benchmark's CSV: time against RMSE (log axes, Pareto front),
+time against the number of tets, time against the number of pixels. Needs matplotlib (Debian
 python3-matplotlib); without it, says so and does nothing."""
 import csv
 import math
@@ -61,4 +61,19 @@ ax.set_xlabel("tetrahedra")
 ax.set_ylabel("ms per frame (median)")
 ax.legend(fontsize=6)
 fig.savefig(f"{out}/benchmark_time_tets.png", dpi=120)
-print("havs_benchmark_plots: wrote benchmark_time_error.png, benchmark_time_tets.png")
+fig, ax = plt.subplots(figsize=(8, 6))
+for key in sorted({(r["dataset"], r["config"]) for r in rows}):
+    points = sorted((number(r.get("size", "")) ** 2, number(r["ms_median"])) for r in rows
+                    if (r["dataset"], r["config"]) == key and number(r.get("size", ""))
+                    and number(r["ms_median"]))
+    if points:
+        ax.plot([p[0] for p in points], [p[1] for p in points], marker="o",
+                label=f"{key[0]} {key[1]}")
+ax.set_xscale("log")
+ax.set_yscale("log")
+ax.set_xlabel("pixels")
+ax.set_ylabel("ms per frame (median)")
+ax.legend(fontsize=6)
+fig.savefig(f"{out}/benchmark_time_pixels.png", dpi=120)
+print("havs_benchmark_plots: wrote benchmark_time_error.png, benchmark_time_tets.png, "
+      "benchmark_time_pixels.png")
