@@ -13,7 +13,9 @@
 // Configurations: HAVS at k = 1, 2, 4, 6, 8, 14 (128^3 table), HAVS k = 14 with
 // 32^3 and 64^3 tables, HAVS fragment lists (exact per-pixel sort),
 // raster-bound (the same faces in the same order with a trivial shader: the
-// lower bound of any face-based method; sort-bound is the sort alone), and
+// lower bound of any face-based method; sort-bound is the sort alone),
+// reference (the exact images, computed and cached in their own process before
+// the timed configurations; always run first), and
 // VTK's vtkProjectedTetrahedraMapper, vtkUnstructuredGridVolumeZSweepMapper and
 // vtkUnstructuredGridVolumeRayCastMapper (ImageSampleDistance 1,
 // AutoAdjustSampleDistances off, vtkUnstructuredGridLinearRayIntegrator).
@@ -238,8 +240,13 @@ double PeakMegabytes()
 
 /// The exact image of a view, from the cache or computed and cached.
 std::vector<float> ReferenceImage(const Options& o, const std::string& dataset,
-  vtkUnstructuredGrid* grid, vtkVolumeProperty* property, vtkCamera* camera, int view)
+  vtkUnstructuredGrid* grid, vtkVolumeProperty* property, vtkCamera* camera, int view,
+  bool* computed = nullptr)
 {
+  if (computed)
+  {
+    *computed = false;
+  }
   const size_t values = static_cast<size_t>(o.Size) * o.Size * 4;
   std::ostringstream key;
   key << o.CacheDir << "/" << dataset << "_" << kPropertyVersion << "_v" << view << "_" << o.Size
@@ -256,6 +263,10 @@ std::vector<float> ReferenceImage(const Options& o, const std::string& dataset,
   reference->SetCamera(camera);
   reference->SetSize(o.Size, o.Size);
   reference->Render();
+  if (computed)
+  {
+    *computed = true;
+  }
   std::copy(reference->GetImage()->GetPointer(0), reference->GetImage()->GetPointer(0) + values,
     image.begin());
   std::system(("mkdir -p '" + o.CacheDir + "'").c_str());
@@ -292,7 +303,26 @@ int RunWorker(const Options& o)
   double sumSquares = 0, maxError = 0;
   double over1 = 0, pixels = 0;
   int viewsDone = 0;
-  if (config == "sort-bound")
+  if (config == "reference")
+  {
+    // The exact images of every view, computed once and cached before any
+    // timed configuration runs (so no mapper's peak memory holds them); the
+    // time is that of the exact renderer, where it was not in the cache.
+    vtkNew<vtkCamera> camera;
+    for (int view = 0; view < o.Views; ++view)
+    {
+      PlaceCamera(camera, grid, view);
+      bool computed = false;
+      const double t0 = vtkTimerLog::GetUniversalTime();
+      ReferenceImage(o, dataset, grid, property, camera, view, &computed);
+      if (computed)
+      {
+        frame.push_back(1000.0 * (vtkTimerLog::GetUniversalTime() - t0));
+      }
+      ++viewsDone;
+    }
+  }
+  else if (config == "sort-bound")
   {
     // The centroid sort alone, for every view.
     vtkNew<vtkHAVSFaceSet> faces;
@@ -390,7 +420,10 @@ int RunWorker(const Options& o)
     vtkCamera* camera = renderer->GetActiveCamera();
     PlaceCamera(camera, grid, 0);
     window->Render(); // warm-up: faces, tables, shaders (twice: drivers compile lazily)
-    window->Render();
+    if (config != "zsweep" && config != "raycast")
+    {
+      window->Render(); // (the CPU mappers' second frame would only cost time)
+    }
     double rendering = 0.0; // the budget counts rendering only, not the reference
     for (int view = 0; view < o.Views; ++view)
     {
@@ -445,12 +478,13 @@ int RunWorker(const Options& o)
   }
   std::printf("RESULT dataset=%s config=%s size=%d tets=%lld views=%d frames=%zu ms_median=%.3f "
               "ms_min=%.3f ms_max=%.3f sort_ms=%.3f draw_ms=%.3f flush_ms=%.3f "
-              "composite_ms=%.3f rmse=%.6f max=%.6f over1=%.6f peak_mb=%.1f\n",
+              "composite_ms=%.3f rmse=%.6f max=%.6f over1=%.6f peak_mb=%.1f smp=%s threads=%d\n",
     dataset.c_str(), config.c_str(), o.Size, static_cast<long long>(tets), viewsDone, frame.size(),
     Median(frame), frame.empty() ? NAN : *std::min_element(frame.begin(), frame.end()),
     frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort),
     Median(draw), Median(flush), Median(composite), rmse, maxError,
-    pixels > 0 ? over1 / pixels : NAN, PeakMegabytes());
+    pixels > 0 ? over1 / pixels : NAN, PeakMegabytes(), vtkSMPTools::GetBackend(),
+    vtkSMPTools::GetEstimatedNumberOfThreads());
   return EXIT_SUCCESS;
 }
 
@@ -474,7 +508,51 @@ using Row = std::map<std::string, std::string>;
 
 const char* const kColumns[] = { "dataset", "config", "size", "tets", "views", "frames", "ms_median",
   "ms_min", "ms_max", "sort_ms", "draw_ms", "flush_ms", "composite_ms", "mtets_per_s", "rmse",
-  "max", "over1", "peak_mb" };
+  "max", "over1", "peak_mb", "smp", "threads", "command" };
+
+/// A CSV field, quoted where it holds a comma or a quote.
+std::string CsvField(const std::string& text)
+{
+  if (text.find_first_of(",\"") == std::string::npos)
+  {
+    return text;
+  }
+  std::string quoted = "\"";
+  for (char c : text)
+  {
+    quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  }
+  return quoted + "\"";
+}
+
+/// The fields of one CSV line (quoted fields as CsvField writes them).
+std::vector<std::string> CsvFields(const std::string& line)
+{
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (size_t i = 0; i < line.size(); ++i)
+  {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+    {
+      fields.back() += '"';
+      ++i;
+    }
+    else if (c == '"')
+    {
+      quoted = !quoted;
+    }
+    else if (c == ',' && !quoted)
+    {
+      fields.emplace_back();
+    }
+    else
+    {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
 
 /// Runs a worker and returns its RESULT fields (empty when it failed).
 Row RunChild(const std::string& command)
@@ -509,7 +587,7 @@ void WriteCsv(const std::vector<Row>& rows, const std::string& path)
     for (size_t c = 0; c < sizeof(kColumns) / sizeof(kColumns[0]); ++c)
     {
       const auto it = r.find(kColumns[c]);
-      csv << (c ? "," : "") << (it == r.end() ? "" : it->second);
+      csv << (c ? "," : "") << (it == r.end() ? "" : CsvField(it->second));
     }
     csv << "\n";
   }
@@ -523,21 +601,15 @@ std::vector<Row> ReadCsv(const std::string& path)
   std::vector<std::string> header;
   if (std::getline(in, line))
   {
-    std::stringstream h(line);
-    std::string name;
-    while (std::getline(h, name, ','))
-    {
-      header.push_back(name);
-    }
+    header = CsvFields(line);
   }
   while (std::getline(in, line))
   {
-    std::stringstream fields(line);
-    std::string value;
+    const std::vector<std::string> fields = CsvFields(line);
     Row r;
-    for (size_t c = 0; c < header.size() && std::getline(fields, value, ','); ++c)
+    for (size_t c = 0; c < header.size() && c < fields.size(); ++c)
     {
-      r[header[c]] = value;
+      r[header[c]] = fields[c];
     }
     rows.push_back(r);
   }
@@ -580,6 +652,51 @@ std::string Machine()
   return model + " (" + std::to_string(cores) + " logical CPUs)";
 }
 
+/// The SMP backends and thread counts the rows ran with, e.g. "STDThread (2 threads)".
+std::string SmpBackends(const std::vector<Row>& rows)
+{
+  std::vector<std::string> seen;
+  for (const Row& r : rows)
+  {
+    const auto smp = r.find("smp");
+    const auto threads = r.find("threads");
+    const std::string text = smp == r.end() || smp->second.empty()
+      ? std::string("not recorded")
+      : smp->second + " (" + (threads == r.end() ? "?" : threads->second) + " threads)";
+    if (std::find(seen.begin(), seen.end(), text) == seen.end())
+    {
+      seen.push_back(text);
+    }
+  }
+  std::string out;
+  for (size_t i = 0; i < seen.size(); ++i)
+  {
+    out += (i ? ", " : "") + seen[i];
+  }
+  return out.empty() ? "none" : out;
+}
+
+/// ", from rows measured by `a`, `b`" where the rows came from other runs.
+std::string MeasuredBy(const std::vector<Row>& rows, const std::string& command)
+{
+  std::vector<std::string> commands;
+  for (const Row& r : rows)
+  {
+    const auto it = r.find("command");
+    if (it != r.end() && !it->second.empty() && it->second != command &&
+      std::find(commands.begin(), commands.end(), it->second) == commands.end())
+    {
+      commands.push_back(it->second);
+    }
+  }
+  std::string text;
+  for (size_t i = 0; i < commands.size(); ++i)
+  {
+    text += (i ? ", `" : ", from rows measured by `") + commands[i] + "`";
+  }
+  return text;
+}
+
 std::string Report(const std::vector<Row>& rows, const Options& o, const std::string& command)
 {
   std::string renderer = "(unknown)";
@@ -599,16 +716,19 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
   }
   std::ostringstream md;
   md << "# vtkHAVS benchmark: run time against error\n\n"
-     << "Generated by `" << command << "` (not edited by hand). GL renderer: " << renderer
-     << "; machine: " << Machine() << ", " << vtkSMPTools::GetEstimatedNumberOfThreads()
-     << " threads, SMP backend "
-     << vtkSMPTools::GetBackend() << ".\n\n"
+     << "Generated by `" << command << "` (not edited by hand)" << MeasuredBy(rows, command)
+     << ". GL renderer: " << renderer
+     << "; machine: " << Machine() << "; vtkSMPTools backend of the measured rows: "
+     << SmpBackends(rows) << ".\n\n"
      << "Each configuration ran in its own process over the fixed viewpoints (the 6 axis "
-        "directions and the 8 cube diagonals, after two warm-up frames). Times are ms per frame "
+        "directions and the 8 cube diagonals, after two warm-up frames, one for ZSweep and RayCast, which run on the CPU). Times are ms per frame "
         "with the GPU work finished (median, min, max); HAVS's stages are medians. Error: the "
         "colour seen in the window against the exact reference (vtkHAVSReferenceRenderer). "
         "raster-bound draws the same faces in the same order with a trivial shader (the lower "
         "bound of any face-based method here); sort-bound is the centroid sort alone. "
+        "reference is the exact renderer (vtkHAVSReferenceRenderer, on the CPU) making the "
+        "cached reference images in its own process before the timed configurations run; its "
+        "time is given only for the views it computed (not those read from the cache). "
         "`× raster bound` and `× HAVS k=6` are time ratios. Stock mappers: PT as VTK makes it; "
         "ZSweep and RayCast with ImageSampleDistance 1, AutoAdjustSampleDistances off and "
         "vtkUnstructuredGridLinearRayIntegrator. gen1M/gen4M/gen10M: tetrahedralized blocks of "
@@ -764,6 +884,14 @@ int main(int argc, char* argv[])
     return RunWorker(o);
   }
 
+  std::ostringstream commandLine;
+  commandLine << "build/bin/havs_benchmark";
+  for (int i = 1; i < argc; ++i)
+  {
+    commandLine << " " << argv[i];
+  }
+  const std::string command = commandLine.str();
+
   // Coordinator: every (data set, configuration) in a child process, unless
   // the report is only made again from an earlier run's CSV.
   std::system(("mkdir -p '" + o.OutputDir + "' '" + o.CacheDir + "'").c_str());
@@ -793,7 +921,14 @@ int main(int argc, char* argv[])
     for (const std::string& dataset : o.DataSets)
     {
       for (int size : o.Sizes)
-      for (const std::string& config : o.Configs)
+      {
+      // The exact reference first, in its own process, for every view.
+      std::vector<std::string> configs = o.Configs;
+      if (std::find(configs.begin(), configs.end(), "reference") == configs.end())
+      {
+        configs.insert(configs.begin(), "reference");
+      }
+      for (const std::string& config : configs)
       {
         std::ostringstream cmd;
         cmd << "'" << o.Self << "' --worker --datasets " << dataset << " --configs " << config
@@ -808,19 +943,15 @@ int main(int argc, char* argv[])
         }
         const double ms = std::atof(r["ms_median"].c_str());
         r["mtets_per_s"] = std::to_string(ms > 0 ? std::atof(r["tets"].c_str()) / (ms * 1000.0) : NAN);
+        r["command"] = command;
         rows.push_back(r);
         WriteCsv(rows, csvPath); // after every row: a long run keeps what it measured
+      }
       }
     }
   }
   WriteCsv(rows, csvPath);
-  std::ostringstream command;
-  command << "build/bin/havs_benchmark";
-  for (int i = 1; i < argc; ++i)
-  {
-    command << " " << argv[i];
-  }
-  const std::string report = Report(rows, o, command.str());
+  const std::string report = Report(rows, o, command);
   std::ofstream(o.OutputDir + "/benchmarks.md") << report;
   std::cout << report;
   // Plots, where matplotlib is there.
