@@ -329,11 +329,114 @@ void WriteFaces(const FaceUseBuckets& buckets, const std::vector<vtkIdType>& fac
     }
   });
 }
+
+/// Whether the outward-wound boundary faces form one closed, connected,
+/// 2-manifold surface, locally convex at every edge (see IsConvex()).
+bool BoundaryIsConvex(const std::vector<uint32_t>& faceVertices,
+  const std::vector<uint8_t>& boundaryFlags, const std::vector<double>& coordinates,
+  double tolerance)
+{
+  struct EdgeUse
+  {
+    uint64_t Key;     // the edge's two point ids, smaller first
+    uint32_t Face;    // index among the boundary faces
+    uint32_t Opposite; // the face's third point
+  };
+  std::vector<uint32_t> faces; // the boundary faces' indices
+  for (size_t f = 0; f < boundaryFlags.size(); ++f)
+  {
+    if (boundaryFlags[f])
+    {
+      faces.push_back(static_cast<uint32_t>(f));
+    }
+  }
+  if (faces.size() < 4)
+  {
+    return false;
+  }
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * faces.size());
+  for (uint32_t b = 0; b < faces.size(); ++b)
+  {
+    const uint32_t* v = &faceVertices[3 * static_cast<size_t>(faces[b])];
+    for (int e = 0; e < 3; ++e)
+    {
+      const uint64_t p = v[e], q = v[(e + 1) % 3];
+      uses.push_back({ p < q ? (p << 32 | q) : (q << 32 | p), b, v[(e + 2) % 3] });
+    }
+  }
+  std::sort(uses.begin(), uses.end(),
+    [](const EdgeUse& a, const EdgeUse& b) { return a.Key < b.Key; });
+
+  // Union-find over the boundary faces: one component.
+  std::vector<uint32_t> parent(faces.size());
+  for (uint32_t i = 0; i < parent.size(); ++i)
+  {
+    parent[i] = i;
+  }
+  auto root = [&](uint32_t i) {
+    while (parent[i] != i)
+    {
+      parent[i] = parent[parent[i]];
+      i = parent[i];
+    }
+    return i;
+  };
+  // The far point lies on the inner side of the face's plane.
+  auto inside = [&](uint32_t b, uint32_t point) {
+    const uint32_t* v = &faceVertices[3 * static_cast<size_t>(faces[b])];
+    const double* a = &coordinates[3 * static_cast<size_t>(v[0])];
+    const double* c1 = &coordinates[3 * static_cast<size_t>(v[1])];
+    const double* c2 = &coordinates[3 * static_cast<size_t>(v[2])];
+    const double* x = &coordinates[3 * static_cast<size_t>(point)];
+    const double e1[3] = { c1[0] - a[0], c1[1] - a[1], c1[2] - a[2] };
+    const double e2[3] = { c2[0] - a[0], c2[1] - a[1], c2[2] - a[2] };
+    double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+      e1[0] * e2[1] - e1[1] * e2[0] };
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (length == 0.0)
+    {
+      return false;
+    }
+    const double d =
+      (n[0] * (x[0] - a[0]) + n[1] * (x[1] - a[1]) + n[2] * (x[2] - a[2])) / length;
+    return d <= tolerance;
+  };
+  size_t components = faces.size();
+  for (size_t i = 0; i < uses.size();)
+  {
+    size_t j = i;
+    while (j < uses.size() && uses[j].Key == uses[i].Key)
+    {
+      ++j;
+    }
+    if (j - i != 2)
+    {
+      return false; // an open or non-manifold boundary
+    }
+    const EdgeUse& u = uses[i];
+    const EdgeUse& w = uses[i + 1];
+    if (!inside(u.Face, w.Opposite) || !inside(w.Face, u.Opposite))
+    {
+      return false; // a concave (reflex) edge
+    }
+    const uint32_t ru = root(u.Face), rw = root(w.Face);
+    if (ru != rw)
+    {
+      parent[ru] = rw;
+      --components;
+    }
+    i = j;
+  }
+  return components == 1;
+}
 }
 
 //------------------------------------------------------------------------------
 void vtkHAVSFaceSet::Clear()
 {
+  this->Tetrahedra.clear();
+  this->Convex = false;
   this->FaceVertices.clear();
   this->BoundaryFlags.clear();
   this->Centroids.clear();
@@ -421,6 +524,21 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
 
   WriteFaces(buckets, faceStart, coordinates, this->CentroidOrigin, this->FaceVertices,
     this->BoundaryFlags, this->Centroids);
+
+  this->Tetrahedra.reserve(4 * static_cast<size_t>(cells.Used));
+  for (size_t c = 0; c < table.Status.size(); ++c)
+  {
+    if (table.Status[c] == UsedTetrahedron)
+    {
+      this->Tetrahedra.insert(this->Tetrahedra.end(), table.PointIds.begin() + 4 * c,
+        table.PointIds.begin() + 4 * c + 4);
+    }
+  }
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  this->Convex = this->NumberOfNonManifoldFaces == 0 &&
+    BoundaryIsConvex(this->FaceVertices, this->BoundaryFlags, coordinates, 1e-9 * diagonal);
   return true;
 }
 

@@ -76,6 +76,21 @@ public:
   const std::vector<float>& GetCentroids() const { return this->Centroids; }
   const double* GetCentroidOrigin() const { return this->CentroidOrigin; }
 
+  /// Four point ids per used tetrahedron (skipped and degenerate cells left out).
+  const std::vector<uint32_t>& GetTetrahedra() const { return this->Tetrahedra; }
+
+  /**
+   * Whether the mesh is one convex body: its boundary is one closed,
+   * connected, 2-manifold surface that is locally convex at every edge (the
+   * far vertex of each neighbouring boundary face lies on the inner side of
+   * the face's plane, up to 1e-9 of the bounds' diagonal), and no face is
+   * non-manifold. A closed, connected, embedded surface that is locally
+   * convex everywhere bounds a convex body (Hadamard), so a ray meets it at
+   * most twice: once in, once out, and boundary tagging cannot change the
+   * image. Decided once per Build() in O(boundary faces log boundary faces).
+   */
+  bool IsConvex() const { return this->Convex; }
+
   /// The longest edge of the used tetrahedra, in model coordinates.
   vtkGetMacro(LongestEdge, double);
 
@@ -95,6 +110,8 @@ private:
   std::vector<uint32_t> FaceVertices;
   std::vector<uint8_t> BoundaryFlags;
   std::vector<float> Centroids;
+  std::vector<uint32_t> Tetrahedra;
+  bool Convex = false;
   vtkIdType NumberOfBoundaryFaces = 0;
   vtkIdType NumberOfNonManifoldFaces = 0;
   vtkIdType NumberOfTetrahedra = 0;

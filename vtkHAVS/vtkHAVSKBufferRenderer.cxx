@@ -121,6 +121,19 @@ struct vtkHAVSKBufferRenderer::Internals
   bool HaveGeometry = false;
   bool HaveOrder = false;
 
+  // Sections of the mesh with the near and clipping planes (per frame)
+  GLuint SectionArray = 0;
+  GLuint SectionPoints = 0;
+  GLuint SectionScalars = 0;
+  struct SectionDraw
+  {
+    int PlaneIndex;
+    bool Entering;
+    GLint First;
+    GLsizei Count;
+  };
+  std::vector<SectionDraw> SectionDraws;
+
   // Transfer function
   vtkSmartPointer<vtkTextureObject> Table;
   vtkSmartPointer<vtkTextureObject> TransferFunction1D;
@@ -195,7 +208,7 @@ struct vtkHAVSKBufferRenderer::Internals
   {
     this->ReleaseSizeDependent();
     GLuint buffers[] = { this->PointBuffer, this->ScalarBuffer, this->IndexBuffer,
-      this->ListNodes, this->ListCounter };
+      this->ListNodes, this->ListCounter, this->SectionPoints, this->SectionScalars };
     for (GLuint b : buffers)
     {
       if (b)
@@ -205,7 +218,14 @@ struct vtkHAVSKBufferRenderer::Internals
     }
     this->PointBuffer = this->ScalarBuffer = this->IndexBuffer = 0;
     this->ListNodes = this->ListCounter = 0;
+    this->SectionPoints = this->SectionScalars = 0;
+    this->SectionDraws.clear();
     this->ListCapacity = 0;
+    if (this->SectionArray)
+    {
+      glDeleteVertexArrays(1, &this->SectionArray);
+      this->SectionArray = 0;
+    }
     if (this->VertexArray)
     {
       glDeleteVertexArrays(1, &this->VertexArray);
@@ -258,13 +278,46 @@ struct vtkHAVSKBufferRenderer::Internals
     glBindVertexArray(0);
   }
 
-  void DrawFaces(bool flipFacing)
+  /// The sections that enter the clipped volume, the faces in draw order,
+  /// then the sections that leave it (nearest first along every ray).
+  void DrawFaces(vtkShaderProgram* program, const FrameParameters& p)
   {
-    glFrontFace(flipFacing ? GL_CW : GL_CCW);
+    const bool roles = program->IsUniformUsed("havsRole");
+    const bool ownPlane = program->IsUniformUsed("havsOwnPlane");
+    auto drawSections = [&](bool entering) {
+      for (const SectionDraw& d : this->SectionDraws)
+      {
+        if (d.Entering != entering)
+        {
+          continue;
+        }
+        if (roles)
+        {
+          program->SetUniformi("havsRole", entering ? 1 : 2);
+        }
+        if (ownPlane)
+        {
+          program->SetUniformi("havsOwnPlane", d.PlaneIndex);
+        }
+        glBindVertexArray(this->SectionArray);
+        glDrawArrays(GL_TRIANGLES, d.First, d.Count);
+      }
+      if (roles)
+      {
+        program->SetUniformi("havsRole", 0);
+      }
+      if (ownPlane)
+      {
+        program->SetUniformi("havsOwnPlane", -1);
+      }
+    };
+    drawSections(true);
+    glFrontFace(p.FlipFacing ? GL_CW : GL_CCW);
     glBindVertexArray(this->VertexArray);
     glDrawElements(GL_TRIANGLES, this->IndexCount, GL_UNSIGNED_INT, nullptr);
-    glBindVertexArray(0);
     glFrontFace(GL_CCW);
+    drawSections(false);
+    glBindVertexArray(0);
   }
 
   /// (Re)allocates the per-size targets: opaque depth, result.
@@ -357,6 +410,15 @@ struct vtkHAVSKBufferRenderer::Internals
     program->SetUniformi("havsFaceIsBoundary", this->BoundaryTexture->GetTextureUnit());
     program->SetUniformi("havsMinimum", p.BlendMode == 2 ? 1 : 0);
     program->SetUniformi("havsNodeCapacity", static_cast<int>(this->ListCapacity));
+    program->SetUniformi("havsTagging", p.Tagging ? 1 : 0);
+    program->SetUniformf("havsGapLength", p.GapLength);
+    program->SetUniformi("havsRole", 0);
+    program->SetUniformi("havsOwnPlane", -1);
+    program->SetUniformi("havsPlaneCount", p.PlaneCount);
+    if (p.PlaneCount > 0)
+    {
+      program->SetUniform4fv("havsPlanesRC", p.PlaneCount, p.PlanesRC);
+    }
   }
 
   /// Maximum / minimum intensity: the faces with GL_MAX blending into the
@@ -376,7 +438,7 @@ struct vtkHAVSKBufferRenderer::Internals
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendEquation(GL_MAX);
     state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-    this->DrawFaces(p.FlipFacing);
+    this->DrawFaces(program, p);
     state->vtkglBlendEquation(GL_FUNC_ADD);
     state->vtkglDisable(GL_BLEND);
     return true;
@@ -424,7 +486,7 @@ struct vtkHAVSKBufferRenderer::Internals
     }
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-    this->DrawFaces(p.FlipFacing);
+    this->DrawFaces(program, p);
     state->vtkglDisable(GL_BLEND);
     return true;
   }
@@ -482,7 +544,7 @@ struct vtkHAVSKBufferRenderer::Internals
     vtkShaderProgram* program = this->FaceProgram(vtkHAVSKBufferShaders::FetchDrawShader(p.K), p);
     if (program)
     {
-      this->DrawFaces(p.FlipFacing);
+      this->DrawFaces(program, p);
     }
     return program != nullptr;
   }
@@ -518,7 +580,7 @@ struct vtkHAVSKBufferRenderer::Internals
       : nullptr;
     if (program)
     {
-      this->DrawFaces(p.FlipFacing);
+      this->DrawFaces(program, p);
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
     state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -578,7 +640,7 @@ struct vtkHAVSKBufferRenderer::Internals
       {
         break;
       }
-      this->DrawFaces(p.FlipFacing);
+      this->DrawFaces(program, p);
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
         GL_BUFFER_UPDATE_BARRIER_BIT);
       GLuint count = 0;
@@ -829,6 +891,47 @@ void vtkHAVSKBufferRenderer::SetFaceOrder(
   in.BoundaryTexture->CreateTextureBuffer(
     static_cast<unsigned int>(flags.size()), 1, VTK_UNSIGNED_CHAR, in.BoundaryBuffer);
   in.HaveOrder = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSKBufferRenderer::SetSections(const std::vector<Section>& sections)
+{
+  Internals& in = *this->Internal;
+  in.SectionDraws.clear();
+  std::vector<float> points, scalars;
+  for (const Section& section : sections)
+  {
+    const GLsizei count = static_cast<GLsizei>(section.Scalars.size());
+    if (count < 3 || section.PointsMC.size() != 3 * section.Scalars.size())
+    {
+      continue;
+    }
+    in.SectionDraws.push_back({ section.PlaneIndex, section.Entering,
+      static_cast<GLint>(scalars.size()), count });
+    points.insert(points.end(), section.PointsMC.begin(), section.PointsMC.end());
+    scalars.insert(scalars.end(), section.Scalars.begin(), section.Scalars.end());
+  }
+  if (in.SectionDraws.empty())
+  {
+    return;
+  }
+  if (!in.SectionArray)
+  {
+    glGenVertexArrays(1, &in.SectionArray);
+    glGenBuffers(1, &in.SectionPoints);
+    glGenBuffers(1, &in.SectionScalars);
+  }
+  glBindVertexArray(in.SectionArray);
+  glBindBuffer(GL_ARRAY_BUFFER, in.SectionPoints);
+  glBufferData(GL_ARRAY_BUFFER, points.size() * sizeof(float), points.data(), GL_STREAM_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, in.SectionScalars);
+  glBufferData(GL_ARRAY_BUFFER, scalars.size() * sizeof(float), scalars.data(), GL_STREAM_DRAW);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 //------------------------------------------------------------------------------

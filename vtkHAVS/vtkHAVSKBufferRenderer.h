@@ -89,7 +89,28 @@ public:
     bool MeasureStages = false;
     bool KeepResult = false;
     bool RasterBoundOnly = false; // benchmark aid: faces with a trivial shader, nothing else
+    bool Tagging = true;          // boundary faces carry their entry/exit role
+    float GapLength = 3.0e38f;    // segments longer than this contribute nothing (3e38: off)
+    int PlaneCount = 0;           // clipping planes (and the near plane), eye-relative world:
+    float PlanesRC[7][4];         // kept where dot(xyz, x) + w >= 0
   };
+
+  /**
+   * A cross-section of the mesh with plane PlaneIndex of FrameParameters:
+   * triangles (3 points of 3 floats, model coordinates, and 3 normalized
+   * scalars each) drawn as entries into the clipped volume before the faces
+   * (Entering) or as exits after them.
+   */
+  struct Section
+  {
+    int PlaneIndex = 0;
+    bool Entering = true;
+    std::vector<float> PointsMC;
+    std::vector<float> Scalars;
+  };
+
+  /// The sections of the next frames (uploaded at once; empty: none).
+  void SetSections(const std::vector<Section>& sections);
 
   /**
    * Makes `window` the context of every resource. Returns true when the

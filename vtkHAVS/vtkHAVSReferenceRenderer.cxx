@@ -17,10 +17,14 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkGenericCell.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkStaticCellLocator.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolumeProperty.h"
 
@@ -224,6 +228,23 @@ void vtkHAVSReferenceRenderer::SetCamera(vtkCamera* camera)
   this->Modified();
 }
 
+void vtkHAVSReferenceRenderer::SetClippingPlanes(vtkPlaneCollection* planes)
+{
+  this->ClippingPlanes = planes;
+  this->Modified();
+}
+
+vtkPlaneCollection* vtkHAVSReferenceRenderer::GetClippingPlanes()
+{
+  return this->ClippingPlanes;
+}
+
+void vtkHAVSReferenceRenderer::SetOpaqueDepth(vtkFloatArray* depth)
+{
+  this->OpaqueDepth = depth;
+  this->Modified();
+}
+
 void vtkHAVSReferenceRenderer::SetVolumeMatrix(vtkMatrix4x4* matrix)
 {
   if (matrix)
@@ -312,6 +333,38 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
   cam.Parallel = this->Camera->GetParallelProjection() != 0;
   const bool mirrored = this->VolumeMatrix->Determinant() < 0.0;
 
+  // The near and clipping planes, world coordinates: kept where n.x + w >= 0.
+  struct WorldPlane
+  {
+    double N[3];
+    double W;
+  };
+  std::vector<WorldPlane> planes;
+  if (this->NearPlaneClipping)
+  {
+    double range[2];
+    this->Camera->GetClippingRange(range);
+    const double* d = cam.DirectionOfProjection;
+    planes.push_back({ { d[0], d[1], d[2] }, -vtkMath::Dot(d, cam.Eye) - range[0] });
+  }
+  if (this->ClippingPlanes)
+  {
+    for (int i = 0; i < std::min(6, this->ClippingPlanes->GetNumberOfItems()); ++i)
+    {
+      vtkPlane* plane = this->ClippingPlanes->GetItem(i);
+      WorldPlane p;
+      plane->GetNormal(p.N);
+      if (vtkMath::Norm(p.N) > 0.0)
+      {
+        p.W = -vtkMath::Dot(p.N, plane->GetOrigin());
+        planes.push_back(p);
+      }
+    }
+  }
+  auto discarded = [&](const WorldPlane& plane, const double* x) {
+    return vtkMath::Dot(plane.N, x) + plane.W < 0.0;
+  };
+
   // Face-driven traversal: each face tests the pixel centres of its screen box.
   const std::vector<uint32_t>& faceVertices = this->Faces->GetFaceVertices();
   const std::vector<uint8_t>& boundary = this->Faces->GetBoundaryFlags();
@@ -323,6 +376,16 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
     {
       const uint32_t* ids = &faceVertices[3 * f];
       const double* v[3] = { &world[3 * ids[0]], &world[3 * ids[1]], &world[3 * ids[2]] };
+      bool culled = false;
+      for (const WorldPlane& plane : planes)
+      {
+        culled = culled ||
+          (discarded(plane, v[0]) && discarded(plane, v[1]) && discarded(plane, v[2]));
+      }
+      if (culled)
+      {
+        continue; // wholly on the discarded side of a plane
+      }
       int box[4] = { 0, width - 1, 0, height - 1 };
       double lo[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max() };
       double hi[2] = { std::numeric_limits<double>::lowest(),
@@ -411,6 +474,225 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
         });
     }
   });
+  this->NumberOfStartedInside = 0;
+  const float* opaque = this->OpaqueDepth &&
+      this->OpaqueDepth->GetNumberOfValues() >= static_cast<vtkIdType>(width) * height
+    ? this->OpaqueDepth->GetPointer(0)
+    : nullptr;
+  if (!planes.empty() || opaque)
+  {
+    // Each ray's interval [t0, t1] kept by the planes: fragments outside it
+    // go; where it starts or ends inside the mesh, a synthetic entry or exit
+    // fragment carries the mesh's scalar there.
+    double worldBounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+      VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+    for (vtkIdType p = 0; p < numPoints; ++p)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        worldBounds[2 * k] = std::min(worldBounds[2 * k], world[3 * p + k]);
+        worldBounds[2 * k + 1] = std::max(worldBounds[2 * k + 1], world[3 * p + k]);
+      }
+    }
+    double diagonal2 = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      diagonal2 += (worldBounds[2 * k + 1] - worldBounds[2 * k]) *
+        (worldBounds[2 * k + 1] - worldBounds[2 * k]);
+    }
+    const double margin = 1e-9 * std::sqrt(diagonal2);
+    // Rays can start inside the mesh only where a plane cuts its bounds (or
+    // at an eye inside them): only then is the cell locator needed.
+    bool needLocator = !cam.Parallel;
+    for (int k = 0; k < 3; ++k)
+    {
+      needLocator = needLocator && cam.Eye[k] >= worldBounds[2 * k] - margin &&
+        cam.Eye[k] <= worldBounds[2 * k + 1] + margin;
+    }
+    for (const WorldPlane& plane : planes)
+    {
+      bool positive = false, negative = false;
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        const double x[3] = { worldBounds[corner & 1 ? 1 : 0], worldBounds[corner & 2 ? 3 : 2],
+          worldBounds[corner & 4 ? 5 : 4] };
+        (discarded(plane, x) ? negative : positive) = true;
+      }
+      needLocator = needLocator || (positive && negative);
+    }
+    vtkNew<vtkStaticCellLocator> locator;
+    if (needLocator)
+    {
+      locator->SetDataSet(this->Input);
+      locator->BuildLocator();
+    }
+    vtkNew<vtkMatrix4x4> worldToModel;
+    vtkMatrix4x4::Invert(this->VolumeMatrix, worldToModel);
+    vtkUnstructuredGrid* grid = this->Input;
+
+    std::vector<std::vector<Fragment>> clipped(static_cast<size_t>(pixels));
+    std::vector<uint8_t> changed(static_cast<size_t>(pixels), 0);
+    vtkSMPThreadLocal<vtkSmartPointer<vtkGenericCell>> localCell;
+    vtkSMPThreadLocal<vtkIdType> localStarted(0);
+    vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
+      vtkSmartPointer<vtkGenericCell>& cell = localCell.Local();
+      if (!cell)
+      {
+        cell = vtkSmartPointer<vtkGenericCell>::New();
+      }
+      vtkIdType& started = localStarted.Local();
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        const Ray ray = cam.PixelRay(static_cast<int>(p % width), static_cast<int>(p / width));
+        double t0 = cam.Parallel ? -VTK_DOUBLE_MAX : 0.0, t1 = VTK_DOUBLE_MAX;
+        bool empty = false;
+        for (const WorldPlane& plane : planes)
+        {
+          const double nd = vtkMath::Dot(plane.N, ray.Direction);
+          const double c = vtkMath::Dot(plane.N, ray.Origin) + plane.W;
+          if (nd > 0.0)
+          {
+            t0 = std::max(t0, -c / nd);
+          }
+          else if (nd < 0.0)
+          {
+            t1 = std::min(t1, -c / nd);
+          }
+          else if (c < 0.0)
+          {
+            empty = true;
+          }
+        }
+        if (opaque && opaque[p] < 1.0f)
+        {
+          // The ray ends at the opaque surface.
+          const int i = static_cast<int>(p % width), j = static_cast<int>(p / width);
+          double surface[3], d[3];
+          cam.Unproject((i + 0.5) / width * 2.0 - 1.0, (j + 0.5) / height * 2.0 - 1.0,
+            2.0 * opaque[p] - 1.0, surface);
+          vtkMath::Subtract(surface, ray.Origin, d);
+          t1 = std::min(t1, vtkMath::Dot(d, ray.Direction));
+        }
+        const Fragment* first = this->GetPixelFragmentsBegin(p);
+        const Fragment* last = this->GetPixelFragmentsEnd(p);
+        std::vector<Fragment>& out = clipped[p];
+        if (empty || t0 >= t1)
+        {
+          changed[p] = first != last;
+          continue;
+        }
+        const double d0 = ray.Offset + t0, d1 = ray.Offset + t1;
+
+        // Does the ray start inside the mesh? The tetrahedron at the start point.
+        bool startInside = false;
+        double startScalar = 0.0;
+        if (t0 > -VTK_DOUBLE_MAX)
+        {
+          double x[4] = { 0, 0, 0, 1 }, m[4];
+          for (int k = 0; k < 3; ++k)
+          {
+            x[k] = ray.Origin[k] + t0 * ray.Direction[k];
+          }
+          bool inBounds = true;
+          for (int k = 0; k < 3; ++k)
+          {
+            inBounds = inBounds && x[k] >= worldBounds[2 * k] - margin &&
+              x[k] <= worldBounds[2 * k + 1] + margin;
+          }
+          if (inBounds && needLocator)
+          {
+            worldToModel->MultiplyPoint(x, m);
+            double model[3] = { m[0] / m[3], m[1] / m[3], m[2] / m[3] };
+            double pcoords[3], weights[8];
+            int subId = 0;
+            const vtkIdType c = locator->FindCell(model, 0.0, cell, subId, pcoords, weights);
+            if (c >= 0 && grid->GetCellType(c) == VTK_TETRA)
+            {
+              startInside = true;
+              for (int i = 0; i < 4; ++i)
+              {
+                startScalar += weights[i] * values[cell->GetPointId(i)];
+              }
+            }
+          }
+        }
+        bool dropsSome = false;
+        for (const Fragment* f = first; f != last && !dropsSome; ++f)
+        {
+          dropsSome = f->Distance <= d0 || f->Distance >= d1;
+        }
+        if (!startInside && !dropsSome)
+        {
+          continue; // unchanged
+        }
+        changed[p] = 1;
+        started += startInside ? 1 : 0;
+        if (startInside)
+        {
+          out.push_back({ d0, startScalar, StartFace, true, false });
+        }
+        bool inside = startInside;
+        const Fragment* f = first;
+        while (f != last && f->Distance <= d0)
+        {
+          ++f;
+        }
+        while (f != last && f->Distance < d1)
+        {
+          const Fragment* next = f;
+          int boundaryHits = 0;
+          while (next != last && next->Distance == f->Distance)
+          {
+            boundaryHits += next->Boundary ? 1 : 0;
+            out.push_back(*next);
+            ++next;
+          }
+          inside = boundaryHits % 2 == 1 ? !inside : inside;
+          f = next;
+        }
+        if (inside && t1 < VTK_DOUBLE_MAX && !out.empty())
+        {
+          const Fragment& previous = out.back();
+          double scalar = previous.Scalar;
+          if (f != last && f->Distance > previous.Distance)
+          {
+            scalar += (f->Scalar - previous.Scalar) * (d1 - previous.Distance) /
+              (f->Distance - previous.Distance);
+          }
+          out.push_back({ d1, scalar, EndFace, true, true });
+        }
+      }
+    });
+    for (vtkIdType started : localStarted)
+    {
+      this->NumberOfStartedInside += started;
+    }
+    std::vector<Fragment> fragments;
+    std::vector<vtkIdType> start(static_cast<size_t>(pixels) + 1, 0);
+    for (vtkIdType p = 0; p < pixels; ++p)
+    {
+      start[p + 1] = start[p] +
+        (changed[p] ? static_cast<vtkIdType>(clipped[p].size())
+                    : this->PixelStart[p + 1] - this->PixelStart[p]);
+    }
+    fragments.resize(start[pixels]);
+    vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        if (changed[p])
+        {
+          std::copy(clipped[p].begin(), clipped[p].end(), fragments.begin() + start[p]);
+        }
+        else
+        {
+          std::copy(this->GetPixelFragmentsBegin(p), this->GetPixelFragmentsEnd(p),
+            fragments.begin() + start[p]);
+        }
+      }
+    });
+    this->Fragments.swap(fragments);
+    this->PixelStart.swap(start);
+  }
   this->ReportProgress(1.0);
   return true;
 }
@@ -570,4 +852,9 @@ void vtkHAVSReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
   os << indent << "Fragments: " << this->Fragments.size() << "\n";
+  os << indent << "NearPlaneClipping: " << this->NearPlaneClipping << "\n";
+  os << indent << "ClippingPlanes: "
+     << (this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0) << "\n";
+  os << indent << "OpaqueDepth: " << (this->OpaqueDepth ? "set" : "none") << "\n";
+  os << indent << "NumberOfStartedInside: " << this->NumberOfStartedInside << "\n";
 }

@@ -29,6 +29,17 @@
  * the transfer-function nodes, each piece adaptively to 1e-6
  * (vtkHAVSPreIntegrationTable::IntegrateSegment).
  *
+ * Rays start at the camera's near plane and are cut by the clipping planes
+ * (SetClippingPlanes, world coordinates, the normal's side kept, as VTK's
+ * mappers). Where a ray enters the kept region inside the mesh (the camera
+ * inside the mesh, a clipping plane through it) it starts with a synthetic
+ * entry fragment (Face == StartFace) whose scalar is interpolated in the
+ * tetrahedron that holds the start point (vtkStaticCellLocator, barycentric
+ * weights); where it leaves the kept region inside the mesh it ends with a
+ * synthetic exit fragment (Face == EndFace), its scalar interpolated between
+ * the fragments around it. Faces wholly on the discarded side of a plane are
+ * not traversed.
+ *
  * The per-pixel fragments (distance, scalar, face, exit flag) are kept for the
  * k-requirement analysis and the software k-buffer.
  */
@@ -47,6 +58,7 @@ class vtkCamera;
 class vtkFloatArray;
 class vtkHAVSFaceSet;
 class vtkMatrix4x4;
+class vtkPlaneCollection;
 class vtkUnstructuredGrid;
 class vtkVolumeProperty;
 
@@ -67,6 +79,42 @@ public:
   vtkSetVector2Macro(Size, int);
   vtkGetVector2Macro(Size, int);
   ///@}
+
+  ///@{
+  /**
+   * Clipping planes (world coordinates; each keeps the side its normal points
+   * to), as vtkAbstractMapper::SetClippingPlanes. At most 6 are used.
+   */
+  void SetClippingPlanes(vtkPlaneCollection* planes);
+  vtkPlaneCollection* GetClippingPlanes();
+  ///@}
+
+  ///@{
+  /**
+   * Whether rays start at the camera's near plane (as every rasterizing
+   * mapper's do). On by default.
+   */
+  vtkSetMacro(NearPlaneClipping, bool);
+  vtkGetMacro(NearPlaneClipping, bool);
+  vtkBooleanMacro(NearPlaneClipping, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Opaque geometry in the scene: a depth image of Size (window depth values
+   * in [0, 1], bottom row first, as vtkRenderWindow::GetZbufferData gives);
+   * each ray ends at its depth (1: nothing there). nullptr: none.
+   */
+  void SetOpaqueDepth(vtkFloatArray* depth);
+  ///@}
+
+  /// Face ids of the synthetic fragments where a ray enters or leaves the
+  /// region kept by the near and clipping planes inside the mesh.
+  static constexpr uint32_t StartFace = 0xFFFFFFFEu;
+  static constexpr uint32_t EndFace = 0xFFFFFFFFu;
+
+  /// Pixels whose ray started inside the mesh at a plane, in the last frame.
+  vtkGetMacro(NumberOfStartedInside, vtkIdType);
 
   /// One hit of a pixel's ray with a face.
   struct Fragment
@@ -143,6 +191,10 @@ private:
   int Size[2] = { 64, 64 };
   vtkNew<vtkHAVSFaceSet> Faces;
   vtkNew<vtkFloatArray> Image;
+  vtkSmartPointer<vtkPlaneCollection> ClippingPlanes;
+  bool NearPlaneClipping = true;
+  vtkSmartPointer<vtkFloatArray> OpaqueDepth;
+  vtkIdType NumberOfStartedInside = 0;
   std::vector<Fragment> Fragments;
   std::vector<vtkIdType> PixelStart;
   double ScalarRange[2] = { 0.0, 1.0 };

@@ -137,8 +137,16 @@ void DrawOrder(const Fragment* begin, const Fragment* end, const std::vector<uin
   {
     out.push_back(f);
   }
+  // The synthetic fragments where the near or a clipping plane cuts the mesh
+  // are drawn first (entries) or last (exits), as the mapper draws them.
+  const auto rankOf = [&](uint32_t face) -> int64_t {
+    return face == vtkHAVSReferenceRenderer::StartFace
+      ? -1
+      : (face == vtkHAVSReferenceRenderer::EndFace ? std::numeric_limits<int64_t>::max()
+                                                   : static_cast<int64_t>(rank[face]));
+  };
   std::stable_sort(out.begin(), out.end(),
-    [&](const Fragment* a, const Fragment* b) { return rank[a->Face] < rank[b->Face]; });
+    [&](const Fragment* a, const Fragment* b) { return rankOf(a->Face) < rankOf(b->Face); });
 }
 
 /// True when the k-buffer with k entries outputs the distances sorted.

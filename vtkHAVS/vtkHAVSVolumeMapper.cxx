@@ -9,6 +9,7 @@
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFaceSorter.h"
 #include "vtkHAVSKBufferRenderer.h"
+#include "vtkHAVSPlaneSection.h"
 #include "vtkHAVSPreIntegrationTable.h"
 
 #include "vtkCamera.h"
@@ -20,6 +21,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPoints.h"
 #include "vtkRenderer.h"
 #include "vtkTimerLog.h"
@@ -30,6 +33,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkHAVSVolumeMapper);
@@ -105,6 +110,22 @@ struct vtkHAVSVolumeMapper::Internals
   bool WarnedComponents = false;
   bool WarnedPath = false;
   bool WarnedK = false;
+  bool WarnedPlanes = false;
+
+  // What the mesh was built from: the grid, and the scalar selection.
+  vtkUnstructuredGrid* MeshGrid = nullptr;
+  std::string MeshScalarKey;
+  double BoundsMC[6] = { 0, 0, 0, 0, 0, 0 };
+
+  // The near and clipping planes of the frame (eye-relative world) and the
+  // mesh's sections with them, as last uploaded.
+  int PlaneCount = 0;
+  float PlanesRC[7][4];
+  std::vector<vtkHAVSKBufferRenderer::Section> Sections;
+  std::vector<double> SectionKey; // the model-space planes the sections were made for
+  vtkMTimeType SectionMeshTime = 0;
+  bool SectionsUploaded = false;
+  vtkNew<vtkHAVSPlaneSection> Sectioner;
 };
 
 //------------------------------------------------------------------------------
@@ -148,6 +169,11 @@ vtkIdType vtkHAVSVolumeMapper::GetNumberOfTetrahedra()
   return this->Internal->Faces->GetNumberOfTetrahedra();
 }
 
+bool vtkHAVSVolumeMapper::IsInputConvex()
+{
+  return this->Internal->MeshValid && this->Internal->Faces->IsConvex();
+}
+
 //------------------------------------------------------------------------------
 vtkHAVSFaceSorter* vtkHAVSVolumeMapper::GetFaceSorter()
 {
@@ -178,12 +204,19 @@ bool vtkHAVSVolumeMapper::UpdateMesh(vtkVolume* volume)
     in.MeshValid = false;
     return false;
   }
-  const bool needed = grid->GetMTime() > in.MeshBuildTime || this->GetMTime() > in.MeshBuildTime ||
-    !in.MeshBuildTime.GetMTime();
+  // Rebuilt for a new or modified grid or another scalar selection only (not
+  // for k, the table, the boundary mode or the clipping planes).
+  std::ostringstream scalarKey;
+  scalarKey << this->ScalarMode << " " << this->ArrayAccessMode << " " << this->ArrayId << " "
+            << (this->ArrayName ? this->ArrayName : "");
+  const bool needed = grid != in.MeshGrid || grid->GetMTime() > in.MeshBuildTime ||
+    scalarKey.str() != in.MeshScalarKey || !in.MeshBuildTime.GetMTime();
   if (!needed)
   {
     return in.MeshValid;
   }
+  in.MeshGrid = grid;
+  in.MeshScalarKey = scalarKey.str();
   in.MeshBuildTime.Modified();
   in.MeshValid = false;
   in.OrderUploaded = false;
@@ -253,6 +286,8 @@ bool vtkHAVSVolumeMapper::UpdateMesh(vtkVolume* volume)
   for (int i = 0; i < 3; ++i)
   {
     in.Shift[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
+    in.BoundsMC[2 * i] = bounds[2 * i] - in.Shift[i];
+    in.BoundsMC[2 * i + 1] = bounds[2 * i + 1] - in.Shift[i];
   }
   in.PointsMC.resize(3 * numPoints);
   vtkIdType nonFinitePoints = 0;
@@ -399,6 +434,114 @@ int vtkHAVSVolumeMapper::ChoosePath(vtkRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
+bool vtkHAVSVolumeMapper::UpdatePlanes(vtkRenderer* renderer, const double eye[3],
+  const double direction[3], bool parallel, const vtkMatrix4x4* modelToEyeRelative)
+{
+  Internals& in = *this->Internal;
+  // Planes in eye-relative world coordinates (x_RC = world - eye), kept where
+  // dot(n, x_RC) + w >= 0, with whether the rays enter the kept side there.
+  struct PlaneRC
+  {
+    double Equation[4];
+    bool Entering;
+  };
+  std::vector<PlaneRC> planes;
+
+  // The near plane, a hair beyond the camera's (GL clips there; the section
+  // must lie just inside): only when it cuts the mesh's bounds.
+  double range[2];
+  renderer->GetActiveCamera()->GetClippingRange(range);
+  const double nearDepth = range[0] + 1e-5 * (range[1] - range[0]);
+  planes.push_back({ { direction[0], direction[1], direction[2], -nearDepth }, true });
+
+  vtkPlaneCollection* clipping = this->ClippingPlanes;
+  const int userPlanes = clipping ? clipping->GetNumberOfItems() : 0;
+  if (userPlanes > 6 && !in.WarnedPlanes)
+  {
+    vtkWarningMacro(<< userPlanes << " clipping planes; vtkHAVSVolumeMapper uses the first 6.");
+    in.WarnedPlanes = true;
+  }
+  for (int i = 0; i < std::min(userPlanes, 6); ++i)
+  {
+    vtkPlane* plane = clipping->GetItem(i);
+    double n[3], origin[3];
+    plane->GetNormal(n);
+    plane->GetOrigin(origin);
+    if (vtkMath::Norm(n) == 0.0)
+    {
+      continue;
+    }
+    // World: n.x - n.origin >= 0 is kept (as VTK's other mappers).
+    const double w = vtkMath::Dot(n, eye) - vtkMath::Dot(n, origin);
+    const bool entering = parallel ? vtkMath::Dot(n, direction) > 0.0 : w < 0.0;
+    planes.push_back({ { n[0], n[1], n[2], w }, entering });
+  }
+
+  // Each plane in model coordinates: the sections are cut there.
+  in.PlaneCount = 0;
+  std::vector<double> key;
+  std::vector<std::pair<int, PlaneRC>> cutting; // (index among the uploaded planes, plane)
+  for (size_t i = 0; i < planes.size(); ++i)
+  {
+    double planeMC[4];
+    for (int c = 0; c < 4; ++c)
+    {
+      planeMC[c] = 0.0;
+      for (int r = 0; r < 3; ++r)
+      {
+        planeMC[c] += planes[i].Equation[r] * modelToEyeRelative->GetElement(r, c);
+      }
+    }
+    planeMC[3] += planes[i].Equation[3];
+    const bool cuts = vtkHAVSPlaneSection::CutsBox(planeMC, in.BoundsMC);
+    const double corner[3] = { in.BoundsMC[0], in.BoundsMC[2], in.BoundsMC[4] };
+    const bool allDiscarded = !cuts &&
+      planeMC[0] * corner[0] + planeMC[1] * corner[1] + planeMC[2] * corner[2] + planeMC[3] < 0.0;
+    if (!cuts && !allDiscarded)
+    {
+      continue; // the whole mesh is kept: the plane changes nothing
+    }
+    const int index = in.PlaneCount++;
+    for (int c = 0; c < 4; ++c)
+    {
+      in.PlanesRC[index][c] = static_cast<float>(planes[i].Equation[c]);
+    }
+    if (cuts && this->PlaneSections)
+    {
+      key.insert(key.end(), planeMC, planeMC + 4);
+      key.push_back(planes[i].Entering ? 1.0 : 0.0);
+      key.push_back(index);
+      PlaneRC inModel = planes[i];
+      std::copy(planeMC, planeMC + 4, inModel.Equation);
+      cutting.emplace_back(index, inModel);
+    }
+  }
+
+  // Sections, only when a plane or the mesh changed.
+  if (key == in.SectionKey && in.SectionMeshTime == in.MeshBuildTime.GetMTime())
+  {
+    return false;
+  }
+  const double start = vtkTimerLog::GetUniversalTime();
+  in.SectionKey = key;
+  in.SectionMeshTime = in.MeshBuildTime.GetMTime();
+  in.Sections.clear();
+  this->LastSectionTriangles = 0;
+  for (const auto& c : cutting)
+  {
+    vtkHAVSKBufferRenderer::Section section;
+    section.PlaneIndex = c.first;
+    section.Entering = c.second.Entering;
+    this->LastSectionTriangles += in.Sectioner->Compute(in.Faces->GetTetrahedra(), in.PointsMC,
+      in.Scalars, c.second.Equation, section.PointsMC, section.Scalars);
+    in.Sections.push_back(std::move(section));
+  }
+  this->LastSectionSeconds = vtkTimerLog::GetUniversalTime() - start;
+  in.SectionsUploaded = false;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
   Internals& in = *this->Internal;
@@ -494,6 +637,18 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.MeasureStages = this->MeasureStageTimes;
   frame.KeepResult = this->KeepFloatResult;
   frame.RasterBoundOnly = this->FaceRasterBoundMode;
+  frame.Tagging = this->BoundaryMode == BoundaryTagging ||
+    (this->BoundaryMode == BoundaryAutomatic && !in.Faces->IsConvex());
+  frame.GapLength = this->BoundaryMode == BoundaryGapLength
+    ? static_cast<float>(in.Table->GetMaxLength())
+    : 3.0e38f;
+  this->LastTagging = frame.Tagging;
+
+  // Near and clipping planes: the discard test, and the sections.
+  this->UpdatePlanes(renderer, eye, direction, frame.Parallel, mcrc);
+  frame.PlaneCount = in.PlaneCount;
+  std::copy(&in.PlanesRC[0][0], &in.PlanesRC[0][0] + 4 * in.PlaneCount, &frame.PlanesRC[0][0]);
+  this->LastPlaneCount = in.PlaneCount;
 
   // Face order: composite needs the centroid sort; the extremum modes do not.
   const double sortStart = vtkTimerLog::GetUniversalTime();
@@ -538,6 +693,11 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     in.Renderer->SetFaceOrder(in.SortedTriangles, in.SortedBoundary);
     in.OrderUploaded = true;
   }
+  if (fresh || !in.SectionsUploaded)
+  {
+    in.Renderer->SetSections(in.Sections);
+    in.SectionsUploaded = true;
+  }
   if (fresh || in.TableUploadTime < in.TableBuildTime.GetMTime())
   {
     in.Renderer->SetTable(in.Table->GetTable(), in.Table->GetScalarResolution(),
@@ -577,6 +737,7 @@ void vtkHAVSVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internal->Renderer->ReleaseGraphicsResources(window);
   this->Internal->OrderUploaded = false;
+  this->Internal->SectionsUploaded = false;
 }
 
 //------------------------------------------------------------------------------
@@ -597,6 +758,11 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
   os << indent << "FaceRasterBoundMode: " << this->FaceRasterBoundMode << "\n";
+  static const char* const boundaryModes[] = { "Automatic", "Tagging", "Ignore", "GapLength" };
+  os << indent << "BoundaryMode: " << boundaryModes[this->BoundaryMode]
+     << " (last frame tagged: " << this->LastTagging << ")\n";
+  os << indent << "Last frame planes: " << this->LastPlaneCount << ", section triangles "
+     << this->LastSectionTriangles << " (" << this->LastSectionSeconds << " s)\n";
   os << indent << "Last stage times (s): sort " << this->LastSortSeconds << ", draw "
      << this->LastDrawSeconds << ", flush " << this->LastFlushSeconds << ", composite "
      << this->LastCompositeSeconds << ", table " << this->LastTableSeconds << "\n";

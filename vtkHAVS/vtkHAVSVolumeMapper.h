@@ -44,6 +44,7 @@
 
 class vtkFloatArray;
 class vtkHAVSFaceSet;
+class vtkMatrix4x4;
 class vtkHAVSFaceSorter;
 class vtkHAVSKBufferRenderer;
 class vtkHAVSPreIntegrationTable;
@@ -156,6 +157,69 @@ public:
   vtkBooleanMacro(FaceRasterBoundMode, bool);
   ///@}
 
+  enum BoundaryModes
+  {
+    BoundaryAutomatic = 0,
+    BoundaryTagging = 1,
+    BoundaryIgnore = 2,
+    BoundaryGapLength = 3
+  };
+
+  ///@{
+  /**
+   * How segments outside the mesh (holes, cavities, gaps between parts, a
+   * concave outline) are told from segments inside it.
+   * - Automatic (default): boundary tagging, except for a convex mesh
+   *   (vtkHAVSFaceSet::IsConvex, decided once per input), where it cannot
+   *   change the image and is skipped.
+   * - Tagging: always tag. Every fragment of a boundary face carries its role
+   *   (entry or exit, from the facing of the outward-wound face); a segment
+   *   whose front is an exit contributes nothing. Exact for any mesh, any k.
+   * - Ignore: no tagging; every gap is filled as if it were volume (wrong for
+   *   non-convex meshes; a negative control).
+   * - GapLength: VTK 5's HAVS heuristic, for comparison: a segment longer than
+   *   the longest edge contributes nothing (misses short gaps, drops long
+   *   segments of sparse k-buffers).
+   */
+  vtkSetClampMacro(BoundaryMode, int, BoundaryAutomatic, BoundaryGapLength);
+  vtkGetMacro(BoundaryMode, int);
+  void SetBoundaryModeToAutomatic() { this->SetBoundaryMode(BoundaryAutomatic); }
+  void SetBoundaryModeToTagging() { this->SetBoundaryMode(BoundaryTagging); }
+  void SetBoundaryModeToIgnore() { this->SetBoundaryMode(BoundaryIgnore); }
+  void SetBoundaryModeToGapLength() { this->SetBoundaryMode(BoundaryGapLength); }
+  ///@}
+
+  ///@{
+  /**
+   * Where the near plane or a clipping plane cuts the mesh, the rays enter
+   * (or leave) the clipped volume where no face lies: the mapper draws the
+   * mesh's section with the plane there, with the interpolated scalar, as an
+   * entry (exit) fragment. On by default; off only for comparison (a
+   * negative control: the slab between the plane and the first face behind
+   * it is then lost).
+   */
+  vtkSetMacro(PlaneSections, bool);
+  vtkGetMacro(PlaneSections, bool);
+  vtkBooleanMacro(PlaneSections, bool);
+  ///@}
+
+  /// Whether the current input is one convex body (after its first frame).
+  bool IsInputConvex();
+
+  ///@{
+  /**
+   * What the last frame did at its boundaries and planes: whether boundary
+   * fragments were tagged; how many planes cut the mesh (the near plane when
+   * it lies inside the mesh's bounds, and the clipping planes); the triangles
+   * of their sections with the mesh (drawn as the fragments where the rays
+   * enter or leave the clipped volume) and the seconds spent making them.
+   */
+  vtkGetMacro(LastTagging, bool);
+  vtkGetMacro(LastPlaneCount, int);
+  vtkGetMacro(LastSectionTriangles, vtkIdType);
+  vtkGetMacro(LastSectionSeconds, double);
+  ///@}
+
   ///@{
   /**
    * Stage times of the last frame, in seconds.
@@ -223,6 +287,12 @@ protected:
   bool MeasureStageTimes = false;
   bool KeepFloatResult = false;
   bool FaceRasterBoundMode = false;
+  int BoundaryMode = BoundaryAutomatic;
+  bool PlaneSections = true;
+  bool LastTagging = false;
+  int LastPlaneCount = 0;
+  vtkIdType LastSectionTriangles = 0;
+  double LastSectionSeconds = 0.0;
 
   double LastSortSeconds = 0.0;
   double LastDrawSeconds = 0.0;
@@ -241,6 +311,8 @@ private:
   bool UpdateMesh(vtkVolume* volume);
   bool UpdateTable(vtkVolume* volume);
   int ChoosePath(vtkRenderWindow* window);
+  bool UpdatePlanes(vtkRenderer* renderer, const double eye[3], const double direction[3],
+    bool parallel, const vtkMatrix4x4* modelToEyeRelative);
 };
 
 #endif

@@ -15,7 +15,8 @@ layout(location = 0) out vec4 havsExtremum;
 
 void main()
 {
-  if (havsDistance(havsPositionRC) > havsOpaqueDistance(gl_FragCoord.xy))
+  if (havsClipped(havsPositionRC) ||
+    havsDistance(havsPositionRC) > havsOpaqueDistance(gl_FragCoord.xy))
   {
     discard;
   }

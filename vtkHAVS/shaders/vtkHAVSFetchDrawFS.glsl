@@ -12,8 +12,6 @@
 in vec3 havsPositionRC;
 in float havsScalar;
 
-uniform usamplerBuffer havsFaceIsBoundary; // per primitive, in draw order
-
 //HAVS::FetchDeclarations
 
 void main()
@@ -25,8 +23,11 @@ void main()
   {
     discard;
   }
-  bool boundary = texelFetch(havsFaceIsBoundary, gl_PrimitiveID).r != 0u;
-  vec2 f = havsFragmentEntry(havsPositionRC, havsScalar, boundary);
+  if (havsClipped(havsPositionRC))
+  {
+    discard;
+  }
+  vec2 f = havsFaceEntry(havsPositionRC, havsScalar);
   havsInsert(color, E, f, havsOpaqueDistance(gl_FragCoord.xy));
   havsColor = color;
   //HAVS::FetchStore

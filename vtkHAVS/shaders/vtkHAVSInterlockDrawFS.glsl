@@ -12,7 +12,6 @@
 in vec3 havsPositionRC;
 in float havsScalar;
 
-uniform usamplerBuffer havsFaceIsBoundary;
 
 layout(std430, binding = 0) buffer HAVSPixelEntries
 {
@@ -21,8 +20,11 @@ layout(std430, binding = 0) buffer HAVSPixelEntries
 
 void main()
 {
-  bool boundary = texelFetch(havsFaceIsBoundary, gl_PrimitiveID).r != 0u;
-  vec2 f = havsFragmentEntry(havsPositionRC, havsScalar, boundary);
+  if (havsClipped(havsPositionRC))
+  {
+    discard;
+  }
+  vec2 f = havsFaceEntry(havsPositionRC, havsScalar);
   float opaqueDistance = havsOpaqueDistance(gl_FragCoord.xy);
   int base = (int(gl_FragCoord.y) * int(havsViewportSize.x) + int(gl_FragCoord.x)) * HAVS_PIXEL_STRIDE;
 

@@ -41,6 +41,18 @@ uniform vec2 havsViewportSize;
 uniform int havsParallel;
 uniform vec3 havsDirectionOfProjection;
 
+// Boundary handling and clipping (see vtkHAVSVolumeMapper::SetBoundaryMode).
+uniform usamplerBuffer havsFaceIsBoundary; // per primitive of the mesh draw, in draw order
+uniform int havsTagging;     // 1: boundary faces carry their entry/exit role
+uniform float havsGapLength; // segments longer than this contribute nothing (VTK 5's
+                             // heuristic; 3e38 = off)
+uniform int havsRole;        // what is drawn: 0 mesh faces, 1 a section that enters the
+                             // clipped volume (near or clipping plane), 2 one that leaves it
+const int HAVS_MAX_PLANES = 7; // VTK's 6 clipping planes and the near plane
+uniform int havsPlaneCount;
+uniform vec4 havsPlanesRC[HAVS_MAX_PLANES]; // kept where dot(xyz, positionRC) + w >= 0
+uniform int havsOwnPlane;    // the plane the drawn section lies on (-1: mesh faces)
+
 bool havsIsExit(float code)
 {
   return code > 1.5 && code < 3.5;
@@ -81,7 +93,7 @@ float havsOpaqueDistance(vec2 fragCoord)
 vec4 havsSegment(vec2 a, vec2 b)
 {
   float len = b.x - a.x;
-  if (havsIsExit(a.y) || !(len > 0.0))
+  if (havsIsExit(a.y) || !(len > 0.0) || len > havsGapLength)
   {
     return vec4(0.0);
   }
@@ -178,11 +190,35 @@ void havsFlush(inout vec4 color, inout vec2 E[HAVS_K], float opaqueDistance)
   }
 }
 
-// The k-buffer entry of the fragment being shaded.
-vec2 havsFragmentEntry(vec3 positionRC, float scalar, bool boundary)
+// True when the fragment lies on the discarded side of a clipping plane or
+// in front of the near plane (a section is not tested against its own plane).
+bool havsClipped(vec3 positionRC)
+{
+  for (int i = 0; i < havsPlaneCount; ++i)
+  {
+    if (i != havsOwnPlane && dot(havsPlanesRC[i].xyz, positionRC) + havsPlanesRC[i].w < 0.0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The k-buffer entry of the fragment being shaded: a mesh face's (tagged by
+// the facing of its outward-wound boundary face when tagging is on) or a
+// section's (an entry or an exit by its role).
+vec2 havsFaceEntry(vec3 positionRC, float scalar)
 {
   float code = clamp(scalar, 0.0, 1.0);
-  if (boundary)
+  if (havsRole == 1)
+  {
+    code += 4.0;
+  }
+  else if (havsRole == 2)
+  {
+    code += 2.0;
+  }
+  else if (havsTagging != 0 && texelFetch(havsFaceIsBoundary, gl_PrimitiveID).r != 0u)
   {
     code += gl_FrontFacing ? 4.0 : 2.0;
   }

@@ -10,7 +10,6 @@
 in vec3 havsPositionRC;
 in float havsScalar;
 
-uniform usamplerBuffer havsFaceIsBoundary;
 uniform int havsNodeCapacity;
 
 layout(r32ui, binding = 0) uniform coherent uimage2D havsListHeads;
@@ -26,8 +25,11 @@ layout(std430, binding = 2) buffer HAVSListCounter
 
 void main()
 {
-  bool boundary = texelFetch(havsFaceIsBoundary, gl_PrimitiveID).r != 0u;
-  vec2 f = havsFragmentEntry(havsPositionRC, havsScalar, boundary);
+  if (havsClipped(havsPositionRC))
+  {
+    discard;
+  }
+  vec2 f = havsFaceEntry(havsPositionRC, havsScalar);
   uint node = atomicAdd(havsNodeCount, 1u);
   if (node < uint(havsNodeCapacity))
   {
