@@ -9,6 +9,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkSMPThreadLocal.h"
@@ -34,6 +35,7 @@ constexpr int TetrahedronFaces[4][4] = { { 0, 1, 2, 3 }, { 0, 1, 3, 2 }, { 0, 2,
 enum CellStatus : uint8_t
 {
   NotATetrahedron,
+  GhostCell,
   DegenerateTetrahedron,
   UsedTetrahedron
 };
@@ -51,6 +53,7 @@ struct CellCounts
   vtkIdType Used = 0;
   vtkIdType Skipped = 0;
   vtkIdType Degenerate = 0;
+  vtkIdType Ghost = 0;
   double LongestEdgeSquared = 0.0;
 };
 
@@ -157,8 +160,8 @@ std::vector<double> CopyCoordinates(vtkPoints* points)
 struct ReadCells
 {
   template <typename CellStateT>
-  void operator()(CellStateT& state, const unsigned char* types, const double* coordinates,
-    CellTable& table, vtkSMPThreadLocal<CellCounts>& counts) const
+  void operator()(CellStateT& state, const unsigned char* types, const unsigned char* ghosts,
+    const double* coordinates, CellTable& table, vtkSMPThreadLocal<CellCounts>& counts) const
   {
     using ValueType = typename CellStateT::ValueType;
     const ValueType* offsets = state.GetOffsets()->GetPointer(0);
@@ -168,6 +171,14 @@ struct ReadCells
       for (vtkIdType cell = begin; cell < end; ++cell)
       {
         const ValueType first = offsets[cell];
+        if (ghosts &&
+          (ghosts[cell] &
+            (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL)) != 0)
+        {
+          table.Status[cell] = GhostCell; // another piece draws it (or it is hidden)
+          ++local.Ghost;
+          continue;
+        }
         if (types[cell] != VTK_TETRA || offsets[cell + 1] - first != 4)
         {
           table.Status[cell] = NotATetrahedron;
@@ -437,6 +448,7 @@ void vtkHAVSFaceSet::Clear()
 {
   this->Tetrahedra.clear();
   this->Convex = false;
+  this->NumberOfGhostCells = 0;
   this->FaceVertices.clear();
   this->BoundaryFlags.clear();
   this->Centroids.clear();
@@ -482,18 +494,21 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
     table.PointIds.resize(4 * static_cast<size_t>(numberOfCells));
     table.Status.resize(static_cast<size_t>(numberOfCells));
     vtkSMPThreadLocal<CellCounts> counts;
+    vtkUnsignedCharArray* ghostArray = grid->GetCellGhostArray();
     grid->GetCells()->Visit(ReadCells{}, grid->GetCellTypesArray()->GetPointer(0),
-      coordinates.data(), table, counts);
+      ghostArray ? ghostArray->GetPointer(0) : nullptr, coordinates.data(), table, counts);
     for (const CellCounts& local : counts)
     {
       cells.Used += local.Used;
       cells.Skipped += local.Skipped;
       cells.Degenerate += local.Degenerate;
+      cells.Ghost += local.Ghost;
       cells.LongestEdgeSquared = std::max(cells.LongestEdgeSquared, local.LongestEdgeSquared);
     }
   }
   this->NumberOfSkippedCells = cells.Skipped;
   this->NumberOfDegenerateTetrahedra = cells.Degenerate;
+  this->NumberOfGhostCells = cells.Ghost;
   if (cells.Used == 0)
   {
     vtkErrorMacro("Build: no usable tetrahedra (" << numberOfCells << " cells, "

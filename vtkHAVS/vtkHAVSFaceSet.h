@@ -8,7 +8,8 @@
  * @class   vtkHAVSFaceSet
  * @brief   The unique triangular faces of a tetrahedral grid, boundary flagged.
  *
- * Build() takes the VTK_TETRA cells of a vtkUnstructuredGrid (other cells
+ * Build() takes the VTK_TETRA cells of a vtkUnstructuredGrid (ghost cells
+ * marked duplicate or hidden are left out, as another piece draws them; other cells
  * are counted as skipped; degenerate tetrahedra, with repeated points or
  * |volume| <= 1e-12 * (longest edge)^3, are counted and dropped) and stores
  * each face once: a face of one tetrahedron is a boundary face, of two an
@@ -61,6 +62,8 @@ public:
   vtkGetMacro(NumberOfTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfSkippedCells, vtkIdType);
   vtkGetMacro(NumberOfDegenerateTetrahedra, vtkIdType);
+  /// Ghost cells (duplicate or hidden, vtkGhostType) left out: another piece draws them.
+  vtkGetMacro(NumberOfGhostCells, vtkIdType);
   ///@}
 
   /// Three point ids per face.
@@ -117,6 +120,7 @@ private:
   vtkIdType NumberOfTetrahedra = 0;
   vtkIdType NumberOfSkippedCells = 0;
   vtkIdType NumberOfDegenerateTetrahedra = 0;
+  vtkIdType NumberOfGhostCells = 0;
   double LongestEdge = 0.0;
   double CentroidOrigin[3] = { 0.0, 0.0, 0.0 };
   vtkTimeStamp BuildTime;

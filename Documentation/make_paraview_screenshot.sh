@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Makes Documentation/images/paraview_havs.png: the ParaView client (under
+# Xvfb) with the vtkHAVS plugin loaded, the LOX post shown as "HAVS Volume"
+# and the HAVS properties in the panel. Needs a build (bash .ci/build) and
+# x11-apps (xwd), installed here when missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+if ! command -v xwd > /dev/null; then
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get install -y -qq x11-apps > /dev/null
+fi
+plugin=$(find "$root/build/lib/paraview-plugins" -name "HAVSRepresentation.so" | head -1)
+data=${HAVS_DATA_DIR:-$root/../shared/data}
+work=$(mktemp -d)
+cat > "$work/show.py" <<PY
+from paraview.simple import *
+LoadPlugin("$plugin", remote=False, ns=globals())
+reader = LegacyVTKReader(FileNames=["$data/post.vtk"])
+tets = Tetrahedralize(Input=reader)
+view = GetActiveViewOrCreate("RenderView")
+display = Show(tets, view)
+ColorBy(display, ("POINTS", "Pressure"))
+display.Representation = "HAVS Volume"
+display.HAVSKBufferSize = 8
+GetOpacityTransferFunction("Pressure").Points = [0.0, 0.0, 0.5, 0.0, 1.0, 0.6, 0.5, 0.0]
+GetOpacityTransferFunction("Pressure").RescaleTransferFunction(
+    *tets.PointData["Pressure"].GetRange())
+view.ResetCamera()
+SetActiveSource(tets)
+Render()
+PY
+display=:$((90 + RANDOM % 9))
+Xvfb "$display" -screen 0 1600x1000x24 -nolisten tcp &
+xvfb=$!
+trap 'kill $xvfb 2> /dev/null || true; rm -rf "$work"' EXIT
+sleep 2
+DISPLAY=$display LD_LIBRARY_PATH="$root/build/lib" paraview --script="$work/show.py" &
+client=$!
+sleep "${HAVS_SCREENSHOT_WAIT:-40}"
+DISPLAY=$display xwd -root -silent > "$work/screen.xwd"
+kill $client 2> /dev/null || true
+pvpython "$root/Documentation/xwd_to_png.py" "$work/screen.xwd" \
+  "$root/Documentation/images/paraview_havs.png"
+echo "wrote Documentation/images/paraview_havs.png"

@@ -1,0 +1,78 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSUnstructuredGridVolumeRepresentation.h
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSUnstructuredGridVolumeRepresentation
+ * @brief   ParaView's unstructured-grid volume representation, rendering with HAVS.
+ *
+ * A vtkUnstructuredGridVolumeRepresentation whose volume mapper is a
+ * vtkHAVSVolumeMapper registered as "HAVS" and active by default (the stock
+ * mappers stay registered by the SI class). ParaView's data redistribution,
+ * ordered compositing, transfer functions and block selection work as for the
+ * stock "Volume" representation; the plugin's XML shows it as the
+ * "HAVS Volume" representation type.
+ *
+ * Level of detail: while the user interacts ParaView would swap the volume
+ * for its LOD geometry (an outline or a surface); HAVS stays interactive
+ * instead, so this representation keeps the volume and renders it with
+ * InteractiveKBufferSize entries (default 2) until the still render, which
+ * uses the full k.
+ *
+ * The HAVS settings are forwarded to the mapper on every rank.
+ */
+#ifndef vtkHAVSUnstructuredGridVolumeRepresentation_h
+#define vtkHAVSUnstructuredGridVolumeRepresentation_h
+
+#include "vtkHAVSRepresentationsModule.h" // For export macro
+#include "vtkUnstructuredGridVolumeRepresentation.h"
+
+class vtkHAVSVolumeMapper;
+
+class VTKHAVSREPRESENTATIONS_EXPORT vtkHAVSUnstructuredGridVolumeRepresentation
+  : public vtkUnstructuredGridVolumeRepresentation
+{
+public:
+  static vtkHAVSUnstructuredGridVolumeRepresentation* New();
+  vtkTypeMacro(
+    vtkHAVSUnstructuredGridVolumeRepresentation, vtkUnstructuredGridVolumeRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Forwarded to vtkHAVSVolumeMapper (see there).
+  void SetHAVSKBufferSize(int k);
+  int GetHAVSKBufferSize();
+  void SetHAVSEarlyRayTerminationOpacity(double opacity);
+  void SetHAVSTableResolution(int resolution);
+  void SetHAVSBoundaryMode(int mode);
+  ///@}
+
+  ///@{
+  /// k while the user interacts (ParaView's LOD renders); default 2.
+  vtkSetClampMacro(InteractiveKBufferSize, int, 1, 64);
+  vtkGetMacro(InteractiveKBufferSize, int);
+  ///@}
+
+  /// The k of the last frame this rank rendered (0 before one).
+  int GetHAVSActiveKBufferSize();
+
+  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
+
+protected:
+  vtkHAVSUnstructuredGridVolumeRepresentation();
+  ~vtkHAVSUnstructuredGridVolumeRepresentation() override;
+
+private:
+  vtkHAVSUnstructuredGridVolumeRepresentation(
+    const vtkHAVSUnstructuredGridVolumeRepresentation&) = delete;
+  void operator=(const vtkHAVSUnstructuredGridVolumeRepresentation&) = delete;
+
+  vtkHAVSVolumeMapper* HAVSMapper;
+  int KBufferSize = 6;
+  int InteractiveKBufferSize = 2;
+};
+
+#endif
