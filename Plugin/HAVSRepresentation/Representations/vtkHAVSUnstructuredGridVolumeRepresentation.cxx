@@ -34,6 +34,12 @@ vtkHAVSUnstructuredGridVolumeRepresentation::~vtkHAVSUnstructuredGridVolumeRepre
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetActiveVolumeMapper(const char*)
+{
+  this->Superclass::SetActiveVolumeMapper("HAVS");
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSKBufferSize(int k)
 {
   if (this->KBufferSize != k)
@@ -95,6 +101,11 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
       return 1;
     }
     const bool interactive = inInfo->Has(vtkPVRenderView::USE_LOD()) != 0;
+    if (!this->InteractiveLOD)
+    {
+      this->HAVSMapper->SetKBufferSize(this->KBufferSize);
+      return 1; // ParaView's LOD geometry while interacting
+    }
     this->Actor->SetEnableLOD(0);
     this->HAVSMapper->SetKBufferSize(interactive
         ? std::min(this->InteractiveKBufferSize, this->KBufferSize)
@@ -108,6 +119,7 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::PrintSelf(ostream& os, vtkInde
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "KBufferSize: " << this->KBufferSize << "\n";
+  os << indent << "InteractiveLOD: " << this->InteractiveLOD << "\n";
   os << indent << "InteractiveKBufferSize: " << this->InteractiveKBufferSize << "\n";
   this->HAVSMapper->PrintSelf(os, indent.GetNextIndent());
 }

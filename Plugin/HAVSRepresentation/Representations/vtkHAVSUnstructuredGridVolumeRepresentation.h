@@ -50,6 +50,16 @@ public:
   ///@}
 
   ///@{
+  /**
+   * HAVS's level of detail while the user interacts (on by default): keep
+   * the volume, rendered with InteractiveKBufferSize entries. Off: ParaView's
+   * own LOD (its outline or surface geometry) as for the stock mappers.
+   */
+  vtkSetMacro(InteractiveLOD, bool);
+  vtkGetMacro(InteractiveLOD, bool);
+  ///@}
+
+  ///@{
   /// k while the user interacts (ParaView's LOD renders); default 2.
   vtkSetClampMacro(InteractiveKBufferSize, int, 1, 64);
   vtkGetMacro(InteractiveKBufferSize, int);
@@ -57,6 +67,12 @@ public:
 
   /// The k of the last frame this rank rendered (0 before one).
   int GetHAVSActiveKBufferSize();
+
+  /**
+   * This representation always renders with HAVS: any other name (e.g. a
+   * default pushed by an inherited proxy definition) selects HAVS too.
+   */
+  void SetActiveVolumeMapper(const char* name) override;
 
   int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
     vtkInformation* outInfo) override;
@@ -73,6 +89,7 @@ private:
   vtkHAVSVolumeMapper* HAVSMapper;
   int KBufferSize = 6;
   int InteractiveKBufferSize = 2;
+  bool InteractiveLOD = true;
 };
 
 #endif

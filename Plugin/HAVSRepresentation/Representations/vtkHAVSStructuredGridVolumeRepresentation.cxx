@@ -1,0 +1,29 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSStructuredGridVolumeRepresentation.cxx
+
+=========================================================================*/
+#include "vtkHAVSStructuredGridVolumeRepresentation.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkInformation.h"
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkHAVSStructuredGridVolumeRepresentation);
+
+//------------------------------------------------------------------------------
+int vtkHAVSStructuredGridVolumeRepresentation::FillInputPortInformation(
+  int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkStructuredGrid");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSStructuredGridVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}

@@ -1,0 +1,42 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSStructuredGridVolumeRepresentation.h
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSStructuredGridVolumeRepresentation
+ * @brief   The HAVS volume representation for structured grids.
+ *
+ * As ParaView's vtkStructuredGridVolumeRepresentation does for its stock
+ * mappers: accepts vtkStructuredGrid (and composite data of them); the
+ * representation's preprocessor tetrahedralizes it, and HAVS renders it.
+ */
+#ifndef vtkHAVSStructuredGridVolumeRepresentation_h
+#define vtkHAVSStructuredGridVolumeRepresentation_h
+
+#include "vtkHAVSRepresentationsModule.h" // For export macro
+#include "vtkHAVSUnstructuredGridVolumeRepresentation.h"
+
+class VTKHAVSREPRESENTATIONS_EXPORT vtkHAVSStructuredGridVolumeRepresentation
+  : public vtkHAVSUnstructuredGridVolumeRepresentation
+{
+public:
+  static vtkHAVSStructuredGridVolumeRepresentation* New();
+  vtkTypeMacro(
+    vtkHAVSStructuredGridVolumeRepresentation, vtkHAVSUnstructuredGridVolumeRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+protected:
+  vtkHAVSStructuredGridVolumeRepresentation() = default;
+  ~vtkHAVSStructuredGridVolumeRepresentation() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+private:
+  vtkHAVSStructuredGridVolumeRepresentation(
+    const vtkHAVSStructuredGridVolumeRepresentation&) = delete;
+  void operator=(const vtkHAVSStructuredGridVolumeRepresentation&) = delete;
+};
+
+#endif
