@@ -30,12 +30,15 @@ view.ResetCamera()
 SetActiveSource(tets)
 Render()
 PY
+# A fresh settings directory without the welcome dialog.
+mkdir -p "$work/config/ParaView"
+printf '[General]\nGeneralSettings.ShowWelcomeDialog=0\n' > "$work/config/ParaView/ParaView5.11.0.ini"
 display=:$((90 + RANDOM % 9))
 Xvfb "$display" -screen 0 1600x1000x24 -nolisten tcp &
 xvfb=$!
 trap 'kill $xvfb 2> /dev/null || true; rm -rf "$work"' EXIT
 sleep 2
-DISPLAY=$display LD_LIBRARY_PATH="$root/build/lib" paraview --script="$work/show.py" &
+DISPLAY=$display XDG_CONFIG_HOME="$work/config" LD_LIBRARY_PATH="$root/build/lib" paraview -geometry 1600x1000+0+0 --script="$work/show.py" &
 client=$!
 sleep "${HAVS_SCREENSHOT_WAIT:-40}"
 DISPLAY=$display xwd -root -silent > "$work/screen.xwd"
