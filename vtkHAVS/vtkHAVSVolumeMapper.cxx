@@ -11,6 +11,7 @@
 #include "vtkHAVSKBufferRenderer.h"
 #include "vtkHAVSPlaneSection.h"
 #include "vtkHAVSPreIntegrationTable.h"
+#include "vtkHAVSVisibilityOrder.h"
 
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
@@ -126,6 +127,12 @@ struct vtkHAVSVolumeMapper::Internals
   vtkMTimeType SectionMeshTime = 0;
   bool SectionsUploaded = false;
   vtkNew<vtkHAVSPlaneSection> Sectioner;
+
+  // MPVO: its adjacency (per mesh) and the view its order was made for.
+  vtkNew<vtkHAVSVisibilityOrder> MPVO;
+  vtkMTimeType MPVOMeshTime = 0;
+  std::vector<double> MPVOKey;
+  int LastOrderKind = -1;
 };
 
 //------------------------------------------------------------------------------
@@ -653,12 +660,57 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   // Face order: composite needs the centroid sort; the extremum modes do not.
   const double sortStart = vtkTimerLog::GetUniversalTime();
   bool orderChanged = false;
-  if (frame.BlendMode == 0)
+  const std::vector<uint32_t>* order = nullptr;
+  if (frame.BlendMode == 0 && this->VisibilityOrder == VisibilityOrderMPVO)
+  {
+    if (in.MPVOMeshTime != in.MeshBuildTime.GetMTime())
+    {
+      in.MPVO->Build(in.Faces, vtkUnstructuredGrid::SafeDownCast(this->GetInput()));
+      in.MPVOMeshTime = in.MeshBuildTime.GetMTime();
+      in.MPVOKey.clear();
+    }
+    // The eye and the direction of projection in the grid's coordinates.
+    vtkNew<vtkMatrix4x4> worldToModel;
+    vtkMatrix4x4::Invert(volumeMatrix, worldToModel);
+    double eyeModel[4] = { eye[0], eye[1], eye[2], 1.0 }, directionModel[4] = { direction[0],
+      direction[1], direction[2], 0.0 };
+    worldToModel->MultiplyPoint(eyeModel, eyeModel);
+    worldToModel->MultiplyPoint(directionModel, directionModel);
+    for (int i = 0; i < 3; ++i)
+    {
+      eyeModel[i] /= eyeModel[3];
+    }
+    const std::vector<double> key = { eyeModel[0], eyeModel[1], eyeModel[2], directionModel[0],
+      directionModel[1], directionModel[2], frame.Parallel ? 1.0 : 0.0 };
+    if (key != in.MPVOKey || in.LastOrderKind != VisibilityOrderMPVO)
+    {
+      in.MPVO->Sort(eyeModel, directionModel, frame.Parallel);
+      in.MPVOKey = key;
+      orderChanged = true;
+    }
+    this->LastCycleBreaks = in.MPVO->GetNumberOfCycleBreaks();
+    order = &in.MPVO->GetOrder();
+    if (static_cast<vtkIdType>(order->size()) != in.Faces->GetNumberOfFaces())
+    {
+      vtkErrorMacro("The MPVO order could not be made for this mesh; using the centroid order.");
+      order = nullptr;
+      in.LastOrderKind = -1;
+    }
+  }
+  if (frame.BlendMode == 0 && !order)
   {
     double m[16];
     vtkMatrix4x4::DeepCopy(m, volumeMatrix);
+    if (in.LastOrderKind != VisibilityOrderCentroid)
+    {
+      in.Sorter->Invalidate();
+    }
     orderChanged = in.Sorter->Sort(in.Faces, m, eye, direction, frame.Parallel);
+    order = &in.Sorter->GetOrder();
   }
+  in.LastOrderKind = frame.BlendMode == 0 && order == &in.MPVO->GetOrder()
+    ? VisibilityOrderMPVO
+    : (frame.BlendMode == 0 ? VisibilityOrderCentroid : -1);
   if (orderChanged || in.SortedTriangles.empty())
   {
     const std::vector<uint32_t>& faceVertices = in.Faces->GetFaceVertices();
@@ -666,7 +718,6 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     const vtkIdType numFaces = in.Faces->GetNumberOfFaces();
     in.SortedTriangles.resize(3 * numFaces);
     in.SortedBoundary.resize(numFaces);
-    const std::vector<uint32_t>* order = frame.BlendMode == 0 ? &in.Sorter->GetOrder() : nullptr;
     for (vtkIdType i = 0; i < numFaces; ++i)
     {
       const uint32_t f = order ? (*order)[i] : static_cast<uint32_t>(i);
@@ -758,6 +809,8 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
   os << indent << "FaceRasterBoundMode: " << this->FaceRasterBoundMode << "\n";
+  os << indent << "VisibilityOrder: " << (this->VisibilityOrder == VisibilityOrderMPVO ? "MPVO" : "Centroid")
+     << " (last cycle breaks " << this->LastCycleBreaks << ")\n";
   static const char* const boundaryModes[] = { "Automatic", "Tagging", "Ignore", "GapLength" };
   os << indent << "BoundaryMode: " << boundaryModes[this->BoundaryMode]
      << " (last frame tagged: " << this->LastTagging << ")\n";

@@ -157,6 +157,30 @@ public:
   vtkBooleanMacro(FaceRasterBoundMode, bool);
   ///@}
 
+  enum VisibilityOrders
+  {
+    VisibilityOrderCentroid = 0,
+    VisibilityOrderMPVO = 1
+  };
+
+  ///@{
+  /**
+   * The face order the k-buffer finishes: Centroid (default; HAVS's sort of
+   * the face centroids by distance) or MPVO (vtkHAVSVisibilityOrder: an exact
+   * front-to-back order of the tetrahedra, each face drawn when the one
+   * behind it is visited; on a convex mesh without visibility cycles k = 1
+   * suffices; non-convex meshes are not yet convexified, so there it is exact
+   * only where no ray leaves and re-enters the mesh).
+   */
+  vtkSetClampMacro(VisibilityOrder, int, VisibilityOrderCentroid, VisibilityOrderMPVO);
+  vtkGetMacro(VisibilityOrder, int);
+  void SetVisibilityOrderToCentroid() { this->SetVisibilityOrder(VisibilityOrderCentroid); }
+  void SetVisibilityOrderToMPVO() { this->SetVisibilityOrder(VisibilityOrderMPVO); }
+  ///@}
+
+  /// MPVO: the tetrahedra taken out of order to break visibility cycles in the last frame.
+  vtkGetMacro(LastCycleBreaks, vtkIdType);
+
   enum BoundaryModes
   {
     BoundaryAutomatic = 0,
@@ -288,6 +312,8 @@ protected:
   bool KeepFloatResult = false;
   bool FaceRasterBoundMode = false;
   int BoundaryMode = BoundaryAutomatic;
+  int VisibilityOrder = VisibilityOrderCentroid;
+  vtkIdType LastCycleBreaks = 0;
   bool PlaneSections = true;
   bool LastTagging = false;
   int LastPlaneCount = 0;
