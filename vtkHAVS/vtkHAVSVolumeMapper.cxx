@@ -176,6 +176,13 @@ vtkIdType vtkHAVSVolumeMapper::GetNumberOfTetrahedra()
   return this->Internal->Faces->GetNumberOfTetrahedra();
 }
 
+void vtkHAVSVolumeMapper::InvalidateFaceOrder()
+{
+  this->Internal->Sorter->Invalidate();
+  this->Internal->MPVOKey.clear();
+}
+
+//------------------------------------------------------------------------------
 bool vtkHAVSVolumeMapper::IsInputConvex()
 {
   return this->Internal->MeshValid && this->Internal->Faces->IsConvex();

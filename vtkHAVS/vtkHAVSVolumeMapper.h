@@ -178,6 +178,9 @@ public:
   void SetVisibilityOrderToMPVO() { this->SetVisibilityOrder(VisibilityOrderMPVO); }
   ///@}
 
+  /// The next frame orders the faces again even if the view has not changed (benchmarks).
+  void InvalidateFaceOrder();
+
   /// MPVO: the tetrahedra taken out of order to break visibility cycles in the last frame.
   vtkGetMacro(LastCycleBreaks, vtkIdType);
 
