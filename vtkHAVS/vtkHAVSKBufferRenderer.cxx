@@ -98,6 +98,21 @@ vtkHAVSKBufferShaders::InterlockKind AvailableInterlock()
   return vtkHAVSKBufferShaders::InterlockNone;
 }
 
+/// Fills the buffers of the bound vertex array that the face vertex shader
+/// reads: points (location 0, 3 floats each) and normalized scalars (location 1).
+void UploadVertexAttributes(GLuint pointBuffer, GLuint scalarBuffer,
+  const std::vector<float>& points, const std::vector<float>& scalars, GLenum usage)
+{
+  glBindBuffer(GL_ARRAY_BUFFER, pointBuffer);
+  glBufferData(GL_ARRAY_BUFFER, points.size() * sizeof(float), points.data(), usage);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, scalarBuffer);
+  glBufferData(GL_ARRAY_BUFFER, scalars.size() * sizeof(float), scalars.data(), usage);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+}
+
 double Now()
 {
   return vtkTimerLog::GetUniversalTime();
@@ -844,14 +859,7 @@ void vtkHAVSKBufferRenderer::SetGeometry(
     glGenBuffers(1, &in.IndexBuffer);
   }
   glBindVertexArray(in.VertexArray);
-  glBindBuffer(GL_ARRAY_BUFFER, in.PointBuffer);
-  glBufferData(GL_ARRAY_BUFFER, pointsMC.size() * sizeof(float), pointsMC.data(), GL_STATIC_DRAW);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, in.ScalarBuffer);
-  glBufferData(GL_ARRAY_BUFFER, scalars.size() * sizeof(float), scalars.data(), GL_STATIC_DRAW);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+  UploadVertexAttributes(in.PointBuffer, in.ScalarBuffer, pointsMC, scalars, GL_STATIC_DRAW);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, in.IndexBuffer);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
@@ -922,14 +930,7 @@ void vtkHAVSKBufferRenderer::SetSections(const std::vector<Section>& sections)
     glGenBuffers(1, &in.SectionScalars);
   }
   glBindVertexArray(in.SectionArray);
-  glBindBuffer(GL_ARRAY_BUFFER, in.SectionPoints);
-  glBufferData(GL_ARRAY_BUFFER, points.size() * sizeof(float), points.data(), GL_STREAM_DRAW);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, in.SectionScalars);
-  glBufferData(GL_ARRAY_BUFFER, scalars.size() * sizeof(float), scalars.data(), GL_STREAM_DRAW);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+  UploadVertexAttributes(in.SectionPoints, in.SectionScalars, points, scalars, GL_STREAM_DRAW);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }

@@ -7,6 +7,7 @@
 #include "vtkHAVSReferenceRenderer.h"
 
 #include "vtkHAVSFaceSet.h"
+#include "vtkHAVSPlaneSection.h"
 #include "vtkHAVSPreIntegrationTable.h"
 
 #include "vtkCamera.h"
@@ -511,14 +512,8 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
     }
     for (const WorldPlane& plane : planes)
     {
-      bool positive = false, negative = false;
-      for (int corner = 0; corner < 8; ++corner)
-      {
-        const double x[3] = { worldBounds[corner & 1 ? 1 : 0], worldBounds[corner & 2 ? 3 : 2],
-          worldBounds[corner & 4 ? 5 : 4] };
-        (discarded(plane, x) ? negative : positive) = true;
-      }
-      needLocator = needLocator || (positive && negative);
+      const double equation[4] = { plane.N[0], plane.N[1], plane.N[2], plane.W };
+      needLocator = needLocator || vtkHAVSPlaneSection::CutsBox(equation, worldBounds);
     }
     vtkNew<vtkStaticCellLocator> locator;
     if (needLocator)

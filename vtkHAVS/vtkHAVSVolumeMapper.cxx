@@ -32,6 +32,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -123,7 +124,19 @@ struct vtkHAVSVolumeMapper::Internals
   int PlaneCount = 0;
   float PlanesRC[7][4];
   std::vector<vtkHAVSKBufferRenderer::Section> Sections;
-  std::vector<double> SectionKey; // the model-space planes the sections were made for
+  // A plane that cuts the mesh: its index among the uploaded planes, whether
+  // the rays enter the kept side there, its equation in model coordinates.
+  struct SectionCut
+  {
+    int Index;
+    bool Entering;
+    std::array<double, 4> PlaneMC;
+    bool operator==(const SectionCut& o) const
+    {
+      return this->Index == o.Index && this->Entering == o.Entering && this->PlaneMC == o.PlaneMC;
+    }
+  };
+  std::vector<SectionCut> SectionCuts; // what the sections were made for
   vtkMTimeType SectionMeshTime = 0;
   bool SectionsUploaded = false;
   vtkNew<vtkHAVSPlaneSection> Sectioner;
@@ -493,8 +506,7 @@ bool vtkHAVSVolumeMapper::UpdatePlanes(vtkRenderer* renderer, const double eye[3
 
   // Each plane in model coordinates: the sections are cut there.
   in.PlaneCount = 0;
-  std::vector<double> key;
-  std::vector<std::pair<int, PlaneRC>> cutting; // (index among the uploaded planes, plane)
+  std::vector<Internals::SectionCut> sectionCuts;
   for (size_t i = 0; i < planes.size(); ++i)
   {
     double planeMC[4];
@@ -522,32 +534,28 @@ bool vtkHAVSVolumeMapper::UpdatePlanes(vtkRenderer* renderer, const double eye[3
     }
     if (cuts && this->PlaneSections)
     {
-      key.insert(key.end(), planeMC, planeMC + 4);
-      key.push_back(planes[i].Entering ? 1.0 : 0.0);
-      key.push_back(index);
-      PlaneRC inModel = planes[i];
-      std::copy(planeMC, planeMC + 4, inModel.Equation);
-      cutting.emplace_back(index, inModel);
+      sectionCuts.push_back(
+        { index, planes[i].Entering, { planeMC[0], planeMC[1], planeMC[2], planeMC[3] } });
     }
   }
 
   // Sections, only when a plane or the mesh changed.
-  if (key == in.SectionKey && in.SectionMeshTime == in.MeshBuildTime.GetMTime())
+  if (sectionCuts == in.SectionCuts && in.SectionMeshTime == in.MeshBuildTime.GetMTime())
   {
     return false;
   }
   const double start = vtkTimerLog::GetUniversalTime();
-  in.SectionKey = key;
+  in.SectionCuts = sectionCuts;
   in.SectionMeshTime = in.MeshBuildTime.GetMTime();
   in.Sections.clear();
   this->LastSectionTriangles = 0;
-  for (const auto& c : cutting)
+  for (const Internals::SectionCut& cut : sectionCuts)
   {
     vtkHAVSKBufferRenderer::Section section;
-    section.PlaneIndex = c.first;
-    section.Entering = c.second.Entering;
+    section.PlaneIndex = cut.Index;
+    section.Entering = cut.Entering;
     this->LastSectionTriangles += in.Sectioner->Compute(in.Faces->GetTetrahedra(), in.PointsMC,
-      in.Scalars, c.second.Equation, section.PointsMC, section.Scalars);
+      in.Scalars, cut.PlaneMC.data(), section.PointsMC, section.Scalars);
     in.Sections.push_back(std::move(section));
   }
   this->LastSectionSeconds = vtkTimerLog::GetUniversalTime() - start;
