@@ -9,23 +9,18 @@ differ from it by more (negative control).
 Arguments: --port N --out DIR --serial PNG. Environment: HAVS_DATA_DIR, PV_PLUGIN_PATH.
 """
 import argparse
-import math
 import os
 import sys
 
-from paraview.simple import (ColorBy, Connect, CreateRenderView, GetColorTransferFunction,
-                             GetOpacityTransferFunction, LegacyVTKReader, Render,
-                             SaveScreenshot, Show, Tetrahedralize)
-from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
-from vtkmodules.vtkIOImage import vtkPNGReader
-from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
+from paraview.simple import Connect, Render, SaveScreenshot
+
+from havs_plugin_scene import SIZE, compare, png_rgb, read_lox_post, show_lox_post
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--port", type=int, required=True)
 parser.add_argument("--out", required=True)
 parser.add_argument("--serial", required=True)
 args, _ = parser.parse_known_args()
-SIZE = 200
 failures = []
 
 
@@ -35,59 +30,11 @@ def check(condition, what):
         failures.append(what)
 
 
-def pixels(path):
-    png = vtkPNGReader()
-    png.SetFileName(path)
-    png.Update()
-    scalars = png.GetOutput().GetPointData().GetScalars()
-    return [[scalars.GetComponent(i, k) / 255.0 for k in range(3)]
-            for i in range(png.GetOutput().GetNumberOfPoints())]
-
-
-def rmse(a, b):
-    if len(a) != len(b) or not a:
-        return 1e30
-    d = [(x[k] - y[k]) ** 2 for x, y in zip(a, b) for k in range(3)]
-    return math.sqrt(sum(d) / len(d))
-
-
 connection = Connect("localhost", args.port)
 check(connection is not None, "connected to pvserver on port %d" % args.port)
-data_file = os.path.join(os.environ["HAVS_DATA_DIR"], "post.vtk")
-legacy = vtkUnstructuredGridReader()
-legacy.SetFileName(data_file)
-tetrahedralize = vtkDataSetTriangleFilter()
-tetrahedralize.SetInputConnection(legacy.GetOutputPort())
-tetrahedralize.Update()
-grid = tetrahedralize.GetOutput()
-data_range = grid.GetPointData().GetArray("Pressure").GetRange()
-
-reader = LegacyVTKReader(FileNames=[data_file])
-tets = Tetrahedralize(Input=reader)
-view = CreateRenderView()
-view.ViewSize = [SIZE, SIZE]
-view.OrientationAxesVisibility = 0
-view.Background = [0.0, 0.0, 0.0]
-view.UseColorPaletteForBackground = 0
-display = Show(tets, view)
-ColorBy(display, ("POINTS", "Pressure"))
+tets, view, display, lut, pwf = show_lox_post(read_lox_post())
 check("HAVS Volume" in display.GetProperty("Representation").Available,
       "the server and the client know the HAVS Volume representation (PV_PLUGIN_PATH)")
-display.Representation = "HAVS Volume"
-lut = GetColorTransferFunction("Pressure")
-pwf = GetOpacityTransferFunction("Pressure")
-lut.RescaleTransferFunction(data_range[0], data_range[1])
-pwf.RescaleTransferFunction(data_range[0], data_range[1])
-pwf.Points = [data_range[0], 0.0, 0.5, 0.0, data_range[1], 0.8, 0.5, 0.0]
-display.ScalarOpacityUnitDistance = grid.GetLength() / 8.0
-display.HAVSKBufferSize = 14
-display.HAVSEarlyRayTerminationOpacity = 1.0
-view.CameraPosition = [0.0, 0.0, 1.0]
-view.ResetCamera()
-camera = view.GetActiveCamera()
-camera.Azimuth(30.0)
-camera.Elevation(20.0)
-view.ResetCamera()
 Render(view)
 os.makedirs(args.out, exist_ok=True)
 havs_png = os.path.join(args.out, "havs_plugin_pvserver.png")
@@ -97,10 +44,9 @@ Render(view)
 pt_png = os.path.join(args.out, "havs_plugin_pvserver_pt.png")
 SaveScreenshot(pt_png, view, ImageResolution=[SIZE, SIZE])
 
-serial = pixels(args.serial)
-havs = pixels(havs_png)
-pt = pixels(pt_png)
-d_havs, d_pt = rmse(havs, serial), rmse(pt, serial)
+serial = png_rgb(args.serial)
+d_havs, _ = compare(png_rgb(havs_png), serial)
+d_pt, _ = compare(png_rgb(pt_png), serial)
 print("pvserver (2 ranks) HAVS image vs serial HAVS image: RMSE %.5f" % d_havs)
 print("pvserver (2 ranks) stock Volume (PT) image vs serial HAVS image: RMSE %.5f" % d_pt)
 check(d_havs < 0.01, "the pvserver's HAVS image equals the serial one (RMSE %.5f)" % d_havs)

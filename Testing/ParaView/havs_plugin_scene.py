@@ -1,0 +1,108 @@
+"""What the ParaView plugin tests share: the LOX post read with VTK, the HAVS Volume
+display styled the same way in every test, PNG pixels, image differences and the exact
+reference image of a scene."""
+import math
+import os
+
+from paraview.simple import (ColorBy, CreateRenderView, GetColorTransferFunction,
+                             GetOpacityTransferFunction, LegacyVTKReader, Show, Tetrahedralize)
+from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
+from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
+from vtkmodules.vtkRenderingCore import vtkVolumeProperty
+
+import vtkhavs
+
+SIZE = 200
+
+
+def lox_post_path():
+    return os.path.join(os.environ["HAVS_DATA_DIR"], "post.vtk")
+
+
+def read_lox_post():
+    """The LOX post tetrahedralized with VTK (as ParaView's Tetrahedralize does), Pressure active."""
+    legacy = vtkUnstructuredGridReader()
+    legacy.SetFileName(lox_post_path())
+    tetrahedralize = vtkDataSetTriangleFilter()
+    tetrahedralize.SetInputConnection(legacy.GetOutputPort())
+    tetrahedralize.Update()
+    grid = tetrahedralize.GetOutput()
+    grid.GetPointData().SetActiveScalars("Pressure")
+    return grid
+
+
+def style_havs_volume(display, array, data_range, length):
+    """Colour by `array`, opacity ramp 0 -> 0.8 over `data_range`, unit distance length / 8,
+    HAVS Volume with k = 14 and no early ray termination. Returns the colour and opacity maps."""
+    ColorBy(display, ("POINTS", array))
+    display.Representation = "HAVS Volume"
+    lut = GetColorTransferFunction(array)
+    pwf = GetOpacityTransferFunction(array)
+    lut.RescaleTransferFunction(data_range[0], data_range[1])
+    pwf.RescaleTransferFunction(data_range[0], data_range[1])
+    pwf.Points = [data_range[0], 0.0, 0.5, 0.0, data_range[1], 0.8, 0.5, 0.0]
+    display.ScalarOpacityUnitDistance = length / 8.0
+    display.HAVSKBufferSize = 14
+    display.HAVSEarlyRayTerminationOpacity = 1.0
+    return lut, pwf
+
+
+def show_lox_post(grid):
+    """The LOX post as HAVS Volume in a new SIZE x SIZE view on a black background, seen
+    from azimuth 30, elevation 20. Returns (tets source, view, display, lut, pwf)."""
+    tets = Tetrahedralize(Input=LegacyVTKReader(FileNames=[lox_post_path()]))
+    view = CreateRenderView()
+    view.ViewSize = [SIZE, SIZE]
+    view.OrientationAxesVisibility = 0
+    view.Background = [0.0, 0.0, 0.0]
+    view.UseColorPaletteForBackground = 0
+    display = Show(tets, view)
+    lut, pwf = style_havs_volume(
+        display, "Pressure", grid.GetPointData().GetArray("Pressure").GetRange(),
+        grid.GetLength())
+    view.CameraPosition = [0.0, 0.0, 1.0]
+    view.ResetCamera()
+    camera = view.GetActiveCamera()
+    camera.Azimuth(30.0)
+    camera.Elevation(20.0)
+    view.ResetCamera()
+    return tets, view, display, lut, pwf
+
+
+def png_rgb(path):
+    """The RGB pixels of a PNG, in [0, 1], bottom row first (empty when unreadable)."""
+    png = vtkPNGReader()
+    png.SetFileName(path)
+    png.Update()
+    image = png.GetOutput()
+    scalars = image.GetPointData().GetScalars()
+    if scalars is None:
+        return []
+    return [[scalars.GetComponent(i, k) / 255.0 for k in range(3)]
+            for i in range(image.GetNumberOfPoints())]
+
+
+def compare(a, b):
+    """RMSE and maximum absolute difference of two RGB pixel lists (1e30 if they differ in size)."""
+    if len(a) != len(b) or not a:
+        return 1e30, 1e30
+    diffs = [abs(x[k] - y[k]) for x, y in zip(a, b) for k in range(3)]
+    return math.sqrt(sum(d * d for d in diffs) / len(diffs)), max(diffs)
+
+
+def reference_rgb(grid, lut, pwf, unit_distance, camera, size=SIZE):
+    """The exact image (vtkHAVSReferenceRenderer) of `grid` with ParaView's colour and opacity
+    maps, as RGB over black, clamped to 1."""
+    prop = vtkVolumeProperty()
+    prop.SetColor(lut.GetClientSideObject())
+    prop.SetScalarOpacity(pwf.GetClientSideObject())
+    prop.SetScalarOpacityUnitDistance(unit_distance)
+    reference = vtkhavs.vtkHAVSReferenceRenderer()
+    reference.SetInputData(grid)
+    reference.SetProperty(prop)
+    reference.SetCamera(camera)
+    reference.SetSize(size, size)
+    reference.Render()
+    exact = reference.GetImage()
+    return [[min(1.0, exact.GetComponent(i, k)) for k in range(3)] for i in range(size * size)]
