@@ -3,11 +3,12 @@
 //
 //   havs_reference [--dataset bluntfin|loxpost|combustor|loxpostvtk | --input mesh.vtu]
 //                  [--size N] [--views 14] [--k-image out.png] [--image out.png]
-//                  [--order centroid|mpvo]
+//                  [--order centroid|mpvo|mpvo-layers|mpvo-ignore]
 //
 // For each of 14 fixed viewpoints (the 6 axis directions and the 8 cube
 // diagonals) it finds every pixel's exact fragments, orders them as
-// vtkHAVSVolumeMapper draws them (its centroid sort for that camera) and
+// vtkHAVSVolumeMapper draws them (its centroid sort for that camera, or MPVO
+// with the convexification, with the boundary layers, or alone) and
 // computes the required k; it prints the totals as a Markdown row. --image
 // writes the exact image of the first view, --k-image its required-k image
 // (green k <= 2, yellow k <= 6, red k > 6).
@@ -23,6 +24,7 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
+#include "vtkMatrix4x4.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkMultiBlockPLOT3DReader.h"
 #include "vtkNew.h"
@@ -180,7 +182,7 @@ int main(int argc, char* argv[])
     {
       std::cout << "usage: havs_reference [--dataset bluntfin|loxpost|combustor|loxpostvtk | "
                    "--input mesh.vtu] [--size N] [--views 1..14] [--k-image out.png] "
-                   "[--image out.png] [--order centroid|mpvo]\n";
+                   "[--image out.png] [--order centroid|mpvo|mpvo-layers|mpvo-ignore]\n";
       return a == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
     }
   }
@@ -211,7 +213,11 @@ int main(int argc, char* argv[])
   reference->SetSize(size, size);
   vtkNew<vtkHAVSFaceSorter> sorter;
   vtkNew<vtkHAVSVisibilityOrder> mpvo;
-  const bool useMPVO = order == "mpvo";
+  const bool useMPVO = order.compare(0, 4, "mpvo") == 0;
+  mpvo->SetNonConvexMethod(order == "mpvo-layers"
+      ? vtkHAVSVisibilityOrder::NonConvexBoundaryLayers
+      : (order == "mpvo-ignore" ? vtkHAVSVisibilityOrder::NonConvexIgnore
+                                : vtkHAVSVisibilityOrder::NonConvexConvexification));
   vtkIdType cycleBreaks = 0;
   double orderSeconds = 0.0;
   vtkNew<vtkHAVSSoftwareKBuffer> analysis;
@@ -239,6 +245,9 @@ int main(int argc, char* argv[])
       {
         return EXIT_FAILURE;
       }
+      vtkNew<vtkMatrix4x4> toClip;
+      toClip->DeepCopy(camera->GetCompositeProjectionTransformMatrix(1.0, -1, 1));
+      mpvo->SetViewSampling(toClip->GetData(), size, size);
       mpvo->Sort(eye, dop, false);
       cycleBreaks += mpvo->GetNumberOfCycleBreaks();
       orderSeconds += mpvo->GetLastSortSeconds();
@@ -291,7 +300,16 @@ int main(int argc, char* argv[])
     vtkTimerLog::GetUniversalTime() - start);
   std::printf("(%s draw order, as vtkHAVSVolumeMapper; %.2f ms per view to order the faces; "
               "%lld cycle breaks; SMP backend %s)\n",
-    useMPVO ? "MPVO" : "centroid-sorted", 1000.0 * orderSeconds / std::max(views, 1),
+    useMPVO ? order.c_str() : "centroid-sorted", 1000.0 * orderSeconds / std::max(views, 1),
     static_cast<long long>(cycleBreaks), vtkSMPTools::GetBackend());
+  if (useMPVO)
+  {
+    std::printf("(mesh %s; %lld imaginary cells, convexified in %.2f s; %lld boundary-layer "
+                "relations in the last view, %.2f ms)\n",
+      mpvo->IsMeshConvex() ? "convex" : "non-convex",
+      static_cast<long long>(mpvo->GetNumberOfImaginaryCells()), mpvo->GetConvexificationSeconds(),
+      static_cast<long long>(mpvo->GetNumberOfBoundaryRelations()),
+      1000.0 * mpvo->GetLastBoundaryLayerSeconds());
+  }
   return EXIT_SUCCESS;
 }

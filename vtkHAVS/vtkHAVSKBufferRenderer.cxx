@@ -173,6 +173,8 @@ struct vtkHAVSKBufferRenderer::Internals
   GLuint ListHeads = 0;
   GLuint ListNodes = 0;
   GLuint ListCounter = 0;
+  // order-violation counter (one uint, binding 3)
+  GLuint ViolationCounter = 0;
   GLuint ListCapacity = 0;
   int ListHeadsSize[2] = { 0, 0 };
 
@@ -223,7 +225,8 @@ struct vtkHAVSKBufferRenderer::Internals
   {
     this->ReleaseSizeDependent();
     GLuint buffers[] = { this->PointBuffer, this->ScalarBuffer, this->IndexBuffer,
-      this->ListNodes, this->ListCounter, this->SectionPoints, this->SectionScalars };
+      this->ListNodes, this->ListCounter, this->SectionPoints, this->SectionScalars,
+      this->ViolationCounter };
     for (GLuint b : buffers)
     {
       if (b)
@@ -232,7 +235,7 @@ struct vtkHAVSKBufferRenderer::Internals
       }
     }
     this->PointBuffer = this->ScalarBuffer = this->IndexBuffer = 0;
-    this->ListNodes = this->ListCounter = 0;
+    this->ListNodes = this->ListCounter = this->ViolationCounter = 0;
     this->SectionPoints = this->SectionScalars = 0;
     this->SectionDraws.clear();
     this->ListCapacity = 0;
@@ -506,9 +509,37 @@ struct vtkHAVSKBufferRenderer::Internals
     return true;
   }
 
+  /// Zeroes the order-violation counter and binds it for the k-buffer shaders.
+  void ResetViolationCounter()
+  {
+    const GLuint zero = 0;
+    if (!this->ViolationCounter)
+    {
+      glGenBuffers(1, &this->ViolationCounter);
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(GLuint), &zero, GL_DYNAMIC_READ);
+    }
+    else
+    {
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
+      glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &zero);
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, this->ViolationCounter);
+  }
+
+  std::uint64_t ReadViolationCounter()
+  {
+    GLuint count = 0;
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &count);
+    return count;
+  }
+
   /// Clears the k-buffer of the path and draws the faces through it.
   bool DrawKBuffer(const FrameParameters& p, std::uint64_t& fragmentCount)
   {
+    this->ResetViolationCounter();
     switch (p.Path)
     {
       case FramebufferFetch:
@@ -1025,6 +1056,8 @@ bool vtkHAVSKBufferRenderer::Render(vtkRenderer* renderer, const FrameParameters
     {
       ok = ok && (extremum ? in.ResolveExtremum(p) : in.Resolve(p));
     }
+    this->LastOrderViolations =
+      ok && !p.RasterBoundOnly && !extremum && p.CountOrderViolations ? in.ReadViolationCounter() : 0;
     if (ok && p.KeepResult)
     {
       this->LastResult.resize(static_cast<size_t>(width) * height * 4);
@@ -1041,7 +1074,7 @@ bool vtkHAVSKBufferRenderer::Render(vtkRenderer* renderer, const FrameParameters
     in.Table->Deactivate();
     state->PopFramebufferBindings();
 
-    if (ok && !p.RasterBoundOnly)
+    if (ok && !p.RasterBoundOnly && p.Composite)
     {
       state->vtkglViewport(originX, originY, width, height);
       ok = in.Composite(originX, originY);
@@ -1057,6 +1090,35 @@ bool vtkHAVSKBufferRenderer::Render(vtkRenderer* renderer, const FrameParameters
     }
     return ok;
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSKBufferRenderer::CompositeLastResult(vtkRenderer* renderer)
+{
+  Internals& in = *this->Internal;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  int width = 0, height = 0, originX = 0, originY = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &originX, &originY);
+  if (!window || window != in.Window || !in.Result || width != in.Size[0] ||
+    height != in.Size[1])
+  {
+    vtkErrorMacro("CompositeLastResult needs the last frame's result in this window.");
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+  state->vtkglViewport(originX, originY, width, height);
+  return in.Composite(originX, originY);
 }
 
 //------------------------------------------------------------------------------

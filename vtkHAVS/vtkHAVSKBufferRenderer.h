@@ -89,6 +89,8 @@ public:
     bool MeasureStages = false;
     bool KeepResult = false;
     bool RasterBoundOnly = false; // benchmark aid: faces with a trivial shader, nothing else
+    bool Composite = true;            // composite the result over the window (else keep it)
+    bool CountOrderViolations = true; // read the order-violation counter back after the frame
     bool Tagging = true;          // boundary faces carry their entry/exit role
     float GapLength = 3.0e38f;    // segments longer than this contribute nothing (3e38: off)
     int PlaneCount = 0;           // clipping planes (and the near plane), eye-relative world:
@@ -133,6 +135,12 @@ public:
    */
   bool Render(vtkRenderer* renderer, const FrameParameters& parameters);
 
+  /**
+   * Composites the result of the last frame (rendered with Composite off)
+   * over the renderer's framebuffer.
+   */
+  bool CompositeLastResult(vtkRenderer* renderer);
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
   ///@{
@@ -150,6 +158,13 @@ public:
   const std::vector<float>& GetLastResult() const { return this->LastResult; }
   int GetLastResultWidth() const { return this->LastSize[0]; }
   int GetLastResultHeight() const { return this->LastSize[1]; }
+
+  /**
+   * Fragments composited out of depth order in the last frame (nearer than
+   * what their pixel had been integrated to, beyond float rounding); 0 when
+   * not counted (FrameParameters::CountOrderViolations off, extremum modes).
+   */
+  std::uint64_t GetLastOrderViolations() const { return this->LastOrderViolations; }
 
   /// Fragment-list path: fragments stored in the last frame.
   std::uint64_t GetLastFragmentCount() const { return this->LastFragmentCount; }
@@ -174,6 +189,7 @@ private:
   std::vector<float> LastResult;
   int LastSize[2] = { 0, 0 };
   std::uint64_t LastFragmentCount = 0;
+  std::uint64_t LastOrderViolations = 0;
 };
 
 #endif

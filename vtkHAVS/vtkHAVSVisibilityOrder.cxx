@@ -6,19 +6,28 @@
 =========================================================================*/
 #include "vtkHAVSVisibilityOrder.h"
 
+#include "vtkHAVSConvexification.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <deque>
 #include <limits>
 
 vtkStandardNewMacro(vtkHAVSVisibilityOrder);
+
+//------------------------------------------------------------------------------
+vtkHAVSVisibilityOrder::vtkHAVSVisibilityOrder() = default;
+
+//------------------------------------------------------------------------------
+vtkHAVSVisibilityOrder::~vtkHAVSVisibilityOrder() = default;
 
 namespace
 {
@@ -39,6 +48,15 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
   this->FacePlanes.clear();
   this->CellFaces.clear();
   this->Order.clear();
+  this->Points.clear();
+  this->BoundaryFaces.clear();
+  this->BoundaryFaceVertices.clear();
+  this->SeamFaces.clear();
+  this->MeshConvex = true;
+  this->Convexification = nullptr;
+  this->ConvexificationBuilt = false;
+  this->NumberOfImaginaryCells = 0;
+  this->ConvexificationSeconds = 0.0;
   if (!faces || !grid || !grid->GetPoints())
   {
     vtkErrorMacro("Build needs a face set and its grid.");
@@ -119,18 +137,400 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
       plane[3] = d;
     }
   });
+
+  // What the non-convex methods need: the points and the boundary faces.
+  this->MeshConvex = faces->IsConvex();
+  this->Points.resize(3 * static_cast<size_t>(points->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    points->GetPoint(i, &this->Points[3 * i]);
+  }
+  for (size_t f = 0; f < numberOfFaces; ++f)
+  {
+    if (this->FaceCells[2 * f + 1] < 0)
+    {
+      this->BoundaryFaces.push_back(static_cast<uint32_t>(f));
+      this->BoundaryFaceVertices.insert(
+        this->BoundaryFaceVertices.end(), &vertices[3 * f], &vertices[3 * f] + 3);
+    }
+  }
+
+  // Seams: boundary faces of two tetrahedra facing each other at the same
+  // place, on a cut whose points are duplicated: the same three points by
+  // coordinates, or the two triangles of the same quadrilateral split by the
+  // other diagonal. Points are first merged by their coordinates.
+  const size_t numberOfBoundary = this->BoundaryFaces.size();
+  std::vector<uint32_t> canonical(3 * numberOfBoundary);
+  {
+    std::vector<std::pair<std::array<double, 3>, uint32_t>> corners(3 * numberOfBoundary);
+    for (size_t i = 0; i < corners.size(); ++i)
+    {
+      const double* x = &this->Points[3 * static_cast<size_t>(this->BoundaryFaceVertices[i])];
+      corners[i] = { { x[0], x[1], x[2] }, static_cast<uint32_t>(i) };
+    }
+    std::sort(corners.begin(), corners.end());
+    uint32_t id = 0;
+    for (size_t i = 0; i < corners.size(); ++i)
+    {
+      id += (i > 0 && corners[i].first != corners[i - 1].first) ? 1 : 0;
+      canonical[corners[i].second] = id;
+    }
+  }
+  auto normalsOppose = [&](uint32_t a, uint32_t b) {
+    const double* p = &this->FacePlanes[4 * static_cast<size_t>(this->BoundaryFaces[a])];
+    const double* q = &this->FacePlanes[4 * static_cast<size_t>(this->BoundaryFaces[b])];
+    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2] < 0.0;
+  };
+  auto addSeam = [&](uint32_t a, uint32_t b) {
+    const uint32_t fa = this->BoundaryFaces[a], fb = this->BoundaryFaces[b];
+    if (this->FaceCells[2 * static_cast<size_t>(fa)] != this->FaceCells[2 * static_cast<size_t>(fb)] &&
+      normalsOppose(a, b))
+    {
+      this->SeamFaces.push_back(fa);
+      this->SeamFaces.push_back(fb);
+    }
+  };
+  // The same triangle.
+  std::vector<std::pair<std::array<uint32_t, 3>, uint32_t>> triangles(numberOfBoundary);
+  for (size_t b = 0; b < numberOfBoundary; ++b)
+  {
+    std::array<uint32_t, 3> t = { canonical[3 * b], canonical[3 * b + 1], canonical[3 * b + 2] };
+    std::sort(t.begin(), t.end());
+    triangles[b] = { t, static_cast<uint32_t>(b) };
+  }
+  std::sort(triangles.begin(), triangles.end());
+  for (size_t i = 0; i + 1 < triangles.size(); ++i)
+  {
+    if (triangles[i].first == triangles[i + 1].first)
+    {
+      addSeam(triangles[i].second, triangles[i + 1].second);
+    }
+  }
+  // The same quadrilateral, split by the other diagonal: pairs of boundary
+  // faces of one tetrahedron side sharing an edge, keyed by their four corners.
+  std::vector<std::pair<std::array<uint32_t, 2>, uint32_t>> edges;
+  edges.reserve(3 * numberOfBoundary);
+  for (size_t b = 0; b < numberOfBoundary; ++b)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      const uint32_t u = canonical[3 * b + i], v = canonical[3 * b + (i + 1) % 3];
+      edges.push_back({ { std::min(u, v), std::max(u, v) }, static_cast<uint32_t>(b) });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::pair<std::array<uint32_t, 4>, std::array<uint32_t, 2>>> quads;
+  for (size_t i = 0; i < edges.size();)
+  {
+    size_t j = i;
+    while (j < edges.size() && edges[j].first == edges[i].first)
+    {
+      ++j;
+    }
+    for (size_t a = i; a < j; ++a)
+    {
+      for (size_t b = a + 1; b < j; ++b)
+      {
+        const uint32_t fa = edges[a].second, fb = edges[b].second;
+        if (normalsOppose(fa, fb))
+        {
+          continue; // a quadrilateral's two triangles face the same way
+        }
+        std::array<uint32_t, 4> corners = { canonical[3 * fa], canonical[3 * fa + 1],
+          canonical[3 * fa + 2], 0 };
+        for (int k = 0; k < 3; ++k)
+        {
+          const uint32_t c = canonical[3 * fb + k];
+          if (c != edges[a].first[0] && c != edges[a].first[1])
+          {
+            corners[3] = c;
+          }
+        }
+        std::sort(corners.begin(), corners.end());
+        quads.push_back({ corners, { fa, fb } });
+      }
+    }
+    i = j;
+  }
+  std::sort(quads.begin(), quads.end());
+  for (size_t i = 0; i < quads.size();)
+  {
+    size_t j = i;
+    while (j < quads.size() && quads[j].first == quads[i].first)
+    {
+      ++j;
+    }
+    for (size_t a = i; a < j; ++a)
+    {
+      for (size_t b = a + 1; b < j; ++b)
+      {
+        // Two splits of one quadrilateral (on two sides of the cut): every
+        // triangle of one overlaps every triangle of the other.
+        const auto& x = quads[a].second;
+        const auto& y = quads[b].second;
+        auto sameTriangle = [&](uint32_t u, uint32_t v) {
+          std::array<uint32_t, 3> tu = { canonical[3 * u], canonical[3 * u + 1], canonical[3 * u + 2] };
+          std::array<uint32_t, 3> tv = { canonical[3 * v], canonical[3 * v + 1], canonical[3 * v + 2] };
+          std::sort(tu.begin(), tu.end());
+          std::sort(tv.begin(), tv.end());
+          return tu == tv;
+        };
+        if (x[0] == y[0] || x[0] == y[1] || x[1] == y[0] || x[1] == y[1] ||
+          sameTriangle(x[0], y[0]) || sameTriangle(x[0], y[1]))
+        {
+          continue; // the same pair, or the same split (seams of the same triangles, above)
+        }
+        for (uint32_t fx : x)
+        {
+          for (uint32_t fy : y)
+          {
+            addSeam(fx, fy);
+          }
+        }
+      }
+    }
+    i = j;
+  }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVisibilityOrder::SetViewSampling(
+  const double modelToClip[16], int width, int height)
+{
+  std::copy(modelToClip, modelToClip + 16, this->ModelToClip);
+  this->SampleSize[0] = width;
+  this->SampleSize[1] = height;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVisibilityOrder::BuildConvexification()
+{
+  this->ConvexificationBuilt = true;
+  this->Convexification = vtkSmartPointer<vtkHAVSConvexification>::New();
+  if (!this->Convexification->Build(this->Points, this->BoundaryFaceVertices))
+  {
+    vtkWarningMacro("The mesh could not be convexified; its order is exact only where no ray "
+                    "re-enters it.");
+    this->Convexification = nullptr;
+    return;
+  }
+  this->NumberOfImaginaryCells = this->Convexification->GetNumberOfImaginaryCells();
+  this->ConvexificationSeconds = this->Convexification->GetBuildSeconds();
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVisibilityOrder::BoundaryLayerRelations(const double eye[3],
+  const double direction[3], bool parallel, std::vector<std::pair<uint32_t, uint32_t>>& relations)
+{
+  const double start = vtkTimerLog::GetUniversalTime();
+  relations.clear();
+  const int width = this->SampleSize[0], height = this->SampleSize[1];
+  const size_t numberOfBoundary = this->BoundaryFaces.size();
+  if (width <= 0 || height <= 0 || numberOfBoundary == 0)
+  {
+    this->LastBoundaryLayerSeconds = 0.0;
+    return;
+  }
+
+  // The boundary faces in window coordinates (pixel centres at +0.5; depth =
+  // NDC z, affine across a triangle in window space) and their facing.
+  struct WindowTriangle
+  {
+    double X[3], Y[3], Z[3];
+    int Box[4]; // x0, x1, y0, y1: pixels whose centres may be covered (empty: x0 > x1)
+    bool Entry;
+  };
+  std::vector<WindowTriangle> triangles(numberOfBoundary);
+  const double* m = this->ModelToClip;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(numberOfBoundary), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType b = begin; b < end; ++b)
+    {
+      WindowTriangle& t = triangles[b];
+      t.Box[0] = 1;
+      t.Box[1] = 0;
+      bool inFront = true;
+      double minX = 1e300, maxX = -1e300, minY = 1e300, maxY = -1e300;
+      for (int i = 0; i < 3; ++i)
+      {
+        const double* p = &this->Points[3 * static_cast<size_t>(this->BoundaryFaceVertices[3 * b + i])];
+        double c[4];
+        for (int r = 0; r < 4; ++r)
+        {
+          c[r] = m[4 * r] * p[0] + m[4 * r + 1] * p[1] + m[4 * r + 2] * p[2] + m[4 * r + 3];
+        }
+        if (!(c[3] > 1e-12))
+        {
+          inFront = false; // (partly) behind the eye: left out, no relation from it
+          break;
+        }
+        t.X[i] = (c[0] / c[3] * 0.5 + 0.5) * width;
+        t.Y[i] = (c[1] / c[3] * 0.5 + 0.5) * height;
+        t.Z[i] = c[2] / c[3];
+        minX = std::min(minX, t.X[i]);
+        maxX = std::max(maxX, t.X[i]);
+        minY = std::min(minY, t.Y[i]);
+        maxY = std::max(maxY, t.Y[i]);
+      }
+      if (!inFront)
+      {
+        continue;
+      }
+      // Clamped before the conversion (coordinates near the eye can be huge).
+      auto clampTo = [](double v, double hi) { return std::min(std::max(v, -1.0), hi + 1.0); };
+      t.Box[0] = std::max(0, static_cast<int>(std::ceil(clampTo(minX - 0.5, width))));
+      t.Box[1] = std::min(width - 1, static_cast<int>(std::floor(clampTo(maxX - 0.5, width))));
+      t.Box[2] = std::max(0, static_cast<int>(std::ceil(clampTo(minY - 0.5, height))));
+      t.Box[3] = std::min(height - 1, static_cast<int>(std::floor(clampTo(maxY - 0.5, height))));
+      const double* plane = &this->FacePlanes[4 * static_cast<size_t>(this->BoundaryFaces[b])];
+      const double side = parallel
+        ? -(plane[0] * direction[0] + plane[1] * direction[1] + plane[2] * direction[2])
+        : plane[0] * eye[0] + plane[1] * eye[1] + plane[2] * eye[2] + plane[3];
+      t.Entry = side > 0.0;
+    }
+  });
+
+  // Triangles per band of rows.
+  const int bandRows = 16;
+  const int numberOfBands = (height + bandRows - 1) / bandRows;
+  std::vector<size_t> bandStart(numberOfBands + 1, 0);
+  for (const WindowTriangle& t : triangles)
+  {
+    if (t.Box[0] <= t.Box[1] && t.Box[2] <= t.Box[3])
+    {
+      for (int band = t.Box[2] / bandRows; band <= t.Box[3] / bandRows; ++band)
+      {
+        ++bandStart[band + 1];
+      }
+    }
+  }
+  for (int band = 0; band < numberOfBands; ++band)
+  {
+    bandStart[band + 1] += bandStart[band];
+  }
+  std::vector<uint32_t> bandTriangles(bandStart.back());
+  {
+    std::vector<size_t> cursor(bandStart.begin(), bandStart.end() - 1);
+    for (size_t b = 0; b < numberOfBoundary; ++b)
+    {
+      const WindowTriangle& t = triangles[b];
+      if (t.Box[0] <= t.Box[1] && t.Box[2] <= t.Box[3])
+      {
+        for (int band = t.Box[2] / bandRows; band <= t.Box[3] / bandRows; ++band)
+        {
+          bandTriangles[cursor[band]++] = static_cast<uint32_t>(b);
+        }
+      }
+    }
+  }
+
+  // Per band: the boundary fragments of every pixel in depth order; an exit
+  // followed by an entry orders the cell left before the cell entered.
+  struct Fragment
+  {
+    uint32_t Pixel;
+    double Z;
+    uint32_t Face;
+    bool Entry;
+    bool operator<(const Fragment& o) const
+    {
+      return Pixel != o.Pixel ? Pixel < o.Pixel : (Z != o.Z ? Z < o.Z : Entry < o.Entry);
+    }
+  };
+  using Relations = std::vector<std::pair<uint32_t, uint32_t>>;
+  vtkSMPThreadLocal<Relations> local;
+  vtkSMPTools::For(0, numberOfBands, [&](vtkIdType bandBegin, vtkIdType bandEnd) {
+    Relations& out = local.Local();
+    std::vector<Fragment> fragments;
+    for (vtkIdType band = bandBegin; band < bandEnd; ++band)
+    {
+      const int y0 = static_cast<int>(band) * bandRows;
+      const int y1 = std::min(height - 1, y0 + bandRows - 1);
+      fragments.clear();
+      for (size_t i = bandStart[band]; i < bandStart[band + 1]; ++i)
+      {
+        const uint32_t b = bandTriangles[i];
+        const WindowTriangle& t = triangles[b];
+        const double area =
+          (t.X[1] - t.X[0]) * (t.Y[2] - t.Y[0]) - (t.X[2] - t.X[0]) * (t.Y[1] - t.Y[0]);
+        if (std::abs(area) < 1e-12)
+        {
+          continue;
+        }
+        for (int py = std::max(y0, t.Box[2]); py <= std::min(y1, t.Box[3]); ++py)
+        {
+          const double y = py + 0.5;
+          for (int px = t.Box[0]; px <= t.Box[1]; ++px)
+          {
+            const double x = px + 0.5;
+            const double l0 =
+              ((t.X[1] - x) * (t.Y[2] - y) - (t.X[2] - x) * (t.Y[1] - y)) / area;
+            const double l1 =
+              ((t.X[2] - x) * (t.Y[0] - y) - (t.X[0] - x) * (t.Y[2] - y)) / area;
+            const double l2 = 1.0 - l0 - l1;
+            if (l0 >= -1e-9 && l1 >= -1e-9 && l2 >= -1e-9)
+            {
+              fragments.push_back({ static_cast<uint32_t>((py - y0) * width + px),
+                l0 * t.Z[0] + l1 * t.Z[1] + l2 * t.Z[2], b, t.Entry });
+            }
+          }
+        }
+      }
+      std::sort(fragments.begin(), fragments.end());
+      auto cellOf = [&](const Fragment& f) {
+        return static_cast<uint32_t>(
+          this->FaceCells[2 * static_cast<size_t>(this->BoundaryFaces[f.Face])]);
+      };
+      for (size_t i = 0; i + 1 < fragments.size(); ++i)
+      {
+        const Fragment& a = fragments[i];
+        const Fragment& b = fragments[i + 1];
+        if (a.Pixel != b.Pixel || a.Entry == b.Entry)
+        {
+          continue;
+        }
+        // An exit then an entry; also an entry then an exit at the same depth
+        // up to rounding (two different triangles through the same point, as
+        // on a seam whose quadrilaterals are split by different diagonals).
+        const Fragment& exit = a.Entry ? b : a;
+        const Fragment& entry = a.Entry ? a : b;
+        if ((!a.Entry || b.Z - a.Z <= 1e-9 * (1.0 + std::abs(a.Z))) && cellOf(exit) != cellOf(entry))
+        {
+          out.emplace_back(cellOf(exit), cellOf(entry));
+        }
+      }
+      std::sort(out.begin(), out.end());
+      out.erase(std::unique(out.begin(), out.end()), out.end());
+    }
+  });
+  for (Relations& r : local)
+  {
+    relations.insert(relations.end(), r.begin(), r.end());
+  }
+  std::sort(relations.begin(), relations.end());
+  relations.erase(std::unique(relations.begin(), relations.end()), relations.end());
+  this->LastBoundaryLayerSeconds = vtkTimerLog::GetUniversalTime() - start;
 }
 
 //------------------------------------------------------------------------------
 void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3], bool parallel)
 {
+  if (!this->MeshConvex && this->NonConvexMethod == NonConvexConvexification &&
+    !this->ConvexificationBuilt)
+  {
+    this->BuildConvexification(); // once per mesh, timed on its own
+  }
   const double start = vtkTimerLog::GetUniversalTime();
   const size_t numberOfFaces = this->FacePlanes.size() / 4;
   const size_t numberOfTets = this->CellFaces.size() / 4;
   this->Order.clear();
   this->Order.reserve(numberOfFaces);
   this->NumberOfCycleBreaks = 0;
+  this->NumberOfBoundaryRelations = 0;
+  auto side = [&](const double* p) {
+    return parallel ? -(p[0] * direction[0] + p[1] * direction[1] + p[2] * direction[2])
+                    : p[0] * eye[0] + p[1] * eye[1] + p[2] * eye[2] + p[3];
+  };
 
   // Each face's back cell: the one the ray enters through it (-1: it leaves
   // the mesh there). cell 1 lies on the positive side of the plane.
@@ -138,14 +538,85 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
   vtkSMPTools::For(0, static_cast<vtkIdType>(numberOfFaces), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType f = begin; f < end; ++f)
     {
-      const double* p = &this->FacePlanes[4 * f];
-      const double side = parallel
-        ? -(p[0] * direction[0] + p[1] * direction[1] + p[2] * direction[2])
-        : p[0] * eye[0] + p[1] * eye[1] + p[2] * eye[2] + p[3];
-      back[f] = side > 0.0 ? this->FaceCells[2 * f] : this->FaceCells[2 * f + 1];
+      back[f] = side(&this->FacePlanes[4 * f]) > 0.0 ? this->FaceCells[2 * f]
+                                                     : this->FaceCells[2 * f + 1];
     }
   });
-  std::vector<int32_t> waiting(numberOfTets, 0); // cells in front not visited yet
+
+  // Relations across the outside of a non-convex mesh (from -> to: from is
+  // in front). Nodes numberOfTets.. are the imaginary cells.
+  std::vector<std::pair<uint32_t, uint32_t>> extra;
+  size_t numberOfNodes = numberOfTets;
+  for (size_t i = 0; i < this->SeamFaces.size(); i += 2)
+  {
+    // As an internal face: the tetrahedron on the eye's side first.
+    const size_t a = this->SeamFaces[i], b = this->SeamFaces[i + 1];
+    const auto ta = static_cast<uint32_t>(this->FaceCells[2 * a]);
+    const auto tb = static_cast<uint32_t>(this->FaceCells[2 * b]);
+    if (side(&this->FacePlanes[4 * a]) > 0.0)
+    {
+      extra.emplace_back(tb, ta);
+    }
+    else
+    {
+      extra.emplace_back(ta, tb);
+    }
+  }
+  if (!this->MeshConvex && this->NonConvexMethod == NonConvexConvexification &&
+    this->Convexification)
+  {
+    const auto tets = static_cast<uint32_t>(numberOfTets);
+    numberOfNodes += static_cast<size_t>(this->NumberOfImaginaryCells);
+    for (const auto& tc : this->Convexification->GetTriangleCells())
+    {
+      const uint32_t f = this->BoundaryFaces[tc.first];
+      const auto t = static_cast<uint32_t>(this->FaceCells[2 * static_cast<size_t>(f)]);
+      if (side(&this->FacePlanes[4 * static_cast<size_t>(f)]) > 0.0)
+      {
+        extra.emplace_back(tets + tc.second, t);
+      }
+      else
+      {
+        extra.emplace_back(t, tets + tc.second);
+      }
+    }
+    for (const auto& portal : this->Convexification->GetPortals())
+    {
+      if (side(portal.Plane) > 0.0)
+      {
+        extra.emplace_back(tets + portal.Cells[1], tets + portal.Cells[0]);
+      }
+      else
+      {
+        extra.emplace_back(tets + portal.Cells[0], tets + portal.Cells[1]);
+      }
+    }
+  }
+  else if (!this->MeshConvex && this->NonConvexMethod == NonConvexBoundaryLayers)
+  {
+    std::vector<std::pair<uint32_t, uint32_t>> layers;
+    this->BoundaryLayerRelations(eye, direction, parallel, layers);
+    this->NumberOfBoundaryRelations = static_cast<vtkIdType>(layers.size());
+    extra.insert(extra.end(), layers.begin(), layers.end());
+  }
+  std::vector<uint32_t> extraStart(numberOfNodes + 1, 0), extraTo(extra.size());
+  for (const auto& e : extra)
+  {
+    ++extraStart[e.first + 1];
+  }
+  for (size_t n = 0; n < numberOfNodes; ++n)
+  {
+    extraStart[n + 1] += extraStart[n];
+  }
+  {
+    std::vector<uint32_t> cursor(extraStart.begin(), extraStart.end() - 1);
+    for (const auto& e : extra)
+    {
+      extraTo[cursor[e.first]++] = e.second;
+    }
+  }
+
+  std::vector<int32_t> waiting(numberOfNodes, 0); // cells in front not visited yet
   for (size_t f = 0; f < numberOfFaces; ++f)
   {
     if (back[f] >= 0 && this->FaceCells[2 * f + 1] >= 0)
@@ -153,29 +624,39 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
       ++waiting[static_cast<size_t>(back[f])];
     }
   }
-  std::deque<uint32_t> ready;
-  for (size_t t = 0; t < numberOfTets; ++t)
+  for (const auto& e : extra)
   {
-    if (waiting[t] == 0)
+    ++waiting[e.second];
+  }
+  std::deque<uint32_t> ready;
+  for (size_t n = 0; n < numberOfNodes; ++n)
+  {
+    if (waiting[n] == 0)
     {
-      ready.push_back(static_cast<uint32_t>(t));
+      ready.push_back(static_cast<uint32_t>(n));
     }
   }
-  std::vector<uint8_t> visited(numberOfTets, 0);
+  std::vector<uint8_t> visited(numberOfNodes, 0);
   size_t visitedCount = 0;
   size_t scan = 0;
-  while (visitedCount < numberOfTets)
+  auto release = [&](size_t behind) {
+    if (--waiting[behind] == 0 && !visited[behind])
+    {
+      ready.push_back(static_cast<uint32_t>(behind));
+    }
+  };
+  while (visitedCount < numberOfNodes)
   {
     if (ready.empty())
     {
       // A cycle: take the unvisited cell with the fewest cells still in front.
-      size_t best = numberOfTets;
-      for (size_t t = 0; t < numberOfTets; ++t)
+      size_t best = numberOfNodes;
+      for (size_t n = 0; n < numberOfNodes; ++n)
       {
-        if (!visited[(scan + t) % numberOfTets] &&
-          (best == numberOfTets || waiting[(scan + t) % numberOfTets] < waiting[best]))
+        const size_t c = (scan + n) % numberOfNodes;
+        if (!visited[c] && (best == numberOfNodes || waiting[c] < waiting[best]))
         {
-          best = (scan + t) % numberOfTets;
+          best = c;
         }
       }
       scan = best;
@@ -190,31 +671,33 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
     }
     visited[c] = 1;
     ++visitedCount;
-    const uint32_t* cellFaces = &this->CellFaces[4 * static_cast<size_t>(c)];
-    // Entries (the faces behind which c lies), then the mesh's exits from c.
-    for (int j = 0; j < 4; ++j)
+    if (c < numberOfTets)
     {
-      if (back[cellFaces[j]] == static_cast<int64_t>(c))
+      const uint32_t* cellFaces = &this->CellFaces[4 * static_cast<size_t>(c)];
+      // Entries (the faces behind which c lies), then the mesh's exits from c.
+      for (int j = 0; j < 4; ++j)
       {
-        this->Order.push_back(cellFaces[j]);
-      }
-    }
-    for (int j = 0; j < 4; ++j)
-    {
-      const uint32_t f = cellFaces[j];
-      if (back[f] < 0)
-      {
-        this->Order.push_back(f);
-      }
-      else if (back[f] != static_cast<int64_t>(c))
-      {
-        // c is in front of the cell behind f.
-        const size_t behind = static_cast<size_t>(back[f]);
-        if (--waiting[behind] == 0 && !visited[behind])
+        if (back[cellFaces[j]] == static_cast<int64_t>(c))
         {
-          ready.push_back(static_cast<uint32_t>(behind));
+          this->Order.push_back(cellFaces[j]);
         }
       }
+      for (int j = 0; j < 4; ++j)
+      {
+        const uint32_t f = cellFaces[j];
+        if (back[f] < 0)
+        {
+          this->Order.push_back(f);
+        }
+        else if (back[f] != static_cast<int64_t>(c))
+        {
+          release(static_cast<size_t>(back[f])); // c is in front of the cell behind f
+        }
+      }
+    }
+    for (uint32_t e = extraStart[c]; e < extraStart[c + 1]; ++e)
+    {
+      release(extraTo[e]);
     }
   }
   this->LastSortSeconds = vtkTimerLog::GetUniversalTime() - start;
@@ -226,6 +709,16 @@ void vtkHAVSVisibilityOrder::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Faces: " << this->FacePlanes.size() / 4
      << ", tetrahedra: " << this->CellFaces.size() / 4 << "\n";
+  os << indent << "Mesh convex: " << (this->MeshConvex ? "yes" : "no") << ", NonConvexMethod: "
+     << (this->NonConvexMethod == NonConvexConvexification
+            ? "Convexification"
+            : (this->NonConvexMethod == NonConvexBoundaryLayers ? "BoundaryLayers" : "Ignore"))
+     << "\n";
+  os << indent << "Seam face pairs: " << this->SeamFaces.size() / 2 << "\n";
+  os << indent << "NumberOfImaginaryCells: " << this->NumberOfImaginaryCells
+     << " (convexified in " << this->ConvexificationSeconds << " s)\n";
+  os << indent << "NumberOfBoundaryRelations: " << this->NumberOfBoundaryRelations << " ("
+     << this->LastBoundaryLayerSeconds << " s)\n";
   os << indent << "NumberOfCycleBreaks: " << this->NumberOfCycleBreaks << "\n";
   os << indent << "LastSortSeconds: " << this->LastSortSeconds << "\n";
 }

@@ -146,6 +146,17 @@ struct vtkHAVSVolumeMapper::Internals
   vtkMTimeType MPVOMeshTime = 0;
   std::vector<double> MPVOKey;
   int LastOrderKind = -1;
+
+  // The frame being rendered (set up by Render, used by DrawFrame).
+  vtkHAVSKBufferRenderer::FrameParameters Frame;
+  double Eye[3] = { 0, 0, 0 };
+  double Direction[3] = { 0, 0, 1 };
+  double GridToClip[16];
+  int Viewport[2] = { 0, 0 };
+
+  // Automatic order: what the choice was made for, and whether it is MPVO.
+  std::vector<double> AutomaticKey;
+  bool AutomaticMPVO = false;
 };
 
 //------------------------------------------------------------------------------
@@ -672,11 +683,77 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   std::copy(&in.PlanesRC[0][0], &in.PlanesRC[0][0] + 4 * in.PlaneCount, &frame.PlanesRC[0][0]);
   this->LastPlaneCount = in.PlaneCount;
 
-  // Face order: composite needs the centroid sort; the extremum modes do not.
+  // The view the face order is made for.
+  std::copy(eye, eye + 3, in.Eye);
+  std::copy(direction, direction + 3, in.Direction);
+  {
+    vtkNew<vtkMatrix4x4> gridToClip;
+    vtkMatrix4x4::Multiply4x4(worldToClip, volumeMatrix, gridToClip);
+    vtkMatrix4x4::DeepCopy(in.GridToClip, gridToClip);
+  }
+  in.Viewport[0] = width;
+  in.Viewport[1] = height;
+
+  // Automatic: the centroid order while the k-buffer keeps up with it; the
+  // first frame it does not (order violations) is drawn again with MPVO,
+  // which then stays for this mesh, k and path.
+  int order = this->VisibilityOrder;
+  bool probe = false;
+  if (this->VisibilityOrder == VisibilityOrderAutomatic)
+  {
+    const std::vector<double> key = { static_cast<double>(in.MeshBuildTime.GetMTime()),
+      static_cast<double>(k), static_cast<double>(path) };
+    if (key != in.AutomaticKey)
+    {
+      in.AutomaticKey = key;
+      in.AutomaticMPVO = false;
+    }
+    order = in.AutomaticMPVO ? VisibilityOrderMPVO : VisibilityOrderCentroid;
+    probe = !in.AutomaticMPVO && frame.BlendMode == 0 && !frame.RasterBoundOnly;
+  }
+  frame.CountOrderViolations = this->CountOrderViolations || probe;
+  frame.Composite = !probe;
+  in.Frame = frame;
+  if (!this->DrawFrame(renderer, window, volume, order))
+  {
+    return;
+  }
+  if (probe)
+  {
+    if (this->LastOrderViolations > 0)
+    {
+      in.AutomaticMPVO = true;
+      in.Frame.Composite = true;
+      if (!this->DrawFrame(renderer, window, volume, VisibilityOrderMPVO))
+      {
+        return;
+      }
+    }
+    else if (!in.Renderer->CompositeLastResult(renderer))
+    {
+      return;
+    }
+  }
+  this->ActiveKBufferPath = path;
+  this->ActiveKBufferSize = frame.BlendMode == 0 ? k : 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSVolumeMapper::DrawFrame(
+  vtkRenderer* renderer, vtkOpenGLRenderWindow* window, vtkVolume* volume, int orderKind)
+{
+  Internals& in = *this->Internal;
+  vtkHAVSKBufferRenderer::FrameParameters& frame = in.Frame;
+  const double* eye = in.Eye;
+  const double* direction = in.Direction;
+  vtkMatrix4x4* volumeMatrix = volume->GetMatrix();
+
+  // Face order: composite needs one; the extremum modes do not.
   const double sortStart = vtkTimerLog::GetUniversalTime();
   bool orderChanged = false;
   const std::vector<uint32_t>* order = nullptr;
-  if (frame.BlendMode == 0 && this->VisibilityOrder == VisibilityOrderMPVO)
+  this->LastCycleBreaks = 0;
+  if (frame.BlendMode == 0 && orderKind == VisibilityOrderMPVO)
   {
     if (in.MPVOMeshTime != in.MeshBuildTime.GetMTime())
     {
@@ -695,10 +772,20 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     {
       eyeModel[i] /= eyeModel[3];
     }
-    const std::vector<double> key = { eyeModel[0], eyeModel[1], eyeModel[2], directionModel[0],
-      directionModel[1], directionModel[2], frame.Parallel ? 1.0 : 0.0 };
+    std::vector<double> key = { eyeModel[0], eyeModel[1], eyeModel[2], directionModel[0],
+      directionModel[1], directionModel[2], frame.Parallel ? 1.0 : 0.0,
+      static_cast<double>(this->NonConvexMethod) };
+    if (this->NonConvexMethod == NonConvexBoundaryLayers && !in.MPVO->IsMeshConvex())
+    {
+      // The boundary layers are sampled at this frame's pixels.
+      key.insert(key.end(), in.GridToClip, in.GridToClip + 16);
+      key.push_back(in.Viewport[0]);
+      key.push_back(in.Viewport[1]);
+    }
     if (key != in.MPVOKey || in.LastOrderKind != VisibilityOrderMPVO)
     {
+      in.MPVO->SetNonConvexMethod(this->NonConvexMethod);
+      in.MPVO->SetViewSampling(in.GridToClip, in.Viewport[0], in.Viewport[1]);
       in.MPVO->Sort(eyeModel, directionModel, frame.Parallel);
       in.MPVOKey = key;
       orderChanged = true;
@@ -726,6 +813,7 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   in.LastOrderKind = frame.BlendMode == 0 && order == &in.MPVO->GetOrder()
     ? VisibilityOrderMPVO
     : (frame.BlendMode == 0 ? VisibilityOrderCentroid : -1);
+  this->LastVisibilityOrder = in.LastOrderKind;
   if (orderChanged || in.SortedTriangles.empty())
   {
     const std::vector<uint32_t>& faceVertices = in.Faces->GetFaceVertices();
@@ -773,13 +861,37 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 
   if (!in.Renderer->Render(renderer, frame))
   {
-    return;
+    return false;
   }
-  this->ActiveKBufferPath = path;
-  this->ActiveKBufferSize = frame.BlendMode == 0 ? k : 0;
+  this->LastOrderViolations = static_cast<vtkIdType>(in.Renderer->GetLastOrderViolations());
   this->LastDrawSeconds = in.Renderer->GetLastDrawSeconds();
   this->LastFlushSeconds = in.Renderer->GetLastFlushSeconds();
   this->LastCompositeSeconds = in.Renderer->GetLastCompositeSeconds();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkHAVSVolumeMapper::GetNumberOfImaginaryCells()
+{
+  return this->Internal->MPVO->GetNumberOfImaginaryCells();
+}
+
+//------------------------------------------------------------------------------
+double vtkHAVSVolumeMapper::GetConvexificationSeconds()
+{
+  return this->Internal->MPVO->GetConvexificationSeconds();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkHAVSVolumeMapper::GetLastBoundaryRelations()
+{
+  return this->Internal->MPVO->GetNumberOfBoundaryRelations();
+}
+
+//------------------------------------------------------------------------------
+double vtkHAVSVolumeMapper::GetLastBoundaryLayerSeconds()
+{
+  return this->Internal->MPVO->GetLastBoundaryLayerSeconds();
 }
 
 //------------------------------------------------------------------------------
@@ -824,8 +936,14 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
   os << indent << "FaceRasterBoundMode: " << this->FaceRasterBoundMode << "\n";
-  os << indent << "VisibilityOrder: " << (this->VisibilityOrder == VisibilityOrderMPVO ? "MPVO" : "Centroid")
-     << " (last cycle breaks " << this->LastCycleBreaks << ")\n";
+  const char* orders[] = { "Centroid", "MPVO", "Automatic" };
+  const char* methods[] = { "Ignore", "BoundaryLayers", "Convexification" };
+  os << indent << "VisibilityOrder: " << orders[this->VisibilityOrder] << " (last frame: "
+     << (this->LastVisibilityOrder >= 0 ? orders[this->LastVisibilityOrder] : "none")
+     << ", cycle breaks " << this->LastCycleBreaks << ")\n";
+  os << indent << "NonConvexMethod: " << methods[this->NonConvexMethod] << "\n";
+  os << indent << "CountOrderViolations: " << this->CountOrderViolations
+     << " (last frame: " << this->LastOrderViolations << ")\n";
   static const char* const boundaryModes[] = { "Automatic", "Tagging", "Ignore", "GapLength" };
   os << indent << "BoundaryMode: " << boundaryModes[this->BoundaryMode]
      << " (last frame tagged: " << this->LastTagging << ")\n";

@@ -45,6 +45,7 @@
 class vtkFloatArray;
 class vtkHAVSFaceSet;
 class vtkMatrix4x4;
+class vtkOpenGLRenderWindow;
 class vtkHAVSFaceSorter;
 class vtkHAVSKBufferRenderer;
 class vtkHAVSPreIntegrationTable;
@@ -160,22 +161,77 @@ public:
   enum VisibilityOrders
   {
     VisibilityOrderCentroid = 0,
-    VisibilityOrderMPVO = 1
+    VisibilityOrderMPVO = 1,
+    VisibilityOrderAutomatic = 2
   };
 
   ///@{
   /**
-   * The face order the k-buffer finishes: Centroid (default; HAVS's sort of
-   * the face centroids by distance) or MPVO (vtkHAVSVisibilityOrder: an exact
-   * front-to-back order of the tetrahedra, each face drawn when the one
-   * behind it is visited; on a convex mesh without visibility cycles k = 1
-   * suffices; non-convex meshes are not yet convexified, so there it is exact
-   * only where no ray leaves and re-enters the mesh).
+   * The face order the k-buffer finishes:
+   * - Centroid (default): HAVS's sort of the face centroids by distance;
+   *   nearly sorted, k absorbs the rest.
+   * - MPVO (vtkHAVSVisibilityOrder): an exact front-to-back order of the
+   *   tetrahedra, each face drawn when the one behind it is visited; with the
+   *   non-convex method (SetNonConvexMethod) also across the gaps of a
+   *   non-convex mesh. Without visibility cycles every pixel then needs only
+   *   k = 1 (2 with fragments at equal distance).
+   * - Automatic: the centroid order while the k-buffer keeps up with it; a
+   *   frame with order violations (GetLastOrderViolations) is drawn again
+   *   with MPVO at once, and MPVO stays for this mesh, k and k-buffer path.
+   *   GetLastVisibilityOrder() says which order the last frame used.
    */
-  vtkSetClampMacro(VisibilityOrder, int, VisibilityOrderCentroid, VisibilityOrderMPVO);
+  vtkSetClampMacro(VisibilityOrder, int, VisibilityOrderCentroid, VisibilityOrderAutomatic);
   vtkGetMacro(VisibilityOrder, int);
   void SetVisibilityOrderToCentroid() { this->SetVisibilityOrder(VisibilityOrderCentroid); }
   void SetVisibilityOrderToMPVO() { this->SetVisibilityOrder(VisibilityOrderMPVO); }
+  void SetVisibilityOrderToAutomatic() { this->SetVisibilityOrder(VisibilityOrderAutomatic); }
+  ///@}
+
+  /// The order the last frame was drawn with (Centroid or MPVO; -1: none, extremum modes).
+  vtkGetMacro(LastVisibilityOrder, int);
+
+  enum NonConvexMethods
+  {
+    NonConvexIgnore = 0,
+    NonConvexBoundaryLayers = 1,
+    NonConvexConvexification = 2
+  };
+
+  ///@{
+  /**
+   * MPVO on a non-convex mesh (see vtkHAVSVisibilityOrder): Convexification
+   * (default; seed 004: convex imaginary cells around the mesh, built once per
+   * mesh), BoundaryLayers (seed 003's idea: per frame, the boundary faces'
+   * depth order at every pixel), or Ignore (exact only where no ray re-enters
+   * the mesh). Unused for a convex mesh.
+   */
+  vtkSetClampMacro(NonConvexMethod, int, NonConvexIgnore, NonConvexConvexification);
+  vtkGetMacro(NonConvexMethod, int);
+  ///@}
+
+  ///@{
+  /**
+   * Count order violations: fragments the k-buffer composited out of depth
+   * order (nearer than what their pixel had been integrated to), i.e. pixels
+   * where the face order plus k were not enough and the image is not exact.
+   * On by default; the count is read back after each frame (a GPU sync).
+   */
+  vtkSetMacro(CountOrderViolations, bool);
+  vtkGetMacro(CountOrderViolations, bool);
+  vtkBooleanMacro(CountOrderViolations, bool);
+  ///@}
+
+  /// Order violations of the last frame (0 when not counted).
+  vtkGetMacro(LastOrderViolations, vtkIdType);
+
+  ///@{
+  /// MPVO on a non-convex mesh: imaginary cells and the seconds the
+  /// convexification took (once per mesh); boundary-layer relations of the
+  /// last frame and their seconds.
+  vtkIdType GetNumberOfImaginaryCells();
+  double GetConvexificationSeconds();
+  vtkIdType GetLastBoundaryRelations();
+  double GetLastBoundaryLayerSeconds();
   ///@}
 
   /// The next frame orders the faces again even if the view has not changed (benchmarks).
@@ -316,6 +372,10 @@ protected:
   bool FaceRasterBoundMode = false;
   int BoundaryMode = BoundaryAutomatic;
   int VisibilityOrder = VisibilityOrderCentroid;
+  int LastVisibilityOrder = -1;
+  int NonConvexMethod = NonConvexConvexification;
+  bool CountOrderViolations = true;
+  vtkIdType LastOrderViolations = 0;
   vtkIdType LastCycleBreaks = 0;
   bool PlaneSections = true;
   bool LastTagging = false;
@@ -340,6 +400,9 @@ private:
   bool UpdateMesh(vtkVolume* volume);
   bool UpdateTable(vtkVolume* volume);
   int ChoosePath(vtkRenderWindow* window);
+  /// Orders the faces (order: a VisibilityOrders value) and renders the
+  /// frame prepared in Internal; false when it could not.
+  bool DrawFrame(vtkRenderer* renderer, vtkOpenGLRenderWindow* window, vtkVolume* volume, int order);
   bool UpdatePlanes(vtkRenderer* renderer, const double eye[3], const double direction[3],
     bool parallel, const vtkMatrix4x4* modelToEyeRelative);
 };

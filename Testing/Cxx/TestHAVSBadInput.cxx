@@ -54,6 +54,31 @@ Outcome RenderOnce(vtkUnstructuredGrid* grid, const std::string& name)
             << out.Text << std::endl;
   havstest::Check(havstest::AllFinite(out.Window), name + ": finite window");
   havstest::Check(havstest::AllFinite(out.Result), name + ": finite result");
+
+  // The exact orders on the same input: no crash, nothing non-finite.
+  const char* orders[3] = { "MPVO + convexification", "MPVO + boundary layers", "Automatic" };
+  for (int o = 0; o < 3; ++o)
+  {
+    vtkNew<vtkHAVSVolumeMapper> exact;
+    exact->KeepFloatResultOn();
+    havstest::CountMessages(exact); // messages already checked above
+    if (o < 2)
+    {
+      exact->SetVisibilityOrderToMPVO();
+      exact->SetNonConvexMethod(o == 0 ? vtkHAVSVolumeMapper::NonConvexConvexification
+                                       : vtkHAVSVolumeMapper::NonConvexBoundaryLayers);
+    }
+    else
+    {
+      exact->SetVisibilityOrderToAutomatic();
+    }
+    auto other = havstest::MakeScene(grid, exact, property, 48, 48);
+    other.Renderer->ResetCamera(0, 1, 0, 1, 0, 1);
+    other.Window->Render();
+    havstest::Check(havstest::AllFinite(havstest::ReadRGBA(other.Window)) &&
+        havstest::AllFinite(havstest::FloatResult(exact)),
+      name + ", " + orders[o] + ": finite window and result");
+  }
   return out;
 }
 

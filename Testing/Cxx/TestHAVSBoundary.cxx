@@ -61,94 +61,6 @@ namespace
 {
 const int kSize = 96;
 
-/// The cells of `grid` whose centroid satisfies `keep`.
-vtkSmartPointer<vtkUnstructuredGrid> KeepCells(
-  vtkUnstructuredGrid* grid, const std::function<bool(const double*)>& keep)
-{
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
-  {
-    vtkIdList* points = grid->GetCell(c)->GetPointIds();
-    double centroid[3] = { 0, 0, 0 };
-    for (vtkIdType i = 0; i < points->GetNumberOfIds(); ++i)
-    {
-      double x[3];
-      grid->GetPoint(points->GetId(i), x);
-      for (int k = 0; k < 3; ++k)
-      {
-        centroid[k] += x[k] / points->GetNumberOfIds();
-      }
-    }
-    if (keep(centroid))
-    {
-      ids->InsertNextId(c);
-    }
-  }
-  vtkNew<vtkExtractCells> extract;
-  extract->SetInputData(grid);
-  extract->SetCellList(ids);
-  extract->Update();
-  return extract->GetOutput();
-}
-
-vtkSmartPointer<vtkUnstructuredGrid> ThresholdedWavelet()
-{
-  vtkNew<vtkRTAnalyticSource> wavelet;
-  wavelet->SetWholeExtent(-8, 8, -8, 8, -8, 8);
-  vtkNew<vtkThreshold> threshold;
-  threshold->SetInputConnection(wavelet->GetOutputPort());
-  threshold->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "RTData");
-  threshold->SetLowerThreshold(160.0);
-  threshold->SetUpperThreshold(1000.0);
-  threshold->SetThresholdFunction(vtkThreshold::THRESHOLD_BETWEEN);
-  vtkNew<vtkDataSetTriangleFilter> tets;
-  tets->SetInputConnection(threshold->GetOutputPort());
-  tets->Update();
-  vtkSmartPointer<vtkUnstructuredGrid> grid = tets->GetOutput();
-  grid->GetPointData()->SetActiveScalars("RTData");
-  return grid;
-}
-
-vtkSmartPointer<vtkUnstructuredGrid> HollowSphere()
-{
-  auto box = havstest::MakeBox(16, 16, 16, 1.0 / 16, 0.0, 1.0);
-  return KeepCells(box, [](const double* c) {
-    const double r = std::sqrt((c[0] - 0.5) * (c[0] - 0.5) + (c[1] - 0.5) * (c[1] - 0.5) +
-      (c[2] - 0.5) * (c[2] - 0.5));
-    return r > 0.22 && r < 0.48;
-  });
-}
-
-vtkSmartPointer<vtkUnstructuredGrid> Torus()
-{
-  auto box = havstest::MakeBox(24, 24, 12, 1.0 / 24, 0.0, 2.0);
-  return KeepCells(box, [](const double* c) {
-    const double ring = std::sqrt((c[0] - 0.5) * (c[0] - 0.5) + (c[1] - 0.5) * (c[1] - 0.5));
-    return (ring - 0.32) * (ring - 0.32) + (c[2] - 0.25) * (c[2] - 0.25) < 0.13 * 0.13;
-  });
-}
-
-/// Two 1 x 1 x 1 blocks of 6^3 cubes (longest edge 0.29) with a gap of 0.08
-/// between them along x.
-vtkSmartPointer<vtkUnstructuredGrid> TwoBlocks()
-{
-  auto a = havstest::MakeBox(6, 6, 6, 1.0 / 6, 0.0, 1.0);
-  auto b = havstest::MakeBox(6, 6, 6, 1.0 / 6, 0.0, 1.0);
-  vtkNew<vtkTransform> shift;
-  shift->Translate(1.08, 0.0, 0.0);
-  vtkNew<vtkTransformFilter> moved;
-  moved->SetInputData(b);
-  moved->SetTransform(shift);
-  vtkNew<vtkAppendFilter> both;
-  both->AddInputData(a);
-  both->AddInputConnection(moved->GetOutputPort());
-  both->MergePointsOff();
-  both->Update();
-  vtkSmartPointer<vtkUnstructuredGrid> grid = both->GetOutput();
-  grid->GetPointData()->SetActiveScalars("s");
-  return grid;
-}
-
 struct Errors
 {
   havstest::ImageDifference Tagged, Ignore, GapLength, Perturbed, PerturbedVsLists;
@@ -552,20 +464,20 @@ int main(int argc, char* argv[])
   }
   if (run("wavelet"))
   {
-    CheckMesh("wavelet", ThresholdedWavelet(), 30.0, 20.0, false, false);
+    CheckMesh("wavelet", havstest::ThresholdedWavelet(), 30.0, 20.0, false, false);
   }
   if (run("hollowsphere"))
   {
-    CheckMesh("hollowsphere", HollowSphere(), 20.0, 10.0, false, false);
+    CheckMesh("hollowsphere", havstest::HollowSphere(), 20.0, 10.0, false, false);
   }
   if (run("torus"))
   {
-    CheckMesh("torus", Torus(), 10.0, 55.0, false, false);
+    CheckMesh("torus", havstest::Torus(), 10.0, 55.0, false, false);
   }
   if (run("twoblocks"))
   {
-    CheckMesh("twoblocks", TwoBlocks(), 75.0, 10.0, false, true);
-    CheckMesh("twoblocks-parallel", TwoBlocks(), 75.0, 10.0, true, true);
+    CheckMesh("twoblocks", havstest::TwoBlocks(), 75.0, 10.0, false, true);
+    CheckMesh("twoblocks-parallel", havstest::TwoBlocks(), 75.0, 10.0, true, true);
   }
   if (run("loxpost"))
   {

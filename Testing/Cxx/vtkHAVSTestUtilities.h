@@ -31,6 +31,7 @@ bool CheckNear(double a, double b, double tol, const std::string& what);
 
 #include "vtkSmartPointer.h"
 
+#include <functional>
 #include <vector>
 
 class vtkColorTransferFunction;
@@ -49,6 +50,17 @@ namespace havstest
 /// A box [0,nx*h]x[0,ny*h]x[0,nz*h] of 5 tets per cube (vtkDataSetTriangleFilter),
 /// point scalar "s" = a + b*z.
 vtkSmartPointer<vtkUnstructuredGrid> MakeBox(int nx, int ny, int nz, double h, double a, double b);
+
+/// The cells of `grid` whose centroid satisfies `keep`.
+vtkSmartPointer<vtkUnstructuredGrid> KeepCells(
+  vtkUnstructuredGrid* grid, const std::function<bool(const double*)>& keep);
+/// Non-convex meshes: a vtkRTAnalyticSource thresholded at 160 (scalars
+/// RTData), a hollow sphere (a cavity), a torus, and two 1 x 1 x 1 blocks of
+/// 6^3 cubes (longest edge 0.29) with a gap of 0.08 between them along x.
+vtkSmartPointer<vtkUnstructuredGrid> ThresholdedWavelet();
+vtkSmartPointer<vtkUnstructuredGrid> HollowSphere();
+vtkSmartPointer<vtkUnstructuredGrid> Torus();
+vtkSmartPointer<vtkUnstructuredGrid> TwoBlocks();
 
 /// PLOT3D data set from shared/data, tetrahedralized; function 100 density, 110 pressure...
 vtkSmartPointer<vtkUnstructuredGrid> ReadPlot3D(
@@ -87,7 +99,10 @@ struct ImageDifference
   double Max = 0;
   double FractionOver1 = 0; ///< share of pixels with a channel off by more than 1/255
 };
-ImageDifference Compare(const std::vector<float>& a, const std::vector<float>& b);
+/// RMSE over all channels, largest channel error, share of pixels off by
+/// more than 1/255; the ignoreWorst pixels with the largest error left out.
+ImageDifference Compare(
+  const std::vector<float>& a, const std::vector<float>& b, size_t ignoreWorst = 0);
 
 /// Writes RGBA floats as PNG into the output directory.
 void WritePNG(const std::vector<float>& rgba, int width, int height, const std::string& name);

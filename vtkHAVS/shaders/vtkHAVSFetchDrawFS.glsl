@@ -16,6 +16,7 @@ in float havsScalar;
 
 void main()
 {
+  float tolerance = havsTieTolerance(havsPositionRC);
   vec4 color = havsColor;
   vec2 E[HAVS_K];
   //HAVS::FetchLoad
@@ -28,7 +29,7 @@ void main()
     discard;
   }
   vec2 f = havsFaceEntry(havsPositionRC, havsScalar);
-  havsInsert(color, E, f, havsOpaqueDistance(gl_FragCoord.xy));
+  havsInsert(color, E, f, havsOpaqueDistance(gl_FragCoord.xy), tolerance);
   havsColor = color;
   //HAVS::FetchStore
 }

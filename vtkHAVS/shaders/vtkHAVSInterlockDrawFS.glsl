@@ -20,6 +20,7 @@ layout(std430, binding = 0) buffer HAVSPixelEntries
 
 void main()
 {
+  float tolerance = havsTieTolerance(havsPositionRC);
   if (havsClipped(havsPositionRC))
   {
     discard;
@@ -38,7 +39,7 @@ void main()
   }
   if (!havsRayEnded(color, E[0]))
   {
-    havsInsert(color, E, f, opaqueDistance);
+    havsInsert(color, E, f, opaqueDistance, tolerance);
     havsPixelData[base] = color;
     for (int i = 0; i < HAVS_K; i += 2)
     {

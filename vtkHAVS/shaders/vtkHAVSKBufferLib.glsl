@@ -53,6 +53,23 @@ uniform int havsPlaneCount;
 uniform vec4 havsPlanesRC[HAVS_MAX_PLANES]; // kept where dot(xyz, positionRC) + w >= 0
 uniform int havsOwnPlane;    // the plane the drawn section lies on (-1: mesh faces)
 
+// Order violations: fragments that arrive nearer than the fragment their ray
+// has already been integrated to (they are then composited out of depth
+// order; a fragment that arrives behind the front never is). Counted over the
+// frame; zero means the k-buffer sorted every pixel (the face order plus k
+// were enough). Differences within the arriving fragment's depth uncertainty
+// are ties, not violations: float rounding (relative HAVS_TIE) and the
+// rasterizer's sub-pixel snapping of vertices (1/256 pixel on llvmpipe and
+// current GPUs; its depth effect is bounded by 1/64 of the fragment's depth
+// change per pixel, which is large only on faces seen nearly edge-on).
+layout(std430, binding = 3) buffer HAVSOrderViolations
+{
+  uint havsOrderViolations;
+};
+
+const float HAVS_TIE = 1.0e-4;
+
+
 bool havsIsExit(float code)
 {
   return code > 1.5 && code < 3.5;
@@ -74,6 +91,14 @@ float havsLeaveKey(vec2 e)
 float havsDistance(vec3 positionRC)
 {
   return havsParallel != 0 ? dot(positionRC, havsDirectionOfProjection) : length(positionRC);
+}
+
+// The tie tolerance of a fragment at positionRC (call in uniform control flow:
+// it takes screen-space derivatives).
+float havsTieTolerance(vec3 positionRC)
+{
+  float d = havsDistance(positionRC);
+  return HAVS_TIE * abs(d) + fwidth(d) * (1.0 / 64.0);
 }
 
 // Eye distance of the opaque surface at this pixel, HAVS_EMPTY when none.
@@ -135,9 +160,15 @@ bool havsRayEnded(vec4 color, vec2 front)
   return front.x == HAVS_DONE || color.a >= havsTerminationOpacity;
 }
 
-// Inserts fragment f into the k-buffer E (E[0] = front).
-void havsInsert(inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float opaqueDistance)
+// Inserts fragment f into the k-buffer E (E[0] = front); tolerance: f's tie
+// tolerance (havsTieTolerance).
+void havsInsert(
+  inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float opaqueDistance, float tolerance)
 {
+  if (E[0].x > HAVS_NO_FRONT && f.x < E[0].x - tolerance)
+  {
+    atomicAdd(havsOrderViolations, 1u);
+  }
   vec2 leaving = f;
 #if HAVS_K > 1
   int nearest = 0;
@@ -234,6 +265,10 @@ vec2 havsFaceEntry(vec3 positionRC, float scalar)
 // depth order, in particular for any list no longer than HAVS_K - 1.
 void havsRetreat(inout vec4 color, inout vec2 back, vec2 p, float opaqueDistance)
 {
+  if (back.x > HAVS_NO_FRONT && p.x > back.x + HAVS_TIE * abs(back.x))
+  {
+    atomicAdd(havsOrderViolations, 1u);
+  }
   if (back.x > HAVS_NO_FRONT && p.x < opaqueDistance)
   {
     vec2 b = back;
