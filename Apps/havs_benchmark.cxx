@@ -13,8 +13,8 @@
 // Configurations: HAVS at k = 1, 2, 4, 6, 8, 14 (128^3 table), HAVS k = 14 with
 // 32^3 and 64^3 tables, HAVS k = 6 without boundary tagging (its cost and
 // what it buys; -gaplength: VTK 5's heuristic), -mpvo (the MPVO face order instead of
-// the centroid sort, with the convexification, e.g. havs-k2-mpvo; -mpvo-layers: with the
-// boundary layers), -auto (the Automatic order), HAVS fragment lists (exact per-pixel sort),
+// the centroid sort, with the boundary layers, e.g. havs-k2-mpvo; -mpvo-convex: with the
+// convexification), -auto (the Automatic order), HAVS fragment lists (exact per-pixel sort),
 // raster-bound (the same faces in the same order with a trivial shader: the
 // lower bound of any face-based method; sort-bound is the sort alone),
 // reference (the exact images, computed and cached in their own process before
@@ -386,9 +386,9 @@ int RunWorker(const Options& o)
         if (config.find("-mpvo") != std::string::npos)
         {
           m->SetVisibilityOrderToMPVO(); // exact object-space order (issue 8)
-          m->SetNonConvexMethod(config.find("-layers") != std::string::npos
-              ? vtkHAVSVolumeMapper::NonConvexBoundaryLayers
-              : vtkHAVSVolumeMapper::NonConvexConvexification);
+          m->SetNonConvexMethod(config.find("-convex") != std::string::npos
+              ? vtkHAVSVolumeMapper::NonConvexConvexification
+              : vtkHAVSVolumeMapper::NonConvexBoundaryLayers);
         }
         else if (config.find("-auto") != std::string::npos)
         {
@@ -756,9 +756,9 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
         "havs-k6-untagged is k = 6 with boundary tagging off (wrong on non-convex meshes; its "
         "time against havs-k6 is what tagging costs; convex meshes skip tagging anyway). "
         "-mpvo rows draw the faces in the MPVO order (vtkHAVSVisibilityOrder) instead of the "
-        "centroid order, made exact across the gaps of a non-convex mesh by the "
-        "convexification (-mpvo, built once per mesh, before the timed frames) or by the "
-        "boundary layers (-mpvo-layers, per frame); -auto rows use the Automatic order "
+        "centroid order, made exact across the gaps of a non-convex mesh by the boundary "
+        "layers (-mpvo, per frame) or by the convexification (-mpvo-convex, built once per "
+        "mesh, before the timed frames); -auto rows use the Automatic order "
         "(centroid until a frame has order violations, that frame again and the later ones "
         "with MPVO). "
         "reference is the exact renderer (vtkHAVSReferenceRenderer, on the CPU) making the "
@@ -913,7 +913,7 @@ int main(int argc, char* argv[])
       ? configs
       : (o.Quick ? "havs-k2,havs-k6,havs-k14,raster-bound,sort-bound,pt,raycast"
                  : "havs-k1,havs-k2,havs-k4,havs-k6,havs-k8,havs-k14,havs-k14-table32,"
-                   "havs-k14-table64,havs-k6-untagged,havs-k1-mpvo,havs-k2-mpvo,havs-k2-mpvo-layers,"
+                   "havs-k14-table64,havs-k6-untagged,havs-k1-mpvo,havs-k2-mpvo,havs-k2-mpvo-convex,"
                    "havs-k2-auto,havs-lists,"
                    "raster-bound,sort-bound,pt,"
                    "zsweep,raycast"));

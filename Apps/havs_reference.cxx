@@ -3,12 +3,12 @@
 //
 //   havs_reference [--dataset bluntfin|loxpost|combustor|loxpostvtk | --input mesh.vtu]
 //                  [--size N] [--views 14] [--k-image out.png] [--image out.png]
-//                  [--order centroid|mpvo|mpvo-layers|mpvo-ignore]
+//                  [--order centroid|mpvo|mpvo-convex|mpvo-ignore]
 //
 // For each of 14 fixed viewpoints (the 6 axis directions and the 8 cube
 // diagonals) it finds every pixel's exact fragments, orders them as
 // vtkHAVSVolumeMapper draws them (its centroid sort for that camera, or MPVO
-// with the convexification, with the boundary layers, or alone) and
+// with the boundary layers, with the convexification, or alone) and
 // computes the required k; it prints the totals as a Markdown row. --image
 // writes the exact image of the first view, --k-image its required-k image
 // (green k <= 2, yellow k <= 6, red k > 6).
@@ -182,7 +182,7 @@ int main(int argc, char* argv[])
     {
       std::cout << "usage: havs_reference [--dataset bluntfin|loxpost|combustor|loxpostvtk | "
                    "--input mesh.vtu] [--size N] [--views 1..14] [--k-image out.png] "
-                   "[--image out.png] [--order centroid|mpvo|mpvo-layers|mpvo-ignore]\n";
+                   "[--image out.png] [--order centroid|mpvo|mpvo-convex|mpvo-ignore]\n";
       return a == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
     }
   }
@@ -214,10 +214,10 @@ int main(int argc, char* argv[])
   vtkNew<vtkHAVSFaceSorter> sorter;
   vtkNew<vtkHAVSVisibilityOrder> mpvo;
   const bool useMPVO = order.compare(0, 4, "mpvo") == 0;
-  mpvo->SetNonConvexMethod(order == "mpvo-layers"
-      ? vtkHAVSVisibilityOrder::NonConvexBoundaryLayers
+  mpvo->SetNonConvexMethod(order == "mpvo-convex"
+      ? vtkHAVSVisibilityOrder::NonConvexConvexification
       : (order == "mpvo-ignore" ? vtkHAVSVisibilityOrder::NonConvexIgnore
-                                : vtkHAVSVisibilityOrder::NonConvexConvexification));
+                                : vtkHAVSVisibilityOrder::NonConvexBoundaryLayers));
   vtkIdType cycleBreaks = 0;
   double orderSeconds = 0.0;
   vtkNew<vtkHAVSSoftwareKBuffer> analysis;

@@ -16,25 +16,11 @@
 #include <numeric>
 #include <random>
 #include <unordered_map>
-#include <cstdlib> // DEBUG
 
 vtkStandardNewMacro(vtkHAVSConvexification);
 
 namespace
 {
-// DEBUG: a generic interior point of a convex polygon.
-void GenericPoint(const double* v, size_t n, double c[3])
-{
-  double w = 0.0;
-  c[0] = c[1] = c[2] = 0.0;
-  for (size_t i = 0; i < n; ++i)
-  {
-    const double wi = 1.0 + std::fmod(0.6180339887 * (i + 1) * (i + 3), 1.0);
-    w += wi;
-    for (int k = 0; k < 3; ++k) c[k] += wi * v[3 * i + k];
-  }
-  for (int k = 0; k < 3; ++k) c[k] /= w;
-}
 // Child codes: >= 0 an internal node, InLeaf inside the mesh, <= -2 the
 // imaginary cell -2 - code.
 constexpr int32_t InLeaf = -1;
@@ -491,19 +477,19 @@ void vtkHAVSConvexification::vtkInternals::BuildPlaneClasses(
   for (uint32_t t : order)
   {
     const double* plane = &this->TrianglePlanes[4 * static_cast<size_t>(t)];
-    int base[3], near[3];
+    int base[3], next[3];
     for (int k = 0; k < 3; ++k)
     {
       const double q = plane[k] / cell;
       base[k] = static_cast<int>(std::floor(q));
-      near[k] = q - base[k] < 0.5 ? base[k] - 1 : base[k] + 1;
+      next[k] = q - base[k] < 0.5 ? base[k] - 1 : base[k] + 1;
     }
     int32_t best = -1;
     double bestDistance = joinTolerance;
     for (int corner = 0; corner < 8; ++corner)
     {
-      const int c[3] = { corner & 1 ? near[0] : base[0], corner & 2 ? near[1] : base[1],
-        corner & 4 ? near[2] : base[2] };
+      const int c[3] = { corner & 1 ? next[0] : base[0], corner & 2 ? next[1] : base[1],
+        corner & 4 ? next[2] : base[2] };
       const auto it = buckets.find(key(c));
       if (it == buckets.end())
       {
@@ -649,17 +635,6 @@ void vtkHAVSConvexification::vtkInternals::BuildPlaneClasses(
       own[k] = sign * plane[k];
     }
   }
-  if (std::getenv("HAVS_CVX_DEBUG"))
-  {
-    double worst = 0.0;
-    size_t multi = 0;
-    for (size_t c = 0; c < classes; ++c)
-    {
-      worst = std::max(worst, this->ClassEps[c]);
-      multi += members[c] > 1 ? 1 : 0;
-    }
-    std::printf("DEBUG classes %zu (%zu with several triangles) of %zu triangles, eps %g, worst class eps %g\n", classes, multi, order.size(), this->Eps, worst);
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -758,7 +733,6 @@ bool vtkHAVSConvexification::Build(
   }
   const double rounding = (singlePrecision ? std::ldexp(1.0, -24) : std::ldexp(1.0, -53)) * largest;
   in.Eps = std::min(std::max(1e-9 * in.BoxDiagonal, 16.0 * rounding), 1e-5 * in.BoxDiagonal);
-  if (std::getenv("HAVS_CVX_EPS")) in.Eps = std::atof(std::getenv("HAVS_CVX_EPS")) * in.BoxDiagonal; // DEBUG
   in.DegenerateArea = 1e-12 * in.BoxDiagonal * in.BoxDiagonal;
   in.TinyArea = 1e-18 * in.BoxDiagonal * in.BoxDiagonal;
 
@@ -842,7 +816,7 @@ void vtkHAVSConvexification::BuildTree()
   stack[0].List.resize(in.Pieces.size());
   std::iota(stack[0].List.begin(), stack[0].List.end(), 0u);
 
-  std::mt19937 random(std::getenv("HAVS_CVX_SEED") ? std::atoi(std::getenv("HAVS_CVX_SEED")) : 4u); // DEBUG
+  std::mt19937 random(4u); // candidates at random, reproducibly
   std::vector<double> dist, front, back, source;
   std::vector<uint32_t> sameOn, oppositeOn;
   while (!stack.empty())
@@ -1022,35 +996,6 @@ void vtkHAVSConvexification::BuildTriangleCells()
           else
           {
             this->TriangleCells.emplace_back(triangle, CellOf(leaf));
-            if (std::getenv("HAVS_CVX_DEBUG"))
-            {
-              double c[3];
-              GenericPoint(piece.V.data(), piece.Size(), c);
-              const double* n = &in.TrianglePlanes[4 * static_cast<size_t>(triangle)];
-              double x[3];
-              for (int k = 0; k < 3; ++k) x[k] = c[k] + 1e-7 * in.BoxDiagonal * n[k];
-              const vtkIdType found = this->FindCell(x);
-              if (found != static_cast<vtkIdType>(CellOf(leaf)))
-              {
-                std::printf("DEBUG tri piece: triangle %u cell %u, found %lld at (%g %g %g) n (%g %g %g) area %g\n", triangle, CellOf(leaf), (long long)found, c[0], c[1], c[2], n[0], n[1], n[2], Area(piece.V.data(), piece.Size()));
-                static int shown = 0;
-                if (triangle == 113 && shown++ < 2)
-                {
-                  for (size_t i = 0; i < piece.Size(); ++i) std::printf("   v %.17g %.17g %.17g\n", piece.V[3*i], piece.V[3*i+1], piece.V[3*i+2]);
-                  // walk the point
-                  int32_t cc = 0;
-                  while (cc >= 0)
-                  {
-                    const auto& nd = in.Nodes[cc];
-                    double dv[16];
-                    for (size_t i = 0; i < piece.Size(); ++i) dv[i] = Distance(nd.Plane, &piece.V[3*i]);
-                    std::printf("   node %d plane (%g %g %g %.17g) dist(x) %g piece dists %g %g %g %g -> %s\n", cc, nd.Plane[0], nd.Plane[1], nd.Plane[2], nd.Plane[3], Distance(nd.Plane, x), dv[0], dv[1], dv[2], piece.Size() > 3 ? dv[3] : 0.0, Distance(nd.Plane, x) >= 0 ? "front" : "back");
-                    cc = nd.Child[Distance(nd.Plane, x) >= 0.0 ? 1 : 0];
-                  }
-                  std::printf("   node start: %d\n", node.Child[1]);
-                }
-              }
-            }
           }
         });
     }
@@ -1168,17 +1113,6 @@ void vtkHAVSConvexification::BuildPortals()
             if (area <= in.TinyArea)
             {
               return;
-            }
-            if (std::getenv("HAVS_CVX_DEBUG"))
-            {
-              double c[3], xb[3], xf[3];
-              GenericPoint(piece.V.data(), piece.Size(), c);
-              for (int k = 0; k < 3; ++k) { xb[k] = c[k] - 1e-7 * in.BoxDiagonal * normal[k]; xf[k] = c[k] + 1e-7 * in.BoxDiagonal * normal[k]; }
-              const vtkIdType fb = this->FindCell(xb), ff = this->FindCell(xf);
-              if (fb != static_cast<vtkIdType>(CellOf(backLeaf)) || ff != static_cast<vtkIdType>(CellOf(frontLeaf)))
-              {
-                std::printf("DEBUG portal piece: node %zu back %u front %u, found %lld %lld at (%g %g %g) n (%g %g %g) area %g\n", n, CellOf(backLeaf), CellOf(frontLeaf), (long long)fb, (long long)ff, c[0], c[1], c[2], normal[0], normal[1], normal[2], area);
-              }
             }
             Record r;
             r.Node = static_cast<uint32_t>(n);

@@ -25,9 +25,25 @@
  * one whose plane straddles the fewest other triangles wins, ties to the
  * more balanced cut); the triangles coplanar with it and of the same
  * orientation stay at the node, those of the opposite orientation go behind
- * it, straddling ones are split into convex pieces. Vertices closer than
- * 1e-9 of the box diagonal to a plane are snapped onto it (as the seed
- * does), so no sliver pieces appear. The front of a plane is the outer side
+ * it, straddling ones are split into convex pieces. Vertices closer than a
+ * tolerance eps to a plane are snapped onto it (as the seed does), so no
+ * sliver pieces appear: eps is 1e-9 of the box diagonal, or 16 rounding
+ * errors of the largest coordinate where every coordinate is a float (VTK's
+ * float points), at most 1e-5 of the diagonal.
+ *
+ * Coplanarity is decided once, before the tree, not plane by plane: the
+ * triangles are grouped into plane classes (largest first, a triangle joins
+ * the class whose first plane has its three vertices within 16 eps) and
+ * every triangle takes its class's plane, the least-squares plane of the
+ * class's vertices, oriented like the triangle. Pieces and portal polygons
+ * of a node's class lie on its plane by definition; the node's tolerance
+ * covers its class's vertices. (With each triangle's own plane and 1e-9,
+ * faces coplanar only up to float rounding, e.g. those of a voxel grid of
+ * spacing 1/24 or turned by a rotation, fell on both sides of each other's
+ * planes: sliver cells and pieces reaching OUT leaves they do not touch
+ * made false relations and thousands of cycles in the MPVO order.)
+ *
+ * The front of a plane is the outer side
  * of its triangle; a node with nothing in front gets an OUT leaf there, an
  * imaginary cell (the convex region of the leaf, clipped by the root box);
  * nothing behind gives an IN leaf (inside the mesh). The tree is built

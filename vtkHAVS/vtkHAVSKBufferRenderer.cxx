@@ -119,6 +119,11 @@ double Now()
 }
 }
 
+namespace
+{
+constexpr GLuint kLoggedViolations = 16; // pixels logged with the order-violation count
+}
+
 struct vtkHAVSKBufferRenderer::Internals
 {
   vtkOpenGLRenderWindow* Window = nullptr;
@@ -515,9 +520,10 @@ struct vtkHAVSKBufferRenderer::Internals
     const GLuint zero = 0;
     if (!this->ViolationCounter)
     {
+      const GLuint zeros[1 + kLoggedViolations] = {};
       glGenBuffers(1, &this->ViolationCounter);
       glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
-      glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(GLuint), &zero, GL_DYNAMIC_READ);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(zeros), zeros, GL_DYNAMIC_READ);
     }
     else
     {
@@ -527,13 +533,19 @@ struct vtkHAVSKBufferRenderer::Internals
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, this->ViolationCounter);
   }
 
-  std::uint64_t ReadViolationCounter()
+  std::uint64_t ReadViolationCounter(std::vector<int>& pixels)
   {
-    GLuint count = 0;
+    GLuint data[1 + kLoggedViolations] = {};
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &count);
-    return count;
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(data), data);
+    pixels.clear();
+    for (GLuint i = 0; i < std::min<GLuint>(data[0], kLoggedViolations); ++i)
+    {
+      pixels.push_back(static_cast<int>(data[1 + i] & 0xFFFFu));
+      pixels.push_back(static_cast<int>(data[1 + i] >> 16));
+    }
+    return data[0];
   }
 
   /// Clears the k-buffer of the path and draws the faces through it.
@@ -1056,8 +1068,10 @@ bool vtkHAVSKBufferRenderer::Render(vtkRenderer* renderer, const FrameParameters
     {
       ok = ok && (extremum ? in.ResolveExtremum(p) : in.Resolve(p));
     }
-    this->LastOrderViolations =
-      ok && !p.RasterBoundOnly && !extremum && p.CountOrderViolations ? in.ReadViolationCounter() : 0;
+    this->LastViolationPixels.clear();
+    this->LastOrderViolations = ok && !p.RasterBoundOnly && !extremum && p.CountOrderViolations
+      ? in.ReadViolationCounter(this->LastViolationPixels)
+      : 0;
     if (ok && p.KeepResult)
     {
       this->LastResult.resize(static_cast<size_t>(width) * height * 4);

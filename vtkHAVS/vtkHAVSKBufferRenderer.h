@@ -165,6 +165,8 @@ public:
    * not counted (FrameParameters::CountOrderViolations off, extremum modes).
    */
   std::uint64_t GetLastOrderViolations() const { return this->LastOrderViolations; }
+  /// Where: x, y of the first (up to 16) violations, in viewport pixels.
+  const std::vector<int>& GetLastViolationPixels() const { return this->LastViolationPixels; }
 
   /// Fragment-list path: fragments stored in the last frame.
   std::uint64_t GetLastFragmentCount() const { return this->LastFragmentCount; }
@@ -190,6 +192,7 @@ private:
   int LastSize[2] = { 0, 0 };
   std::uint64_t LastFragmentCount = 0;
   std::uint64_t LastOrderViolations = 0;
+  std::vector<int> LastViolationPixels;
 };
 
 #endif

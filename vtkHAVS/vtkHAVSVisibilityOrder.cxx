@@ -53,6 +53,7 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
   this->BoundaryFaceVertices.clear();
   this->SeamFaces.clear();
   this->MeshConvex = true;
+  this->NumberOfFoldedFaces = 0;
   this->Convexification = nullptr;
   this->ConvexificationBuilt = false;
   this->NumberOfImaginaryCells = 0;
@@ -78,7 +79,7 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
 
   this->FaceCells.assign(2 * numberOfFaces, -1);
   this->CellFaces.resize(4 * numberOfTets);
-  std::vector<uint32_t> farPoint(numberOfFaces, 0); // cell 0's vertex off the face
+  std::vector<uint32_t> farPoint(2 * numberOfFaces, 0); // each cell's vertex off the face
   for (size_t t = 0; t < numberOfTets; ++t)
   {
     const uint32_t* p = &tets[4 * t];
@@ -97,11 +98,12 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
       if (this->FaceCells[2 * f] < 0)
       {
         this->FaceCells[2 * f] = static_cast<int64_t>(t);
-        farPoint[f] = p[j];
+        farPoint[2 * f] = p[j];
       }
       else
       {
         this->FaceCells[2 * f + 1] = static_cast<int64_t>(t);
+        farPoint[2 * f + 1] = p[j];
       }
     }
   }
@@ -109,6 +111,7 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
   // Planes, oriented away from cell 0 (outward for a boundary face).
   vtkPoints* points = grid->GetPoints();
   this->FacePlanes.resize(4 * numberOfFaces);
+  std::vector<uint8_t> folded(numberOfFaces, 0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(numberOfFaces), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType f = begin; f < end; ++f)
     {
@@ -117,7 +120,7 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
       {
         points->GetPoint(vertices[3 * f + i], v[i]);
       }
-      points->GetPoint(farPoint[f], x);
+      points->GetPoint(farPoint[2 * f], x);
       const double e1[3] = { v[1][0] - v[0][0], v[1][1] - v[0][1], v[1][2] - v[0][2] };
       const double e2[3] = { v[2][0] - v[0][0], v[2][1] - v[0][1], v[2][2] - v[0][2] };
       double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
@@ -135,8 +138,22 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
       plane[1] = n[1];
       plane[2] = n[2];
       plane[3] = d;
+      if (this->FaceCells[2 * f + 1] >= 0)
+      {
+        // Folded: the second cell lies on the first's side too (an inverted cell).
+        points->GetPoint(farPoint[2 * f + 1], x);
+        folded[f] = n[0] * x[0] + n[1] * x[1] + n[2] * x[2] + d < 0.0 ? 1 : 0;
+      }
     }
   });
+  this->NumberOfFoldedFaces = std::count(folded.begin(), folded.end(), 1);
+  this->FoldedFaces.swap(folded);
+  if (this->NumberOfFoldedFaces > 0)
+  {
+    vtkWarningMacro(<< this->NumberOfFoldedFaces
+                    << " internal faces have both their tetrahedra on one side (inverted or "
+                       "overlapping cells): no visibility order is exact there.");
+  }
 
   // What the non-convex methods need: the points and the boundary faces.
   this->MeshConvex = faces->IsConvex();
@@ -649,7 +666,9 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
   {
     if (ready.empty())
     {
-      // A cycle: take the unvisited cell with the fewest cells still in front.
+      // A cycle: take an unvisited cell with the fewest cells still in front
+      // (the first with one only, searching on from the last break: cycles
+      // are local, and a full scan per break would be quadratic).
       size_t best = numberOfNodes;
       for (size_t n = 0; n < numberOfNodes; ++n)
       {
@@ -657,6 +676,10 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
         if (!visited[c] && (best == numberOfNodes || waiting[c] < waiting[best]))
         {
           best = c;
+          if (waiting[c] <= 1)
+          {
+            break;
+          }
         }
       }
       scan = best;

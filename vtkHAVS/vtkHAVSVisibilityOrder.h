@@ -81,7 +81,7 @@ public:
 
   ///@{
   /// How rays that leave and re-enter a non-convex mesh are ordered (default
-  /// Convexification). Unused for a convex mesh.
+  /// BoundaryLayers). Unused for a convex mesh.
   vtkSetClampMacro(NonConvexMethod, int, NonConvexIgnore, NonConvexConvexification);
   vtkGetMacro(NonConvexMethod, int);
   ///@}
@@ -117,6 +117,11 @@ public:
   /// Seconds the last Sort() took (without a convexification it triggered).
   vtkGetMacro(LastSortSeconds, double);
 
+  /// Internal faces whose two tetrahedra lie on the same side (inverted or
+  /// overlapping cells), found by Build(): no order is exact across them.
+  vtkGetMacro(NumberOfFoldedFaces, vtkIdType);
+  bool IsFaceFolded(vtkIdType face) const { return this->FoldedFaces[face] != 0; }
+
   /// Pairs of boundary faces found at the same place (seams) by Build().
   vtkIdType GetNumberOfSeamFaces() const { return static_cast<vtkIdType>(this->SeamFaces.size() / 2); }
 
@@ -149,7 +154,9 @@ private:
   std::vector<uint32_t> BoundaryFaceVertices; // 3 per boundary face, wound outward
   std::vector<uint32_t> SeamFaces; // pairs of boundary faces at the same place (duplicated points)
   bool MeshConvex = true;
-  int NonConvexMethod = NonConvexConvexification;
+  vtkIdType NumberOfFoldedFaces = 0;
+  std::vector<uint8_t> FoldedFaces; // per face
+  int NonConvexMethod = NonConvexBoundaryLayers;
   double ModelToClip[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
   int SampleSize[2] = { 0, 0 };
   vtkSmartPointer<vtkHAVSConvexification> Convexification;

@@ -12,6 +12,7 @@
 #include "vtkHAVSPlaneSection.h"
 #include "vtkHAVSPreIntegrationTable.h"
 #include "vtkHAVSVisibilityOrder.h"
+#include "vtkIntArray.h"
 
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
@@ -868,6 +869,19 @@ bool vtkHAVSVolumeMapper::DrawFrame(
   this->LastFlushSeconds = in.Renderer->GetLastFlushSeconds();
   this->LastCompositeSeconds = in.Renderer->GetLastCompositeSeconds();
   return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkHAVSVolumeMapper::GetLastOrderViolationPixels(vtkIntArray* pixels)
+{
+  const std::vector<int>& xy = this->Internal->Renderer->GetLastViolationPixels();
+  if (pixels)
+  {
+    pixels->SetNumberOfComponents(2);
+    pixels->SetNumberOfTuples(static_cast<vtkIdType>(xy.size() / 2));
+    std::copy(xy.begin(), xy.end(), pixels->GetPointer(0));
+  }
+  return static_cast<int>(xy.size() / 2);
 }
 
 //------------------------------------------------------------------------------

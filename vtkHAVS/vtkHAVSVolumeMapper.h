@@ -43,6 +43,7 @@
 #include <memory> // For std::unique_ptr
 
 class vtkFloatArray;
+class vtkIntArray;
 class vtkHAVSFaceSet;
 class vtkMatrix4x4;
 class vtkOpenGLRenderWindow;
@@ -199,11 +200,13 @@ public:
 
   ///@{
   /**
-   * MPVO on a non-convex mesh (see vtkHAVSVisibilityOrder): Convexification
-   * (default; seed 004: convex imaginary cells around the mesh, built once per
-   * mesh), BoundaryLayers (seed 003's idea: per frame, the boundary faces'
-   * depth order at every pixel), or Ignore (exact only where no ray re-enters
-   * the mesh). Unused for a convex mesh.
+   * MPVO on a non-convex mesh (see vtkHAVSVisibilityOrder): BoundaryLayers
+   * (default; seed 003's idea: per frame, the boundary faces' depth order at
+   * every pixel; exact on any boundary), Convexification (seed 004: convex
+   * imaginary cells around the mesh, built once per mesh, nothing per frame;
+   * needs a closed, consistently wound boundary: inverted or dropped
+   * degenerate cells break it locally), or Ignore (exact only where no ray
+   * re-enters the mesh). Unused for a convex mesh.
    */
   vtkSetClampMacro(NonConvexMethod, int, NonConvexIgnore, NonConvexConvexification);
   vtkGetMacro(NonConvexMethod, int);
@@ -223,6 +226,12 @@ public:
 
   /// Order violations of the last frame (0 when not counted).
   vtkGetMacro(LastOrderViolations, vtkIdType);
+
+  /**
+   * Where the last frame's first order violations were (up to 16): pixel x, y
+   * in the renderer's viewport, two components per tuple. Returns their number.
+   */
+  int GetLastOrderViolationPixels(vtkIntArray* pixels);
 
   ///@{
   /// MPVO on a non-convex mesh: imaginary cells and the seconds the
@@ -373,7 +382,7 @@ protected:
   int BoundaryMode = BoundaryAutomatic;
   int VisibilityOrder = VisibilityOrderCentroid;
   int LastVisibilityOrder = -1;
-  int NonConvexMethod = NonConvexConvexification;
+  int NonConvexMethod = NonConvexBoundaryLayers;
   bool CountOrderViolations = true;
   vtkIdType LastOrderViolations = 0;
   vtkIdType LastCycleBreaks = 0;

@@ -58,14 +58,26 @@ uniform int havsOwnPlane;    // the plane the drawn section lies on (-1: mesh fa
 // order; a fragment that arrives behind the front never is). Counted over the
 // frame; zero means the k-buffer sorted every pixel (the face order plus k
 // were enough). Differences within the arriving fragment's depth uncertainty
-// are ties, not violations: float rounding (relative HAVS_TIE) and the
-// rasterizer's sub-pixel snapping of vertices (1/256 pixel on llvmpipe and
-// current GPUs; its depth effect is bounded by 1/64 of the fragment's depth
-// change per pixel, which is large only on faces seen nearly edge-on).
+// are ties, not violations: float rounding (relative HAVS_TIE) and a quarter
+// of the fragment's depth change per pixel (fwidth). The latter covers what
+// sub-pixel rasterization does at a pixel centre on or near an edge: the
+// rasterizer (vertices snapped to 1/256 pixel) may cover it with a face the
+// exact ray misses, at a depth within that of its neighbours; such a face is
+// drawn at its own cell's turn. It is large only on faces seen nearly edge-on.
 layout(std430, binding = 3) buffer HAVSOrderViolations
 {
   uint havsOrderViolations;
+  uint havsViolationPixels[16]; // the first pixels with one: x | y << 16
 };
+
+void havsCountViolation()
+{
+  uint i = atomicAdd(havsOrderViolations, 1u);
+  if (i < 16u)
+  {
+    havsViolationPixels[i] = uint(gl_FragCoord.x) | (uint(gl_FragCoord.y) << 16);
+  }
+}
 
 const float HAVS_TIE = 1.0e-4;
 
@@ -98,7 +110,7 @@ float havsDistance(vec3 positionRC)
 float havsTieTolerance(vec3 positionRC)
 {
   float d = havsDistance(positionRC);
-  return HAVS_TIE * abs(d) + fwidth(d) * (1.0 / 64.0);
+  return HAVS_TIE * abs(d) + fwidth(d) * 0.25;
 }
 
 // Eye distance of the opaque surface at this pixel, HAVS_EMPTY when none.
@@ -167,7 +179,7 @@ void havsInsert(
 {
   if (E[0].x > HAVS_NO_FRONT && f.x < E[0].x - tolerance)
   {
-    atomicAdd(havsOrderViolations, 1u);
+    havsCountViolation();
   }
   vec2 leaving = f;
 #if HAVS_K > 1
@@ -267,7 +279,7 @@ void havsRetreat(inout vec4 color, inout vec2 back, vec2 p, float opaqueDistance
 {
   if (back.x > HAVS_NO_FRONT && p.x > back.x + HAVS_TIE * abs(back.x))
   {
-    atomicAdd(havsOrderViolations, 1u);
+    havsCountViolation();
   }
   if (back.x > HAVS_NO_FRONT && p.x < opaqueDistance)
   {
