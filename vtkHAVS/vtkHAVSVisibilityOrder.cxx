@@ -334,6 +334,17 @@ void vtkHAVSVisibilityOrder::BuildConvexification()
   }
   this->NumberOfImaginaryCells = this->Convexification->GetNumberOfImaginaryCells();
   this->ConvexificationSeconds = this->Convexification->GetBuildSeconds();
+  // The solid BSP needs a closed, consistently wound boundary: inverted cells
+  // (folded faces) or boundary pieces that end inside the solid mean it is not.
+  if (this->NumberOfFoldedFaces > 0 || this->Convexification->GetNumberOfInLeafPieces() > 0)
+  {
+    vtkWarningMacro("The mesh's boundary is not closed and consistently wound ("
+      << this->NumberOfFoldedFaces << " folded faces, "
+      << this->Convexification->GetNumberOfInLeafPieces()
+      << " boundary pieces inside the solid): its convexification cannot order it; using "
+         "the boundary layers instead.");
+    this->Convexification = nullptr;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -609,7 +620,9 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
       }
     }
   }
-  else if (!this->MeshConvex && this->NonConvexMethod == NonConvexBoundaryLayers)
+  else if (!this->MeshConvex &&
+    (this->NonConvexMethod == NonConvexBoundaryLayers ||
+      this->NonConvexMethod == NonConvexConvexification)) // a convexification that failed
   {
     std::vector<std::pair<uint32_t, uint32_t>> layers;
     this->BoundaryLayerRelations(eye, direction, parallel, layers);

@@ -36,6 +36,8 @@
  *   SetViewSampling) and sorted by depth at every pixel; each exit followed
  *   by an entry gives the relation "cell left before cell entered". Exact at
  *   the pixels the k-buffer composites, whatever the shape of the gaps.
+ *   Where the boundary is not closed and consistently wound (inverted cells),
+ *   the convexification warns and the boundary layers are used instead.
  * - Ignore: MPVO alone (exact only where no ray re-enters the mesh).
  * Seams (two boundary faces at the same place, of two tetrahedra whose
  * points are duplicated, as on the cut of an O-grid) join their tetrahedra

@@ -58,7 +58,7 @@ uniform int havsOwnPlane;    // the plane the drawn section lies on (-1: mesh fa
 // order; a fragment that arrives behind the front never is). Counted over the
 // frame; zero means the k-buffer sorted every pixel (the face order plus k
 // were enough). Differences within the arriving fragment's depth uncertainty
-// are ties, not violations: float rounding (relative HAVS_TIE) and a quarter
+// are ties, not violations: float rounding (relative HAVS_TIE) and half
 // of the fragment's depth change per pixel (fwidth). The latter covers what
 // sub-pixel rasterization does at a pixel centre on or near an edge: the
 // rasterizer (vertices snapped to 1/256 pixel) may cover it with a face the
@@ -110,7 +110,7 @@ float havsDistance(vec3 positionRC)
 float havsTieTolerance(vec3 positionRC)
 {
   float d = havsDistance(positionRC);
-  return HAVS_TIE * abs(d) + fwidth(d) * 0.25;
+  return HAVS_TIE * abs(d) + fwidth(d) * 0.5;
 }
 
 // Eye distance of the opaque surface at this pixel, HAVS_EMPTY when none.
