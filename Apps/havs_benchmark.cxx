@@ -820,7 +820,8 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
          << " | " << Cell(r, "rmse", "%.5f") << " | " << Cell(r, "max", "%.4f") << " | "
          << Cell(r, "over1", "%.4f") << " |\n";
     }
-    if (std::isfinite(havs6))
+    if (std::isfinite(havs6) &&
+      (ms.count("pt") || ms.count("zsweep") || ms.count("raycast") || ms.count("raster-bound")))
     {
       md << "\nHAVS k=6 takes";
       for (const char* other : { "pt", "zsweep", "raycast", "raster-bound" })
