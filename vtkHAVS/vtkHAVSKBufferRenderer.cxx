@@ -122,6 +122,37 @@ double Now()
 namespace
 {
 constexpr GLuint kLoggedViolations = 16; // pixels logged with the order-violation count
+
+/// Saves the GL state a vtkHAVS pass changes (restored when it goes out of
+/// scope) and sets what every pass needs: no depth test, culling or scissor,
+/// no depth writes.
+struct ScopedPassState
+{
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglEnableDisable DepthTest;
+  vtkOpenGLState::ScopedglEnableDisable Blend;
+  vtkOpenGLState::ScopedglEnableDisable Cull;
+  vtkOpenGLState::ScopedglEnableDisable Scissor;
+  vtkOpenGLState::ScopedglDepthMask DepthMask;
+  vtkOpenGLState::ScopedglColorMask ColorMask;
+  vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
+
+  explicit ScopedPassState(vtkOpenGLState* state)
+    : Viewport(state)
+    , DepthTest(state, GL_DEPTH_TEST)
+    , Blend(state, GL_BLEND)
+    , Cull(state, GL_CULL_FACE)
+    , Scissor(state, GL_SCISSOR_TEST)
+    , DepthMask(state)
+    , ColorMask(state)
+    , BlendFunc(state)
+  {
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_CULL_FACE);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglDepthMask(GL_FALSE);
+  }
+};
 }
 
 struct vtkHAVSKBufferRenderer::Internals
@@ -1037,19 +1068,8 @@ bool vtkHAVSKBufferRenderer::Render(vtkRenderer* renderer, const FrameParameters
   in.CaptureOpaqueDepth(originX, originY, width, height);
 
   {
-    vtkOpenGLState::ScopedglViewport viewportSaver(state);
-    vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-    vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-    vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
-    vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
-    state->vtkglDisable(GL_DEPTH_TEST);
-    state->vtkglDisable(GL_CULL_FACE);
-    state->vtkglDisable(GL_SCISSOR_TEST);
+    ScopedPassState passState(state);
     state->vtkglDisable(GL_BLEND);
-    state->vtkglDepthMask(GL_FALSE);
     state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     state->vtkglViewport(0, 0, width, height);
 
@@ -1120,17 +1140,7 @@ bool vtkHAVSKBufferRenderer::CompositeLastResult(vtkRenderer* renderer)
     return false;
   }
   vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_CULL_FACE);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDepthMask(GL_FALSE);
+  ScopedPassState passState(state);
   state->vtkglViewport(originX, originY, width, height);
   return in.Composite(originX, originY);
 }

@@ -33,6 +33,14 @@ namespace
 {
 using Key = std::array<uint32_t, 3>;
 
+/// Which side of plane p (n, d) the eye is on: > 0 on the side n points to;
+/// a parallel projection decides by the direction of projection alone.
+double EyeSide(const double* p, const double eye[3], const double direction[3], bool parallel)
+{
+  return parallel ? -(p[0] * direction[0] + p[1] * direction[1] + p[2] * direction[2])
+                  : p[0] * eye[0] + p[1] * eye[1] + p[2] * eye[2] + p[3];
+}
+
 Key SortedKey(uint32_t a, uint32_t b, uint32_t c)
 {
   Key k = { a, b, c };
@@ -410,11 +418,8 @@ void vtkHAVSVisibilityOrder::BoundaryLayerRelations(const double eye[3],
       t.Box[1] = std::min(width - 1, static_cast<int>(std::floor(clampTo(maxX - 0.5, width))));
       t.Box[2] = std::max(0, static_cast<int>(std::ceil(clampTo(minY - 0.5, height))));
       t.Box[3] = std::min(height - 1, static_cast<int>(std::floor(clampTo(maxY - 0.5, height))));
-      const double* plane = &this->FacePlanes[4 * static_cast<size_t>(this->BoundaryFaces[b])];
-      const double side = parallel
-        ? -(plane[0] * direction[0] + plane[1] * direction[1] + plane[2] * direction[2])
-        : plane[0] * eye[0] + plane[1] * eye[1] + plane[2] * eye[2] + plane[3];
-      t.Entry = side > 0.0;
+      t.Entry = EyeSide(&this->FacePlanes[4 * static_cast<size_t>(this->BoundaryFaces[b])], eye,
+                  direction, parallel) > 0.0;
     }
   });
 
@@ -527,8 +532,6 @@ void vtkHAVSVisibilityOrder::BoundaryLayerRelations(const double eye[3],
           out.emplace_back(cellOf(exit), cellOf(entry));
         }
       }
-      std::sort(out.begin(), out.end());
-      out.erase(std::unique(out.begin(), out.end()), out.end());
     }
   });
   for (Relations& r : local)
@@ -555,10 +558,7 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
   this->Order.reserve(numberOfFaces);
   this->NumberOfCycleBreaks = 0;
   this->NumberOfBoundaryRelations = 0;
-  auto side = [&](const double* p) {
-    return parallel ? -(p[0] * direction[0] + p[1] * direction[1] + p[2] * direction[2])
-                    : p[0] * eye[0] + p[1] * eye[1] + p[2] * eye[2] + p[3];
-  };
+  auto side = [&](const double* p) { return EyeSide(p, eye, direction, parallel); };
 
   // Each face's back cell: the one the ray enters through it (-1: it leaves
   // the mesh there). cell 1 lies on the positive side of the plane.

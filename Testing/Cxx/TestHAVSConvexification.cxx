@@ -635,15 +635,7 @@ vtkSmartPointer<vtkUnstructuredGrid> OrderMesh(const std::string& name)
     auto grid = OrderMesh(name.substr(0, name.size() - rotated.size()));
     return grid ? Transformed(grid, 0.37, { 0.3, -0.5, 0.8 }, 0.7, { 0.1, 0.2, -0.3 }) : grid;
   }
-  if (name == "wavelet")
-    return havstest::ThresholdedWavelet();
-  if (name == "hollowsphere")
-    return havstest::HollowSphere();
-  if (name == "torus")
-    return havstest::Torus();
-  if (name == "twoblocks")
-    return havstest::TwoBlocks();
-  return havstest::ReadDataSet(name);
+  return havstest::LoadMesh(name);
 }
 
 /// e) The order of MPVO with the convexification is exact on the non-convex

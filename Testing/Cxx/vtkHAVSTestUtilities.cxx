@@ -540,4 +540,17 @@ vtkSmartPointer<vtkUnstructuredGrid> TwoBlocks()
   grid->GetPointData()->SetActiveScalars("s");
   return grid;
 }
+
+vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& name)
+{
+  if (name == "wavelet")
+    return ThresholdedWavelet();
+  if (name == "hollowsphere")
+    return HollowSphere();
+  if (name == "torus")
+    return Torus();
+  if (name == "twoblocks")
+    return TwoBlocks();
+  return ReadDataSet(name);
+}
 }

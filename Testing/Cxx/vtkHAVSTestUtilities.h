@@ -61,6 +61,9 @@ vtkSmartPointer<vtkUnstructuredGrid> ThresholdedWavelet();
 vtkSmartPointer<vtkUnstructuredGrid> HollowSphere();
 vtkSmartPointer<vtkUnstructuredGrid> Torus();
 vtkSmartPointer<vtkUnstructuredGrid> TwoBlocks();
+/// One of the above by name (wavelet, hollowsphere, torus, twoblocks), else
+/// ReadDataSet(name).
+vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& name);
 
 /// PLOT3D data set from shared/data, tetrahedralized; function 100 density, 110 pressure...
 vtkSmartPointer<vtkUnstructuredGrid> ReadPlot3D(
