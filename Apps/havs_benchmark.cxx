@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    havs_benchmark.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // havs_benchmark: run time against error, every mapper side by side.
 //
 //   havs_benchmark [--quick] [--size N | --sizes a,b] [--views N] [--repeats N]
@@ -994,8 +1003,20 @@ int main(int argc, char* argv[])
   std::ofstream(o.OutputDir + "/benchmarks.md") << report;
   std::cout << report;
   // Plots, where matplotlib is there.
+  // The plot script: the source tree's (HAVS_SOURCE_DIR), else the installed
+  // one beside this program (<prefix>/share/vtkHAVS).
   const char* source = std::getenv("HAVS_SOURCE_DIR");
-  const std::string script = std::string(source ? source : ".") + "/Apps/havs_benchmark_plots.py";
+  std::string script = std::string(source ? source : ".") + "/Apps/havs_benchmark_plots.py";
+  if (!source)
+  {
+    const std::string self = o.Self;
+    const std::string installed =
+      self.substr(0, self.find_last_of('/') + 1) + "../share/vtkHAVS/havs_benchmark_plots.py";
+    if (std::ifstream(installed).good())
+    {
+      script = installed;
+    }
+  }
   std::system(("/usr/bin/python3 '" + script + "' '" + csvPath + "' '" + o.OutputDir + "'").c_str());
   return EXIT_SUCCESS;
 }

@@ -1,3 +1,4 @@
+# Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 """Plots of havs_benchmark's CSV: time against RMSE (log axes, Pareto front),
 time against the number of tets, time against the number of pixels. Needs matplotlib (Debian
 python3-matplotlib); without it, says so and does nothing."""

@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    havs_reference.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // havs_reference: the exact reference image and the k-requirement analysis
 // (thesis Table 4.2, Fig. 4.7) of a data set, from the command line.
 //

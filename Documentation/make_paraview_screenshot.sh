@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 # Makes Documentation/images/paraview_havs.png: the ParaView client (under
 # Xvfb) with the vtkHAVS plugin loaded, the LOX post shown as "HAVS Volume"
 # and the HAVS properties in the panel. Needs a build (bash .ci/build) and

@@ -1,3 +1,4 @@
+# Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 """Converts an X window dump (xwd -root, 24/32-bit TrueColor, ZPixmap) to PNG with VTK."""
 import struct
 import sys

@@ -3,6 +3,9 @@
   Project:   vtkHAVS
   Module:    vtkHAVSEGLRenderWindow.cxx
 
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
 =========================================================================*/
 #include "vtkHAVSEGLRenderWindow.h"
 

@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSAgainstReference.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // GPU HAVS against the software k-buffer and the exact reference on a real
 // data set (argument: loxpostvtk | bluntfin | loxpost | combustor, then the
 // RMSE bound and the max bound against the reference, then the image size).

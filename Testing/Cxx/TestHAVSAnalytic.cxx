@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSAnalytic.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // Analytic checks of vtkHAVSVolumeMapper, read from the mapper's float result:
 // - constant scalar and opacity through a unit box seen orthographically:
 //   opacity 1 - exp(-tau L), colour c * opacity, at every covered pixel, to 1e-3;

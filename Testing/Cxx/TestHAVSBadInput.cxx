@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSBadInput.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // Bad input gets a clear error or warning and a defined result: no crash, no
 // NaN pixel, and a good input afterwards renders correctly (no corrupted
 // later frame).

@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSBoundary.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // Boundary tagging, opaque geometry, the camera inside the mesh, clipping
 // planes and translucent actors, all against the exact reference
 // (vtkHAVSReferenceRenderer, which starts its rays at the near plane and at

@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSConvexification.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // vtkHAVSConvexification (seed 004, section 6): imaginary convex cells as the
 // OUT leaves of a solid-leaf BSP tree of the boundary triangles. On a convex
 // box, a U-shaped solid, a rotated square torus, a rotated random voxel blob

@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSExactOrder.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // Exact visibility orders on real and non-convex meshes (issue 8).
 //
 // Usage: TestHAVSExactOrder <scene> [size]

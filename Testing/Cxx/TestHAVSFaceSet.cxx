@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSFaceSet.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // vtkHAVSFaceSet: unique faces and boundary flags (single tet, two tets, a
 // cube in 5 and in 6 tets, a non-manifold fan), outward winding also for
 // inverted cells, degenerate and non-tetrahedral cells, failures, and a closed

@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSFaceSorter.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // vtkHAVSFaceSorter: the order is a permutation whose keys, recomputed in
 // double from the grid's points, ascend, for perspective and parallel
 // projections, under a scale + translate model-to-world matrix and far from

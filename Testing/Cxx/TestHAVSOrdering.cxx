@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSOrdering.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // The k-buffer finishes a nearly sorted fragment stream exactly.
 // The face order is the centroid sort with every block of 500 consecutive
 // faces reversed (vtkHAVSFaceSorter::SetBlockReversal): each face is at most

@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSPaths.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // Every k-buffer path that runs here gives the same image.
 // - The fragment-list path sorts every pixel exactly (independent of k): the
 //   yardstick. The framebuffer-fetch path at k = 14 must match it within 1/255

@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSPreIntegrationTable.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // vtkHAVSPreIntegrationTable against closed forms and the adaptive reference:
 // - constant opacity and colour: every entry is 1 - exp(-tau L), c * alpha;
 // - opacity linear over the range, constant colour: alpha = 1 - exp(-L (tau_f + tau_b) / 2);

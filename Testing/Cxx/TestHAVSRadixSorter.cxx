@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSRadixSorter.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // vtkHAVSRadixSorter: the float -> key map is monotone (negatives, denormals,
 // zeros, infinities; every NaN last); Sort equals std::stable_sort under an
 // independent reference order on random arrays (serial and parallel sizes,

@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSReference.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // vtkHAVSReferenceRenderer against closed forms:
 // - constant slab (parallel view of the unit box): 1 - exp(-tau L) to 1e-6;
 // - linear ramp along the view: 1 - exp(-L tau_max / 2) to 1e-6;

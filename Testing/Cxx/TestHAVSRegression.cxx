@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSRegression.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // Regression baselines (for regressions only; accuracy is checked elsewhere
 // against closed forms and the stock ray-cast mapper). Each scene's window
 // image is compared with Testing/Baseline/<scene>.png: RMSE below 1.5/255 and

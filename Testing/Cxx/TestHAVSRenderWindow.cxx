@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSRenderWindow.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // The render-window factory gives a working headless window: an opaque
 // sphere renders (pixels differ from the background), the backend is the one
 // asked for, and the window survives a resize and a second window.

@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSScenes.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // What a VTK user expects of a mapper, each against an independent answer:
 // - the volume's matrix: rendering a grid under a rotation+scale matrix equals
 //   rendering the grid transformed beforehand with an identity matrix;

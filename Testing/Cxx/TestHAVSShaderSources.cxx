@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSShaderSources.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // Every generated shader source is valid GLSL, checked with glslangValidator
 // (Khronos' reference compiler) — also the interlock path, which needs a GPU
 // with fragment-shader interlock to run (NVIDIA) and so cannot be rendered

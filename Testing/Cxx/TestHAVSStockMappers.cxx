@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSStockMappers.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // HAVS side by side with VTK's stock unstructured-grid mappers on a real data
 // set (argument: bluntfin | loxpost | loxpostvtk), same scene, camera and
 // window. The yardstick is vtkUnstructuredGridVolumeRayCastMapper with

@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSVisibilityOrder.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 // vtkHAVSVisibilityOrder (MPVO): on a convex mesh of thin, anisotropic
 // tetrahedra, the MPVO face order lets every pixel's fragments leave a
 // k-buffer in depth order with k <= 2 (k analysis of the exact reference's

@@ -1,3 +1,12 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSTestUtilities.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
 /**
  * @file vtkHAVSTestUtilities.h
  * @brief Small helpers shared by the vtkHAVS ctest programs (not part of the module).

@@ -1,3 +1,4 @@
+# Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 """The vtkHAVS ParaView plugin, serial (pvpython) or under MPI (pvbatch --symmetric).
 
 Loads the plugin, shows the LOX post (post.vtk, tetrahedralized) as "HAVS Volume",
@@ -24,7 +25,7 @@ from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
 import vtkhavs
 from havs_plugin_scene import (SIZE, compare, png_rgb, read_lox_post, reference_rgb,
-                               show_lox_post, style_havs_volume)
+                               require_working_expat, show_lox_post, style_havs_volume)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--mode", choices=["serial", "mpi"], default="serial")
@@ -57,6 +58,7 @@ def check(condition, what):
         failures.append(what)
 
 
+require_working_expat()
 LoadPlugin(args.plugin, remote=False, ns=globals())
 
 # The mesh read with VTK on every rank too (under MPI, ParaView's data

@@ -1,3 +1,4 @@
+# Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 """The vtkHAVS plugin on a pvserver (2 MPI ranks) driven by a pvpython client; the plugin
 is found through PV_PLUGIN_PATH on both sides (no LoadPlugin call).
 
@@ -14,7 +15,8 @@ import sys
 
 from paraview.simple import Connect, Render, SaveScreenshot
 
-from havs_plugin_scene import SIZE, compare, png_rgb, read_lox_post, show_lox_post
+from havs_plugin_scene import (SIZE, compare, png_rgb, read_lox_post, require_working_expat,
+                               show_lox_post)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--port", type=int, required=True)
@@ -30,6 +32,7 @@ def check(condition, what):
         failures.append(what)
 
 
+require_working_expat()
 connection = Connect("localhost", args.port)
 check(connection is not None, "connected to pvserver on port %d" % args.port)
 tets, view, display, lut, pwf = show_lox_post(read_lox_post())

@@ -1,8 +1,11 @@
+# Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 """What the ParaView plugin tests share: the LOX post read with VTK, the HAVS Volume
 display styled the same way in every test, PNG pixels, image differences and the exact
 reference image of a scene."""
+import ctypes
 import math
 import os
+import subprocess
 
 from paraview.simple import (ColorBy, CreateRenderView, GetColorTransferFunction,
                              GetOpacityTransferFunction, LegacyVTKReader, Show, Tetrahedralize)
@@ -14,6 +17,42 @@ from vtkmodules.vtkRenderingCore import vtkVolumeProperty
 import vtkhavs
 
 SIZE = 200
+
+
+def expat_status():
+    """Which expat this process runs with, and whether VTK's XML readers work with it:
+    (description, broken). Broken: this expat defers reparsing (Debian 12's
+    2.5.0-1+deb12u5, expat >= 2.6), which VTK 9.2's XML parser cannot take, and
+    vtkHAVSExpatFix (LD_PRELOAD) is not in the process."""
+    process = ctypes.CDLL(None)
+    deferral = hasattr(process, "XML_SetReparseDeferralEnabled")
+    fixed = hasattr(process, "vtkHAVSExpatFixParserCount")
+    try:
+        package = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "libexpat1"],
+                                 capture_output=True, text=True).stdout or "unknown"
+    except OSError:
+        package = "unknown"
+    version = "unknown"
+    if hasattr(process, "XML_ExpatVersion"):
+        process.XML_ExpatVersion.restype = ctypes.c_char_p
+        version = process.XML_ExpatVersion().decode()
+    description = ("expat %s (Debian libexpat1 %s), reparse deferral %s, vtkHAVSExpatFix %s"
+                   % (version, package, "yes" if deferral else "no",
+                      "loaded" if fixed else "not loaded"))
+    return description, deferral and not fixed
+
+
+def require_working_expat():
+    """Prints the expat this process runs with; exits with the reason when it breaks VTK's
+    XML readers (ParaView's data redistribution under MPI depends on them)."""
+    description, broken = expat_status()
+    print("expat: " + description, flush=True)
+    if broken:
+        print("FAIL: this expat defers reparsing and vtkHAVSExpatFix is not preloaded: VTK's "
+              "XML readers (and ParaView's data redistribution) cannot work here. Run with "
+              "LD_PRELOAD=<build or install>/lib/libvtkHAVSExpatFix.so (see the user guide).",
+              flush=True)
+        os._exit(3)
 
 
 def lox_post_path():

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 # Runs a command under a fresh Xvfb display (Debian's ParaView is GLX-only).
 # X connections fail now and then here: a run that could not reach its
 # display is retried (up to 3 times); any other failure is the test's.

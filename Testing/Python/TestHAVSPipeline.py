@@ -1,3 +1,4 @@
+# Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 """The Python pipeline: the wrapped vtkHAVS module renders a tetrahedralized
 box through the same calls a C++ user makes, and the result matches the
 closed form (constant slab: opacity 1 - exp(-tau L))."""

@@ -1,4 +1,5 @@
 #version 430 core
+// Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 // vtkHAVS: clears the per-pixel k-buffer storage of the interlock path
 // (colour 0, no front, every waiting slot empty).
 //HAVS::Defines

@@ -1,4 +1,5 @@
 #version 430 core
+// Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 // vtkHAVS: maximum / minimum intensity draw pass. No sorting is needed: the
 // scalar is linear inside each tetrahedron, so its extremum along a ray lies
 // on a face; blending with GL_MAX (of 1 - s for the minimum) over the face fragments in front

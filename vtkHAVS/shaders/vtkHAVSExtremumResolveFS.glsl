@@ -1,4 +1,5 @@
 #version 430 core
+// Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 // vtkHAVS: maximum / minimum intensity resolve: colour and opacity of the
 // extremal scalar from the sampled transfer function.
 uniform sampler2D havsExtremumTexture;

@@ -1,4 +1,5 @@
 #version 430 core
+// Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 // vtkHAVS: vertex shader of every pass that rasterizes the mesh faces.
 //
 // Coordinates: MC = the mapper's model coordinates (input points shifted by

@@ -1,5 +1,6 @@
 #version 430 core
 #extension GL_EXT_shader_framebuffer_fetch : require
+// Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 // vtkHAVS k-buffer, framebuffer-fetch path: draw pass.
 // The colour and the k entries live in RGBA32F colour attachments that the
 // shader reads (inout, coherent framebuffer fetch) and writes back; fetch is

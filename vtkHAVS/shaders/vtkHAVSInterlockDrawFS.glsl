@@ -1,4 +1,5 @@
 #version 450 core
+// Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 //HAVS::InterlockExtension
 // vtkHAVS k-buffer, fragment-shader-interlock path (NVIDIA): draw pass.
 // The colour and the k entries of every pixel live in a shader storage buffer;

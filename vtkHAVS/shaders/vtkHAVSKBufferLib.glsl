@@ -1,3 +1,4 @@
+// Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 // vtkHAVS k-buffer library, shared by every k-buffer path (framebuffer fetch,
 // fragment-shader interlock, fragment lists). Inserted into the fragment
 // shaders at the KBufferLib marker.

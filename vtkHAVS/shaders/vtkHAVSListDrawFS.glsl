@@ -1,4 +1,5 @@
 #version 430 core
+// Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 // vtkHAVS k-buffer, fragment-list fallback (no framebuffer fetch, no
 // interlock): draw pass. Every fragment is appended to its pixel's linked
 // list (atomic node counter, atomic head exchange); nothing is composited

@@ -1,4 +1,5 @@
 #version 430 core
+// Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 // vtkHAVS: one triangle covering the viewport, for the per-pixel passes
 // (clear, resolve, composite). No vertex buffer: corners from gl_VertexID.
 void main()

@@ -1,4 +1,5 @@
 #version 430 core
+// Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 //HAVS::ResolveExtension
 // vtkHAVS: per-pixel pass after the faces. Reads what the draw pass left for
 // this pixel (the ResolveLoad marker differs per path), lets the waiting

@@ -3,6 +3,9 @@
   Project:   vtkHAVS
   Module:    vtkHAVSUnstructuredGridVolumeRepresentation.cxx
 
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
 =========================================================================*/
 #include "vtkHAVSUnstructuredGridVolumeRepresentation.h"
 
@@ -15,14 +18,37 @@
 #include "vtkPVLODVolume.h"
 #include "vtkPVRenderView.h"
 
+#include <dlfcn.h>
+
 #include <algorithm>
 
 vtkStandardNewMacro(vtkHAVSUnstructuredGridVolumeRepresentation);
+
+namespace
+{
+/// Whether this process's expat defers reparsing (expat >= 2.6, Debian 12's
+/// 2.5.0-1+deb12u5) without vtkHAVSExpatFix preloaded: VTK 9.2's XML parser
+/// then fails, and with it ParaView's redistribution of a grid between ranks.
+bool ExpatBreaksVTKXML()
+{
+  return dlsym(RTLD_DEFAULT, "XML_SetReparseDeferralEnabled") != nullptr &&
+    dlsym(RTLD_DEFAULT, "vtkHAVSExpatFixParserCount") == nullptr;
+}
+}
 
 //------------------------------------------------------------------------------
 vtkHAVSUnstructuredGridVolumeRepresentation::vtkHAVSUnstructuredGridVolumeRepresentation()
 {
   this->HAVSMapper = vtkHAVSVolumeMapper::New();
+  static bool warnedExpat = false;
+  if (!warnedExpat && ExpatBreaksVTKXML())
+  {
+    warnedExpat = true;
+    vtkWarningMacro("This expat defers reparsing (expat >= 2.6, or Debian 12's security update "
+                    "2.5.0-1+deb12u5), which breaks VTK 9.2's XML readers: .vtu files and the "
+                    "redistribution of grids between MPI ranks fail. Start ParaView with "
+                    "LD_PRELOAD=<vtkHAVS>/lib/libvtkHAVSExpatFix.so (see the vtkHAVS user guide).");
+  }
   this->AddVolumeMapper("HAVS", this->HAVSMapper);
   this->SetActiveVolumeMapper("HAVS");
 }
