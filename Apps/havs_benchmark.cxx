@@ -40,11 +40,15 @@
 // size). A configuration whose frames exceed the time budget stops early and
 // says how many views it measured. Output: CSV, Markdown (with ratios) and,
 // where matplotlib is installed, plots.
+#include "vtkHAVSDataSets.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFaceSorter.h"
 #include "vtkHAVSImageMetrics.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSRenderWindowFactory.h"
+#include "vtkHAVSStandardViews.h"
+#include "vtkHAVSVisibilityOrder.h"
+#include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -120,70 +124,6 @@ std::vector<std::string> Split(const std::string& text)
   return out;
 }
 
-std::string DataDir()
-{
-  const char* d = std::getenv("HAVS_DATA_DIR");
-  return d && *d ? d : "../shared/data";
-}
-
-vtkSmartPointer<vtkUnstructuredGrid> Tetrahedralize(vtkDataSet* data)
-{
-  if (!data)
-  {
-    return nullptr;
-  }
-  vtkNew<vtkDataSetTriangleFilter> tets;
-  tets->SetInputData(data);
-  tets->Update();
-  vtkSmartPointer<vtkUnstructuredGrid> grid = tets->GetOutput();
-  return grid;
-}
-
-vtkSmartPointer<vtkUnstructuredGrid> Generated(int n)
-{
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(n + 1, n + 1, n + 1);
-  image->SetSpacing(1.0 / n, 1.0 / n, 1.0 / n);
-  vtkNew<vtkDoubleArray> field;
-  field->SetName("field");
-  field->SetNumberOfTuples(image->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
-  {
-    double x[3];
-    image->GetPoint(i, x);
-    field->SetValue(i, std::sin(6 * x[0]) * std::cos(5 * x[1]) + x[2]);
-  }
-  image->GetPointData()->SetScalars(field);
-  return Tetrahedralize(image);
-}
-
-vtkSmartPointer<vtkUnstructuredGrid> Load(const std::string& name)
-{
-  if (name == "gen1M")
-    return Generated(60);
-  if (name == "gen4M")
-    return Generated(94);
-  if (name == "gen10M")
-    return Generated(127);
-  if (name == "loxpostvtk")
-  {
-    vtkNew<vtkUnstructuredGridReader> reader;
-    reader->SetFileName((DataDir() + "/post.vtk").c_str());
-    reader->Update();
-    vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
-    grid->GetPointData()->SetActiveScalars("Pressure");
-    return grid;
-  }
-  const std::string stem = name == "bluntfin" ? "bluntfin" : name == "combustor" ? "comb" : "post";
-  vtkNew<vtkMultiBlockPLOT3DReader> reader;
-  reader->SetXYZFileName((DataDir() + "/" + stem + "xyz.bin").c_str());
-  reader->SetQFileName((DataDir() + "/" + stem + "q.bin").c_str());
-  reader->AutoDetectFormatOn();
-  reader->SetScalarFunctionNumber(name == "loxpost" ? 110 : 100);
-  reader->Update();
-  return Tetrahedralize(vtkDataSet::SafeDownCast(reader->GetOutput()->GetBlock(0)));
-}
-
 /// Not empty, not opaque; every opacity node is a colour node (so that VTK's
 /// linear ray integrator integrates it exactly).
 vtkSmartPointer<vtkVolumeProperty> MakeProperty(vtkUnstructuredGrid* grid)
@@ -206,41 +146,6 @@ vtkSmartPointer<vtkVolumeProperty> MakeProperty(vtkUnstructuredGrid* grid)
   property->SetScalarOpacityUnitDistance(grid->GetLength() / 8.0);
   property->ShadeOff();
   return property;
-}
-
-/// View i of the 14: 6 axis directions, then 8 cube diagonals.
-void PlaceCamera(vtkCamera* camera, vtkUnstructuredGrid* grid, int view)
-{
-  static const double axes[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 },
-    { 0, 0, 1 }, { 0, 0, -1 } };
-  double d[3];
-  if (view < 6)
-  {
-    std::copy(axes[view], axes[view] + 3, d);
-  }
-  else
-  {
-    const int b = view - 6;
-    d[0] = (b & 1) ? 1 : -1;
-    d[1] = (b & 2) ? 1 : -1;
-    d[2] = (b & 4) ? 1 : -1;
-  }
-  const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  double bounds[6], centre[3];
-  grid->GetBounds(bounds);
-  for (int k = 0; k < 3; ++k)
-  {
-    centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
-  }
-  const double radius = 0.5 * grid->GetLength();
-  const double distance = radius / std::sin(0.5 * 30.0 * M_PI / 180.0);
-  camera->SetViewAngle(30.0);
-  camera->SetFocalPoint(centre);
-  camera->SetPosition(centre[0] + distance * d[0] / norm, centre[1] + distance * d[1] / norm,
-    centre[2] + distance * d[2] / norm);
-  const bool vertical = view == 2 || view == 3;
-  camera->SetViewUp(vertical ? 1 : 0, vertical ? 0 : 1, 0);
-  camera->SetClippingRange(distance - radius * 1.01, distance + radius * 1.01);
 }
 
 double PeakMegabytes()
@@ -302,7 +207,7 @@ double Median(std::vector<double> v)
 int RunWorker(const Options& o)
 {
   const std::string dataset = o.DataSets.at(0), config = o.Configs.at(0);
-  vtkSmartPointer<vtkUnstructuredGrid> grid = Load(dataset);
+  vtkSmartPointer<vtkUnstructuredGrid> grid = vtkHAVSDataSets::Load(dataset);
   if (!grid || grid->GetNumberOfCells() == 0 || !grid->GetPointData()->GetScalars())
   {
     std::cerr << "cannot load " << dataset << std::endl;
@@ -323,7 +228,7 @@ int RunWorker(const Options& o)
     vtkNew<vtkCamera> camera;
     for (int view = 0; view < o.Views; ++view)
     {
-      PlaceCamera(camera, grid, view);
+      vtkHAVSStandardViews::PlaceCamera(camera, grid, view);
       bool computed = false;
       const double t0 = vtkTimerLog::GetUniversalTime();
       ReferenceImage(o, dataset, grid, property, camera, view, &computed);
@@ -344,7 +249,7 @@ int RunWorker(const Options& o)
     const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
     for (int view = 0; view < o.Views; ++view)
     {
-      PlaceCamera(camera, grid, view);
+      vtkHAVSStandardViews::PlaceCamera(camera, grid, view);
       double eye[3], dop[3];
       camera->GetPosition(eye);
       camera->GetDirectionOfProjection(dop);
@@ -396,8 +301,8 @@ int RunWorker(const Options& o)
         {
           m->SetVisibilityOrderToMPVO(); // exact object-space order (issue 8)
           m->SetNonConvexMethod(config.find("-convex") != std::string::npos
-              ? vtkHAVSVolumeMapper::NonConvexConvexification
-              : vtkHAVSVolumeMapper::NonConvexBoundaryLayers);
+              ? vtkHAVSVisibilityOrder::NonConvexConvexification
+              : vtkHAVSVisibilityOrder::NonConvexBoundaryLayers);
         }
         else if (config.find("-auto") != std::string::npos)
         {
@@ -449,7 +354,7 @@ int RunWorker(const Options& o)
     volume->SetProperty(property);
     renderer->AddVolume(volume);
     vtkCamera* camera = renderer->GetActiveCamera();
-    PlaceCamera(camera, grid, 0);
+    vtkHAVSStandardViews::PlaceCamera(camera, grid, 0);
     window->Render(); // warm-up: faces, tables, shaders (twice: drivers compile lazily)
     if (config != "zsweep" && config != "raycast")
     {
@@ -458,7 +363,7 @@ int RunWorker(const Options& o)
     double rendering = 0.0; // the budget counts rendering only, not the reference
     for (int view = 0; view < o.Views; ++view)
     {
-      PlaceCamera(camera, grid, view);
+      vtkHAVSStandardViews::PlaceCamera(camera, grid, view);
       for (int r = 0; r < o.Repeats; ++r)
       {
         if (havs)
@@ -473,10 +378,10 @@ int RunWorker(const Options& o)
         frame.push_back(1000.0 * seconds);
         if (havs)
         {
-          sort.push_back(1000.0 * havs->GetLastSortSeconds());
-          draw.push_back(1000.0 * havs->GetLastDrawSeconds());
-          flush.push_back(1000.0 * havs->GetLastFlushSeconds());
-          composite.push_back(1000.0 * havs->GetLastCompositeSeconds());
+          sort.push_back(1000.0 * havs->GetLastFrameStatistics()->GetSortSeconds());
+          draw.push_back(1000.0 * havs->GetLastFrameStatistics()->GetDrawSeconds());
+          flush.push_back(1000.0 * havs->GetLastFrameStatistics()->GetFlushSeconds());
+          composite.push_back(1000.0 * havs->GetLastFrameStatistics()->GetCompositeSeconds());
         }
       }
       if (config != "raster-bound")

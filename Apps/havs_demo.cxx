@@ -10,6 +10,7 @@
 #include "vtkHAVSImageMetrics.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSRenderWindowFactory.h"
+#include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -323,9 +324,9 @@ int main(int argc, char* argv[])
       run.FrameSeconds.push_back(vtkTimerLog::GetUniversalTime() - start);
       if (entry.second == havs.Get())
       {
-        run.Sort.push_back(havs->GetLastSortSeconds());
-        run.Draw.push_back(havs->GetLastDrawSeconds());
-        run.Flush.push_back(havs->GetLastFlushSeconds());
+        run.Sort.push_back(havs->GetLastFrameStatistics()->GetSortSeconds());
+        run.Draw.push_back(havs->GetLastFrameStatistics()->GetDrawSeconds());
+        run.Flush.push_back(havs->GetLastFrameStatistics()->GetFlushSeconds());
       }
     }
     runs.push_back(run);

@@ -21,11 +21,13 @@
 // computes the required k; it prints the totals as a Markdown row. --image
 // writes the exact image of the first view, --k-image its required-k image
 // (green k <= 2, yellow k <= 6, red k > 6).
+#include "vtkHAVSDataSets.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFaceSorter.h"
 #include "vtkHAVSVisibilityOrder.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSSoftwareKBuffer.h"
+#include "vtkHAVSStandardViews.h"
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -57,102 +59,6 @@
 
 namespace
 {
-std::string DataDir()
-{
-  const char* d = std::getenv("HAVS_DATA_DIR");
-  return d && *d ? d : "../shared/data";
-}
-
-vtkSmartPointer<vtkUnstructuredGrid> Tetrahedralize(vtkDataSet* data)
-{
-  if (!data)
-  {
-    return nullptr;
-  }
-  vtkNew<vtkDataSetTriangleFilter> tets;
-  tets->SetInputData(data);
-  tets->Update();
-  vtkSmartPointer<vtkUnstructuredGrid> grid = tets->GetOutput();
-  return grid;
-}
-
-vtkSmartPointer<vtkUnstructuredGrid> Load(const std::string& dataset, const std::string& input)
-{
-  if (!input.empty())
-  {
-    vtkSmartPointer<vtkDataSet> data;
-    if (input.size() > 4 && input.substr(input.size() - 4) == ".vtu")
-    {
-      vtkNew<vtkXMLUnstructuredGridReader> reader;
-      reader->SetFileName(input.c_str());
-      reader->Update();
-      data = reader->GetOutput();
-    }
-    else
-    {
-      vtkNew<vtkUnstructuredGridReader> reader;
-      reader->SetFileName(input.c_str());
-      reader->Update();
-      data = reader->GetOutput();
-    }
-    return Tetrahedralize(data);
-  }
-  if (dataset == "loxpostvtk")
-  {
-    vtkNew<vtkUnstructuredGridReader> reader;
-    reader->SetFileName((DataDir() + "/post.vtk").c_str());
-    reader->Update();
-    vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
-    grid->GetPointData()->SetActiveScalars("Pressure");
-    return grid;
-  }
-  const std::string stem = dataset == "bluntfin" ? "bluntfin" : dataset == "combustor" ? "comb" : "post";
-  const int function = dataset == "loxpost" ? 110 : 100;
-  vtkNew<vtkMultiBlockPLOT3DReader> reader;
-  reader->SetXYZFileName((DataDir() + "/" + stem + "xyz.bin").c_str());
-  reader->SetQFileName((DataDir() + "/" + stem + "q.bin").c_str());
-  reader->AutoDetectFormatOn();
-  reader->SetScalarFunctionNumber(function);
-  reader->Update();
-  return Tetrahedralize(vtkDataSet::SafeDownCast(reader->GetOutput()->GetBlock(0)));
-}
-
-/// View direction i of the 14: 6 axes, then 8 cube diagonals.
-void ViewDirection(int i, double d[3])
-{
-  static const double axes[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 },
-    { 0, 0, 1 }, { 0, 0, -1 } };
-  if (i < 6)
-  {
-    std::copy(axes[i], axes[i] + 3, d);
-    return;
-  }
-  const int b = i - 6;
-  d[0] = (b & 1) ? 1 : -1;
-  d[1] = (b & 2) ? 1 : -1;
-  d[2] = (b & 4) ? 1 : -1;
-}
-
-void PlaceCamera(vtkCamera* camera, vtkUnstructuredGrid* grid, int view)
-{
-  double bounds[6], centre[3], d[3];
-  grid->GetBounds(bounds);
-  for (int k = 0; k < 3; ++k)
-  {
-    centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
-  }
-  ViewDirection(view, d);
-  const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  const double radius = 0.5 * grid->GetLength();
-  const double distance = radius / std::sin(0.5 * 30.0 * M_PI / 180.0);
-  camera->SetViewAngle(30.0);
-  camera->SetFocalPoint(centre);
-  camera->SetPosition(centre[0] + distance * d[0] / norm, centre[1] + distance * d[1] / norm,
-    centre[2] + distance * d[2] / norm);
-  camera->SetViewUp(std::fabs(d[1]) > 0.9 * norm && view < 6 ? 1 : 0, std::fabs(d[1]) > 0.9 * norm && view < 6 ? 0 : 1, 0);
-  camera->SetClippingRange(distance - radius * 1.01, distance + radius * 1.01);
-}
-
 void WritePNG(vtkDataArray* scalars, int size, const std::string& path)
 {
   vtkNew<vtkImageData> image;
@@ -195,7 +101,8 @@ int main(int argc, char* argv[])
       return a == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
     }
   }
-  vtkSmartPointer<vtkUnstructuredGrid> grid = Load(dataset, input);
+  vtkSmartPointer<vtkUnstructuredGrid> grid =
+    input.empty() ? vtkHAVSDataSets::Load(dataset) : vtkHAVSDataSets::ReadFile(input);
   if (!grid || grid->GetNumberOfCells() == 0 || !grid->GetPointData()->GetScalars())
   {
     std::cerr << "havs_reference: could not load a tetrahedral mesh with point scalars\n";
@@ -238,7 +145,7 @@ int main(int argc, char* argv[])
   const double start = vtkTimerLog::GetUniversalTime();
   for (int view = 0; view < views; ++view)
   {
-    PlaceCamera(camera, grid, view);
+    vtkHAVSStandardViews::PlaceCamera(camera, grid, view);
     if (!reference->ComputeFragments())
     {
       return EXIT_FAILURE;

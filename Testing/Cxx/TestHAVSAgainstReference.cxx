@@ -20,7 +20,11 @@
 //   the pixels whose required k is <= 14 (the others are counted and
 //   excluded);
 // - negative controls that must miss the bounds: k = 1, and an 8^3 table.
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestScenes.h"
+
+#include "vtkHAVSDataSets.h"
 
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
@@ -71,13 +75,13 @@ void Exclude(vtkFloatArray* a, vtkFloatArray* b, vtkIntArray* requiredK, int k)
 }
 }
 
-int main(int argc, char* argv[])
+int TestHAVSAgainstReference(int argc, char* argv[])
 {
   const std::string dataset = argc > 1 ? argv[1] : "loxpostvtk";
   const double rmseBound = argc > 2 ? std::atof(argv[2]) : 0.005;
   const double maxBound = argc > 3 ? std::atof(argv[3]) : 0.1;
   const int size = argc > 4 ? std::atoi(argv[4]) : 128;
-  vtkSmartPointer<vtkUnstructuredGrid> grid = havstest::ReadDataSet(dataset);
+  vtkSmartPointer<vtkUnstructuredGrid> grid = vtkHAVSDataSets::Load(dataset);
   if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "data set read: " + dataset))
   {
     return EXIT_FAILURE;
@@ -196,5 +200,5 @@ int main(int argc, char* argv[])
 
   std::vector<float> exactPixels(exact->GetPointer(0), exact->GetPointer(0) + 4 * size * size);
   havstest::WritePNG(exactPixels, size, size, dataset + "_reference.png");
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

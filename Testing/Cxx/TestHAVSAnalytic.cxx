@@ -14,7 +14,11 @@
 // - a linear scalar ramp along the view with opacity linear in the scalar:
 //   optical depth tau_max * L / 2, to 1e-3;
 // - negative control: the ramp with a 2x2x2 table must miss the 1e-3 bound.
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestScenes.h"
+
+#include "vtkHAVSDataSets.h"
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -110,12 +114,12 @@ double RenderBox(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, double 
 }
 }
 
-int main()
+int TestHAVSAnalytic(int, char*[])
 {
   const double c[3] = { 0.2, 0.6, 0.9 };
 
   // Constant: tau = opacity / unit distance = 0.5 / 0.5 = 1 per unit, L = 1.
-  auto constant = havstest::MakeBox(4, 4, 4, 0.25, 0.5, 0.0);
+  auto constant = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.5, 0.0);
   auto constantProperty = havstest::MakeConstantProperty(c[0], c[1], c[2], 0.5, 0.5);
   Expectation e1{ 1.0 - std::exp(-1.0), { c[0], c[1], c[2] } };
   havstest::Check(RenderBox(constant, constantProperty, 1.0, 128, e1, "analytic_constant") <= 1e-3,
@@ -127,7 +131,7 @@ int main()
 
   // Ramp: s = z over [0, 1], opacity(s) = s, unit distance 1: tau(z) = z,
   // optical depth 1/2.
-  auto ramp = havstest::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
+  auto ramp = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
   auto rampProperty = havstest::MakeConstantProperty(c[0], c[1], c[2], 1.0, 1.0);
   rampProperty->GetScalarOpacity()->RemoveAllPoints();
   rampProperty->GetScalarOpacity()->AddPoint(0.0, 0.0);
@@ -140,5 +144,5 @@ int main()
   const double coarse = RenderBox(ramp, rampProperty, 1.0, 2, e3, "analytic_ramp_table2");
   havstest::Check(coarse > 1e-3, "negative control: a 2^3 table misses the 1e-3 bound");
 
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

@@ -9,14 +9,23 @@
 =========================================================================*/
 // Bad input gets a clear error or warning and a defined result: no crash, no
 // NaN pixel, and a good input afterwards renders correctly (no corrupted
-// later frame).
-#include "vtkHAVSTestUtilities.h"
+// later frame). The defined result of a frame with an error is nothing: the
+// window shows the background and no float result is kept; a frame without
+// one keeps a finite float result and draws something. Controls: AllFinite
+// sees a NaN, and the background check fails on a drawn frame.
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestMessages.h"
+#include "havsTestScenes.h"
+
+#include "vtkHAVSDataSets.h"
 
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkDoubleArray.h"
+#include "vtkHAVSVisibilityOrder.h"
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkHexahedron.h"
 #include "vtkNew.h"
@@ -43,6 +52,36 @@ struct Outcome
   std::string Text;
 };
 
+bool AllZeroAlphaBackground(const std::vector<float>& rgba)
+{
+  for (size_t p = 0; p < rgba.size() / 4; ++p)
+  {
+    if (rgba[4 * p] != 0.0f || rgba[4 * p + 1] != 0.0f || rgba[4 * p + 2] != 0.0f)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// A frame with an error draws nothing and keeps no result; a frame without
+/// one keeps a finite result and draws something.
+void CheckDefinedResult(int errors, const std::vector<float>& window,
+  const std::vector<float>& result, const std::string& name)
+{
+  if (errors > 0)
+  {
+    havstest::Check(AllZeroAlphaBackground(window) && result.empty(),
+      name + ": after the error nothing is drawn and no result kept");
+  }
+  else
+  {
+    havstest::Check(!result.empty() && havstest::AllFinite(result),
+      name + ": a finite float result");
+    havstest::Check(!AllZeroAlphaBackground(window), name + ": something drawn");
+  }
+}
+
 Outcome RenderOnce(vtkUnstructuredGrid* grid, const std::string& name)
 {
   auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
@@ -61,21 +100,20 @@ Outcome RenderOnce(vtkUnstructuredGrid* grid, const std::string& name)
   out.Result = havstest::FloatResult(mapper);
   std::cout << name << ": " << out.Errors << " errors, " << out.Warnings << " warnings: "
             << out.Text << std::endl;
-  havstest::Check(havstest::AllFinite(out.Window), name + ": finite window");
-  havstest::Check(havstest::AllFinite(out.Result), name + ": finite result");
+  CheckDefinedResult(messages->Errors, out.Window, out.Result, name);
 
-  // The exact orders on the same input: no crash, nothing non-finite.
+  // The exact orders on the same input: no crash, the same defined result.
   const char* orders[3] = { "MPVO + convexification", "MPVO + boundary layers", "Automatic" };
   for (int o = 0; o < 3; ++o)
   {
     vtkNew<vtkHAVSVolumeMapper> exact;
     exact->KeepFloatResultOn();
-    havstest::CountMessages(exact); // messages already checked above
+    havstest::Messages* exactMessages = havstest::CountMessages(exact);
     if (o < 2)
     {
       exact->SetVisibilityOrderToMPVO();
-      exact->SetNonConvexMethod(o == 0 ? vtkHAVSVolumeMapper::NonConvexConvexification
-                                       : vtkHAVSVolumeMapper::NonConvexBoundaryLayers);
+      exact->SetNonConvexMethod(o == 0 ? vtkHAVSVisibilityOrder::NonConvexConvexification
+                                       : vtkHAVSVisibilityOrder::NonConvexBoundaryLayers);
     }
     else
     {
@@ -84,9 +122,8 @@ Outcome RenderOnce(vtkUnstructuredGrid* grid, const std::string& name)
     auto other = havstest::MakeScene(grid, exact, property, 48, 48);
     other.Renderer->ResetCamera(0, 1, 0, 1, 0, 1);
     other.Window->Render();
-    havstest::Check(havstest::AllFinite(havstest::ReadRGBA(other.Window)) &&
-        havstest::AllFinite(havstest::FloatResult(exact)),
-      name + ", " + orders[o] + ": finite window and result");
+    CheckDefinedResult(exactMessages->Errors, havstest::ReadRGBA(other.Window),
+      havstest::FloatResult(exact), name + ", " + orders[o]);
   }
   return out;
 }
@@ -96,21 +133,15 @@ bool Contains(const std::string& text, const std::string& what)
   return text.find(what) != std::string::npos;
 }
 
-bool AllZeroAlphaBackground(const std::vector<float>& rgba)
-{
-  for (size_t p = 0; p < rgba.size() / 4; ++p)
-  {
-    if (rgba[4 * p] != 0.0f || rgba[4 * p + 1] != 0.0f || rgba[4 * p + 2] != 0.0f)
-    {
-      return false;
-    }
-  }
-  return true;
-}
 }
 
-int main()
+int TestHAVSBadInput(int, char*[])
 {
+  // Controls: the checks of a defined result can fail.
+  havstest::Check(!havstest::AllFinite({ 0.5f, std::numeric_limits<float>::quiet_NaN() }),
+    "control: AllFinite sees a NaN");
+  havstest::Check(!AllZeroAlphaBackground({ 0.0f, 0.0f, 0.0f, 1.0f, 0.2f, 0.0f, 0.0f, 1.0f }),
+    "control: a drawn pixel is not background");
   // Empty grid.
   {
     vtkNew<vtkUnstructuredGrid> empty;
@@ -120,7 +151,7 @@ int main()
   }
   // No scalars.
   {
-    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
     grid->GetPointData()->SetScalars(nullptr);
     grid->GetPointData()->RemoveArray("s");
     Outcome o = RenderOnce(grid, "no scalars");
@@ -129,7 +160,7 @@ int main()
   }
   // NaN and infinite scalars.
   {
-    auto grid = havstest::MakeBox(3, 3, 3, 1.0 / 3, 0.0, 1.0);
+    auto grid = vtkHAVSDataSets::MakeBox(3, 3, 3, 1.0 / 3, 0.0, 1.0);
     vtkDataArray* s = grid->GetPointData()->GetScalars();
     s->SetComponent(0, 0, std::numeric_limits<double>::quiet_NaN());
     s->SetComponent(5, 0, std::numeric_limits<double>::infinity());
@@ -140,7 +171,7 @@ int main()
   }
   // All scalars NaN.
   {
-    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
     vtkDataArray* s = grid->GetPointData()->GetScalars();
     for (vtkIdType i = 0; i < s->GetNumberOfTuples(); ++i)
     {
@@ -151,7 +182,7 @@ int main()
   }
   // A hexahedron next to tetrahedra: skipped with a warning; only hexahedra: error.
   {
-    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
     vtkIdType hex[8] = { 0, 1, 4, 3, 9, 10, 13, 12 };
     grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
     Outcome o = RenderOnce(grid, "tets + a hexahedron");
@@ -168,7 +199,7 @@ int main()
   }
   // Degenerate (flat) tetrahedra among good ones.
   {
-    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
     vtkIdType flat[4] = { 0, 1, 2, 2 }; // repeated point
     grid->InsertNextCell(VTK_TETRA, 4, flat);
     vtkIdType coplanar[4] = { 0, 1, 3, 4 }; // four points in the plane z = 0
@@ -178,7 +209,7 @@ int main()
   }
   // Cell scalars: a clear error (not supported yet).
   {
-    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
     vtkNew<vtkDoubleArray> cellScalars;
     cellScalars->SetName("c");
     cellScalars->SetNumberOfTuples(grid->GetNumberOfCells());
@@ -191,7 +222,7 @@ int main()
   }
   // Unsupported property features: one warning each, not one per frame.
   {
-    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
     auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
     property->ShadeOn();
     property->GetGradientOpacity()->AddPoint(0.0, 0.2);
@@ -209,7 +240,7 @@ int main()
   }
   // Huge coordinates: the box moved by 1e7 renders as the box at the origin.
   {
-    auto grid = havstest::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
+    auto grid = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
     auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
     vtkNew<vtkHAVSVolumeMapper> near, far;
     near->KeepFloatResultOn();
@@ -249,7 +280,7 @@ int main()
   }
   // A zero-size viewport: nothing happens, no error.
   {
-    auto grid = havstest::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
     auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
     vtkNew<vtkHAVSVolumeMapper> mapper;
     havstest::Messages* messages = havstest::CountMessages(mapper);
@@ -274,7 +305,7 @@ int main()
     camera->SetParallelScale(0.8);
     scene.Renderer->ResetCameraClippingRange();
     scene.Window->Render();
-    auto good = havstest::MakeBox(4, 4, 4, 0.25, 0.5, 0.0);
+    auto good = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.5, 0.0);
     mapper->SetInputData(good);
     scene.Window->Render();
     const std::vector<float> result = havstest::FloatResult(mapper);
@@ -283,5 +314,5 @@ int main()
     havstest::Check(std::fabs(alpha - (1.0 - std::exp(-1.0))) < 1e-3,
       "a good input after a bad one renders the closed form");
   }
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

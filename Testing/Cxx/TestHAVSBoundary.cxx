@@ -27,10 +27,15 @@
 //
 // Usage: TestHAVSBoundary [scene...] (default: all but the data-set scenes
 // marked long in CMake, which pass their names).
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestScenes.h"
+
+#include "vtkHAVSDataSets.h"
 
 #include "vtkHAVSFaceSorter.h"
 #include "vtkHAVSReferenceRenderer.h"
+#include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSVolumeMapper.h"
 
 #include "vtkActor.h"
@@ -140,7 +145,7 @@ void CheckMesh(const std::string& name, vtkUnstructuredGrid* grid, double azimut
   const std::vector<float> exact = Reference(grid, property, scene.Renderer);
 
   const auto tagged = RenderWith(scene, mapper, [] {});
-  havstest::Check(!mapper->IsInputConvex() && mapper->GetLastTagging(),
+  havstest::Check(!mapper->IsInputConvex() && mapper->GetLastFrameStatistics()->GetTagging(),
     name + ": detected as non-convex, tagged");
   const auto ignore = RenderWith(scene, mapper, [&] { mapper->SetBoundaryModeToIgnore(); });
   const auto gap = RenderWith(scene, mapper, [&] { mapper->SetBoundaryModeToGapLength(); });
@@ -184,7 +189,7 @@ void CheckMesh(const std::string& name, vtkUnstructuredGrid* grid, double azimut
 
 void TestConvexBox()
 {
-  auto grid = havstest::MakeBox(8, 8, 8, 0.125, 0.0, 1.0);
+  auto grid = vtkHAVSDataSets::MakeBox(8, 8, 8, 0.125, 0.0, 1.0);
   auto property = havstest::MakeRampPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> mapper;
   mapper->KeepFloatResultOn();
@@ -192,9 +197,9 @@ void TestConvexBox()
   havstest::PlaceCamera(scene.Renderer, 30.0, 20.0, false);
   const auto automatic = RenderWith(scene, mapper, [] {});
   havstest::Check(mapper->IsInputConvex(), "box: detected as convex");
-  havstest::Check(!mapper->GetLastTagging(), "box: convex, so no tagging (pays nothing)");
+  havstest::Check(!mapper->GetLastFrameStatistics()->GetTagging(), "box: convex, so no tagging (pays nothing)");
   const auto tagged = RenderWith(scene, mapper, [&] { mapper->SetBoundaryModeToTagging(); });
-  havstest::Check(mapper->GetLastTagging(), "box: tagging when asked");
+  havstest::Check(mapper->GetLastFrameStatistics()->GetTagging(), "box: tagging when asked");
   const auto d = havstest::Compare(automatic, tagged);
   Print("convex box", "untagged (automatic) vs tagged", d);
   havstest::Check(d.Max < 1e-4, "box: tagging cannot change a convex mesh's image");
@@ -202,7 +207,7 @@ void TestConvexBox()
 
 void TestOpaqueSphere()
 {
-  auto grid = havstest::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
+  auto grid = vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
   auto property = havstest::MakeRampPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> mapper;
   mapper->KeepFloatResultOn();
@@ -260,7 +265,7 @@ void TestCameraInside(const std::string& name, vtkUnstructuredGrid* grid, const 
     }
   };
   const auto havs = RenderWith(scene, mapper, choosePath);
-  havstest::Check(mapper->GetLastPlaneCount() >= 1 && mapper->GetLastSectionTriangles() > 0,
+  havstest::Check(mapper->GetLastFrameStatistics()->GetPlaneCount() >= 1 && mapper->GetLastFrameStatistics()->GetSectionTriangles() > 0,
     name + ": the near plane cuts the mesh, its section is drawn");
   const auto noSection = RenderWith(scene, mapper, [&] {
     choosePath();
@@ -294,12 +299,12 @@ void TestCameraInsideMeshes(bool bluntFin)
 {
   if (!bluntFin)
   {
-    auto box = havstest::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
+    auto box = vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
     const double eye[3] = { 0.3, 0.35, 0.4 }, direction[3] = { 1.0, 0.4, 0.3 };
     TestCameraInside("camera inside box", box, eye, direction, false);
     return;
   }
-  auto grid = havstest::ReadDataSet("bluntfin");
+  auto grid = vtkHAVSDataSets::Load("bluntfin");
   if (!havstest::Check(grid != nullptr, "blunt fin read"))
   {
     return;
@@ -316,7 +321,7 @@ void TestCameraInsideMeshes(bool bluntFin)
 void TestClippingPlanes(bool parallel)
 {
   const std::string name = parallel ? "clip planes parallel" : "clip planes";
-  auto grid = havstest::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
+  auto grid = vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
   auto property = havstest::MakeRampPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> mapper;
   mapper->KeepFloatResultOn();
@@ -343,7 +348,7 @@ void TestClippingPlanes(bool parallel)
     }
     mapper->SetClippingPlanes(planes);
     const auto havs = RenderWith(scene, mapper, [] {});
-    const int planesUsed = mapper->GetLastPlaneCount();
+    const int planesUsed = mapper->GetLastFrameStatistics()->GetPlaneCount();
     const auto noSection = RenderWith(scene, mapper, [&] { mapper->PlaneSectionsOff(); });
     const auto perturbed =
       RenderWith(scene, mapper, [&] { mapper->GetFaceSorter()->SetBlockReversal(40); });
@@ -378,7 +383,7 @@ void TestClippingPlanes(bool parallel)
 /// than without it.
 void TestTranslucentActor()
 {
-  auto grid = havstest::MakeBox(8, 8, 8, 0.125, 0.0, 1.0);
+  auto grid = vtkHAVSDataSets::MakeBox(8, 8, 8, 0.125, 0.0, 1.0);
   auto property = havstest::MakeRampPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> havs;
   havs->KeepFloatResultOn();
@@ -459,7 +464,7 @@ void TestTranslucentActor()
 }
 }
 
-int main(int argc, char* argv[])
+int TestHAVSBoundary(int argc, char* argv[])
 {
   std::set<std::string> scenes;
   for (int i = 1; i < argc; ++i)
@@ -473,24 +478,24 @@ int main(int argc, char* argv[])
   }
   if (run("wavelet"))
   {
-    CheckMesh("wavelet", havstest::ThresholdedWavelet(), 30.0, 20.0, false, false);
+    CheckMesh("wavelet", vtkHAVSDataSets::Load("wavelet"), 30.0, 20.0, false, false);
   }
   if (run("hollowsphere"))
   {
-    CheckMesh("hollowsphere", havstest::HollowSphere(), 20.0, 10.0, false, false);
+    CheckMesh("hollowsphere", vtkHAVSDataSets::Load("hollowsphere"), 20.0, 10.0, false, false);
   }
   if (run("torus"))
   {
-    CheckMesh("torus", havstest::Torus(), 10.0, 55.0, false, false);
+    CheckMesh("torus", vtkHAVSDataSets::Load("torus"), 10.0, 55.0, false, false);
   }
   if (run("twoblocks"))
   {
-    CheckMesh("twoblocks", havstest::TwoBlocks(), 75.0, 10.0, false, true);
-    CheckMesh("twoblocks-parallel", havstest::TwoBlocks(), 75.0, 10.0, true, true);
+    CheckMesh("twoblocks", vtkHAVSDataSets::Load("twoblocks"), 75.0, 10.0, false, true);
+    CheckMesh("twoblocks-parallel", vtkHAVSDataSets::Load("twoblocks"), 75.0, 10.0, true, true);
   }
   if (run("loxpost"))
   {
-    auto grid = havstest::ReadDataSet("loxpostvtk");
+    auto grid = vtkHAVSDataSets::Load("loxpostvtk");
     if (havstest::Check(grid != nullptr, "LOX post read"))
     {
       CheckMesh("loxpost", grid, 30.0, 20.0, false, false);
@@ -517,5 +522,5 @@ int main(int argc, char* argv[])
   {
     TestTranslucentActor();
   }
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

@@ -38,7 +38,9 @@
 //   convexification (NonConvexIgnore) the wavelet needs k > 2.
 //   `TestHAVSConvexification order <mesh>...` prints the figures per view
 //   (meshes: the four above, a data set name, "<mesh> rotated").
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
+
+#include "vtkHAVSDataSets.h"
 
 #include "vtkCamera.h"
 #include "vtkHAVSConvexification.h"
@@ -644,7 +646,7 @@ vtkSmartPointer<vtkUnstructuredGrid> OrderMesh(const std::string& name)
     auto grid = OrderMesh(name.substr(0, name.size() - rotated.size()));
     return grid ? Transformed(grid, 0.37, { 0.3, -0.5, 0.8 }, 0.7, { 0.1, 0.2, -0.3 }) : grid;
   }
-  return havstest::LoadMesh(name);
+  return vtkHAVSDataSets::Load(name);
 }
 
 /// e) The order of MPVO with the convexification is exact on the non-convex
@@ -681,14 +683,14 @@ void CheckOrders(const std::vector<std::string>& meshes, bool verbose)
 }
 }
 
-int main(int argc, char* argv[])
+int TestHAVSConvexification(int argc, char* argv[])
 {
   if (argc > 1 && std::string(argv[1]) == "order")
   {
     // Diagnostics: TestHAVSConvexification order <mesh>... (per-view figures).
     CheckOrders(std::vector<std::string>(argv + 2, argv + argc), true);
     std::printf("%s\n", havstest::Failures() ? "FAILED" : "passed");
-    return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+    return havstest::Result();
   }
   // a) A convex box.
   {
@@ -836,5 +838,5 @@ int main(int argc, char* argv[])
   CheckOrders({ "wavelet", "hollowsphere", "torus", "twoblocks", "wavelet rotated" }, false);
 
   std::printf("%s\n", havstest::Failures() ? "FAILED" : "passed");
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

@@ -32,7 +32,11 @@
 // Negative controls that must fail: on the real data sets the centroid order
 // at k = 2; on the non-convex test meshes MPVO alone. Automatic must take MPVO
 // in every view where the centroid order overflowed, and be exact.
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestScenes.h"
+
+#include "vtkHAVSDataSets.h"
 
 #include "vtkCamera.h"
 #include "vtkDoubleArray.h"
@@ -42,6 +46,7 @@
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSSoftwareKBuffer.h"
 #include "vtkHAVSVisibilityOrder.h"
+#include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkIntArray.h"
 #include "vtkMatrix4x4.h"
@@ -157,7 +162,7 @@ int CycleScene(int size)
     view.Window->Render();
     const auto k1 = havstest::Compare(havstest::FloatResult(mapper), exact);
     const vtkIdType k1Violations = mapper->GetLastOrderViolations();
-    const vtkIdType reported = mapper->GetLastCycleBreaks();
+    const vtkIdType reported = mapper->GetLastFrameStatistics()->GetCycleBreaks();
     mapper->SetKBufferSize(std::max(needed, 2));
     view.Window->Render();
     const auto kn = havstest::Compare(havstest::FloatResult(mapper), exact);
@@ -179,7 +184,7 @@ int CycleScene(int size)
     havstest::Check(k1Violations > 0 && k1.Max > 0.01,
       what + "negative control: k = 1 is not exact (max > 0.01) and says so");
   }
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }
 
 /// Diagnostics: a pixel's exact fragments, each with its face's draw rank in
@@ -217,7 +222,7 @@ struct OrderResult
 
 }
 
-int main(int argc, char* argv[])
+int TestHAVSExactOrder(int argc, char* argv[])
 {
   const std::string scene = argc > 1 ? argv[1] : "wavelet";
   const int size = argc > 2 ? std::atoi(argv[2]) : 128;
@@ -225,7 +230,7 @@ int main(int argc, char* argv[])
   {
     return CycleScene(size);
   }
-  auto grid = havstest::LoadMesh(scene);
+  auto grid = vtkHAVSDataSets::Load(scene);
   if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "scene " + scene + " loads"))
   {
     return EXIT_FAILURE;
@@ -268,8 +273,8 @@ int main(int argc, char* argv[])
   convexified->SetNonConvexMethod(vtkHAVSVisibilityOrder::NonConvexConvexification);
   layered->SetNonConvexMethod(vtkHAVSVisibilityOrder::NonConvexBoundaryLayers);
   vtkHAVSVisibilityOrder* mpvo[3] = { alone, convexified, layered };
-  const int mapperMethods[3] = { vtkHAVSVolumeMapper::NonConvexIgnore,
-    vtkHAVSVolumeMapper::NonConvexConvexification, vtkHAVSVolumeMapper::NonConvexBoundaryLayers };
+  const int mapperMethods[3] = { vtkHAVSVisibilityOrder::NonConvexIgnore,
+    vtkHAVSVisibilityOrder::NonConvexConvexification, vtkHAVSVisibilityOrder::NonConvexBoundaryLayers };
   vtkNew<vtkHAVSSoftwareKBuffer> analysis;
   vtkNew<vtkIntArray> requiredK;
 
@@ -422,7 +427,7 @@ int main(int argc, char* argv[])
     // edge), the order itself is right.
     auto classifyViolations = [&](const std::vector<int>& k) {
       vtkNew<vtkIntArray> where;
-      const int logged = mapper->GetLastOrderViolationPixels(where);
+      const int logged = mapper->GetLastFrameStatistics()->GetOrderViolationPixels(where);
       std::pair<long long, long long> counts(mapper->GetLastOrderViolations() - logged, 0);
       for (int i = 0; i < logged; ++i)
       {
@@ -465,7 +470,7 @@ int main(int argc, char* argv[])
       if (o > 1 && mapper->GetLastOrderViolations() > 0 && debug)
       {
         vtkNew<vtkIntArray> where;
-        for (int i = 0; i < std::min(mapper->GetLastOrderViolationPixels(where), 3); ++i)
+        for (int i = 0; i < std::min(mapper->GetLastFrameStatistics()->GetOrderViolationPixels(where), 3); ++i)
         {
           const int x = where->GetComponent(i, 0), y = where->GetComponent(i, 1);
           std::printf("view %d, %s: order violation at (%d, %d)%s:\n", v, r.Name, x, y,
@@ -481,7 +486,7 @@ int main(int argc, char* argv[])
     }
     // Automatic: MPVO as soon as the centroid order overflows k = 2.
     mapper->SetVisibilityOrderToAutomatic();
-    mapper->SetNonConvexMethod(vtkHAVSVolumeMapper::NonConvexBoundaryLayers); // the default
+    mapper->SetNonConvexMethod(vtkHAVSVisibilityOrder::NonConvexBoundaryLayers); // the default
     view.Window->Render();
     const bool usedMPVO =
       mapper->GetLastVisibilityOrder() == vtkHAVSVolumeMapper::VisibilityOrderMPVO;
@@ -541,5 +546,5 @@ int main(int argc, char* argv[])
     automaticMPVO, automaticWrong, automaticViolations);
   havstest::Check(automaticWrong == 0 && automaticViolations == 0,
     "Automatic takes MPVO where the centroid order overflows, and its frames are exact");
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

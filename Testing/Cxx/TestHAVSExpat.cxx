@@ -19,7 +19,9 @@
 //                          the fix is for is real here; where it has none, they
 //                          must succeed.
 // Either way the program first says which expat it runs with.
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestImages.h"
+
+#include "vtkHAVSDataSets.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
@@ -138,7 +140,7 @@ int main(int argc, char* argv[])
     return EXIT_FAILURE;
   }
 
-  auto grid = havstest::MakeBox(12, 12, 12, 0.1, 0.0, 1.0);
+  auto grid = vtkHAVSDataSets::MakeBox(12, 12, 12, 0.1, 0.0, 1.0);
   int same = 0;
   const char* const modes[] = { "appended-raw", "appended-base64", "binary", "ascii" };
   for (const char* m : modes)

@@ -12,7 +12,8 @@
 // inverted cells, degenerate and non-tetrahedral cells, failures, and a closed
 // outward surface by the divergence theorem on tetrahedralized blocks (VTK's
 // vtkDataSetTriangleFilter, and a shuffled, randomly inverted Kuhn grid).
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
+#include "havsTestMessages.h"
 
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkHAVSFaceSet.h"
@@ -268,7 +269,7 @@ vtkSmartPointer<vtkUnstructuredGrid> ShuffledKuhnGrid(int n, unsigned seed)
 }
 }
 
-int main()
+int TestHAVSFaceSet(int, char*[])
 {
   vtkNew<vtkHAVSFaceSet> faces;
   const havstest::Messages* messages = havstest::CountMessages(faces);
@@ -390,5 +391,5 @@ int main()
   havstest::Check(printed.str().find("NumberOfBoundaryFaces: " +
                     std::to_string(12 * n * n)) != std::string::npos,
     "PrintSelf prints the counts");
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

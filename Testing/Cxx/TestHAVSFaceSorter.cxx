@@ -14,7 +14,8 @@
 // direction, projection, matrix, face set, Invalidate) re-sorts; block
 // reversal moves each face at most block - 1 places. Negative controls: an
 // order made for other keys fails the ascending check.
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
+#include "havsTestMessages.h"
 
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkHAVSFaceSet.h"
@@ -112,7 +113,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Block(int nx, int ny, int nz, double h, con
 }
 }
 
-int main()
+int TestHAVSFaceSorter(int, char*[])
 {
   const double zero[3] = { 0, 0, 0 };
   auto grid = Block(6, 5, 4, 0.2, zero);
@@ -210,5 +211,5 @@ int main()
     "a null face set is an error");
   std::cout << faces->GetNumberOfFaces() << " faces, last sort " << sorter->GetLastSortSeconds()
             << " s" << std::endl;
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

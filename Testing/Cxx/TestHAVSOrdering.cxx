@@ -15,7 +15,11 @@
 // suffices at 1000, not at 2000). At k = 14 the image equals the exact one
 // (fragment lists, which sort every pixel fully) and the unperturbed k = 14
 // image within 1/255; at k = 1 it is measurably different (negative control).
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestScenes.h"
+
+#include "vtkHAVSDataSets.h"
 
 #include "vtkHAVSFaceSorter.h"
 #include "vtkHAVSVolumeMapper.h"
@@ -28,9 +32,9 @@
 
 #include <cstdlib>
 
-int main()
+int TestHAVSOrdering(int, char*[])
 {
-  auto grid = havstest::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
+  auto grid = vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
   auto property = havstest::MakeRampProperty(0.0, 1.0, 0.9, 0.25);
   vtkNew<vtkHAVSVolumeMapper> mapper;
   mapper->KeepFloatResultOn();
@@ -38,7 +42,7 @@ int main()
   auto scene = havstest::MakeScene(grid, mapper, property, 96, 96);
   havstest::PlaceCamera(scene.Renderer, 30.0, 25.0, false);
   scene.Window->Render();
-  if (!vtkHAVSVolumeMapper::IsKBufferPathSupported(
+  if (!mapper->IsKBufferPathSupported(
         scene.Window, vtkHAVSVolumeMapper::KBufferPathFramebufferFetch))
   {
     std::cout << "No framebuffer fetch here: the ordering is checked through fragment lists "
@@ -77,5 +81,5 @@ int main()
   havstest::Check(b.FractionOver1 < 0.005, "same image as the sorted order");
   havstest::Check(c.RMSE > 10 * a.RMSE && c.FractionOver1 > 0.05,
     "negative control: k = 1 is measurably different");
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

@@ -15,7 +15,8 @@
 //   control (an 8^3 table must miss the bound);
 // - IntegrateSegment composes: (f -> b, L) = (f -> m, L/2) over (m -> b, L/2);
 // - NeedsRebuild follows the property; degenerate inputs stay finite.
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
+#include "havsTestProperties.h"
 
 #include "vtkColorTransferFunction.h"
 #include "vtkHAVSPreIntegrationTable.h"
@@ -75,7 +76,7 @@ double MaxLookupError(vtkVolumeProperty* property, int resolution, double maxLen
 }
 }
 
-int main()
+int TestHAVSPreIntegrationTable(int, char*[])
 {
   const double range[2] = { 0.0, 1.0 };
   vtkNew<vtkHAVSPreIntegrationTable> table;
@@ -179,5 +180,5 @@ int main()
   vtkNew<vtkHAVSPreIntegrationTable> big;
   big->Build(fancy, 0, range, 1.0);
   std::cout << "128^3 table build: " << big->GetLastBuildSeconds() << " s" << std::endl;
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

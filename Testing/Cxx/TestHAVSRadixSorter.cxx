@@ -13,7 +13,7 @@
 // duplicates, negatives, special values, constant and presorted inputs), and is
 // stable. Negative control: sorting raw bit patterns (the classic mistake)
 // must be detected as wrong by the same comparison.
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
 
 #include "vtkHAVSRadixSorter.h"
 #include "vtkNew.h"
@@ -185,7 +185,7 @@ std::vector<float> Descending(size_t n, std::mt19937&)
 }
 }
 
-int main()
+int TestHAVSRadixSorter(int, char*[])
 {
   CheckKeyMap();
 
@@ -226,5 +226,5 @@ int main()
   std::iter_swap(tie, tie + 1);
   havstest::Check(!SortedAndStable(keys, unstable),
     "negative control: swapped equal keys fail the stability check");
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

@@ -17,7 +17,11 @@
 //   centres on the grid lines) hit exactly one entry and one exit face of the
 //   convex block — never missed, never doubled; and the same at oblique views;
 // - against VTK's vtkUnstructuredGridVolumeRayCastMapper on the LOX post.
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestScenes.h"
+
+#include "vtkHAVSDataSets.h"
 
 #include "vtkCamera.h"
 #include "vtkDoubleArray.h"
@@ -143,14 +147,14 @@ double Chord(const double v[4][3], const double origin[3], const double dir[3])
 }
 }
 
-int main()
+int TestHAVSReference(int, char*[])
 {
   vtkNew<vtkHAVSReferenceRenderer> ref;
   vtkNew<vtkCamera> camera;
   ref->SetCamera(camera);
 
   // Constant slab: tau = 0.5 / 0.25 = 2, L = 1.
-  auto box = havstest::MakeBox(4, 4, 4, 0.25, 0.5, 0.0);
+  auto box = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.5, 0.0);
   auto constant = havstest::MakeConstantProperty(0.2, 0.6, 0.9, 0.5, 0.25);
   ref->SetInputData(box);
   ref->SetProperty(constant);
@@ -169,7 +173,7 @@ int main()
   havstest::Check(ties > 0, "the aligned view does hit shared edges and vertices");
 
   // Linear ramp along the view: s = z, opacity(s) = s, unit distance 1.
-  auto ramp = havstest::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
+  auto ramp = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
   auto rampProperty = havstest::MakeConstantProperty(0.2, 0.6, 0.9, 1.0, 1.0);
   rampProperty->GetScalarOpacity()->RemoveAllPoints();
   rampProperty->GetScalarOpacity()->AddPoint(0.0, 0.0);
@@ -259,7 +263,7 @@ int main()
   havstest::Check(worst < 1e-6, "single tetrahedron to 1e-6");
 
   // Against VTK's ray-cast mapper (linear integrator) on the LOX post.
-  auto post = havstest::ReadLoxPostVtk();
+  auto post = vtkHAVSDataSets::Load("loxpostvtk");
   if (havstest::Check(post != nullptr, "LOX post read"))
   {
     auto property = havstest::MakeRampPropertyFor(post);
@@ -299,5 +303,5 @@ int main()
               << ", pixels > 4/255: " << 100 * metrics->GetFractionOver4() << " %" << std::endl;
     havstest::Check(metrics->GetRMSE() < 0.01, "reference agrees with the ray-cast mapper");
   }
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

@@ -10,7 +10,9 @@
 // The render-window factory gives a working headless window: an opaque
 // sphere renders (pixels differ from the background), the backend is the one
 // asked for, and the window survives a resize and a second window.
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestScenes.h"
 
 #include "vtkActor.h"
 #include "vtkHAVSEGLRenderWindow.h"
@@ -38,7 +40,7 @@ int CountLitPixels(vtkRenderWindow* window)
 }
 }
 
-int main()
+int TestHAVSRenderWindow(int, char*[])
 {
   const std::string backend = vtkHAVSRenderWindowFactory::GetSelectedBackend();
   std::cout << "selected backend: " << backend << std::endl;
@@ -96,5 +98,5 @@ int main()
   std::cout << "lit pixels at 200x150 after the second window: " << litAgain << std::endl;
   havstest::Check(litAgain == litResized, "the first window still renders the same");
 
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

@@ -18,7 +18,11 @@
 // - an opaque actor intersecting the volume: rays end at its surface, the
 //   last segment cut there (closed form for a constant slab);
 // - maximum / minimum intensity blend: the extremal scalar's colour.
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestScenes.h"
+
+#include "vtkHAVSDataSets.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -79,7 +83,7 @@ float PixelAlpha(const std::vector<float>& rgba, int width, int i, int j)
 
 void TestVolumeMatrix()
 {
-  auto grid = havstest::MakeBox(6, 6, 6, 1.0 / 6, 0.0, 1.0);
+  auto grid = vtkHAVSDataSets::MakeBox(6, 6, 6, 1.0 / 6, 0.0, 1.0);
   auto property = havstest::MakeRampProperty(0.0, 1.0, 0.7, 0.4);
   vtkNew<vtkTransform> transform;
   transform->Translate(0.3, -0.2, 0.1);
@@ -111,7 +115,7 @@ void TestVolumeMatrix()
 
 void TestResizeReleaseAndTwoWindows()
 {
-  auto grid = havstest::MakeBox(5, 5, 5, 0.2, 0.0, 1.0);
+  auto grid = vtkHAVSDataSets::MakeBox(5, 5, 5, 0.2, 0.0, 1.0);
   auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
   vtkNew<vtkHAVSVolumeMapper> mapper;
   mapper->KeepFloatResultOn();
@@ -179,7 +183,7 @@ void TestResizeReleaseAndTwoWindows()
 
 void TestTwoVolumesAndViewports()
 {
-  auto grid = havstest::MakeBox(4, 4, 4, 0.25, 0.5, 0.0);
+  auto grid = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.5, 0.0);
   auto property = havstest::MakeConstantProperty(kColor[0], kColor[1], kColor[2], 0.5, 0.5);
   const float expected = static_cast<float>(1.0 - std::exp(-1.0));
 
@@ -244,7 +248,7 @@ void TestTwoVolumesAndViewports()
 void TestOpaqueGeometry()
 {
   // Constant slab [0,1]^3 seen from +z; an opaque plane at z = 0.5 covers x < 0.5.
-  auto grid = havstest::MakeBox(4, 4, 4, 0.25, 0.5, 0.0);
+  auto grid = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.5, 0.0);
   auto property = havstest::MakeConstantProperty(kColor[0], kColor[1], kColor[2], 0.5, 0.5);
   vtkNew<vtkHAVSVolumeMapper> mapper;
   mapper->KeepFloatResultOn();
@@ -285,7 +289,7 @@ void TestOpaqueGeometry()
 void TestExtremumBlend()
 {
   // s = z over [0, 1]: the maximum along every ray through the box is 1, the minimum 0.
-  auto grid = havstest::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
+  auto grid = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
   auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
   // Opaque enough at both ends that neither answer is zero.
   property->GetScalarOpacity()->RemoveAllPoints();
@@ -326,12 +330,12 @@ void TestExtremumBlend()
 }
 }
 
-int main()
+int TestHAVSScenes(int, char*[])
 {
   TestVolumeMatrix();
   TestResizeReleaseAndTwoWindows();
   TestTwoVolumesAndViewports();
   TestOpaqueGeometry();
   TestExtremumBlend();
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

@@ -14,9 +14,10 @@
 // (glslang does not know EXT_shader_framebuffer_fetch on desktop GL); Mesa
 // compiles it in every rendering test. Negative control: a broken source must
 // be rejected, so that a missing or permissive validator cannot pass the test.
-#include "vtkHAVSTestUtilities.h"
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
 
-#include "vtkHAVSKBufferRenderer.h"
+#include "vtkHAVSVolumeMapper.h"
 #include "vtkHAVSKBufferShaders.h"
 
 #include <cstdlib>
@@ -39,7 +40,7 @@ bool Validate(const std::string& source, const std::string& name, const std::str
 }
 }
 
-int main()
+int TestHAVSShaderSources(int, char*[])
 {
   if (!havstest::Check(std::system("glslangValidator --version > /dev/null 2>&1") == 0,
         "glslangValidator is installed (Debian package glslang-tools)"))
@@ -60,13 +61,13 @@ int main()
   check(vtkHAVSKBufferShaders::ExtremumDrawShader(), "extremum_draw", "frag");
   check(vtkHAVSKBufferShaders::ExtremumResolveShader(), "extremum_resolve", "frag");
   check(vtkHAVSKBufferShaders::CompositeShader(), "composite", "frag");
-  check(vtkHAVSKBufferShaders::ResolveShader(vtkHAVSKBufferRenderer::FragmentLists, 1, true),
+  check(vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true),
     "list_resolve_vote", "frag");
-  check(vtkHAVSKBufferShaders::ResolveShader(vtkHAVSKBufferRenderer::FragmentLists, 1, false),
+  check(vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, false),
     "list_resolve", "frag");
   for (int k : { 1, 2, 3, 6, 13, 14 })
   {
-    check(vtkHAVSKBufferShaders::ResolveShader(vtkHAVSKBufferRenderer::FramebufferFetch, k, false),
+    check(vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, k, false),
       "fetch_resolve_k" + std::to_string(k), "frag");
   }
   for (int k : { 1, 2, 3, 6, 14, 15, 32, 64 })
@@ -75,9 +76,9 @@ int main()
     check(vtkHAVSKBufferShaders::InterlockDrawShader(k, vtkHAVSKBufferShaders::InterlockARB), "interlock_draw" + suffix, "frag");
     check(vtkHAVSKBufferShaders::InterlockClearShader(k), "interlock_clear" + suffix, "frag");
     check(vtkHAVSKBufferShaders::ResolveShader(
-            vtkHAVSKBufferRenderer::FragmentShaderInterlock, k, false),
+            vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock, k, false),
       "interlock_resolve" + suffix, "frag");
   }
   std::cout << checked << " shader sources checked with glslangValidator" << std::endl;
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return havstest::Result();
 }

@@ -16,9 +16,17 @@
 // within the RMSE bound given on the command line (see Testing/README.md for
 // why that bound); the same bound with k = 1 and a 4^3 table must FAIL
 // (negative control). vtkProjectedTetrahedraMapper and
-// vtkUnstructuredGridVolumeZSweepMapper are rendered in the same test and
-// their RMSE printed.
-#include "vtkHAVSTestUtilities.h"
+// vtkUnstructuredGridVolumeZSweepMapper are rendered in the same test: each
+// must draw the same picture (the pixels the ray caster draws and no others,
+// both ways on all but 10 %; measured: PT covers 96 %, ZSweep 98 %) within a
+// loose RMSE bound of their own (they are
+// not exact: PT integrates the transfer function between the vertices
+// linearly, ZSweep samples); the control: an empty image fails the coverage.
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestScenes.h"
+
+#include "vtkHAVSDataSets.h"
 
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
@@ -53,14 +61,41 @@ std::vector<float> RenderWith(vtkUnstructuredGrid* grid, vtkAbstractVolumeMapper
   havstest::WritePNG(rgba, size, size, name + ".png");
   return rgba;
 }
+
+/// The share of `a`'s drawn pixels (a colour above 1/255) that `b` draws too.
+double Covered(const std::vector<float>& a, const std::vector<float>& b)
+{
+  size_t drawn = 0, both = 0;
+  for (size_t p = 0; p + 3 < a.size() && a.size() == b.size(); p += 4)
+  {
+    const bool inA = a[p] + a[p + 1] + a[p + 2] > 1.0f / 255.0f;
+    const bool inB = b[p] + b[p + 1] + b[p + 2] > 1.0f / 255.0f;
+    drawn += inA ? 1 : 0;
+    both += inA && inB ? 1 : 0;
+  }
+  return drawn > 0 ? double(both) / double(drawn) : 0.0;
 }
 
-int main(int argc, char* argv[])
+/// A stock mapper's image is the scene's: the same pixels drawn, within `bound`.
+void CheckStock(const std::string& name, const std::vector<float>& image,
+  const std::vector<float>& reference, double bound)
+{
+  const auto d = havstest::Compare(image, reference);
+  const double drawn = Covered(reference, image), extra = Covered(image, reference);
+  std::cout << name << ": RMSE " << d.RMSE << ", max " << d.Max << ", covers "
+            << 100 * drawn << " % of the ray caster's pixels, " << 100 * extra
+            << " % of its own inside them" << std::endl;
+  havstest::Check(drawn > 0.9 && extra > 0.9, name + " draws the scene's pixels");
+  havstest::Check(d.RMSE < bound, name + " within its loose RMSE bound");
+}
+}
+
+int TestHAVSStockMappers(int argc, char* argv[])
 {
   const std::string dataset = argc > 1 ? argv[1] : "loxpostvtk";
   const double bound = argc > 2 ? std::atof(argv[2]) : 0.02;
   const int size = argc > 3 ? std::atoi(argv[3]) : 128;
-  vtkSmartPointer<vtkUnstructuredGrid> grid = havstest::ReadDataSet(dataset);
+  vtkSmartPointer<vtkUnstructuredGrid> grid = vtkHAVSDataSets::Load(dataset);
   if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "data set read: " + dataset))
   {
     return EXIT_FAILURE;
@@ -106,22 +141,24 @@ int main(int argc, char* argv[])
   std::cout << "HAVS k=1, 4^3 table (negative control): RMSE " << db.RMSE << std::endl;
   havstest::Check(db.RMSE > bound, "negative control: k = 1 and a 4^3 table miss the bound");
 
+  // The stock mappers: the same scene, within their own loose bound.
+  const double stockBound = argc > 4 ? std::atof(argv[4]) : 0.05;
   vtkNew<vtkProjectedTetrahedraMapper> pt;
   const auto ptImage = RenderWith(grid, pt, property, size, dataset + "_pt", &t);
-  const auto dp = havstest::Compare(ptImage, reference);
-  std::cout << "ProjectedTetrahedra: " << t << " s, RMSE " << dp.RMSE << ", max " << dp.Max
-            << std::endl;
+  std::cout << "ProjectedTetrahedra: " << t << " s" << std::endl;
+  CheckStock("ProjectedTetrahedra", ptImage, reference, stockBound);
 
   vtkNew<vtkUnstructuredGridVolumeZSweepMapper> zsweep;
   zsweep->SetImageSampleDistance(1.0);
   zsweep->AutoAdjustSampleDistancesOff();
   zsweep->SetRayIntegrator(vtkNew<vtkUnstructuredGridLinearRayIntegrator>());
   const auto zImage = RenderWith(grid, zsweep, property, size, dataset + "_zsweep", &t);
-  const auto dz = havstest::Compare(zImage, reference);
-  std::cout << "ZSweep (linear integrator): " << t << " s, RMSE " << dz.RMSE << ", max "
-            << dz.Max << std::endl;
-  havstest::Check(havstest::AllFinite(ptImage) && havstest::AllFinite(zImage),
-    "stock mappers rendered");
+  std::cout << "ZSweep (linear integrator): " << t << " s" << std::endl;
+  CheckStock("ZSweep", zImage, reference, stockBound);
 
-  return havstest::Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  // Control: an empty image does not cover the scene.
+  const std::vector<float> empty(reference.size(), 0.0f);
+  havstest::Check(Covered(reference, empty) < 0.5, "control: an empty image fails the coverage");
+
+  return havstest::Result();
 }

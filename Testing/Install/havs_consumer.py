@@ -45,6 +45,7 @@ centre = [rgba.GetComponent(32 * 64 + 32, c) for c in range(3)]
 corner = [rgba.GetComponent(0, c) for c in range(3)]
 print("havs_consumer.py: %s, path %s, centre RGB %s, corner RGB %s"
       % (mapper.GetClassName(), mapper.GetActiveKBufferPathName(), centre, corner))
-ok = sum(centre) > 0.3 and sum(corner) == 0.0
+ok = (sum(centre) > 0.3 and sum(corner) == 0.0
+      and mapper.GetClassName() == "vtkOpenGLHAVSVolumeMapper")
 print("havs_consumer.py: " + ("PASS" if ok else "FAIL: the volume is not drawn where it should be"))
 sys.exit(0 if ok else 1)

@@ -74,8 +74,9 @@ rep = display.GetClientSideObject().GetActiveRepresentation()
 check(rep.GetClassName() == "vtkHAVSUnstructuredGridVolumeRepresentation",
       "the active representation is %s" % rep.GetClassName())
 mapper = rep.GetActiveVolumeMapper()
-check(mapper.GetClassName() == "vtkHAVSVolumeMapper",
-      "the active mapper is %s" % mapper.GetClassName())
+check(mapper.GetClassName() == "vtkOpenGLHAVSVolumeMapper"
+      and mapper.IsA("vtkHAVSVolumeMapper"),
+      "the active mapper is %s (the OpenGL override of vtkHAVSVolumeMapper)" % mapper.GetClassName())
 check(mapper.GetKBufferSize() == 14, "k = 14 set from Python reached the mapper")
 display.HAVSKBufferSize = 8
 Render(view)
@@ -156,7 +157,8 @@ if args.mode == "serial":
     check(fin_rep.GetClassName() == "vtkHAVSStructuredGridVolumeRepresentation",
           "structured grid: the active representation is %s" % fin_rep.GetClassName())
     fin_mapper = fin_rep.GetActiveVolumeMapper()
-    check(fin_mapper.GetClassName() == "vtkHAVSVolumeMapper",
+    check(fin_mapper.GetClassName() == "vtkOpenGLHAVSVolumeMapper"
+          and fin_mapper.IsA("vtkHAVSVolumeMapper"),
           "structured grid: the active mapper is %s" % fin_mapper.GetClassName())
     fin_name = os.path.join(args.out, "havs_plugin_structured.png")
     SaveScreenshot(fin_name, view, ImageResolution=[SIZE, SIZE])

@@ -86,7 +86,7 @@ check(abs(red - 0.2 * expected) < 1e-3, "centre red is 0.2 * opacity")
 # A transfer-function edit redraws without a re-sort.
 opacity.AddPoint(0.5, 0.25)
 window.Render()
-check(mapper.GetLastSortReused(), "a transfer-function edit reuses the sort")
+check(mapper.GetLastFrameStatistics().GetOrderReused(), "a transfer-function edit reuses the sort")
 mapper.GetFloatResult(result, size)
 check(result.GetComponent(centre, 3) < alpha - 0.05, "the edit changes the image")
 

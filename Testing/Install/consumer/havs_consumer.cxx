@@ -32,6 +32,7 @@
 
 #include <cstdlib>
 #include <iostream>
+#include <string>
 
 int main()
 {
@@ -92,6 +93,13 @@ int main()
   std::cout << "havs_consumer: " << mapper->GetClassName() << ", path "
             << mapper->GetActiveKBufferPathName() << ", centre RGB " << centre[0] << " "
             << centre[1] << " " << centre[2] << ", corner RGB sum " << cornerSum << std::endl;
+  if (std::string(mapper->GetClassName()) != "vtkOpenGLHAVSVolumeMapper")
+  {
+    std::cerr << "havs_consumer: FAIL: vtkHAVSVolumeMapper::New() did not give the OpenGL "
+                 "override (vtk_module_autoinit of vtkHAVS::OpenGL)"
+              << std::endl;
+    return EXIT_FAILURE;
+  }
   if (!(centreSum > 0.3f) || cornerSum != 0.0f)
   {
     std::cerr << "havs_consumer: FAIL: the volume is not drawn where it should be" << std::endl;

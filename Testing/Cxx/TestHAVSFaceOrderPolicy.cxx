@@ -1,0 +1,210 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSFaceOrderPolicy.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+// vtkHAVSFaceOrderPolicy without OpenGL: which order a frame draws, and that
+// each order is made again exactly when what it depends on changed.
+// - Centroid: the same view twice reuses the order (nothing sorted, nothing
+//   gathered, the draw-order version unchanged); a new eye sorts again, and
+//   the draw triangles are the centroid sorter's order.
+// - MPVO: the same; a view along the other diagonal gives another order; a
+//   new mesh build makes a new one; its order is front to back (the first
+//   face drawn is nearer the eye than the last).
+// - Switching Centroid -> MPVO -> Centroid with the view unchanged sorts
+//   nothing again (each order is kept), it only gathers.
+// - Automatic: a probe in the centroid order; a clean probe keeps it, a
+//   probe with violations makes MPVO the order (no probe after that) for
+//   this mesh, k and path; another k probes again.
+// - No order needed (extremum blend modes): Order -1, the faces once.
+// - Every draw order is a permutation of the mesh's faces.
+// Controls: Invalidate() makes the same view sort again (the reuse check can
+// fail), and the reversed centroid order fails the front-to-back check.
+#include "havsTestChecks.h"
+
+#include "vtkHAVSDataSets.h"
+#include "vtkHAVSFaceOrderPolicy.h"
+#include "vtkHAVSFaceSet.h"
+#include "vtkHAVSFaceSorter.h"
+#include "vtkHAVSMesh.h"
+#include "vtkHAVSViewFrame.h"
+#include "vtkHAVSVolumeMapper.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace
+{
+/// A perspective view from `eye` towards the mesh's centre, no volume matrix.
+vtkHAVSViewFrame View(const double eye[3], const double centre[3])
+{
+  vtkHAVSViewFrame v;
+  vtkMatrix4x4::Identity(v.GridToWorld);
+  vtkMatrix4x4::Identity(v.GridToClip);
+  vtkMatrix4x4::Identity(v.ModelToEyeRelative);
+  vtkMatrix4x4::Identity(v.ModelToClip);
+  vtkMatrix4x4::Identity(v.ClipToEyeRelative);
+  double d[3], n = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    v.EyeWorld[k] = v.EyeGrid[k] = eye[k];
+    d[k] = centre[k] - eye[k];
+    n += d[k] * d[k];
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    v.DirectionWorld[k] = v.DirectionGrid[k] = d[k] / std::sqrt(n);
+  }
+  v.Width = v.Height = 64;
+  return v;
+}
+
+/// The faces (as sorted point triples) of the draw triangles.
+std::vector<std::array<uint32_t, 3>> Faces(const std::vector<uint32_t>& triangles)
+{
+  std::vector<std::array<uint32_t, 3>> faces;
+  for (size_t i = 0; i + 2 < triangles.size(); i += 3)
+  {
+    std::array<uint32_t, 3> f = { triangles[i], triangles[i + 1], triangles[i + 2] };
+    std::sort(f.begin(), f.end());
+    faces.push_back(f);
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
+}
+
+/// Distance from the eye to a draw triangle's centroid.
+double Distance(vtkHAVSMesh* mesh, const std::vector<uint32_t>& triangles, size_t t,
+  const double eye[3])
+{
+  double d2 = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    double c = 0.0;
+    for (int i = 0; i < 3; ++i)
+    {
+      c += mesh->GetPoints()[3 * triangles[3 * t + i] + k] + mesh->GetShift()[k];
+    }
+    d2 += (c / 3.0 - eye[k]) * (c / 3.0 - eye[k]);
+  }
+  return std::sqrt(d2);
+}
+}
+
+int TestHAVSFaceOrderPolicy(int, char*[])
+{
+  vtkSmartPointer<vtkUnstructuredGrid> grid = vtkHAVSDataSets::MakeBox(6, 5, 4, 0.2, 0.0, 1.0);
+  vtkNew<vtkHAVSMesh> mesh;
+  vtkHAVSMesh::ScalarSelection selection;
+  havstest::Check(mesh->Build(grid, selection), "mesh built: " + mesh->GetError());
+  const auto allFaces = Faces(mesh->GetFaceSet()->GetFaceVertices());
+  const double centre[3] = { 0.6, 0.5, 0.4 };
+  const double eyeA[3] = { 4.0, 3.0, 2.5 }, eyeB[3] = { -3.0, -2.0, -2.5 };
+  const vtkHAVSViewFrame viewA = View(eyeA, centre), viewB = View(eyeB, centre);
+  const int centroid = vtkHAVSVolumeMapper::VisibilityOrderCentroid;
+  const int mpvo = vtkHAVSVolumeMapper::VisibilityOrderMPVO;
+
+  vtkNew<vtkHAVSFaceOrderPolicy> policy;
+  vtkHAVSFaceSorter* sorter = policy->GetCentroidSorter();
+
+  // Centroid: made once per view.
+  policy->SetVisibilityOrder(centroid);
+  vtkHAVSFaceOrderPolicy::Plan plan = policy->Begin(mesh, 2, 1, true, true);
+  havstest::Check(plan.Order == centroid && !plan.Probe, "Centroid: the plan is the centroid order");
+  policy->Prepare(plan, mesh, grid, viewA);
+  const vtkMTimeType first = policy->GetDrawOrderVersion();
+  const vtkIdType sorts = sorter->GetNumberOfSorts();
+  havstest::Check(!policy->GetLastReused() && policy->GetLastOrder() == centroid,
+    "Centroid: the first frame sorts");
+  havstest::Check(Faces(policy->GetDrawTriangles()) == allFaces,
+    "Centroid: the draw order is a permutation of the faces");
+  policy->Prepare(plan, mesh, grid, viewA);
+  havstest::Check(policy->GetLastReused() && policy->GetDrawOrderVersion() == first &&
+      sorter->GetNumberOfSorts() == sorts,
+    "Centroid: the same view reuses the order (nothing sorted or gathered)");
+  policy->Invalidate();
+  policy->Prepare(plan, mesh, grid, viewA);
+  havstest::Check(!policy->GetLastReused() && sorter->GetNumberOfSorts() == sorts + 1,
+    "control: after Invalidate() the same view sorts again");
+  const std::vector<uint32_t> centroidA = policy->GetDrawTriangles();
+  const size_t n = centroidA.size() / 3;
+  havstest::Check(Distance(mesh, centroidA, 0, eyeA) < Distance(mesh, centroidA, n - 1, eyeA),
+    "Centroid: front to back (first face nearer than the last)");
+  policy->Prepare(plan, mesh, grid, viewB);
+  havstest::Check(!policy->GetLastReused() && policy->GetDrawTriangles() != centroidA,
+    "Centroid: a new eye sorts again, into another order");
+  havstest::Check(Distance(mesh, centroidA, 0, eyeB) > Distance(mesh, centroidA, n - 1, eyeB),
+    "control: the order made for the other eye is back to front from this one");
+
+  // MPVO: made once per view, front to back.
+  policy->SetVisibilityOrder(mpvo);
+  plan = policy->Begin(mesh, 2, 1, true, true);
+  havstest::Check(plan.Order == mpvo && !plan.Probe, "MPVO: the plan is the exact order");
+  havstest::Check(policy->Prepare(plan, mesh, grid, viewA), "MPVO: the order is made");
+  const std::vector<uint32_t> exactA = policy->GetDrawTriangles();
+  const vtkMTimeType exactVersion = policy->GetDrawOrderVersion();
+  havstest::Check(policy->GetLastOrder() == mpvo && !policy->GetLastReused() &&
+      Faces(exactA) == allFaces,
+    "MPVO: a permutation of the faces, newly made");
+  havstest::Check(Distance(mesh, exactA, 0, eyeA) < Distance(mesh, exactA, n - 1, eyeA),
+    "MPVO: front to back");
+  policy->Prepare(plan, mesh, grid, viewA);
+  havstest::Check(policy->GetLastReused() && policy->GetDrawOrderVersion() == exactVersion,
+    "MPVO: the same view reuses the order");
+  policy->Prepare(plan, mesh, grid, viewB);
+  havstest::Check(!policy->GetLastReused() && policy->GetDrawTriangles() != exactA,
+    "MPVO: the opposite view makes another order");
+
+  // Switching orders with the view unchanged gathers, sorts nothing again.
+  policy->Prepare(plan, mesh, grid, viewA);
+  policy->SetVisibilityOrder(centroid);
+  const vtkIdType sortsBefore = sorter->GetNumberOfSorts();
+  policy->Prepare(policy->Begin(mesh, 2, 1, true, true), mesh, grid, viewB);
+  policy->Prepare(policy->Begin(mesh, 2, 1, true, true), mesh, grid, viewA);
+  havstest::Check(sorter->GetNumberOfSorts() == sortsBefore + 1 &&
+      policy->GetDrawTriangles() == centroidA,
+    "switching back to the centroid order for a view it was made for only gathers");
+
+  // A new mesh build: a new order.
+  grid->Modified();
+  havstest::Check(mesh->NeedsBuild(grid, selection), "a modified grid needs a new mesh");
+  mesh->Build(grid, selection);
+  policy->SetVisibilityOrder(mpvo);
+  policy->Prepare(policy->Begin(mesh, 2, 1, true, true), mesh, grid, viewA);
+  havstest::Check(!policy->GetLastReused(), "MPVO: a new mesh makes its order again");
+
+  // Automatic.
+  policy->SetVisibilityOrder(vtkHAVSVolumeMapper::VisibilityOrderAutomatic);
+  plan = policy->Begin(mesh, 2, 1, true, true);
+  havstest::Check(plan.Order == centroid && plan.Probe, "Automatic: a centroid probe first");
+  havstest::Check(policy->ProbeResult(0).Order == -1, "Automatic: a clean probe is the frame");
+  plan = policy->Begin(mesh, 2, 1, true, true);
+  havstest::Check(plan.Order == centroid && plan.Probe, "Automatic: still probing the centroid order");
+  const vtkHAVSFaceOrderPolicy::Plan again = policy->ProbeResult(7);
+  havstest::Check(again.Order == mpvo && !again.Probe,
+    "Automatic: a probe with violations is drawn again in the exact order");
+  plan = policy->Begin(mesh, 2, 1, true, true);
+  havstest::Check(plan.Order == mpvo && !plan.Probe, "Automatic: MPVO stays for this mesh, k, path");
+  plan = policy->Begin(mesh, 3, 1, true, true);
+  havstest::Check(plan.Order == centroid && plan.Probe, "Automatic: another k probes again");
+  plan = policy->Begin(mesh, 3, 1, true, false);
+  havstest::Check(!plan.Probe, "Automatic: no probe where none may be drawn (raster bound)");
+
+  // No order needed.
+  plan = policy->Begin(mesh, 2, 1, false, true);
+  havstest::Check(plan.Order == -1 && !plan.Probe, "extremum: no order");
+  policy->Prepare(plan, mesh, grid, viewB);
+  havstest::Check(policy->GetLastOrder() == -1 && Faces(policy->GetDrawTriangles()) == allFaces,
+    "extremum: the faces in some order, -1 reported");
+  return havstest::Result();
+}

@@ -1,0 +1,50 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    havsTestChecks.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "havsTestChecks.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+namespace havstest
+{
+int& Failures()
+{
+  static int failures = 0;
+  return failures;
+}
+
+bool Check(bool condition, const std::string& what)
+{
+  if (!condition)
+  {
+    ++Failures();
+    std::cerr << "CHECK FAILED: " << what << std::endl;
+  }
+  return condition;
+}
+
+bool CheckNear(double a, double b, double tol, const std::string& what)
+{
+  const bool ok = std::isfinite(a) && std::isfinite(b) && std::fabs(a - b) <= tol;
+  if (!ok)
+  {
+    ++Failures();
+    std::cerr << "CHECK FAILED: " << what << ": " << a << " vs " << b << " (tol " << tol << ")"
+              << std::endl;
+  }
+  return ok;
+}
+
+int Result()
+{
+  return Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+}
+}

@@ -1,0 +1,47 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    havsTestScenes.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @file havsTestScenes.h
+ * @brief Scenes of the vtkHAVS tests: properties, windows, one volume in a renderer, cameras.
+ */
+#ifndef havsTestScenes_h
+#define havsTestScenes_h
+
+#include "havsTestProperties.h" // the scenes take these properties
+#include "vtkSmartPointer.h"
+
+class vtkAbstractVolumeMapper;
+class vtkRenderWindow;
+class vtkRenderer;
+class vtkUnstructuredGrid;
+class vtkVolume;
+class vtkVolumeProperty;
+
+namespace havstest
+{
+/// Render window from the project's factory, of the given size, no multisampling.
+vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height);
+
+/// A window of the factory with one renderer showing `grid` through `mapper`.
+struct VolumeScene
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkVolume> Volume;
+};
+VolumeScene MakeScene(vtkUnstructuredGrid* grid, vtkAbstractVolumeMapper* mapper,
+  vtkVolumeProperty* property, int width, int height);
+
+/// Places the camera: looking at the grid's centre from (azimuth, elevation)
+/// degrees, perspective unless parallel is set; resets the clipping range.
+void PlaceCamera(vtkRenderer* renderer, double azimuth, double elevation, bool parallel);
+}
+
+#endif

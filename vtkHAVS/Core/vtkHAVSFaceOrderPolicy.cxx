@@ -1,0 +1,205 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSFaceOrderPolicy.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSFaceOrderPolicy.h"
+
+#include "vtkHAVSFaceSet.h"
+#include "vtkHAVSFaceSorter.h"
+#include "vtkHAVSMesh.h"
+#include "vtkHAVSViewFrame.h"
+#include "vtkHAVSVisibilityOrder.h"
+#include "vtkHAVSVolumeMapper.h"
+#include "vtkObjectFactory.h"
+#include "vtkTimerLog.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkHAVSFaceOrderPolicy);
+
+vtkHAVSFaceOrderPolicy::vtkHAVSFaceOrderPolicy() = default;
+vtkHAVSFaceOrderPolicy::~vtkHAVSFaceOrderPolicy() = default;
+
+//------------------------------------------------------------------------------
+vtkHAVSFaceOrderPolicy::Plan vtkHAVSFaceOrderPolicy::Begin(
+  vtkHAVSMesh* mesh, int k, int path, bool needsOrder, bool canProbe)
+{
+  Plan plan;
+  if (!needsOrder)
+  {
+    plan.Order = -1;
+    return plan;
+  }
+  if (this->VisibilityOrder != vtkHAVSVolumeMapper::VisibilityOrderAutomatic)
+  {
+    plan.Order = this->VisibilityOrder;
+    return plan;
+  }
+  const AutomaticKey key{ mesh->GetBuildTime(), k, path };
+  if (!this->AutomaticDecided || !(key == this->LastAutomaticKey))
+  {
+    this->LastAutomaticKey = key;
+    this->AutomaticExact = false;
+    this->AutomaticDecided = true;
+  }
+  plan.Order = this->AutomaticExact ? vtkHAVSVolumeMapper::VisibilityOrderMPVO
+                                    : vtkHAVSVolumeMapper::VisibilityOrderCentroid;
+  plan.Probe = !this->AutomaticExact && canProbe;
+  return plan;
+}
+
+//------------------------------------------------------------------------------
+vtkHAVSFaceOrderPolicy::Plan vtkHAVSFaceOrderPolicy::ProbeResult(vtkIdType violations)
+{
+  Plan next;
+  next.Order = -1;
+  if (violations > 0)
+  {
+    this->AutomaticExact = true;
+    next.Order = vtkHAVSVolumeMapper::VisibilityOrderMPVO;
+  }
+  return next;
+}
+
+//------------------------------------------------------------------------------
+const std::vector<uint32_t>* vtkHAVSFaceOrderPolicy::MakeExactOrder(
+  vtkHAVSMesh* mesh, vtkUnstructuredGrid* grid, const vtkHAVSViewFrame& view, bool& changed)
+{
+  if (this->ExactMeshTime != mesh->GetBuildTime())
+  {
+    this->Exact->Build(mesh->GetFaceSet(), grid);
+    this->ExactMeshTime = mesh->GetBuildTime();
+    this->ExactValid = false;
+  }
+  ExactKey key;
+  key.Mesh = mesh->GetBuildTime();
+  std::copy(view.EyeGrid, view.EyeGrid + 3, key.Eye.begin());
+  std::copy(view.DirectionGrid, view.DirectionGrid + 3, key.Direction.begin());
+  key.Parallel = view.Parallel;
+  key.Method = this->NonConvexMethod;
+  if (this->NonConvexMethod == vtkHAVSVisibilityOrder::NonConvexBoundaryLayers &&
+    !this->Exact->IsMeshConvex())
+  {
+    // The boundary layers are sampled at this frame's pixels.
+    std::copy(view.GridToClip, view.GridToClip + 16, key.GridToClip.begin());
+    key.Width = view.Width;
+    key.Height = view.Height;
+  }
+  if (!this->ExactValid || !(key == this->LastExactKey))
+  {
+    this->Exact->SetNonConvexMethod(this->NonConvexMethod);
+    this->Exact->SetViewSampling(view.GridToClip, view.Width, view.Height);
+    this->Exact->Sort(view.EyeGrid, view.DirectionGrid, view.Parallel);
+    this->LastExactKey = key;
+    this->ExactValid = true;
+    changed = true;
+  }
+  const std::vector<uint32_t>& order = this->Exact->GetOrder();
+  if (static_cast<vtkIdType>(order.size()) != mesh->GetFaceSet()->GetNumberOfFaces())
+  {
+    this->ExactValid = false;
+    return nullptr;
+  }
+  return &order;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSFaceOrderPolicy::Prepare(const Plan& plan, vtkHAVSMesh* mesh,
+  vtkUnstructuredGrid* grid, const vtkHAVSViewFrame& view)
+{
+  const double start = vtkTimerLog::GetUniversalTime();
+  bool ok = true;
+  bool changed = false;
+  const std::vector<uint32_t>* order = nullptr;
+  int drawn = plan.Order;
+  if (plan.Order == vtkHAVSVolumeMapper::VisibilityOrderMPVO)
+  {
+    order = this->MakeExactOrder(mesh, grid, view, changed);
+    if (!order)
+    {
+      ok = false;
+      drawn = vtkHAVSVolumeMapper::VisibilityOrderCentroid;
+    }
+  }
+  if (drawn == vtkHAVSVolumeMapper::VisibilityOrderCentroid)
+  {
+    changed = this->Centroid->Sort(
+      mesh->GetFaceSet(), view.GridToWorld, view.EyeWorld, view.DirectionWorld, view.Parallel);
+    order = &this->Centroid->GetOrder();
+  }
+  // The draw triangles: gathered for a new order; any order will do without one.
+  const bool gather = changed || this->GatheredMesh != mesh->GetBuildTime() ||
+    (drawn >= 0 && this->GatheredOrder != drawn);
+  if (gather)
+  {
+    this->Gather(mesh, order);
+    this->GatheredOrder = drawn;
+  }
+  this->LastOrder = drawn;
+  this->LastReused = !gather;
+  this->LastSeconds = vtkTimerLog::GetUniversalTime() - start;
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_t>* order)
+{
+  vtkHAVSFaceSet* faces = mesh->GetFaceSet();
+  const std::vector<uint32_t>& faceVertices = faces->GetFaceVertices();
+  const std::vector<uint8_t>& boundary = faces->GetBoundaryFlags();
+  const vtkIdType numFaces = faces->GetNumberOfFaces();
+  this->DrawTriangles.resize(3 * numFaces);
+  this->DrawBoundary.resize(numFaces);
+  for (vtkIdType i = 0; i < numFaces; ++i)
+  {
+    const uint32_t f = order ? (*order)[i] : static_cast<uint32_t>(i);
+    this->DrawTriangles[3 * i] = faceVertices[3 * f];
+    this->DrawTriangles[3 * i + 1] = faceVertices[3 * f + 1];
+    this->DrawTriangles[3 * i + 2] = faceVertices[3 * f + 2];
+    this->DrawBoundary[i] = boundary[f];
+  }
+  this->GatheredMesh = mesh->GetBuildTime();
+  this->DrawOrderTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSFaceOrderPolicy::Invalidate()
+{
+  this->Centroid->Invalidate();
+  this->ExactValid = false;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkHAVSFaceOrderPolicy::GetLastCycleBreaks() const
+{
+  return this->LastOrder == vtkHAVSVolumeMapper::VisibilityOrderMPVO
+    ? this->Exact->GetNumberOfCycleBreaks()
+    : 0;
+}
+
+vtkIdType vtkHAVSFaceOrderPolicy::GetLastBoundaryRelations() const
+{
+  return this->Exact->GetNumberOfBoundaryRelations();
+}
+
+double vtkHAVSFaceOrderPolicy::GetLastBoundaryLayerSeconds() const
+{
+  return this->Exact->GetLastBoundaryLayerSeconds();
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSFaceOrderPolicy::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  const char* orders[] = { "Centroid", "MPVO", "Automatic" };
+  os << indent << "VisibilityOrder: " << orders[std::min(std::max(this->VisibilityOrder, 0), 2)]
+     << ", NonConvexMethod " << this->NonConvexMethod << "\n";
+  os << indent << "Last order: " << this->LastOrder << (this->LastReused ? " (reused)" : "")
+     << ", " << this->LastSeconds << " s\n";
+}

@@ -1,0 +1,191 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSFaceOrderPolicy.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSFaceOrderPolicy
+ * @brief   Which face order a frame draws, made only when its inputs changed.
+ *
+ * Plain C++, no OpenGL. Owns the two orders of vtkHAVSVolumeMapper and the
+ * choice between them:
+ * - Centroid: HAVS's sort of the face centroids by distance to the eye
+ *   (vtkHAVSFaceSorter; Callahan et al. 2005), nearly sorted, the k-buffer
+ *   finishes it;
+ * - MPVO: the exact front-to-back order of the tetrahedra (Williams 1992,
+ *   vtkHAVSVisibilityOrder), with the rays' re-entries of a non-convex mesh
+ *   from the boundary layers (after Krishnan, Silva and Wei 2001) or the
+ *   convexification (Kraus and Ertl 2001);
+ * - Automatic: the centroid order drawn as a probe (counted, not composited)
+ *   while the k-buffer keeps up with it; the first probe with order
+ *   violations makes MPVO the order for this mesh, k and path, and the frame
+ *   is drawn again.
+ *
+ * Each order is made again only when what it depends on changed: the mesh
+ * (its build time), the view in the grid's coordinates (eye, direction,
+ * projection; and, for the boundary layers, the pixels they are sampled at).
+ * Every key is a value compared with ==, nothing else. GetDrawTriangles()
+ * gives the faces' point ids in draw order, gathered once per new order.
+ */
+#ifndef vtkHAVSFaceOrderPolicy_h
+#define vtkHAVSFaceOrderPolicy_h
+
+#include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkNew.h"            // For vtkNew
+#include "vtkObject.h"
+
+#include <array>   // For std::array
+#include <cstdint> // For uint32_t
+#include <vector>  // For std::vector
+
+class vtkHAVSFaceSorter;
+class vtkHAVSMesh;
+class vtkHAVSViewFrame;
+class vtkHAVSVisibilityOrder;
+class vtkUnstructuredGrid;
+
+class VTKHAVSCORE_EXPORT vtkHAVSFaceOrderPolicy : public vtkObject
+{
+public:
+  static vtkHAVSFaceOrderPolicy* New();
+  vtkTypeMacro(vtkHAVSFaceOrderPolicy, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The order asked for (vtkHAVSVolumeMapper::VisibilityOrders) and the
+  /// exact order's non-convex method (vtkHAVSVisibilityOrder::NonConvexMethods).
+  vtkSetMacro(VisibilityOrder, int);
+  vtkGetMacro(VisibilityOrder, int);
+  vtkSetMacro(NonConvexMethod, int);
+  vtkGetMacro(NonConvexMethod, int);
+  ///@}
+
+  /// What a frame draws first: an order, and whether it is Automatic's probe.
+  struct Plan
+  {
+    int Order = 0;      ///< VisibilityOrders: Centroid or MPVO; -1 none (no order needed)
+    bool Probe = false; ///< draw it counted, composite it only if it has no violation
+  };
+
+  /**
+   * The plan of a frame. `needsOrder`: the blend mode composites (the
+   * extremum modes need none). `canProbe`: Automatic may draw a probe (not
+   * for a raster-bound benchmark frame). `k` and `path` are part of what
+   * Automatic's choice holds for.
+   */
+  Plan Begin(vtkHAVSMesh* mesh, int k, int path, bool needsOrder, bool canProbe);
+
+  /**
+   * Automatic: the probe had `violations`; when there were any, MPVO becomes
+   * the order (for this mesh, k and path) and the returned plan (MPVO, no
+   * probe) is what to draw again. Returns the plan to draw next, Order -1
+   * when nothing needs drawing again.
+   */
+  Plan ProbeResult(vtkIdType violations);
+
+  /**
+   * Makes the order of `plan` for the view (reused when its inputs are
+   * unchanged) and gathers the draw triangles. `grid` is the mesh's input
+   * (the exact order reads its points). Returns false when the exact order
+   * could not be made (the centroid order is then used, with an error).
+   */
+  bool Prepare(const Plan& plan, vtkHAVSMesh* mesh, vtkUnstructuredGrid* grid,
+    const vtkHAVSViewFrame& view);
+
+  ///@{
+  /// The faces in draw order: 3 point ids each, and 1 per boundary face.
+  const std::vector<uint32_t>& GetDrawTriangles() const { return this->DrawTriangles; }
+  const std::vector<uint8_t>& GetDrawBoundaryFlags() const { return this->DrawBoundary; }
+  /// Changes whenever the draw triangles do.
+  vtkMTimeType GetDrawOrderVersion() const { return this->DrawOrderTime.GetMTime(); }
+  ///@}
+
+  ///@{
+  /// The last Prepare(): the order drawn (-1 none), whether it was reused,
+  /// the seconds it took (sort and gather).
+  vtkGetMacro(LastOrder, int);
+  vtkGetMacro(LastReused, bool);
+  vtkGetMacro(LastSeconds, double);
+  /// The exact order's cycle breaks, boundary relations and their seconds.
+  vtkIdType GetLastCycleBreaks() const;
+  vtkIdType GetLastBoundaryRelations() const;
+  double GetLastBoundaryLayerSeconds() const;
+  ///@}
+
+  /// The next Prepare() makes its order again even for an unchanged view.
+  void Invalidate();
+
+  vtkHAVSFaceSorter* GetCentroidSorter() { return this->Centroid; }
+  vtkHAVSVisibilityOrder* GetExactOrder() { return this->Exact; }
+
+protected:
+  vtkHAVSFaceOrderPolicy();
+  ~vtkHAVSFaceOrderPolicy() override;
+
+private:
+  vtkHAVSFaceOrderPolicy(const vtkHAVSFaceOrderPolicy&) = delete;
+  void operator=(const vtkHAVSFaceOrderPolicy&) = delete;
+
+  /// What the exact order was made for.
+  struct ExactKey
+  {
+    vtkMTimeType Mesh = 0;
+    std::array<double, 3> Eye{};
+    std::array<double, 3> Direction{};
+    bool Parallel = false;
+    int Method = -1;
+    std::array<double, 16> GridToClip{}; // boundary layers only: the pixels sampled
+    int Width = 0;
+    int Height = 0;
+    bool operator==(const ExactKey& o) const
+    {
+      return this->Mesh == o.Mesh && this->Eye == o.Eye && this->Direction == o.Direction &&
+        this->Parallel == o.Parallel && this->Method == o.Method &&
+        this->GridToClip == o.GridToClip && this->Width == o.Width && this->Height == o.Height;
+    }
+  };
+  /// What Automatic's choice holds for.
+  struct AutomaticKey
+  {
+    vtkMTimeType Mesh = 0;
+    int K = 0;
+    int Path = 0;
+    bool operator==(const AutomaticKey& o) const
+    {
+      return this->Mesh == o.Mesh && this->K == o.K && this->Path == o.Path;
+    }
+  };
+
+  const std::vector<uint32_t>* MakeExactOrder(
+    vtkHAVSMesh* mesh, vtkUnstructuredGrid* grid, const vtkHAVSViewFrame& view, bool& changed);
+  void Gather(vtkHAVSMesh* mesh, const std::vector<uint32_t>* order);
+
+  int VisibilityOrder = 0;
+  int NonConvexMethod = 1;
+
+  vtkNew<vtkHAVSFaceSorter> Centroid;
+  vtkNew<vtkHAVSVisibilityOrder> Exact;
+  vtkMTimeType ExactMeshTime = 0; // the mesh the exact order's adjacency was built for
+  ExactKey LastExactKey;
+  bool ExactValid = false;
+
+  AutomaticKey LastAutomaticKey;
+  bool AutomaticExact = false;
+  bool AutomaticDecided = false;
+
+  std::vector<uint32_t> DrawTriangles;
+  std::vector<uint8_t> DrawBoundary;
+  vtkTimeStamp DrawOrderTime;
+  int GatheredOrder = -2; // the order the draw triangles hold (-1: identity)
+  vtkMTimeType GatheredMesh = 0;
+
+  int LastOrder = -1;
+  bool LastReused = false;
+  double LastSeconds = 0.0;
+};
+
+#endif

@@ -1,0 +1,132 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSFaceSet.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSFaceSet
+ * @brief   The unique triangular faces of a tetrahedral grid, boundary flagged.
+ *
+ * Build() takes the VTK_TETRA cells of a vtkUnstructuredGrid (ghost cells
+ * marked duplicate or hidden are left out, as another piece draws them; other cells
+ * are counted as skipped; degenerate tetrahedra, with repeated points or
+ * |volume| <= 1e-12 * (longest edge)^3, are counted and dropped) and stores
+ * each face once: a face of one tetrahedron is a boundary face, of two an
+ * internal one, of more a non-manifold one (counted, kept as internal).
+ * Boundary faces are wound so that (p1 - p0) x (p2 - p0) points out of the
+ * mesh, away from the cell's fourth vertex, decided in double precision from
+ * the coordinates: an inverted cell cannot flip it. Internal faces keep their
+ * ids ascending.
+ *
+ * Faces are found by a bucket sort: each face use is filed under its smallest
+ * point id, each bucket is sorted, and equal runs are one face. Every pass
+ * runs through vtkSMPTools; faces come out ordered by their sorted ids, so the
+ * result does not depend on the thread count.
+ */
+#ifndef vtkHAVSFaceSet_h
+#define vtkHAVSFaceSet_h
+
+#include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkTimeStamp.h" // For BuildTime
+
+#include <cstdint> // For uint32_t
+#include <vector>  // For std::vector
+
+class vtkUnstructuredGrid;
+
+class VTKHAVSCORE_EXPORT vtkHAVSFaceSet : public vtkObject
+{
+public:
+  static vtkHAVSFaceSet* New();
+  vtkTypeMacro(vtkHAVSFaceSet, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Extracts the faces. Returns false, with an error, for a null grid, a grid
+   * without points, too many points for 32-bit ids, or no usable tetrahedron;
+   * every array is then empty (the cell counts still say what was found).
+   */
+  bool Build(vtkUnstructuredGrid* grid);
+
+  ///@{
+  /**
+   * Faces stored, of which boundary and non-manifold (more than two
+   * tetrahedra); tetrahedra used; other cells skipped; degenerate
+   * tetrahedra dropped.
+   */
+  vtkIdType GetNumberOfFaces() const { return static_cast<vtkIdType>(this->BoundaryFlags.size()); }
+  vtkGetMacro(NumberOfBoundaryFaces, vtkIdType);
+  vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
+  vtkGetMacro(NumberOfTetrahedra, vtkIdType);
+  vtkGetMacro(NumberOfSkippedCells, vtkIdType);
+  vtkGetMacro(NumberOfDegenerateTetrahedra, vtkIdType);
+  /// Ghost cells (duplicate or hidden, vtkGhostType) left out: another piece draws them.
+  vtkGetMacro(NumberOfGhostCells, vtkIdType);
+  ///@}
+
+  /// Three point ids per face.
+  const std::vector<uint32_t>& GetFaceVertices() const { return this->FaceVertices; }
+  /// One per face: 1 for a boundary face, 0 for an internal one.
+  const std::vector<uint8_t>& GetBoundaryFlags() const { return this->BoundaryFlags; }
+  /**
+   * Three floats per face: the centroid in model coordinates minus
+   * GetCentroidOrigin() (the centre of the points' bounds), so that the floats
+   * keep their precision far from the origin. Add the origin back, in double,
+   * for the model-space centroid.
+   */
+  const std::vector<float>& GetCentroids() const { return this->Centroids; }
+  const double* GetCentroidOrigin() const { return this->CentroidOrigin; }
+
+  /// Four point ids per used tetrahedron (skipped and degenerate cells left out).
+  const std::vector<uint32_t>& GetTetrahedra() const { return this->Tetrahedra; }
+
+  /**
+   * Whether the mesh is one convex body: its boundary is one closed,
+   * connected, 2-manifold surface that is locally convex at every edge (the
+   * far vertex of each neighbouring boundary face lies on the inner side of
+   * the face's plane, up to 1e-9 of the bounds' diagonal), and no face is
+   * non-manifold. A closed, connected, embedded surface that is locally
+   * convex everywhere bounds a convex body (Hadamard), so a ray meets it at
+   * most twice: once in, once out, and boundary tagging cannot change the
+   * image. Decided once per Build() in O(boundary faces log boundary faces).
+   */
+  bool IsConvex() const { return this->Convex; }
+
+  /// The longest edge of the used tetrahedra, in model coordinates.
+  vtkGetMacro(LongestEdge, double);
+
+  /// Modified at each Build(), successful or not.
+  vtkMTimeType GetBuildTime() const { return this->BuildTime.GetMTime(); }
+
+protected:
+  vtkHAVSFaceSet() = default;
+  ~vtkHAVSFaceSet() override = default;
+
+private:
+  vtkHAVSFaceSet(const vtkHAVSFaceSet&) = delete;
+  void operator=(const vtkHAVSFaceSet&) = delete;
+
+  void Clear();
+
+  std::vector<uint32_t> FaceVertices;
+  std::vector<uint8_t> BoundaryFlags;
+  std::vector<float> Centroids;
+  std::vector<uint32_t> Tetrahedra;
+  bool Convex = false;
+  vtkIdType NumberOfBoundaryFaces = 0;
+  vtkIdType NumberOfNonManifoldFaces = 0;
+  vtkIdType NumberOfTetrahedra = 0;
+  vtkIdType NumberOfSkippedCells = 0;
+  vtkIdType NumberOfDegenerateTetrahedra = 0;
+  vtkIdType NumberOfGhostCells = 0;
+  double LongestEdge = 0.0;
+  double CentroidOrigin[3] = { 0.0, 0.0, 0.0 };
+  vtkTimeStamp BuildTime;
+};
+
+#endif

@@ -1,0 +1,86 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSFrameStatistics.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSFrameStatistics.h"
+
+#include "vtkHAVSVolumeMapper.h"
+#include "vtkIntArray.h"
+#include "vtkObjectFactory.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkHAVSFrameStatistics);
+
+//------------------------------------------------------------------------------
+void vtkHAVSFrameStatistics::Reset()
+{
+  this->KBufferPath = 0;
+  this->KBufferSize = 0;
+  this->VisibilityOrder = -1;
+  this->OrderReused = false;
+  this->CycleBreaks = 0;
+  this->BoundaryRelations = 0;
+  this->BoundaryLayerSeconds = 0.0;
+  this->Tagging = false;
+  this->PlaneCount = 0;
+  this->SectionTriangles = 0;
+  this->SectionSeconds = 0.0;
+  this->OrderViolations = 0;
+  this->ViolationPixels.clear();
+  this->Fragments = 0;
+  this->FacesDrawn = 0;
+  this->SortSeconds = 0.0;
+  this->DrawSeconds = 0.0;
+  this->FlushSeconds = 0.0;
+  this->CompositeSeconds = 0.0;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkHAVSFrameStatistics::GetKBufferPathName() const
+{
+  return vtkHAVSVolumeMapper::GetKBufferPathName(this->KBufferPath);
+}
+
+//------------------------------------------------------------------------------
+int vtkHAVSFrameStatistics::GetOrderViolationPixels(vtkIntArray* pixels) const
+{
+  const int count = static_cast<int>(this->ViolationPixels.size() / 2);
+  if (pixels)
+  {
+    pixels->SetNumberOfComponents(2);
+    pixels->SetNumberOfTuples(count);
+    std::copy(this->ViolationPixels.begin(), this->ViolationPixels.begin() + 2 * count,
+      pixels->GetPointer(0));
+  }
+  return count;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  const char* orders[] = { "Centroid", "MPVO", "Automatic" };
+  os << indent << "KBufferPath: " << this->GetKBufferPathName() << " (k = " << this->KBufferSize
+     << ")\n";
+  os << indent << "VisibilityOrder: "
+     << (this->VisibilityOrder >= 0 && this->VisibilityOrder <= 2 ? orders[this->VisibilityOrder]
+                                                                  : "none")
+     << (this->OrderReused ? " (reused)" : "") << ", cycle breaks " << this->CycleBreaks
+     << ", boundary relations " << this->BoundaryRelations << " (" << this->BoundaryLayerSeconds
+     << " s)\n";
+  os << indent << "Tagging: " << this->Tagging << ", planes " << this->PlaneCount
+     << ", section triangles " << this->SectionTriangles << " (" << this->SectionSeconds
+     << " s)\n";
+  os << indent << "OrderViolations: " << this->OrderViolations << ", fragments "
+     << this->Fragments << ", faces drawn " << this->FacesDrawn << "\n";
+  os << indent << "Seconds: sort " << this->SortSeconds << ", draw " << this->DrawSeconds
+     << ", flush " << this->FlushSeconds << ", composite " << this->CompositeSeconds
+     << ", table (last build) " << this->TableSeconds << "\n";
+}

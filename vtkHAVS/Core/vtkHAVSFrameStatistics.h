@@ -1,0 +1,154 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSFrameStatistics.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSFrameStatistics
+ * @brief   What one frame of vtkHAVSVolumeMapper did: path, k, order, counts, times.
+ *
+ * Plain C++, no OpenGL. The mapper fills one per frame
+ * (vtkHAVSVolumeMapper::GetLastFrameStatistics()); everything a user, a test
+ * or the benchmark reads about the last frame is here, in one place, from C++
+ * and Python:
+ *
+ * - what ran: the k-buffer path and k (0 for the extremum blend modes), the
+ *   face order (vtkHAVSVolumeMapper::VisibilityOrders, -1 when none was
+ *   needed), whether boundary fragments were tagged, the planes that cut the
+ *   mesh and their sections;
+ * - the order: whether the previous one was reused, cycle breaks, the
+ *   boundary-layer relations of the exact order and their time;
+ * - the result: order violations (fragments composited out of depth order,
+ *   counted on the GPU when asked) and where the first ones were;
+ * - stage times in seconds (exact only with MeasureStageTimes on; the GPU is
+ *   not waited for otherwise).
+ */
+#ifndef vtkHAVSFrameStatistics_h
+#define vtkHAVSFrameStatistics_h
+
+#include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkObject.h"
+
+#include <vector> // For std::vector
+
+class vtkIntArray;
+
+class VTKHAVSCORE_EXPORT vtkHAVSFrameStatistics : public vtkObject
+{
+public:
+  static vtkHAVSFrameStatistics* New();
+  vtkTypeMacro(vtkHAVSFrameStatistics, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Back to "no frame": every count and time zero, path none, order -1.
+  void Reset();
+
+  ///@{
+  /// The k-buffer path (vtkHAVSVolumeMapper::KBufferPaths; 0: none) and k.
+  vtkSetMacro(KBufferPath, int);
+  vtkGetMacro(KBufferPath, int);
+  const char* GetKBufferPathName() const;
+  vtkSetMacro(KBufferSize, int);
+  vtkGetMacro(KBufferSize, int);
+  ///@}
+
+  ///@{
+  /// The face order drawn (vtkHAVSVolumeMapper::VisibilityOrders; -1: none).
+  vtkSetMacro(VisibilityOrder, int);
+  vtkGetMacro(VisibilityOrder, int);
+  /// Whether the order is the previous frame's (nothing re-sorted).
+  vtkSetMacro(OrderReused, bool);
+  vtkGetMacro(OrderReused, bool);
+  /// Exact order: tetrahedra taken out of order to break visibility cycles.
+  vtkSetMacro(CycleBreaks, vtkIdType);
+  vtkGetMacro(CycleBreaks, vtkIdType);
+  /// Exact order with the boundary layers: relations found, and their seconds.
+  vtkSetMacro(BoundaryRelations, vtkIdType);
+  vtkGetMacro(BoundaryRelations, vtkIdType);
+  vtkSetMacro(BoundaryLayerSeconds, double);
+  vtkGetMacro(BoundaryLayerSeconds, double);
+  ///@}
+
+  ///@{
+  /// Boundary fragments tagged; planes cutting the mesh (near and clipping);
+  /// triangles of their sections and the seconds those took.
+  vtkSetMacro(Tagging, bool);
+  vtkGetMacro(Tagging, bool);
+  vtkSetMacro(PlaneCount, int);
+  vtkGetMacro(PlaneCount, int);
+  vtkSetMacro(SectionTriangles, vtkIdType);
+  vtkGetMacro(SectionTriangles, vtkIdType);
+  vtkSetMacro(SectionSeconds, double);
+  vtkGetMacro(SectionSeconds, double);
+  ///@}
+
+  ///@{
+  /// Fragments composited out of depth order (0 when not counted).
+  vtkSetMacro(OrderViolations, vtkIdType);
+  vtkGetMacro(OrderViolations, vtkIdType);
+  /// Where the first ones were: x, y in the viewport, two values each.
+  void SetOrderViolationPixels(const std::vector<int>& xy) { this->ViolationPixels = xy; }
+  const std::vector<int>& GetOrderViolationPixelList() const { return this->ViolationPixels; }
+  /// The same into an array of 2-component tuples; returns their number.
+  int GetOrderViolationPixels(vtkIntArray* pixels) const;
+  ///@}
+
+  ///@{
+  /// Fragment-list path: fragments stored.
+  vtkSetMacro(Fragments, vtkIdType);
+  vtkGetMacro(Fragments, vtkIdType);
+  /// Faces drawn (internal and boundary).
+  vtkSetMacro(FacesDrawn, vtkIdType);
+  vtkGetMacro(FacesDrawn, vtkIdType);
+  ///@}
+
+  ///@{
+  /// Stage times in seconds: face order (sort), draw, flush (resolve),
+  /// composite; the table's last build (kept until the next build).
+  vtkSetMacro(SortSeconds, double);
+  vtkGetMacro(SortSeconds, double);
+  vtkSetMacro(DrawSeconds, double);
+  vtkGetMacro(DrawSeconds, double);
+  vtkSetMacro(FlushSeconds, double);
+  vtkGetMacro(FlushSeconds, double);
+  vtkSetMacro(CompositeSeconds, double);
+  vtkGetMacro(CompositeSeconds, double);
+  vtkSetMacro(TableSeconds, double);
+  vtkGetMacro(TableSeconds, double);
+  ///@}
+
+protected:
+  vtkHAVSFrameStatistics() = default;
+  ~vtkHAVSFrameStatistics() override = default;
+
+private:
+  vtkHAVSFrameStatistics(const vtkHAVSFrameStatistics&) = delete;
+  void operator=(const vtkHAVSFrameStatistics&) = delete;
+
+  int KBufferPath = 0;
+  int KBufferSize = 0;
+  int VisibilityOrder = -1;
+  bool OrderReused = false;
+  vtkIdType CycleBreaks = 0;
+  vtkIdType BoundaryRelations = 0;
+  double BoundaryLayerSeconds = 0.0;
+  bool Tagging = false;
+  int PlaneCount = 0;
+  vtkIdType SectionTriangles = 0;
+  double SectionSeconds = 0.0;
+  vtkIdType OrderViolations = 0;
+  std::vector<int> ViolationPixels;
+  vtkIdType Fragments = 0;
+  vtkIdType FacesDrawn = 0;
+  double SortSeconds = 0.0;
+  double DrawSeconds = 0.0;
+  double FlushSeconds = 0.0;
+  double CompositeSeconds = 0.0;
+  double TableSeconds = 0.0;
+};
+
+#endif

@@ -1,0 +1,179 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSVisibilityOrder.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSVisibilityOrder
+ * @brief   An exact object-space face order: Williams' MPVO for HAVS.
+ *
+ * Plain C++, no OpenGL. Build() finds, once per mesh, the two tetrahedra of
+ * every internal face of a vtkHAVSFaceSet and each face's plane (double
+ * precision, from the grid's points). Sort() then, per view, orients every
+ * internal face by the side of its plane the eye is on (the tetrahedron on
+ * the eye's side is in front), sorts the tetrahedra topologically front to
+ * back (Kahn), and emits each face when the tetrahedron behind it is visited
+ * (a boundary face with its only tetrahedron: entries first, then exits).
+ * For a convex mesh without visibility cycles the faces come out so that
+ * the fragments along every ray arrive in depth order: k = 1 suffices up to
+ * fragments at equal distance. O(faces) per view.
+ *
+ * Cycles (the sort stalls with cells left) are broken locally: the
+ * unvisited cell with the fewest unvisited predecessors is taken next;
+ * GetNumberOfCycleBreaks() counts them.
+ *
+ * Non-convex meshes (vtkHAVSFaceSet::IsConvex false): where a ray leaves the
+ * mesh and enters it again, the cell it enters must come after the one it
+ * left, which no shared face says. Two ways to add those relations
+ * (SetNonConvexMethod), so that they can be compared:
+ * - Convexification (seed 004, Kraus and Ertl): the space around the mesh is
+ *   cut into convex imaginary cells (vtkHAVSConvexification, once per mesh);
+ *   they join the sort through the boundary faces and the planes between
+ *   them, and draw nothing.
+ * - BoundaryLayers (seed 003's idea, Krishnan, Silva and Wei): per view, the
+ *   boundary faces are rasterized (vtkHAVSFaceRasterizer, exactly, at the
+ *   frame's pixel centres, SetViewSampling) and sorted by depth at every pixel; each exit followed
+ *   by an entry gives the relation "cell left before cell entered". Exact at
+ *   the pixels the k-buffer composites, whatever the shape of the gaps.
+ *   Where the boundary is not closed and consistently wound (inverted cells),
+ *   the convexification warns and the boundary layers are used instead.
+ * - Ignore: MPVO alone (exact only where no ray re-enters the mesh).
+ * Seams (two boundary faces at the same place, of two tetrahedra whose
+ * points are duplicated, as on the cut of an O-grid) join their tetrahedra
+ * like an internal face, whatever the method (GetNumberOfSeamFaces()).
+ *
+ * Eye and direction of projection are given in the grid's (model)
+ * coordinates; a parallel projection orients by the direction alone.
+ */
+#ifndef vtkHAVSVisibilityOrder_h
+#define vtkHAVSVisibilityOrder_h
+
+#include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
+#include <cstdint> // For uint32_t
+#include <utility> // For std::pair
+#include <vector>  // For std::vector
+
+class vtkHAVSConvexification;
+class vtkHAVSFaceRasterizer;
+class vtkHAVSFaceSet;
+class vtkUnstructuredGrid;
+
+class VTKHAVSCORE_EXPORT vtkHAVSVisibilityOrder : public vtkObject
+{
+public:
+  static vtkHAVSVisibilityOrder* New();
+  vtkTypeMacro(vtkHAVSVisibilityOrder, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The adjacency of `faces` (built from `grid`, whose points are read).
+   * Returns false, with an error, when a tetrahedron's face is not in the set.
+   */
+  bool Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* grid);
+
+  enum NonConvexMethods
+  {
+    NonConvexIgnore = 0,
+    NonConvexBoundaryLayers = 1,
+    NonConvexConvexification = 2
+  };
+
+  ///@{
+  /// How rays that leave and re-enter a non-convex mesh are ordered (default
+  /// BoundaryLayers). Unused for a convex mesh.
+  vtkSetClampMacro(NonConvexMethod, int, NonConvexIgnore, NonConvexConvexification);
+  vtkGetMacro(NonConvexMethod, int);
+  ///@}
+
+  /**
+   * The frame the next Sort() is for: grid (model) -> clip matrix (row-major,
+   * as vtkMatrix4x4) and viewport size in pixels. Used by BoundaryLayers.
+   */
+  void SetViewSampling(const double modelToClip[16], int width, int height);
+
+  /// Whether the mesh given to Build() is convex (no relations needed across gaps).
+  bool IsMeshConvex() const { return this->MeshConvex; }
+
+  /**
+   * The face order for a view (eye and direction in model coordinates);
+   * front to back.
+   */
+  void Sort(const double eye[3], const double direction[3], bool parallel);
+
+  /// The two tetrahedra of a face (-1: none; a boundary face has only the first).
+  void GetFaceTetrahedra(vtkIdType face, vtkIdType cells[2]) const
+  {
+    cells[0] = static_cast<vtkIdType>(this->FaceCells[2 * face]);
+    cells[1] = static_cast<vtkIdType>(this->FaceCells[2 * face + 1]);
+  }
+
+  /// Face indices, first drawn first.
+  const std::vector<uint32_t>& GetOrder() const { return this->Order; }
+
+  /// Tetrahedra taken out of order to break visibility cycles in the last Sort().
+  vtkGetMacro(NumberOfCycleBreaks, vtkIdType);
+
+  /// Seconds the last Sort() took (without a convexification it triggered).
+  vtkGetMacro(LastSortSeconds, double);
+
+  /// Internal faces whose two tetrahedra lie on the same side (inverted or
+  /// overlapping cells), found by Build(): no order is exact across them.
+  vtkGetMacro(NumberOfFoldedFaces, vtkIdType);
+  bool IsFaceFolded(vtkIdType face) const { return this->FoldedFaces[face] != 0; }
+
+  /// Pairs of boundary faces found at the same place (seams) by Build().
+  vtkIdType GetNumberOfSeamFaces() const { return static_cast<vtkIdType>(this->SeamFaces.size() / 2); }
+
+  /// Convexification: imaginary cells, and the seconds it took (once per mesh).
+  vtkGetMacro(NumberOfImaginaryCells, vtkIdType);
+  vtkGetMacro(ConvexificationSeconds, double);
+
+  /// BoundaryLayers: relations found in the last Sort() and the seconds they took.
+  vtkGetMacro(NumberOfBoundaryRelations, vtkIdType);
+  vtkGetMacro(LastBoundaryLayerSeconds, double);
+
+protected:
+  vtkHAVSVisibilityOrder();
+  ~vtkHAVSVisibilityOrder() override;
+
+private:
+  vtkHAVSVisibilityOrder(const vtkHAVSVisibilityOrder&) = delete;
+  void operator=(const vtkHAVSVisibilityOrder&) = delete;
+
+  void BuildConvexification();
+  void BoundaryLayerRelations(const double eye[3], const double direction[3], bool parallel,
+    std::vector<std::pair<uint32_t, uint32_t>>& relations);
+
+  std::vector<int64_t> FaceCells;      // 2 per face: the tetrahedra (-1: none)
+  std::vector<double> FacePlanes;      // 4 per face: n, d with n.x + d > 0 on FaceCells[0]'s far side
+  std::vector<uint32_t> CellFaces;     // 4 per tetrahedron
+  std::vector<uint32_t> Order;
+  std::vector<double> Points;          // the grid's points (3 per point)
+  std::vector<uint32_t> BoundaryFaces; // face ids of the boundary faces
+  std::vector<uint32_t> BoundaryFaceVertices; // 3 per boundary face, wound outward
+  std::vector<uint32_t> SeamFaces; // pairs of boundary faces at the same place (duplicated points)
+  bool MeshConvex = true;
+  vtkIdType NumberOfFoldedFaces = 0;
+  std::vector<uint8_t> FoldedFaces; // per face
+  int NonConvexMethod = NonConvexBoundaryLayers;
+  double ModelToClip[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  int SampleSize[2] = { 0, 0 };
+  vtkSmartPointer<vtkHAVSConvexification> Convexification;
+  vtkSmartPointer<vtkHAVSFaceRasterizer> Rasterizer;
+  bool ConvexificationBuilt = false;
+  vtkIdType NumberOfImaginaryCells = 0;
+  double ConvexificationSeconds = 0.0;
+  vtkIdType NumberOfBoundaryRelations = 0;
+  double LastBoundaryLayerSeconds = 0.0;
+  vtkIdType NumberOfCycleBreaks = 0;
+  double LastSortSeconds = 0.0;
+};
+
+#endif

@@ -1,0 +1,515 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSVolumeMapper.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSVolumeMapper.h"
+
+#include "vtkHAVSFaceOrderPolicy.h"
+#include "vtkHAVSFaceSet.h"
+#include "vtkHAVSFaceSorter.h"
+#include "vtkHAVSFramePlanes.h"
+#include "vtkHAVSFrameStatistics.h"
+#include "vtkHAVSMesh.h"
+#include "vtkHAVSPreIntegrationTable.h"
+#include "vtkHAVSViewFrame.h"
+#include "vtkHAVSVisibilityOrder.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRenderer.h"
+#include "vtkTimerLog.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+
+vtkAbstractObjectFactoryNewMacro(vtkHAVSVolumeMapper);
+
+namespace
+{
+/// The warnings given once per mapper.
+enum OnceWarnings
+{
+  WarnShading,
+  WarnGradient,
+  WarnComponents,
+  WarnPath,
+  WarnK,
+  WarnPlanes,
+  WarnOrder
+};
+
+bool IsConstantOne(vtkPiecewiseFunction* f)
+{
+  if (!f)
+  {
+    return true;
+  }
+  double node[4];
+  for (int i = 0; i < f->GetSize(); ++i)
+  {
+    f->GetNodeValue(i, node);
+    if (node[1] != 1.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkHAVSVolumeMapper::vtkHAVSVolumeMapper() = default;
+vtkHAVSVolumeMapper::~vtkHAVSVolumeMapper() = default;
+
+//------------------------------------------------------------------------------
+const char* vtkHAVSVolumeMapper::GetKBufferPathName(int path)
+{
+  switch (path)
+  {
+    case KBufferPathAutomatic:
+      return "Automatic";
+    case KBufferPathFramebufferFetch:
+      return "FramebufferFetch";
+    case KBufferPathFragmentShaderInterlock:
+      return "FragmentShaderInterlock";
+    case KBufferPathFragmentLists:
+      return "FragmentLists";
+    default:
+      return "None";
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::SetNonConvexMethodToIgnore()
+{
+  this->SetNonConvexMethod(vtkHAVSVisibilityOrder::NonConvexIgnore);
+}
+
+void vtkHAVSVolumeMapper::SetNonConvexMethodToBoundaryLayers()
+{
+  this->SetNonConvexMethod(vtkHAVSVisibilityOrder::NonConvexBoundaryLayers);
+}
+
+void vtkHAVSVolumeMapper::SetNonConvexMethodToConvexification()
+{
+  this->SetNonConvexMethod(vtkHAVSVisibilityOrder::NonConvexConvexification);
+}
+
+//------------------------------------------------------------------------------
+// The graphics layer's hooks: without one (this class alone), nothing draws.
+bool vtkHAVSVolumeMapper::IsKBufferPathSupported(vtkRenderWindow*, int)
+{
+  return false;
+}
+
+int vtkHAVSVolumeMapper::ChooseKBufferPath(vtkRenderer*, int)
+{
+  return 0;
+}
+
+int vtkHAVSVolumeMapper::GetMaximumK(int)
+{
+  return 0;
+}
+
+bool vtkHAVSVolumeMapper::DrawFrame(vtkRenderer*, const FrameRequest&, FrameResult&)
+{
+  vtkErrorMacro("vtkHAVSVolumeMapper has no graphics layer: create it with New() after "
+                "vtk_module_autoinit of vtkHAVS::OpenGL (Python: import vtkhavs).");
+  return false;
+}
+
+bool vtkHAVSVolumeMapper::CompositeKeptResult(vtkRenderer*)
+{
+  return false;
+}
+
+const std::vector<float>* vtkHAVSVolumeMapper::GetKeptResult(int[2])
+{
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::WarnOnce(int which, const char* message)
+{
+  if (!this->Warned[which])
+  {
+    this->Warned[which] = true;
+    vtkWarningMacro(<< message);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSVolumeMapper::PrepareMesh(vtkVolume* volume)
+{
+  vtkHAVSMesh::ScalarSelection selection;
+  selection.Mode = this->ScalarMode;
+  selection.AccessMode = this->ArrayAccessMode;
+  selection.Id = this->ArrayId;
+  selection.Name = this->ArrayName ? this->ArrayName : "";
+  vtkDataObject* input = this->GetInput();
+  if (!input)
+  {
+    vtkErrorMacro("No input.");
+    return false;
+  }
+  if (!this->Mesh->NeedsBuild(input, selection))
+  {
+    return this->Mesh->IsValid();
+  }
+  this->FaceOrder->Invalidate();
+  const bool built =
+    this->Mesh->Build(input, selection, [this](double p) { this->UpdateProgress(p); });
+  for (const std::string& warning : this->Mesh->GetWarnings())
+  {
+    vtkWarningMacro(<< warning);
+  }
+  if (!built)
+  {
+    vtkErrorMacro(<< this->Mesh->GetError());
+    return false;
+  }
+  const int components = this->Mesh->GetNumberOfComponents();
+  if (components > 1)
+  {
+    const std::string message = "The scalars have " + std::to_string(components) +
+      " components" +
+      (volume->GetProperty()->GetIndependentComponents() ? " (independent)" : " (dependent)") +
+      "; vtkHAVSVolumeMapper renders the first one only.";
+    this->WarnOnce(WarnComponents, message.c_str());
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSVolumeMapper::PrepareTable(vtkVolume* volume)
+{
+  vtkVolumeProperty* property = volume->GetProperty();
+  const int component = this->Mesh->GetComponent();
+  if (property->GetShade(component))
+  {
+    this->WarnOnce(
+      WarnShading, "Shading is not supported by vtkHAVSVolumeMapper; the volume is unshaded.");
+  }
+  if (!property->GetDisableGradientOpacity(component) && property->HasGradientOpacity(component) &&
+    !IsConstantOne(property->GetGradientOpacity(component)))
+  {
+    this->WarnOnce(
+      WarnGradient, "Gradient opacity is not supported by vtkHAVSVolumeMapper; it is ignored.");
+  }
+
+  // The longest segment inside one tetrahedron is its longest edge; in world
+  // space after the volume's matrix, at most that times the largest stretch.
+  vtkMatrix4x4* m = volume->GetMatrix();
+  double stretch = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double column[3] = { m->GetElement(0, c), m->GetElement(1, c), m->GetElement(2, c) };
+    stretch = std::max(stretch, vtkMath::Norm(column));
+  }
+  const double maxLength =
+    std::max(this->Mesh->GetFaceSet()->GetLongestEdge() * stretch, 1e-30);
+
+  this->Table->SetScalarResolution(this->TableScalarResolution);
+  this->Table->SetLengthResolution(this->TableLengthResolution);
+  const double* range = this->Mesh->GetScalarRange();
+  if (this->Table->NeedsRebuild(property, component, range, maxLength))
+  {
+    this->UpdateProgress(0.0);
+    if (!this->Table->Build(property, component, range, maxLength))
+    {
+      vtkErrorMacro("The pre-integrated transfer-function table could not be built.");
+      return false;
+    }
+    this->TableBuildTime.Modified();
+    this->UpdateProgress(1.0);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
+  const vtkHAVSViewFrame& view, int path, int k)
+{
+  FrameRequest r;
+  r.View = &view;
+  r.Mesh = this->Mesh;
+  r.Table = this->Table;
+  r.TableVersion = this->TableBuildTime.GetMTime();
+  r.Planes = this->Planes;
+  r.Path = path;
+  r.K = k;
+  r.BlendMode = this->BlendMode;
+  r.TerminationOpacity = static_cast<float>(this->EarlyRayTerminationOpacity);
+  r.Tagging = this->BoundaryMode == BoundaryTagging ||
+    (this->BoundaryMode == BoundaryAutomatic && !this->Mesh->GetFaceSet()->IsConvex());
+  r.GapLength =
+    this->BoundaryMode == BoundaryGapLength ? static_cast<float>(this->Table->GetMaxLength()) : 3.0e38f;
+  r.RasterBoundOnly = this->FaceRasterBoundMode;
+  r.MeasureStages = this->MeasureStageTimes;
+  r.KeepResult = this->KeepFloatResult;
+  return r;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
+{
+  vtkHAVSFrameStatistics* stats = this->LastFrame;
+  stats->Reset();
+  switch (this->BlendMode)
+  {
+    case COMPOSITE_BLEND:
+    case MAXIMUM_INTENSITY_BLEND:
+    case MINIMUM_INTENSITY_BLEND:
+      break;
+    default:
+      vtkErrorMacro("Blend mode " << this->BlendMode
+                                  << " is not supported by vtkHAVSVolumeMapper (composite, "
+                                     "maximum and minimum intensity are).");
+      return;
+  }
+
+  // 1. The mesh and 2. the table, each only when its inputs changed.
+  if (this->GetNumberOfInputConnections(0) > 0)
+  {
+    this->GetInputAlgorithm()->Update();
+  }
+  if (!this->PrepareMesh(volume) || !this->PrepareTable(volume))
+  {
+    return;
+  }
+  stats->SetTableSeconds(this->Table->GetLastBuildSeconds());
+
+  // 3. The view: every coordinate frame, once.
+  const vtkHAVSViewFrame view = vtkHAVSViewFrame::Make(renderer, volume, this->Mesh->GetShift());
+  if (!view.HasPixels())
+  {
+    return;
+  }
+
+  // The k-buffer: the path the window runs, and k within its reach.
+  const int path = this->ChooseKBufferPath(renderer, this->KBufferPath);
+  if (path == 0)
+  {
+    vtkErrorMacro("This OpenGL context has none of the k-buffer paths (it needs OpenGL 4.3 with "
+                  "EXT_shader_framebuffer_fetch, or fragment-shader interlock, or OpenGL 4.4).");
+    return;
+  }
+  if (this->KBufferPath != KBufferPathAutomatic && path != this->KBufferPath)
+  {
+    const std::string message = std::string("The k-buffer path ") +
+      GetKBufferPathName(this->KBufferPath) +
+      " is not supported by this OpenGL context; choosing automatically.";
+    this->WarnOnce(WarnPath, message.c_str());
+  }
+  const int maxK = this->GetMaximumK(path);
+  const int k = std::min(this->KBufferSize, maxK);
+  if (this->KBufferSize > maxK)
+  {
+    const std::string message = "k = " + std::to_string(this->KBufferSize) + " exceeds the " +
+      GetKBufferPathName(path) + " path's maximum; using k = " + std::to_string(maxK) + ".";
+    this->WarnOnce(WarnK, message.c_str());
+  }
+  FrameRequest request = this->MakeRequest(view, path, k);
+  const bool composite = this->BlendMode == COMPOSITE_BLEND;
+
+  // 4. The near and clipping planes, and the mesh's sections with them.
+  if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, this->PlaneSections))
+  {
+    this->WarnOnce(WarnPlanes, "More than 6 clipping planes; vtkHAVSVolumeMapper uses the first 6.");
+  }
+
+  // 5. The face order, and 6. the draw: Automatic's probe may ask for a
+  // second draw in the exact order.
+  this->FaceOrder->SetVisibilityOrder(this->VisibilityOrder);
+  this->FaceOrder->SetNonConvexMethod(this->NonConvexMethod);
+  vtkHAVSFaceOrderPolicy::Plan plan =
+    this->FaceOrder->Begin(this->Mesh, k, path, composite, !this->FaceRasterBoundMode);
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(this->GetInput());
+  FrameResult result;
+  for (;;)
+  {
+    if (!this->FaceOrder->Prepare(plan, this->Mesh, grid, view))
+    {
+      vtkErrorMacro("The MPVO order could not be made for this mesh; using the centroid order.");
+    }
+    request.DrawTriangles = &this->FaceOrder->GetDrawTriangles();
+    request.DrawBoundary = &this->FaceOrder->GetDrawBoundaryFlags();
+    request.DrawOrderVersion = this->FaceOrder->GetDrawOrderVersion();
+    request.Composite = !plan.Probe;
+    request.CountViolations = composite && (this->CountOrderViolations || plan.Probe);
+    result = FrameResult();
+    if (!this->DrawFrame(renderer, request, result))
+    {
+      return;
+    }
+    if (!plan.Probe)
+    {
+      break;
+    }
+    plan = this->FaceOrder->ProbeResult(result.Violations);
+    if (plan.Order < 0)
+    {
+      // The probe was exact: it is the frame.
+      if (!this->CompositeKeptResult(renderer))
+      {
+        return;
+      }
+      break;
+    }
+  }
+
+  // 7. The frame's statistics.
+  stats->SetKBufferPath(path);
+  stats->SetKBufferSize(composite ? k : 0);
+  stats->SetVisibilityOrder(this->FaceOrder->GetLastOrder());
+  stats->SetOrderReused(this->FaceOrder->GetLastReused());
+  stats->SetCycleBreaks(this->FaceOrder->GetLastCycleBreaks());
+  stats->SetBoundaryRelations(this->FaceOrder->GetLastBoundaryRelations());
+  stats->SetBoundaryLayerSeconds(this->FaceOrder->GetLastBoundaryLayerSeconds());
+  stats->SetSortSeconds(this->FaceOrder->GetLastSeconds());
+  stats->SetTagging(request.Tagging);
+  stats->SetPlaneCount(this->Planes->GetNumberOfPlanes());
+  stats->SetSectionTriangles(this->Planes->GetNumberOfSectionTriangles());
+  stats->SetSectionSeconds(this->Planes->GetSectionSeconds());
+  stats->SetOrderViolations(result.Violations);
+  stats->SetOrderViolationPixels(result.ViolationPixels);
+  stats->SetFragments(result.Fragments);
+  stats->SetFacesDrawn(this->Mesh->GetFaceSet()->GetNumberOfFaces());
+  stats->SetDrawSeconds(result.DrawSeconds);
+  stats->SetFlushSeconds(result.FlushSeconds);
+  stats->SetCompositeSeconds(result.CompositeSeconds);
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSVolumeMapper::GetFloatResult(vtkFloatArray* rgba, int size[2])
+{
+  const std::vector<float>* result = this->GetKeptResult(size);
+  if (!rgba || !result || result->empty())
+  {
+    return false;
+  }
+  rgba->SetNumberOfComponents(4);
+  rgba->SetNumberOfTuples(static_cast<vtkIdType>(size[0]) * size[1]);
+  std::copy(result->begin(), result->end(), rgba->GetPointer(0));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkHAVSFrameStatistics* vtkHAVSVolumeMapper::GetLastFrameStatistics()
+{
+  return this->LastFrame;
+}
+
+int vtkHAVSVolumeMapper::GetActiveKBufferPath()
+{
+  return this->LastFrame->GetKBufferPath();
+}
+
+const char* vtkHAVSVolumeMapper::GetActiveKBufferPathName()
+{
+  return this->LastFrame->GetKBufferPathName();
+}
+
+int vtkHAVSVolumeMapper::GetActiveKBufferSize()
+{
+  return this->LastFrame->GetKBufferSize();
+}
+
+int vtkHAVSVolumeMapper::GetLastVisibilityOrder()
+{
+  return this->LastFrame->GetVisibilityOrder();
+}
+
+vtkIdType vtkHAVSVolumeMapper::GetLastOrderViolations()
+{
+  return this->LastFrame->GetOrderViolations();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkHAVSVolumeMapper::GetNumberOfFaces()
+{
+  return this->Mesh->GetFaceSet()->GetNumberOfFaces();
+}
+
+vtkIdType vtkHAVSVolumeMapper::GetNumberOfBoundaryFaces()
+{
+  return this->Mesh->GetFaceSet()->GetNumberOfBoundaryFaces();
+}
+
+vtkIdType vtkHAVSVolumeMapper::GetNumberOfTetrahedra()
+{
+  return this->Mesh->GetFaceSet()->GetNumberOfTetrahedra();
+}
+
+bool vtkHAVSVolumeMapper::IsInputConvex()
+{
+  return this->Mesh->IsValid() && this->Mesh->GetFaceSet()->IsConvex();
+}
+
+vtkIdType vtkHAVSVolumeMapper::GetNumberOfImaginaryCells()
+{
+  return this->FaceOrder->GetExactOrder()->GetNumberOfImaginaryCells();
+}
+
+double vtkHAVSVolumeMapper::GetConvexificationSeconds()
+{
+  return this->FaceOrder->GetExactOrder()->GetConvexificationSeconds();
+}
+
+void vtkHAVSVolumeMapper::InvalidateFaceOrder()
+{
+  this->FaceOrder->Invalidate();
+}
+
+vtkHAVSFaceOrderPolicy* vtkHAVSVolumeMapper::GetFaceOrderPolicy()
+{
+  return this->FaceOrder;
+}
+
+vtkHAVSFaceSorter* vtkHAVSVolumeMapper::GetFaceSorter()
+{
+  return this->FaceOrder->GetCentroidSorter();
+}
+
+vtkHAVSPreIntegrationTable* vtkHAVSVolumeMapper::GetPreIntegrationTable()
+{
+  return this->Table;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "KBufferSize: " << this->KBufferSize << "\n";
+  os << indent << "KBufferPath (requested): " << GetKBufferPathName(this->KBufferPath) << "\n";
+  os << indent << "EarlyRayTerminationOpacity: " << this->EarlyRayTerminationOpacity << "\n";
+  os << indent << "Table: " << this->TableScalarResolution << " x " << this->TableScalarResolution
+     << " x " << this->TableLengthResolution << "\n";
+  os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";
+  os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
+  os << indent << "FaceRasterBoundMode: " << this->FaceRasterBoundMode << "\n";
+  const char* orders[] = { "Centroid", "MPVO", "Automatic" };
+  const char* methods[] = { "Ignore", "BoundaryLayers", "Convexification" };
+  os << indent << "VisibilityOrder: " << orders[this->VisibilityOrder] << "\n";
+  os << indent << "NonConvexMethod: " << methods[this->NonConvexMethod] << "\n";
+  os << indent << "CountOrderViolations: " << this->CountOrderViolations << "\n";
+  static const char* const boundaryModes[] = { "Automatic", "Tagging", "Ignore", "GapLength" };
+  os << indent << "BoundaryMode: " << boundaryModes[this->BoundaryMode] << "\n";
+  os << indent << "PlaneSections: " << this->PlaneSections << "\n";
+  os << indent << "Mesh:\n";
+  this->Mesh->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "LastFrame:\n";
+  this->LastFrame->PrintSelf(os, indent.GetNextIndent());
+}

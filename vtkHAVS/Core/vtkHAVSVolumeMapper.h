@@ -1,0 +1,438 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSVolumeMapper.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSVolumeMapper
+ * @brief   Unstructured-grid volume mapper: HAVS with a GPU k-buffer.
+ *
+ * Hardware-Assisted Visibility Sorting (Callahan, Ikits, Comba and Silva
+ * 2005; Callahan 2005): the unique triangular faces of the tetrahedra are
+ * ordered on the CPU and rasterized in that order; per pixel a k-buffer of k
+ * entries (Bavoil et al. 2007) finishes the sort, and each ray segment
+ * between two consecutive fragments is coloured from a pre-integrated
+ * transfer-function table (Röttger, Kraus and Ertl 2000; Engel, Kraus and
+ * Ertl 2001) and composited front to back. Boundary faces are wound outward,
+ * so a segment that starts at an exit from the mesh (a hole, a cavity, a gap
+ * between parts) contributes nothing.
+ *
+ * Optical model (as VTK's unstructured-grid integrators; Williams and Max
+ * 1992): extinction opacity(s) / ScalarOpacityUnitDistance, emission colour(s)
+ * times extinction, scalar linear along each segment, lengths in world space
+ * after the volume's matrix.
+ *
+ * Input: a vtkUnstructuredGrid of tetrahedra with point scalars (chosen with
+ * SetScalarMode / SelectScalarArray). Other cells are skipped with a warning;
+ * cell scalars are not supported yet (error). Blend modes: composite, maximum
+ * and minimum intensity (these need no face order).
+ *
+ * This class is GL-free: it holds every setting and runs the algorithm of a
+ * frame (Render): prepare the mesh (vtkHAVSMesh), prepare the table
+ * (vtkHAVSPreIntegrationTable), the view (vtkHAVSViewFrame), the planes
+ * (vtkHAVSFramePlanes), the face order (vtkHAVSFaceOrderPolicy), draw, and
+ * the frame's statistics (vtkHAVSFrameStatistics). Drawing is the graphics
+ * layer's: New() returns the object-factory override, vtkOpenGLHAVSVolumeMapper
+ * (module vtkHAVS::OpenGL; call vtk_module_autoinit with it, or import
+ * vtkhavs in Python).
+ *
+ * The k-buffer path is chosen automatically — framebuffer fetch, else ordered
+ * fragment-shader interlock, else per-pixel fragment lists sorted exactly at
+ * resolve — or forced with SetKBufferPath.
+ *
+ * The face order is reused while neither the camera nor the volume's matrix
+ * changes: a transfer-function edit only rebuilds the table.
+ */
+#ifndef vtkHAVSVolumeMapper_h
+#define vtkHAVSVolumeMapper_h
+
+#include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkNew.h"            // For vtkNew
+#include "vtkUnstructuredGridVolumeMapper.h"
+
+#include <array>   // For std::array
+#include <cstdint> // For uint32_t
+#include <vector>  // For std::vector
+
+class vtkFloatArray;
+class vtkHAVSFaceOrderPolicy;
+class vtkHAVSFaceSorter;
+class vtkHAVSFramePlanes;
+class vtkHAVSFrameStatistics;
+class vtkHAVSMesh;
+class vtkHAVSPreIntegrationTable;
+class vtkHAVSViewFrame;
+class vtkRenderWindow;
+
+class VTKHAVSCORE_EXPORT vtkHAVSVolumeMapper : public vtkUnstructuredGridVolumeMapper
+{
+public:
+  /// The graphics layer's override (vtkOpenGLHAVSVolumeMapper); nullptr without one.
+  static vtkHAVSVolumeMapper* New();
+  vtkTypeMacro(vtkHAVSVolumeMapper, vtkUnstructuredGridVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum KBufferPaths
+  {
+    KBufferPathAutomatic = 0,
+    KBufferPathFramebufferFetch = 1,
+    KBufferPathFragmentShaderInterlock = 2,
+    KBufferPathFragmentLists = 3
+  };
+  /// "Automatic", "FramebufferFetch", "FragmentShaderInterlock", "FragmentLists"; "None" else.
+  static const char* GetKBufferPathName(int path);
+
+  /**
+   * Minimum intensity projection (the superclass has composite and maximum
+   * intensity): the same value as vtkVolumeMapper's.
+   */
+  static constexpr int MINIMUM_INTENSITY_BLEND = 2;
+  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
+
+  ///@{
+  /**
+   * k: the number of k-buffer entries per pixel (the composited front plus
+   * k - 1 waiting fragments; the incoming fragment is not counted). 1 … 14 on
+   * the framebuffer-fetch path, up to 64 with interlock. The fragment-list
+   * path sorts up to 64 fragments per pixel exactly whatever k is. Default 6.
+   */
+  vtkSetClampMacro(KBufferSize, int, 1, 64);
+  vtkGetMacro(KBufferSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Which k-buffer path to use; Automatic (default) takes the best one the
+   * context has. A forced path the context lacks falls back to Automatic with
+   * a warning.
+   */
+  vtkSetClampMacro(KBufferPath, int, KBufferPathAutomatic, KBufferPathFragmentLists);
+  vtkGetMacro(KBufferPath, int);
+  void SetKBufferPathToAutomatic() { this->SetKBufferPath(KBufferPathAutomatic); }
+  void SetKBufferPathToFramebufferFetch() { this->SetKBufferPath(KBufferPathFramebufferFetch); }
+  void SetKBufferPathToFragmentShaderInterlock()
+  {
+    this->SetKBufferPath(KBufferPathFragmentShaderInterlock);
+  }
+  void SetKBufferPathToFragmentLists() { this->SetKBufferPath(KBufferPathFragmentLists); }
+  ///@}
+
+  /**
+   * Whether `window` (an OpenGL window, initialized) can run `path`. False
+   * without a graphics layer.
+   */
+  virtual bool IsKBufferPathSupported(vtkRenderWindow* window, int path);
+
+  ///@{
+  /**
+   * Early ray termination: a pixel stops taking fragments once its opacity
+   * reaches this value. 1 turns it off. Default 0.999 (the error it allows is
+   * below 1/255).
+   */
+  vtkSetClampMacro(EarlyRayTerminationOpacity, double, 0.0, 1.0);
+  vtkGetMacro(EarlyRayTerminationOpacity, double);
+  ///@}
+
+  ///@{
+  /**
+   * Size of the pre-integrated table: entries along the front and back
+   * scalar axes (default 128) and along the segment length (default 128).
+   */
+  vtkSetClampMacro(TableScalarResolution, int, 2, 1024);
+  vtkGetMacro(TableScalarResolution, int);
+  vtkSetClampMacro(TableLengthResolution, int, 2, 1024);
+  vtkGetMacro(TableLengthResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * When on, the mapper waits for the GPU at the end of each stage so that
+   * the stage times of the frame statistics are real (costs a little). Off by
+   * default.
+   */
+  vtkSetMacro(MeasureStageTimes, bool);
+  vtkGetMacro(MeasureStageTimes, bool);
+  vtkBooleanMacro(MeasureStageTimes, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Benchmark aid: draw the ordered faces with a trivial shader and nothing
+   * else (no k-buffer, nothing composited into the window): the time of the
+   * rasterization alone, the lower bound of any face-based method on this
+   * machine. Off by default.
+   */
+  vtkSetMacro(FaceRasterBoundMode, bool);
+  vtkGetMacro(FaceRasterBoundMode, bool);
+  vtkBooleanMacro(FaceRasterBoundMode, bool);
+  ///@}
+
+  enum VisibilityOrders
+  {
+    VisibilityOrderCentroid = 0,
+    VisibilityOrderMPVO = 1,
+    VisibilityOrderAutomatic = 2
+  };
+
+  ///@{
+  /**
+   * The face order the k-buffer finishes (see vtkHAVSFaceOrderPolicy):
+   * - Centroid (default): HAVS's sort of the face centroids by distance;
+   *   nearly sorted, k absorbs the rest.
+   * - MPVO: an exact front-to-back order of the tetrahedra (Williams 1992,
+   *   vtkHAVSVisibilityOrder), each face drawn when the one behind it is
+   *   visited; with the non-convex method (SetNonConvexMethod) also across
+   *   the gaps of a non-convex mesh. Without visibility cycles every pixel
+   *   then needs only k = 1 (2 with fragments at equal distance).
+   * - Automatic: the centroid order while the k-buffer keeps up with it; a
+   *   frame with order violations is drawn again with MPVO at once, and MPVO
+   *   stays for this mesh, k and k-buffer path.
+   * GetLastVisibilityOrder() says which order the last frame used.
+   */
+  vtkSetClampMacro(VisibilityOrder, int, VisibilityOrderCentroid, VisibilityOrderAutomatic);
+  vtkGetMacro(VisibilityOrder, int);
+  void SetVisibilityOrderToCentroid() { this->SetVisibilityOrder(VisibilityOrderCentroid); }
+  void SetVisibilityOrderToMPVO() { this->SetVisibilityOrder(VisibilityOrderMPVO); }
+  void SetVisibilityOrderToAutomatic() { this->SetVisibilityOrder(VisibilityOrderAutomatic); }
+  ///@}
+
+  ///@{
+  /**
+   * MPVO on a non-convex mesh (vtkHAVSVisibilityOrder::NonConvexMethods):
+   * BoundaryLayers (default; after Krishnan, Silva and Wei 2001: per frame,
+   * the boundary faces' depth order at every pixel; exact on any boundary),
+   * Convexification (Röttger, Guthe, Schieber and Ertl 2004: convex imaginary
+   * cells around the mesh, built once per mesh, nothing per frame; needs a
+   * closed, consistently wound boundary: inverted or dropped degenerate cells
+   * break it locally), or Ignore (exact only where no ray re-enters the mesh).
+   * Unused for a convex mesh.
+   */
+  vtkSetClampMacro(NonConvexMethod, int, 0, 2);
+  vtkGetMacro(NonConvexMethod, int);
+  void SetNonConvexMethodToIgnore();
+  void SetNonConvexMethodToBoundaryLayers();
+  void SetNonConvexMethodToConvexification();
+  ///@}
+
+  ///@{
+  /**
+   * Count order violations: fragments the k-buffer composited out of depth
+   * order (nearer than what their pixel had been integrated to), i.e. pixels
+   * where the face order plus k were not enough and the image is not exact.
+   * On by default; the count is read back after each frame (a GPU sync).
+   */
+  vtkSetMacro(CountOrderViolations, bool);
+  vtkGetMacro(CountOrderViolations, bool);
+  vtkBooleanMacro(CountOrderViolations, bool);
+  ///@}
+
+  enum BoundaryModes
+  {
+    BoundaryAutomatic = 0,
+    BoundaryTagging = 1,
+    BoundaryIgnore = 2,
+    BoundaryGapLength = 3
+  };
+
+  ///@{
+  /**
+   * How segments outside the mesh (holes, cavities, gaps between parts, a
+   * concave outline) are told from segments inside it.
+   * - Automatic (default): boundary tagging, except for a convex mesh
+   *   (vtkHAVSFaceSet::IsConvex, decided once per input), where it cannot
+   *   change the image and is skipped.
+   * - Tagging: always tag. Every fragment of a boundary face carries its role
+   *   (entry or exit, from the facing of the outward-wound face); a segment
+   *   whose front is an exit contributes nothing. Exact for any mesh, any k.
+   * - Ignore: no tagging; every gap is filled as if it were volume (wrong for
+   *   non-convex meshes; a negative control).
+   * - GapLength: VTK 5's HAVS heuristic, for comparison: a segment longer than
+   *   the longest edge contributes nothing (misses short gaps, drops long
+   *   segments of sparse k-buffers).
+   */
+  vtkSetClampMacro(BoundaryMode, int, BoundaryAutomatic, BoundaryGapLength);
+  vtkGetMacro(BoundaryMode, int);
+  void SetBoundaryModeToAutomatic() { this->SetBoundaryMode(BoundaryAutomatic); }
+  void SetBoundaryModeToTagging() { this->SetBoundaryMode(BoundaryTagging); }
+  void SetBoundaryModeToIgnore() { this->SetBoundaryMode(BoundaryIgnore); }
+  void SetBoundaryModeToGapLength() { this->SetBoundaryMode(BoundaryGapLength); }
+  ///@}
+
+  ///@{
+  /**
+   * Where the near plane or a clipping plane cuts the mesh, the rays enter
+   * (or leave) the clipped volume where no face lies: the mapper draws the
+   * mesh's section with the plane there, with the interpolated scalar, as an
+   * entry (exit) fragment. On by default; off only for comparison (a
+   * negative control: the slab between the plane and the first face behind
+   * it is then lost).
+   */
+  vtkSetMacro(PlaneSections, bool);
+  vtkGetMacro(PlaneSections, bool);
+  vtkBooleanMacro(PlaneSections, bool);
+  ///@}
+
+  ///@{
+  /**
+   * When on, each frame's premultiplied float RGBA result (before it is
+   * blended into the window) is kept and can be read with GetFloatResult().
+   */
+  vtkSetMacro(KeepFloatResult, bool);
+  vtkGetMacro(KeepFloatResult, bool);
+  vtkBooleanMacro(KeepFloatResult, bool);
+  ///@}
+
+  /**
+   * The last frame's result (4 components, width*height tuples, bottom row
+   * first, the renderer's viewport). Returns false when none is kept.
+   */
+  bool GetFloatResult(vtkFloatArray* rgba, int size[2]);
+
+  /**
+   * What the last frame did: path, k, order, violations, counts, times.
+   */
+  vtkHAVSFrameStatistics* GetLastFrameStatistics();
+
+  ///@{
+  /// Shorthands for the last frame's statistics.
+  int GetActiveKBufferPath();
+  const char* GetActiveKBufferPathName();
+  int GetActiveKBufferSize();
+  int GetLastVisibilityOrder();
+  vtkIdType GetLastOrderViolations();
+  ///@}
+
+  ///@{
+  /// Mesh statistics of the current input.
+  vtkIdType GetNumberOfFaces();
+  vtkIdType GetNumberOfBoundaryFaces();
+  vtkIdType GetNumberOfTetrahedra();
+  /// Whether the current input is one convex body (after its first frame).
+  bool IsInputConvex();
+  ///@}
+
+  ///@{
+  /// MPVO on a non-convex mesh: imaginary cells and the seconds the
+  /// convexification took (once per mesh).
+  vtkIdType GetNumberOfImaginaryCells();
+  double GetConvexificationSeconds();
+  ///@}
+
+  /// The next frame orders the faces again even if the view has not changed (benchmarks).
+  void InvalidateFaceOrder();
+
+  /**
+   * The face-order policy (its centroid sorter's order is the last centroid
+   * frame's draw order; statistics and test aids).
+   */
+  vtkHAVSFaceOrderPolicy* GetFaceOrderPolicy();
+  /// Its centroid sorter.
+  vtkHAVSFaceSorter* GetFaceSorter();
+
+  /**
+   * The pre-integrated table of the last frame (e.g. for the software
+   * k-buffer, which must sample the same table).
+   */
+  vtkHAVSPreIntegrationTable* GetPreIntegrationTable();
+
+  /**
+   * One frame: mesh, table, view, planes, face order, draw, statistics.
+   */
+  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
+
+  // The graphics layer's side (vtkOpenGLHAVSVolumeMapper and its passes read these).
+  /**
+   * What the graphics layer draws: one frame's settings and inputs. The
+   * inputs carry a version (a modification time) so that the layer uploads
+   * only what changed.
+   */
+  struct FrameRequest
+  {
+    const vtkHAVSViewFrame* View = nullptr;
+    vtkHAVSMesh* Mesh = nullptr;                 ///< points, scalars (GetBuildTime())
+    vtkHAVSPreIntegrationTable* Table = nullptr; ///< the table (TableVersion)
+    vtkMTimeType TableVersion = 0;
+    const std::vector<uint32_t>* DrawTriangles = nullptr; ///< faces in draw order
+    const std::vector<uint8_t>* DrawBoundary = nullptr;
+    vtkMTimeType DrawOrderVersion = 0;
+    vtkHAVSFramePlanes* Planes = nullptr; ///< planes and sections (GetSectionsVersion())
+    int Path = 0;                         ///< KBufferPaths
+    int K = 1;
+    int BlendMode = COMPOSITE_BLEND;
+    float TerminationOpacity = 1.0f;
+    bool Tagging = true;       ///< boundary fragments carry their entry/exit role
+    float GapLength = 3.0e38f; ///< segments longer than this contribute nothing (3e38: off)
+    bool Composite = true;     ///< composite the result over the window (else keep it)
+    bool CountViolations = true;
+    bool RasterBoundOnly = false;
+    bool MeasureStages = false;
+    bool KeepResult = false;
+  };
+
+  /// What the graphics layer reports of a drawn frame.
+  struct FrameResult
+  {
+    vtkIdType Violations = 0;
+    std::vector<int> ViolationPixels;
+    vtkIdType Fragments = 0;
+    double DrawSeconds = 0.0;
+    double FlushSeconds = 0.0;
+    double CompositeSeconds = 0.0;
+  };
+
+protected:
+  vtkHAVSVolumeMapper();
+  ~vtkHAVSVolumeMapper() override;
+
+  ///@{
+  /**
+   * The graphics layer (vtkOpenGLHAVSVolumeMapper): the path the window can
+   * run for the requested one (0: none), the largest k of a path, one frame
+   * drawn (false, with an error, when it could not), the kept result of a
+   * frame drawn without compositing composited now, the last kept float
+   * result.
+   */
+  virtual int ChooseKBufferPath(vtkRenderer* renderer, int requested);
+  virtual int GetMaximumK(int path);
+  virtual bool DrawFrame(vtkRenderer* renderer, const FrameRequest& request, FrameResult& result);
+  virtual bool CompositeKeptResult(vtkRenderer* renderer);
+  virtual const std::vector<float>* GetKeptResult(int size[2]);
+  ///@}
+
+  int KBufferSize = 6;
+  int KBufferPath = KBufferPathAutomatic;
+  double EarlyRayTerminationOpacity = 0.999;
+  int TableScalarResolution = 128;
+  int TableLengthResolution = 128;
+  bool MeasureStageTimes = false;
+  bool KeepFloatResult = false;
+  bool FaceRasterBoundMode = false;
+  int BoundaryMode = BoundaryAutomatic;
+  int VisibilityOrder = VisibilityOrderCentroid;
+  int NonConvexMethod = 1; // vtkHAVSVisibilityOrder::NonConvexBoundaryLayers
+  bool CountOrderViolations = true;
+  bool PlaneSections = true;
+
+private:
+  vtkHAVSVolumeMapper(const vtkHAVSVolumeMapper&) = delete;
+  void operator=(const vtkHAVSVolumeMapper&) = delete;
+
+  bool PrepareMesh(vtkVolume* volume);
+  bool PrepareTable(vtkVolume* volume);
+  FrameRequest MakeRequest(const vtkHAVSViewFrame& view, int path, int k);
+  void WarnOnce(int which, const char* message);
+
+  vtkNew<vtkHAVSMesh> Mesh;
+  vtkNew<vtkHAVSPreIntegrationTable> Table;
+  vtkTimeStamp TableBuildTime;
+  vtkNew<vtkHAVSFramePlanes> Planes;
+  vtkNew<vtkHAVSFaceOrderPolicy> FaceOrder;
+  vtkNew<vtkHAVSFrameStatistics> LastFrame;
+  std::array<bool, 8> Warned{};
+};
+
+#endif

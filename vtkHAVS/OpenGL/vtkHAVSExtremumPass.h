@@ -1,0 +1,44 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSExtremumPass.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSExtremumPass
+ * @brief   Maximum and minimum intensity projection: no k-buffer, no order.
+ *
+ * Draw(): every face fragment writes its scalar into the result with GL_MAX
+ * blending (the minimum as the maximum of 1 - s), so the order of the faces
+ * does not matter. Resolve(): each pixel's extremal scalar coloured from the
+ * 1D transfer function (colour and opacity), as VTK's ray casters do.
+ */
+#ifndef vtkHAVSExtremumPass_h
+#define vtkHAVSExtremumPass_h
+
+#include "vtkObject.h"
+
+class vtkHAVSGLPassContext;
+
+class vtkHAVSExtremumPass : public vtkObject
+{
+public:
+  static vtkHAVSExtremumPass* New();
+  vtkTypeMacro(vtkHAVSExtremumPass, vtkObject);
+
+  bool Draw(vtkHAVSGLPassContext& context);
+  bool Resolve(vtkHAVSGLPassContext& context);
+
+protected:
+  vtkHAVSExtremumPass() = default;
+  ~vtkHAVSExtremumPass() override = default;
+
+private:
+  vtkHAVSExtremumPass(const vtkHAVSExtremumPass&) = delete;
+  void operator=(const vtkHAVSExtremumPass&) = delete;
+};
+
+#endif

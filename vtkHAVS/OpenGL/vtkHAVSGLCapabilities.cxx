@@ -1,0 +1,63 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSGLCapabilities.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSGLCapabilities.h"
+
+#include "vtkHAVSOpenGL.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+namespace vtkHAVSGLCapabilities
+{
+bool HasExtension(const char* name)
+{
+  GLint count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  for (GLint i = 0; i < count; ++i)
+  {
+    const char* ext = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
+    if (ext && std::strcmp(ext, name) == 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool HasVersion(int major, int minor)
+{
+  GLint maj = 0, min = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &maj);
+  glGetIntegerv(GL_MINOR_VERSION, &min);
+  return maj > major || (maj == major && min >= minor);
+}
+
+bool InterlockEmulated()
+{
+  const char* requested = std::getenv("HAVS_EMULATE_INTERLOCK");
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return requested && std::string(requested) == "1" && renderer &&
+    std::strstr(renderer, "llvmpipe") != nullptr;
+}
+
+vtkHAVSKBufferShaders::InterlockKind AvailableInterlock()
+{
+  if (HasExtension("GL_ARB_fragment_shader_interlock"))
+  {
+    return vtkHAVSKBufferShaders::InterlockARB;
+  }
+  if (HasExtension("GL_NV_fragment_shader_interlock"))
+  {
+    return vtkHAVSKBufferShaders::InterlockNV;
+  }
+  return vtkHAVSKBufferShaders::InterlockNone;
+}
+}

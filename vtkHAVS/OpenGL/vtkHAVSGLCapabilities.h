@@ -1,0 +1,39 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSGLCapabilities.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @file    vtkHAVSGLCapabilities.h
+ * @brief   What the current OpenGL context offers the k-buffer paths.
+ *
+ * Queries of the context current on the calling thread: version, extensions,
+ * the fragment-shader interlock flavour. HAVS_EMULATE_INTERLOCK=1 on llvmpipe
+ * runs the interlock path without the interlock: llvmpipe shades each tile in
+ * one thread, a pixel's fragments one at a time in primitive order, so the
+ * storage-buffer k-buffer is race-free there without it; this tests the
+ * path's layout, clear and resolve on a machine without an interlock GPU.
+ * Ignored anywhere else.
+ */
+#ifndef vtkHAVSGLCapabilities_h
+#define vtkHAVSGLCapabilities_h
+
+#include "vtkHAVSKBufferShaders.h" // For InterlockKind
+
+namespace vtkHAVSGLCapabilities
+{
+/// Whether the context has the extension.
+bool HasExtension(const char* name);
+/// Whether the context's version is at least major.minor.
+bool HasVersion(int major, int minor);
+/// Whether HAVS_EMULATE_INTERLOCK=1 asks for the emulated interlock and this is llvmpipe.
+bool InterlockEmulated();
+/// The interlock the context has (ARB, NV), else InterlockNone.
+vtkHAVSKBufferShaders::InterlockKind AvailableInterlock();
+}
+
+#endif

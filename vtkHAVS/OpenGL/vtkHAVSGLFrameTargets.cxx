@@ -1,0 +1,219 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSGLFrameTargets.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSGLFrameTargets.h"
+
+#include "vtkHAVSKBufferShaders.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkHAVSGLFrameTargets);
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkTextureObject> vtkHAVSGLFrameTargets::NewFloatTexture(
+  vtkOpenGLRenderWindow* window, int w, int h)
+{
+  auto texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(window);
+  texture->SetInternalFormat(GL_RGBA32F);
+  texture->SetFormat(GL_RGBA);
+  texture->SetDataType(GL_FLOAT);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->Allocate2D(w, h, 4, VTK_FLOAT);
+  return texture;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::Resize(int width, int height)
+{
+  if (this->Size[0] == width && this->Size[1] == height && this->Result)
+  {
+    return;
+  }
+  this->ReleaseSizeDependent(this->Window);
+  this->OpaqueDepth = vtkSmartPointer<vtkTextureObject>::New();
+  this->OpaqueDepth->SetContext(this->Window);
+  this->OpaqueDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
+  this->Result = NewFloatTexture(this->Window, width, height);
+  this->ResultFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+  this->ResultFramebuffer->SetContext(this->Window);
+  this->Window->GetState()->PushFramebufferBindings();
+  this->ResultFramebuffer->Bind();
+  this->ResultFramebuffer->AddColorAttachment(0, this->Result);
+  this->Window->GetState()->PopFramebufferBindings();
+  this->Size[0] = width;
+  this->Size[1] = height;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::CaptureOpaqueDepth(int x, int y, int width, int height)
+{
+  GLint sampleBuffers = 0;
+  glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+  this->OpaqueDepth->Activate();
+  if (sampleBuffers == 0)
+  {
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, x, y, width, height);
+  }
+  else
+  {
+    // A multisampled framebuffer cannot be copied from: no opaque cut.
+    std::vector<float> far(static_cast<size_t>(width) * height, 1.0f);
+    glTexSubImage2D(
+      GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, far.data());
+    vtkGenericWarningMacro(
+      "vtkHAVS: multisampled framebuffer; opaque geometry does not end the volume's rays.");
+  }
+  this->OpaqueDepth->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::BindResult()
+{
+  this->ResultFramebuffer->Bind();
+  this->ResultFramebuffer->ActivateDrawBuffers(1);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::BindResultForReading()
+{
+  this->ResultFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+  this->ResultFramebuffer->ActivateReadBuffer(0);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::ReadResult(std::vector<float>& rgba)
+{
+  rgba.resize(static_cast<size_t>(this->Size[0]) * this->Size[1] * 4);
+  this->BindResultForReading();
+  glReadPixels(0, 0, this->Size[0], this->Size[1], GL_RGBA, GL_FLOAT, rgba.data());
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::ResetViolationCounter()
+{
+  const GLuint zero = 0;
+  if (!this->ViolationCounter)
+  {
+    const GLuint zeros[1 + LoggedViolations] = {};
+    glGenBuffers(1, &this->ViolationCounter);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(zeros), zeros, GL_DYNAMIC_READ);
+  }
+  else
+  {
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &zero);
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, this->ViolationCounter);
+}
+
+//------------------------------------------------------------------------------
+std::uint64_t vtkHAVSGLFrameTargets::ReadViolationCounter(std::vector<int>& pixels)
+{
+  GLuint data[1 + LoggedViolations] = {};
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(data), data);
+  pixels.clear();
+  for (GLuint i = 0; i < std::min<GLuint>(data[0], LoggedViolations); ++i)
+  {
+    pixels.push_back(static_cast<int>(data[1 + i] & 0xFFFFu));
+    pixels.push_back(static_cast<int>(data[1 + i] >> 16));
+  }
+  return data[0];
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSGLFrameTargets::Composite(int originX, int originY)
+{
+  vtkOpenGLState* state = this->Window->GetState();
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  vtkShaderProgram* program = this->Window->GetShaderCache()->ReadyShaderProgram(
+    vtkHAVSKBufferShaders::QuadVertexShader().c_str(),
+    vtkHAVSKBufferShaders::CompositeShader().c_str(), "");
+  if (!program || !program->GetCompiled())
+  {
+    return false;
+  }
+  this->Result->Activate();
+  program->SetUniformi("havsResultTexture", this->Result->GetTextureUnit());
+  const float origin[2] = { static_cast<float>(originX), static_cast<float>(originY) };
+  program->SetUniform2f("havsViewportOrigin", origin);
+  this->DrawFullViewport();
+  this->Result->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::DrawFullViewport()
+{
+  if (!this->EmptyVertexArray)
+  {
+    glGenVertexArrays(1, &this->EmptyVertexArray);
+  }
+  glBindVertexArray(this->EmptyVertexArray);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::ReleaseSizeDependent(vtkWindow* window)
+{
+  if (this->OpaqueDepth)
+  {
+    this->OpaqueDepth->ReleaseGraphicsResources(window);
+  }
+  if (this->Result)
+  {
+    this->Result->ReleaseGraphicsResources(window);
+  }
+  if (this->ResultFramebuffer)
+  {
+    this->ResultFramebuffer->ReleaseGraphicsResources(window);
+  }
+  this->OpaqueDepth = nullptr;
+  this->Result = nullptr;
+  this->ResultFramebuffer = nullptr;
+  this->Size[0] = this->Size[1] = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->ReleaseSizeDependent(window);
+  if (this->ViolationCounter)
+  {
+    glDeleteBuffers(1, &this->ViolationCounter);
+    this->ViolationCounter = 0;
+  }
+  if (this->EmptyVertexArray)
+  {
+    glDeleteVertexArrays(1, &this->EmptyVertexArray);
+    this->EmptyVertexArray = 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+}

@@ -1,0 +1,102 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSGLFrameTargets.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSGLFrameTargets
+ * @brief   The per-viewport targets of a frame: opaque depth, float result, counter.
+ *
+ * - the opaque depth: a copy of the depth VTK's framebuffer holds when the
+ *   volume is drawn (the opaque geometry, which ends the rays);
+ * - the result: a float RGBA texture and its framebuffer, the premultiplied
+ *   image the k-buffer's resolve writes and Composite() blends over VTK's
+ *   framebuffer (ONE, ONE_MINUS_SRC_ALPHA);
+ * - the order-violation counter (a storage buffer at binding 3: the count,
+ *   then the first pixels);
+ * - DrawFullViewport(): a full-viewport triangle for the clear, resolve and
+ *   composite passes.
+ */
+#ifndef vtkHAVSGLFrameTargets_h
+#define vtkHAVSGLFrameTargets_h
+
+#include "vtkHAVSOpenGL.h" // For GLuint
+#include "vtkObject.h"
+#include "vtkSmartPointer.h"  // For vtkSmartPointer
+#include "vtkTextureObject.h" // For vtkSmartPointer<vtkTextureObject>
+
+#include <cstdint> // For std::uint64_t
+#include <vector>  // For std::vector
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkWindow;
+
+class vtkHAVSGLFrameTargets : public vtkObject
+{
+public:
+  static vtkHAVSGLFrameTargets* New();
+  vtkTypeMacro(vtkHAVSGLFrameTargets, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  static constexpr unsigned int LoggedViolations = 16; ///< pixels logged with the count
+
+  void SetContext(vtkOpenGLRenderWindow* window) { this->Window = window; }
+
+  /// (Re)allocates the depth copy and the result for a viewport of this size.
+  void Resize(int width, int height);
+  const int* GetSize() const { return this->Size; }
+
+  /// Copies the depth of VTK's current framebuffer at the viewport.
+  void CaptureOpaqueDepth(int x, int y, int width, int height);
+  vtkTextureObject* GetOpaqueDepth() { return this->OpaqueDepth; }
+
+  /// The result's framebuffer bound for drawing, one colour attachment.
+  void BindResult();
+  /// The result's framebuffer bound for reading its colour attachment.
+  void BindResultForReading();
+
+  /// A new RGBA32F texture of this size (nearest, clamped), in `window`.
+  static vtkSmartPointer<vtkTextureObject> NewFloatTexture(
+    vtkOpenGLRenderWindow* window, int width, int height);
+  vtkTextureObject* GetResult() { return this->Result; }
+  /// Reads the result back (width * height RGBA floats, bottom row first).
+  void ReadResult(std::vector<float>& rgba);
+
+  /// Zeroes the order-violation counter and binds it (binding 3).
+  void ResetViolationCounter();
+  /// The count, and the first pixels (x, y) into `pixels`.
+  std::uint64_t ReadViolationCounter(std::vector<int>& pixels);
+
+  /// Composites the result over VTK's framebuffer (viewport set by the caller).
+  bool Composite(int originX, int originY);
+
+  /// A full-viewport triangle (the vertex shader makes it from gl_VertexID).
+  void DrawFullViewport();
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkHAVSGLFrameTargets() = default;
+  ~vtkHAVSGLFrameTargets() override = default;
+
+private:
+  vtkHAVSGLFrameTargets(const vtkHAVSGLFrameTargets&) = delete;
+  void operator=(const vtkHAVSGLFrameTargets&) = delete;
+
+  void ReleaseSizeDependent(vtkWindow* window);
+
+  vtkOpenGLRenderWindow* Window = nullptr;
+  int Size[2] = { 0, 0 };
+  vtkSmartPointer<vtkTextureObject> OpaqueDepth;
+  vtkSmartPointer<vtkTextureObject> Result;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> ResultFramebuffer;
+  GLuint ViolationCounter = 0;
+  GLuint EmptyVertexArray = 0;
+};
+
+#endif

@@ -1,0 +1,218 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSGLMesh.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSGLMesh.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkHAVSGLMesh);
+
+namespace
+{
+/// Fills the buffers of the bound vertex array that the face vertex shader
+/// reads: points (location 0, 3 floats each) and normalized scalars (location 1).
+void UploadVertexAttributes(GLuint pointBuffer, GLuint scalarBuffer,
+  const std::vector<float>& points, const std::vector<float>& scalars, GLenum usage)
+{
+  glBindBuffer(GL_ARRAY_BUFFER, pointBuffer);
+  glBufferData(GL_ARRAY_BUFFER, points.size() * sizeof(float), points.data(), usage);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, scalarBuffer);
+  glBufferData(GL_ARRAY_BUFFER, scalars.size() * sizeof(float), scalars.data(), usage);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+}
+}
+
+vtkHAVSGLMesh::vtkHAVSGLMesh() = default;
+
+vtkHAVSGLMesh::~vtkHAVSGLMesh()
+{
+  if (this->VertexArray || this->SectionArray)
+  {
+    vtkErrorMacro("ReleaseGraphicsResources was not called before destruction.");
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLMesh::UploadGeometry(
+  const std::vector<float>& points, const std::vector<float>& scalars)
+{
+  if (!this->VertexArray)
+  {
+    glGenVertexArrays(1, &this->VertexArray);
+    glGenBuffers(1, &this->PointBuffer);
+    glGenBuffers(1, &this->ScalarBuffer);
+    glGenBuffers(1, &this->IndexBuffer);
+  }
+  glBindVertexArray(this->VertexArray);
+  UploadVertexAttributes(this->PointBuffer, this->ScalarBuffer, points, scalars, GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSGLMesh::UploadFaceOrder(
+  const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary)
+{
+  if (!this->VertexArray)
+  {
+    vtkErrorMacro("UploadFaceOrder before UploadGeometry.");
+    return false;
+  }
+  glBindVertexArray(this->VertexArray);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, triangles.size() * sizeof(uint32_t), triangles.data(),
+    GL_STREAM_DRAW);
+  glBindVertexArray(0);
+  this->IndexCount = static_cast<GLsizei>(triangles.size());
+
+  if (!this->BoundaryBuffer)
+  {
+    this->BoundaryBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    this->BoundaryTexture = vtkSmartPointer<vtkTextureObject>::New();
+    this->BoundaryTexture->SetContext(this->Window);
+  }
+  // One byte per face: 255 for a boundary face (read as 1.0 from an R8 buffer).
+  std::vector<uint8_t> flags(std::max<size_t>(boundary.size(), 1), 0);
+  for (size_t i = 0; i < boundary.size(); ++i)
+  {
+    flags[i] = boundary[i] ? 255 : 0;
+  }
+  this->BoundaryBuffer->Upload(flags, vtkOpenGLBufferObject::TextureBuffer);
+  this->BoundaryTexture->CreateTextureBuffer(
+    static_cast<unsigned int>(flags.size()), 1, VTK_UNSIGNED_CHAR, this->BoundaryBuffer);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLMesh::UploadSections(const std::vector<vtkHAVSFramePlanes::Section>& sections)
+{
+  this->SectionDraws.clear();
+  std::vector<float> points, scalars;
+  for (const vtkHAVSFramePlanes::Section& section : sections)
+  {
+    const GLsizei count = static_cast<GLsizei>(section.Scalars.size());
+    if (count < 3 || section.Points.size() != 3 * section.Scalars.size())
+    {
+      continue;
+    }
+    this->SectionDraws.push_back(
+      { section.PlaneIndex, section.Entering, static_cast<GLint>(scalars.size()), count });
+    points.insert(points.end(), section.Points.begin(), section.Points.end());
+    scalars.insert(scalars.end(), section.Scalars.begin(), section.Scalars.end());
+  }
+  if (this->SectionDraws.empty())
+  {
+    return;
+  }
+  if (!this->SectionArray)
+  {
+    glGenVertexArrays(1, &this->SectionArray);
+    glGenBuffers(1, &this->SectionPoints);
+    glGenBuffers(1, &this->SectionScalars);
+  }
+  glBindVertexArray(this->SectionArray);
+  UploadVertexAttributes(this->SectionPoints, this->SectionScalars, points, scalars, GL_STREAM_DRAW);
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing)
+{
+  const bool roles = program->IsUniformUsed("havsRole");
+  const bool ownPlane = program->IsUniformUsed("havsOwnPlane");
+  auto drawSections = [&](bool entering) {
+    for (const SectionDraw& d : this->SectionDraws)
+    {
+      if (d.Entering != entering)
+      {
+        continue;
+      }
+      if (roles)
+      {
+        program->SetUniformi("havsRole", entering ? 1 : 2);
+      }
+      if (ownPlane)
+      {
+        program->SetUniformi("havsOwnPlane", d.PlaneIndex);
+      }
+      glBindVertexArray(this->SectionArray);
+      glDrawArrays(GL_TRIANGLES, d.First, d.Count);
+    }
+    if (roles)
+    {
+      program->SetUniformi("havsRole", 0);
+    }
+    if (ownPlane)
+    {
+      program->SetUniformi("havsOwnPlane", -1);
+    }
+  };
+  drawSections(true);
+  glFrontFace(flipFacing ? GL_CW : GL_CCW);
+  glBindVertexArray(this->VertexArray);
+  glDrawElements(GL_TRIANGLES, this->IndexCount, GL_UNSIGNED_INT, nullptr);
+  glFrontFace(GL_CCW);
+  drawSections(false);
+  glBindVertexArray(0);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLMesh::ReleaseGraphicsResources(vtkWindow* window)
+{
+  GLuint buffers[] = { this->PointBuffer, this->ScalarBuffer, this->IndexBuffer,
+    this->SectionPoints, this->SectionScalars };
+  for (GLuint b : buffers)
+  {
+    if (b)
+    {
+      glDeleteBuffers(1, &b);
+    }
+  }
+  this->PointBuffer = this->ScalarBuffer = this->IndexBuffer = 0;
+  this->SectionPoints = this->SectionScalars = 0;
+  this->SectionDraws.clear();
+  for (GLuint* array : { &this->VertexArray, &this->SectionArray })
+  {
+    if (*array)
+    {
+      glDeleteVertexArrays(1, array);
+      *array = 0;
+    }
+  }
+  if (this->BoundaryTexture)
+  {
+    this->BoundaryTexture->ReleaseGraphicsResources(window);
+  }
+  if (this->BoundaryBuffer)
+  {
+    this->BoundaryBuffer->ReleaseGraphicsResources();
+  }
+  this->BoundaryTexture = nullptr;
+  this->BoundaryBuffer = nullptr;
+  this->IndexCount = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLMesh::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Faces uploaded: " << this->IndexCount / 3 << ", sections "
+     << this->SectionDraws.size() << "\n";
+}

@@ -1,0 +1,99 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSGLMesh.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSGLMesh
+ * @brief   The mesh on the GPU: points, scalars, faces in draw order, sections.
+ *
+ * Points (3 floats, model coordinates) and normalized scalars are uploaded
+ * once per mesh; the triangles in draw order and their boundary flags (a
+ * texture buffer indexed by gl_PrimitiveID) once per new face order; the
+ * sections of the near and clipping planes when they change. DrawFaces()
+ * draws, in this order along every ray, the sections that enter the clipped
+ * volume, the faces, the sections that leave it.
+ */
+#ifndef vtkHAVSGLMesh_h
+#define vtkHAVSGLMesh_h
+
+#include "vtkHAVSFramePlanes.h" // For vtkHAVSFramePlanes::Section
+#include "vtkHAVSOpenGL.h"      // For GLuint
+#include "vtkObject.h"
+#include "vtkSmartPointer.h"  // For vtkSmartPointer
+#include "vtkTextureObject.h" // For vtkSmartPointer<vtkTextureObject>
+
+#include <cstdint> // For uint32_t
+#include <vector>  // For std::vector
+
+class vtkOpenGLBufferObject;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkWindow;
+
+class vtkHAVSGLMesh : public vtkObject
+{
+public:
+  static vtkHAVSGLMesh* New();
+  vtkTypeMacro(vtkHAVSGLMesh, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The context every buffer lives in (set before any upload).
+  void SetContext(vtkOpenGLRenderWindow* window) { this->Window = window; }
+
+  /// Points (3 floats each, model coordinates) and normalized scalars.
+  void UploadGeometry(const std::vector<float>& points, const std::vector<float>& scalars);
+  /// The faces in draw order (3 point ids each) and their boundary flags.
+  bool UploadFaceOrder(const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary);
+  /// The sections of the next frames (empty: none).
+  void UploadSections(const std::vector<vtkHAVSFramePlanes::Section>& sections);
+
+  /// The per-face boundary flags (R8 texture buffer), for the draw passes.
+  vtkTextureObject* GetBoundaryTexture() { return this->BoundaryTexture; }
+  vtkIdType GetNumberOfFaces() const { return this->IndexCount / 3; }
+
+  /**
+   * Draws, with `program` bound: the entering sections, the faces (front
+   * faces counter-clockwise, or clockwise for a mirroring volume matrix), the
+   * leaving sections. Sets havsRole and havsOwnPlane for the sections where
+   * the program uses them.
+   */
+  void DrawFaces(vtkShaderProgram* program, bool flipFacing);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkHAVSGLMesh();
+  ~vtkHAVSGLMesh() override;
+
+private:
+  vtkHAVSGLMesh(const vtkHAVSGLMesh&) = delete;
+  void operator=(const vtkHAVSGLMesh&) = delete;
+
+  vtkOpenGLRenderWindow* Window = nullptr;
+  GLuint VertexArray = 0;
+  GLuint PointBuffer = 0;
+  GLuint ScalarBuffer = 0;
+  GLuint IndexBuffer = 0;
+  GLsizei IndexCount = 0;
+  vtkSmartPointer<vtkOpenGLBufferObject> BoundaryBuffer;
+  vtkSmartPointer<vtkTextureObject> BoundaryTexture;
+
+  GLuint SectionArray = 0;
+  GLuint SectionPoints = 0;
+  GLuint SectionScalars = 0;
+  struct SectionDraw
+  {
+    int PlaneIndex;
+    bool Entering;
+    GLint First;
+    GLsizei Count;
+  };
+  std::vector<SectionDraw> SectionDraws;
+};
+
+#endif

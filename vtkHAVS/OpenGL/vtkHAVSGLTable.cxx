@@ -1,0 +1,86 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSGLTable.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSGLTable.h"
+
+#include "vtkHAVSOpenGL.h"
+#include "vtkHAVSPreIntegrationTable.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+vtkStandardNewMacro(vtkHAVSGLTable);
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLTable::Upload(vtkHAVSPreIntegrationTable* table)
+{
+  if (!this->Table)
+  {
+    this->Table = vtkSmartPointer<vtkTextureObject>::New();
+    this->Table->SetContext(this->Window);
+    this->TransferFunction1D = vtkSmartPointer<vtkTextureObject>::New();
+    this->TransferFunction1D->SetContext(this->Window);
+  }
+  for (vtkTextureObject* t : { this->Table.Get(), this->TransferFunction1D.Get() })
+  {
+    t->SetInternalFormat(GL_RGBA32F);
+    t->SetFormat(GL_RGBA);
+    t->SetDataType(GL_FLOAT);
+    t->SetMinificationFilter(vtkTextureObject::Linear);
+    t->SetMagnificationFilter(vtkTextureObject::Linear);
+    t->SetWrapS(vtkTextureObject::ClampToEdge);
+    t->SetWrapT(vtkTextureObject::ClampToEdge);
+    t->SetWrapR(vtkTextureObject::ClampToEdge);
+  }
+  this->ScalarResolution = table->GetScalarResolution();
+  this->LengthResolution = table->GetLengthResolution();
+  this->Table->Create3DFromRaw(this->ScalarResolution, this->ScalarResolution,
+    this->LengthResolution, 4, VTK_FLOAT, const_cast<float*>(table->GetTable()));
+  const std::vector<float>& function = table->GetTransferFunction1D();
+  this->TransferFunction1D->Create1DFromRaw(static_cast<unsigned int>(function.size() / 4), 4,
+    VTK_FLOAT, const_cast<float*>(function.data()));
+  this->MaxLength = table->GetMaxLength() > 0.0 ? table->GetMaxLength() : 1.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLTable::SetUniforms(vtkShaderProgram* program)
+{
+  program->SetUniformi("havsTable", this->Table->GetTextureUnit());
+  const float ns = static_cast<float>(this->ScalarResolution);
+  const float nl = static_cast<float>(this->LengthResolution);
+  const float scalarTexel[2] = { (ns - 1.0f) / ns, 0.5f / ns };
+  const float lengthTexel[2] = { (nl - 1.0f) / nl, 0.5f / nl };
+  program->SetUniform2f("havsScalarTexel", scalarTexel);
+  program->SetUniform2f("havsLengthTexel", lengthTexel);
+  program->SetUniformf("havsInvMaxLength", static_cast<float>(1.0 / this->MaxLength));
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLTable::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Table)
+  {
+    this->Table->ReleaseGraphicsResources(window);
+  }
+  if (this->TransferFunction1D)
+  {
+    this->TransferFunction1D->ReleaseGraphicsResources(window);
+  }
+  this->Table = nullptr;
+  this->TransferFunction1D = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLTable::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Table: " << this->ScalarResolution << "^2 x " << this->LengthResolution
+     << ", max length " << this->MaxLength << "\n";
+}

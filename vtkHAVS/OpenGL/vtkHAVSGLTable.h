@@ -1,0 +1,67 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSGLTable.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSGLTable
+ * @brief   The pre-integrated table and the 1D transfer function on the GPU.
+ *
+ * The 3D table of vtkHAVSPreIntegrationTable (front scalar, back scalar,
+ * length -> premultiplied RGBA, trilinear) and its 1D transfer function (for
+ * maximum and minimum intensity), uploaded once per table build.
+ * SetUniforms() gives a program the table's sampler and texel mapping.
+ */
+#ifndef vtkHAVSGLTable_h
+#define vtkHAVSGLTable_h
+
+#include "vtkObject.h"
+#include "vtkSmartPointer.h"  // For vtkSmartPointer
+#include "vtkTextureObject.h" // For vtkSmartPointer<vtkTextureObject>
+
+class vtkHAVSPreIntegrationTable;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkWindow;
+
+class vtkHAVSGLTable : public vtkObject
+{
+public:
+  static vtkHAVSGLTable* New();
+  vtkTypeMacro(vtkHAVSGLTable, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  void SetContext(vtkOpenGLRenderWindow* window) { this->Window = window; }
+
+  /// Uploads the table and the 1D function.
+  void Upload(vtkHAVSPreIntegrationTable* table);
+
+  vtkTextureObject* GetTable() { return this->Table; }
+  vtkTextureObject* GetTransferFunction1D() { return this->TransferFunction1D; }
+
+  /// havsTable, havsScalarTexel, havsLengthTexel, havsInvMaxLength (table active).
+  void SetUniforms(vtkShaderProgram* program);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkHAVSGLTable() = default;
+  ~vtkHAVSGLTable() override = default;
+
+private:
+  vtkHAVSGLTable(const vtkHAVSGLTable&) = delete;
+  void operator=(const vtkHAVSGLTable&) = delete;
+
+  vtkOpenGLRenderWindow* Window = nullptr;
+  vtkSmartPointer<vtkTextureObject> Table;
+  vtkSmartPointer<vtkTextureObject> TransferFunction1D;
+  int ScalarResolution = 0;
+  int LengthResolution = 0;
+  double MaxLength = 1.0;
+};
+
+#endif

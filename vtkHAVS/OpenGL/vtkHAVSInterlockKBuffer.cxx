@@ -1,0 +1,112 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSInterlockKBuffer.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSInterlockKBuffer.h"
+
+#include "vtkHAVSGLCapabilities.h"
+#include "vtkHAVSGLFrameTargets.h"
+#include "vtkHAVSGLPassContext.h"
+#include "vtkHAVSKBufferShaders.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+
+vtkStandardNewMacro(vtkHAVSInterlockKBuffer);
+
+//------------------------------------------------------------------------------
+bool vtkHAVSInterlockKBuffer::IsSupported(vtkOpenGLRenderWindow*)
+{
+  return vtkHAVSGLCapabilities::HasVersion(4, 3) &&
+    (vtkHAVSGLCapabilities::HasExtension("GL_ARB_fragment_shader_interlock") ||
+      vtkHAVSGLCapabilities::HasExtension("GL_NV_fragment_shader_interlock") ||
+      vtkHAVSGLCapabilities::InterlockEmulated());
+}
+
+int vtkHAVSInterlockKBuffer::GetPath() const
+{
+  return vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock;
+}
+
+int vtkHAVSInterlockKBuffer::GetMaximumK() const
+{
+  return vtkHAVSKBufferShaders::MaximumInterlockK;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSInterlockKBuffer::Allocate(vtkHAVSGLPassContext& context)
+{
+  const size_t bytes = static_cast<size_t>(context.Width()) * context.Height() *
+    vtkHAVSKBufferShaders::InterlockPixelStride(context.Request.K) * 4 * sizeof(float);
+  if (!this->PixelEntries || this->PixelEntriesBytes != bytes)
+  {
+    if (!this->PixelEntries)
+    {
+      glGenBuffers(1, &this->PixelEntries);
+    }
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->PixelEntries);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, bytes, nullptr, GL_DYNAMIC_COPY);
+    this->PixelEntriesBytes = bytes;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSInterlockKBuffer::Clear(vtkHAVSGLPassContext& context)
+{
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->PixelEntries);
+  context.Targets->BindResult();
+  context.Window->GetState()->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  vtkShaderProgram* clear =
+    context.QuadProgram(vtkHAVSKBufferShaders::InterlockClearShader(context.Request.K));
+  if (clear)
+  {
+    context.DrawFullViewport();
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+  return clear != nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSInterlockKBuffer::Draw(vtkHAVSGLPassContext& context)
+{
+  vtkShaderProgram* program = context.FaceProgram(vtkHAVSKBufferShaders::InterlockDrawShader(
+    context.Request.K, vtkHAVSGLCapabilities::AvailableInterlock()));
+  if (program)
+  {
+    context.DrawFaces(program);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+  context.Window->GetState()->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  return program != nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSInterlockKBuffer::Resolve(vtkHAVSGLPassContext& context)
+{
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->PixelEntries);
+  vtkShaderProgram* program = context.QuadProgram(vtkHAVSKBufferShaders::ResolveShader(
+    vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock, context.Request.K, false));
+  if (program)
+  {
+    context.DrawFullViewport();
+  }
+  return program != nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSInterlockKBuffer::ReleaseGraphicsResources(vtkWindow*)
+{
+  if (this->PixelEntries)
+  {
+    glDeleteBuffers(1, &this->PixelEntries);
+    this->PixelEntries = 0;
+    this->PixelEntriesBytes = 0;
+  }
+}

@@ -1,0 +1,218 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSKBufferShaders.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSKBufferShaders.h"
+
+#include "vtkHAVSVolumeMapper.h"
+
+#include "vtkHAVSClearFS.h"
+#include "vtkHAVSCompositeFS.h"
+#include "vtkHAVSExtremumDrawFS.h"
+#include "vtkHAVSExtremumResolveFS.h"
+#include "vtkHAVSFaceVS.h"
+#include "vtkHAVSFetchDrawFS.h"
+#include "vtkHAVSInterlockDrawFS.h"
+#include "vtkHAVSKBufferLib.h"
+#include "vtkHAVSListDrawFS.h"
+#include "vtkHAVSQuadVS.h"
+#include "vtkHAVSResolveFS.h"
+#include "vtkHAVSTrivialFS.h"
+
+#include <sstream>
+
+namespace
+{
+void Replace(std::string& text, const std::string& marker, const std::string& with)
+{
+  const size_t at = text.find(marker);
+  if (at != std::string::npos)
+  {
+    text.replace(at, marker.size(), with);
+  }
+}
+
+/// A fragment-shader template with the defines and the k-buffer library in.
+std::string Compose(const char* templ, int k, int pixelStride)
+{
+  std::string source = templ;
+  std::ostringstream defines;
+  defines << "#define HAVS_K " << k << "\n#define HAVS_PIXEL_STRIDE " << pixelStride << "\n";
+  Replace(source, "//HAVS::Defines", defines.str());
+  Replace(source, "//HAVS::KBufferLib", vtkHAVSKBufferLib);
+  return source;
+}
+
+/// "E[i] = <pair i/2>.xy|zw;" for i < k.
+std::string UnpackEntries(const std::string& pairPrefix, int k)
+{
+  std::ostringstream out;
+  for (int i = 0; i < k; ++i)
+  {
+    out << "E[" << i << "] = " << pairPrefix << i / 2 << (i % 2 ? ".zw" : ".xy") << ";\n  ";
+  }
+  return out.str();
+}
+}
+
+std::string vtkHAVSKBufferShaders::FaceVertexShader()
+{
+  return vtkHAVSFaceVS;
+}
+
+std::string vtkHAVSKBufferShaders::QuadVertexShader()
+{
+  return vtkHAVSQuadVS;
+}
+
+std::string vtkHAVSKBufferShaders::FetchDrawShader(int k)
+{
+  const int pairs = FetchAttachments(k) - 1;
+  std::ostringstream declarations, store;
+  declarations << "layout(location = 0) inout vec4 havsColor;\n";
+  for (int a = 0; a < pairs; ++a)
+  {
+    declarations << "layout(location = " << a + 1 << ") inout vec4 havsEntries" << a << ";\n";
+    const int second = 2 * a + 1;
+    store << "havsEntries" << a << " = vec4(E[" << 2 * a << "], "
+          << (second < k ? "E[" + std::to_string(second) + "]" : "vec2(HAVS_EMPTY, 0.0)")
+          << ");\n  ";
+  }
+  std::string source = Compose(vtkHAVSFetchDrawFS, k, 1);
+  Replace(source, "//HAVS::FetchDeclarations", declarations.str());
+  Replace(source, "//HAVS::FetchLoad", UnpackEntries("havsEntries", k));
+  Replace(source, "//HAVS::FetchStore", store.str());
+  return source;
+}
+
+std::string vtkHAVSKBufferShaders::InterlockDrawShader(int k, InterlockKind kind)
+{
+  static const char* const extension[] = { "#extension GL_ARB_fragment_shader_interlock : require",
+    "#extension GL_NV_fragment_shader_interlock : require", "" };
+  static const char* const layout[] = { "layout(pixel_interlock_ordered) in;",
+    "layout(pixel_interlock_ordered) in;", "" };
+  static const char* const begin[] = { "beginInvocationInterlockARB();",
+    "beginInvocationInterlockNV();", "" };
+  static const char* const end[] = { "endInvocationInterlockARB();", "endInvocationInterlockNV();",
+    "" };
+  std::string source = Compose(vtkHAVSInterlockDrawFS, k, InterlockPixelStride(k));
+  Replace(source, "//HAVS::InterlockExtension", extension[kind]);
+  Replace(source, "//HAVS::InterlockLayout", layout[kind]);
+  Replace(source, "//HAVS::InterlockBegin", begin[kind]);
+  Replace(source, "//HAVS::InterlockEnd", end[kind]);
+  return source;
+}
+
+std::string vtkHAVSKBufferShaders::InterlockClearShader(int k)
+{
+  return Compose(vtkHAVSClearFS, k, InterlockPixelStride(k));
+}
+
+std::string vtkHAVSKBufferShaders::ListDrawShader()
+{
+  return Compose(vtkHAVSListDrawFS, 1, 1);
+}
+
+std::string vtkHAVSKBufferShaders::ResolveShader(int path, int k, bool groupVote)
+{
+  std::string extension, declarations, load;
+  int resolveK = k;
+  int stride = 1;
+  switch (path)
+  {
+    case vtkHAVSVolumeMapper::KBufferPathFramebufferFetch:
+    {
+      std::ostringstream d, l;
+      d << "uniform sampler2D havsColorTexture;\n";
+      l << "color = texelFetch(havsColorTexture, pixel, 0);\n  ";
+      for (int a = 0; a + 1 < FetchAttachments(k); ++a)
+      {
+        d << "uniform sampler2D havsEntryTexture" << a << ";\n";
+        l << "vec4 pair" << a << " = texelFetch(havsEntryTexture" << a << ", pixel, 0);\n  ";
+      }
+      declarations = d.str();
+      load = l.str() + UnpackEntries("pair", k);
+      break;
+    }
+    case vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock:
+      stride = InterlockPixelStride(k);
+      declarations =
+        "layout(std430, binding = 0) buffer HAVSPixelEntries { vec4 havsPixelData[]; };\n";
+      load = "int base = (pixel.y * int(havsViewportSize.x) + pixel.x) * HAVS_PIXEL_STRIDE;\n"
+             "  color = havsPixelData[base];\n"
+             "  for (int i = 0; i < HAVS_K; ++i)\n"
+             "  {\n"
+             "    vec4 pair = havsPixelData[base + 1 + i / 2];\n"
+             "    E[i] = (i % 2 == 0) ? pair.xy : pair.zw;\n"
+             "  }\n";
+      break;
+    case vtkHAVSVolumeMapper::KBufferPathFragmentLists:
+    {
+      // A pixel's list comes out in reverse draw order: it runs back to front
+      // through a k-buffer of ListResolveCapacity entries. Where group vote
+      // exists, the walk goes on until no invocation of the group has nodes
+      // left and every invocation loads an in-range node each turn: llvmpipe
+      // (Mesa 22.3) returns wrong data for a storage-buffer load inside a loop
+      // whose trip count differs between the invocations of a group
+      // (measured: lists cut after one node).
+      resolveK = ListResolveCapacity;
+      extension = std::string(groupVote ? "#extension GL_ARB_shader_group_vote : require\n" : "") +
+        "#define HAVS_BACK_TO_FRONT\n";
+      declarations = "layout(r32ui, binding = 0) uniform readonly uimage2D havsListHeads;\n"
+                     "layout(std430, binding = 1) readonly buffer HAVSListNodes { uvec4 "
+                     "havsNodes[]; };\n"
+                     "uniform int havsNodeCapacity;\n";
+      std::ostringstream l;
+      l << "E[0] = vec2(HAVS_NO_FRONT, 0.0);\n"
+        << "  for (int i = 1; i < HAVS_K; ++i) { E[i] = vec2(HAVS_EMPTY, 0.0); }\n"
+        << "  uint node = imageLoad(havsListHeads, pixel).r;\n"
+        << "  for (uint n = 0u; n < uint(havsNodeCapacity); ++n)\n"
+        << "  {\n"
+        << "    bool walking = node < uint(havsNodeCapacity);\n"
+        << (groupVote ? "    if (!anyInvocationARB(walking)) { break; }\n"
+                      : "    if (!walking) { break; }\n")
+        << "    uvec4 entry = havsNodes[walking ? node : 0u];\n"
+        << "    if (walking)\n"
+        << "    {\n"
+        << "      havsInsertBackToFront(color, E, vec2(uintBitsToFloat(entry.x), "
+           "uintBitsToFloat(entry.y)), opaqueDistance);\n"
+        << "      node = entry.z;\n"
+        << "    }\n"
+        << "  }\n";
+      load = l.str();
+      break;
+    }
+    default:
+      return std::string();
+  }
+  std::string source = vtkHAVSResolveFS;
+  Replace(source, "//HAVS::ResolveExtension", extension);
+  Replace(source, "//HAVS::ResolveDeclarations", declarations);
+  Replace(source, "//HAVS::ResolveLoad", load);
+  return Compose(source.c_str(), resolveK, stride);
+}
+
+std::string vtkHAVSKBufferShaders::ExtremumDrawShader()
+{
+  return Compose(vtkHAVSExtremumDrawFS, 1, 1);
+}
+
+std::string vtkHAVSKBufferShaders::ExtremumResolveShader()
+{
+  return vtkHAVSExtremumResolveFS;
+}
+
+std::string vtkHAVSKBufferShaders::TrivialShader()
+{
+  return vtkHAVSTrivialFS;
+}
+
+std::string vtkHAVSKBufferShaders::CompositeShader()
+{
+  return vtkHAVSCompositeFS;
+}

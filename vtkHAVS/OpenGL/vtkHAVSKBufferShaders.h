@@ -1,0 +1,81 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSKBufferShaders.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSKBufferShaders
+ * @brief   The GLSL sources of every vtkHAVS pass, generated for a k and a path.
+ *
+ * The templates are the `.glsl` files of vtkHAVS/shaders, embedded at build
+ * time; `//HAVS::` markers in them are replaced here: the defines (HAVS_K,
+ * the per-pixel stride), the shared k-buffer library, the per-path
+ * declarations and loads. No OpenGL: the sources can be generated and checked
+ * (e.g. by glslangValidator) on a machine without the matching GPU.
+ */
+#ifndef vtkHAVSKBufferShaders_h
+#define vtkHAVSKBufferShaders_h
+
+#include "vtkHAVSOpenGLModule.h" // For export macro
+
+#include <string> // For std::string
+
+class VTKHAVSOPENGL_EXPORT vtkHAVSKBufferShaders
+{
+public:
+  ///@{
+  /// The largest k of each path: framebuffer fetch (1 + (k+1)/2 <= 8 colour
+  /// attachments), interlock (per-pixel storage); the fragment-list resolve
+  /// sorts up to ListResolveCapacity fragments per pixel exactly.
+  static constexpr int MaximumFetchK = 14;
+  static constexpr int MaximumInterlockK = 64;
+  static constexpr int ListResolveCapacity = 64;
+  ///@}
+
+  /// Vertex shader of the passes that rasterize the faces.
+  static std::string FaceVertexShader();
+  /// Vertex shader of the full-viewport passes.
+  static std::string QuadVertexShader();
+
+  /// Framebuffer-fetch draw pass: entries in 1 + (k+1)/2 colour attachments.
+  static std::string FetchDrawShader(int k);
+  /// How the interlock draw pass guards its read-modify-write.
+  enum InterlockKind
+  {
+    InterlockARB,  ///< ARB_fragment_shader_interlock, ordered
+    InterlockNV,   ///< NV_fragment_shader_interlock, ordered
+    InterlockNone, ///< none: only for a rasterizer that shades a pixel's
+                   ///< fragments one at a time in primitive order (llvmpipe),
+                   ///< to test the path's storage layout, clear and resolve
+  };
+  /// Interlock draw pass.
+  static std::string InterlockDrawShader(int k, InterlockKind kind);
+  /// Interlock clear pass (per-pixel storage to empty).
+  static std::string InterlockClearShader(int k);
+  /// Fragment-list draw pass (append to per-pixel lists).
+  static std::string ListDrawShader();
+
+  /// Resolve (flush) pass of a path (vtkHAVSVolumeMapper::KBufferPaths);
+  /// `groupVote`: the fragment-list walk uses ARB_shader_group_vote.
+  static std::string ResolveShader(int path, int k, bool groupVote);
+  /// Number of storage slots (vec4) per pixel on the interlock path.
+  static int InterlockPixelStride(int k) { return 1 + (k + 1) / 2; }
+  /// Colour attachments of the framebuffer-fetch path.
+  static int FetchAttachments(int k) { return 1 + (k + 1) / 2; }
+
+  /// Maximum / minimum intensity passes.
+  static std::string ExtremumDrawShader();
+  static std::string ExtremumResolveShader();
+
+  /// Benchmark aid: a trivial fragment shader (rasterization cost alone).
+  static std::string TrivialShader();
+
+  /// Composites the result over VTK's framebuffer.
+  static std::string CompositeShader();
+};
+
+#endif

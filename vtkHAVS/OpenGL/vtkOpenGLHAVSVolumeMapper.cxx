@@ -1,0 +1,325 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkOpenGLHAVSVolumeMapper.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkOpenGLHAVSVolumeMapper.h"
+
+#include "vtkHAVSExtremumPass.h"
+#include "vtkHAVSFragmentListKBuffer.h"
+#include "vtkHAVSFramePlanes.h"
+#include "vtkHAVSFramebufferFetchKBuffer.h"
+#include "vtkHAVSGLFrameTargets.h"
+#include "vtkHAVSGLMesh.h"
+#include "vtkHAVSGLPassContext.h"
+#include "vtkHAVSGLTable.h"
+#include "vtkHAVSInterlockKBuffer.h"
+#include "vtkHAVSMesh.h"
+#include "vtkHAVSOpenGL.h"
+#include "vtkHAVSRasterBoundPass.h"
+#include "vtkHAVSViewFrame.h"
+
+#include "vtkCommand.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtkTextureObject.h"
+#include "vtkTimerLog.h"
+
+vtkStandardNewMacro(vtkOpenGLHAVSVolumeMapper);
+
+//------------------------------------------------------------------------------
+vtkOpenGLHAVSVolumeMapper::vtkOpenGLHAVSVolumeMapper() = default;
+
+vtkOpenGLHAVSVolumeMapper::~vtkOpenGLHAVSVolumeMapper()
+{
+  this->ReleaseGraphicsResources(nullptr);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLHAVSVolumeMapper::IsKBufferPathSupported(vtkRenderWindow* window, int path)
+{
+  auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!glWindow)
+  {
+    return false;
+  }
+  glWindow->MakeCurrent();
+  switch (path)
+  {
+    case KBufferPathFramebufferFetch:
+      return vtkHAVSFramebufferFetchKBuffer::IsSupported(glWindow);
+    case KBufferPathFragmentShaderInterlock:
+      return vtkHAVSInterlockKBuffer::IsSupported(glWindow);
+    case KBufferPathFragmentLists:
+      return vtkHAVSFragmentListKBuffer::IsSupported(glWindow);
+    default:
+      return false;
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkOpenGLHAVSVolumeMapper::ChooseKBufferPath(vtkRenderer* renderer, int requested)
+{
+  vtkRenderWindow* window = renderer->GetRenderWindow();
+  if (requested != KBufferPathAutomatic && this->IsKBufferPathSupported(window, requested))
+  {
+    return requested;
+  }
+  for (int path :
+    { KBufferPathFramebufferFetch, KBufferPathFragmentShaderInterlock, KBufferPathFragmentLists })
+  {
+    if (this->IsKBufferPathSupported(window, path))
+    {
+      return path;
+    }
+  }
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkOpenGLHAVSVolumeMapper::GetMaximumK(int path)
+{
+  vtkHAVSKBuffer* kbuffer = this->GetKBuffer(path);
+  return kbuffer ? kbuffer->GetMaximumK() : 0;
+}
+
+//------------------------------------------------------------------------------
+vtkHAVSKBuffer* vtkOpenGLHAVSVolumeMapper::GetKBuffer(int path)
+{
+  switch (path)
+  {
+    case KBufferPathFramebufferFetch:
+      return this->FetchKBuffer;
+    case KBufferPathFragmentShaderInterlock:
+      return this->InterlockKBuffer;
+    case KBufferPathFragmentLists:
+      return this->ListKBuffer;
+    default:
+      return nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSVolumeMapper::PrepareWindow(vtkOpenGLRenderWindow* window)
+{
+  if (this->Window == window)
+  {
+    window->MakeCurrent();
+    return;
+  }
+  this->ReleaseGraphicsResources(this->Window);
+  this->Window = window;
+  // A window that goes away while this mapper is not among its props (so that
+  // it is not told to release) takes the resources with it: watch for that.
+  this->WindowDeleteObserver = window->AddObserver(
+    vtkCommand::DeleteEvent, this, &vtkOpenGLHAVSVolumeMapper::OnWindowDeleted);
+  window->MakeCurrent();
+  this->GLMesh->SetContext(window);
+  this->GLTable->SetContext(window);
+  this->Targets->SetContext(window);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSVolumeMapper::OnWindowDeleted(vtkObject* window, unsigned long, void*)
+{
+  this->ReleaseGraphicsResources(vtkWindow::SafeDownCast(window));
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request)
+{
+  vtkHAVSMesh* mesh = request.Mesh;
+  if (this->Uploaded.Geometry != mesh->GetBuildTime())
+  {
+    this->GLMesh->UploadGeometry(mesh->GetPoints(), mesh->GetScalars());
+    this->Uploaded.Geometry = mesh->GetBuildTime();
+    this->Uploaded.Order = 0;
+  }
+  if (this->Uploaded.Order != request.DrawOrderVersion)
+  {
+    if (!this->GLMesh->UploadFaceOrder(*request.DrawTriangles, *request.DrawBoundary))
+    {
+      return false;
+    }
+    this->Uploaded.Order = request.DrawOrderVersion;
+  }
+  if (this->Uploaded.Sections != request.Planes->GetSectionsVersion())
+  {
+    this->GLMesh->UploadSections(request.Planes->GetSections());
+    this->Uploaded.Sections = request.Planes->GetSectionsVersion();
+  }
+  if (this->Uploaded.Table != request.TableVersion)
+  {
+    this->GLTable->Upload(request.Table);
+    this->Uploaded.Table = request.TableVersion;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
+  vtkRenderer* renderer, const FrameRequest& request, FrameResult& result)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!window)
+  {
+    vtkErrorMacro("vtkHAVSVolumeMapper needs an OpenGL render window.");
+    return false;
+  }
+  this->PrepareWindow(window);
+  if (!this->Upload(request))
+  {
+    return false;
+  }
+  const vtkHAVSViewFrame& view = *request.View;
+  const int width = view.Width, height = view.Height;
+  vtkOpenGLState* state = window->GetState();
+  this->Targets->Resize(width, height);
+  this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height);
+  vtkHAVSGLPassContext context(window, this->GLMesh, this->GLTable, this->Targets, request);
+  const bool extremum = request.BlendMode != COMPOSITE_BLEND;
+  vtkHAVSKBuffer* kbuffer = this->GetKBuffer(request.Path);
+  auto now = [&request]() {
+    if (!request.MeasureStages)
+    {
+      return 0.0;
+    }
+    glFinish();
+    return vtkTimerLog::GetUniversalTime();
+  };
+
+  vtkHAVSGLScopedPassState passState(state);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  state->vtkglViewport(0, 0, width, height);
+  vtkTextureObject* textures[] = { this->GLTable->GetTable(), this->Targets->GetOpaqueDepth(),
+    this->GLMesh->GetBoundaryTexture() };
+  for (vtkTextureObject* t : textures)
+  {
+    t->Activate();
+  }
+  state->PushFramebufferBindings();
+
+  // Draw, resolve.
+  const double t0 = now();
+  bool ok = false;
+  if (request.RasterBoundOnly)
+  {
+    ok = this->RasterBound->Draw(context);
+  }
+  else if (extremum)
+  {
+    ok = this->Extremum->Draw(context);
+  }
+  else if (kbuffer)
+  {
+    this->Targets->ResetViolationCounter();
+    ok = kbuffer->Allocate(context) && kbuffer->Clear(context) && kbuffer->Draw(context);
+    result.Fragments = kbuffer->GetLastFragmentCount();
+  }
+  const double t1 = now();
+  if (ok && !request.RasterBoundOnly)
+  {
+    this->Targets->BindResult();
+    ok = extremum ? this->Extremum->Resolve(context) : kbuffer->Resolve(context);
+  }
+
+  // Read backs.
+  if (ok && !request.RasterBoundOnly && !extremum && request.CountViolations)
+  {
+    result.Violations =
+      static_cast<vtkIdType>(this->Targets->ReadViolationCounter(result.ViolationPixels));
+  }
+  if (ok && request.KeepResult)
+  {
+    this->Targets->ReadResult(this->KeptResult);
+    this->KeptSize[0] = width;
+    this->KeptSize[1] = height;
+  }
+  const double t2 = now();
+  for (vtkTextureObject* t : textures)
+  {
+    t->Deactivate();
+  }
+  state->PopFramebufferBindings();
+
+  // Composite.
+  if (ok && !request.RasterBoundOnly && request.Composite)
+  {
+    state->vtkglViewport(view.OriginX, view.OriginY, width, height);
+    ok = this->Targets->Composite(view.OriginX, view.OriginY);
+  }
+  const double t3 = now();
+  result.DrawSeconds = t1 - t0;
+  result.FlushSeconds = t2 - t1;
+  result.CompositeSeconds = t3 - t2;
+  if (!ok)
+  {
+    vtkErrorMacro("A vtkHAVS shader could not be built for the "
+      << GetKBufferPathName(request.Path) << " path with k = " << request.K
+      << "; see the shader log above.");
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLHAVSVolumeMapper::CompositeKeptResult(vtkRenderer* renderer)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  int width = 0, height = 0, originX = 0, originY = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &originX, &originY);
+  if (!window || window != this->Window || !this->Targets->GetResult() ||
+    width != this->Targets->GetSize()[0] || height != this->Targets->GetSize()[1])
+  {
+    vtkErrorMacro("CompositeKeptResult needs the last frame's result in this window.");
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  vtkHAVSGLScopedPassState passState(state);
+  state->vtkglViewport(originX, originY, width, height);
+  return this->Targets->Composite(originX, originY);
+}
+
+//------------------------------------------------------------------------------
+const std::vector<float>* vtkOpenGLHAVSVolumeMapper::GetKeptResult(int size[2])
+{
+  size[0] = this->KeptSize[0];
+  size[1] = this->KeptSize[1];
+  return &this->KeptResult;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (!this->Window || (window && window != this->Window))
+  {
+    return;
+  }
+  vtkOpenGLRenderWindow* home = this->Window;
+  home->MakeCurrent();
+  this->GLMesh->ReleaseGraphicsResources(home);
+  this->GLTable->ReleaseGraphicsResources(home);
+  this->Targets->ReleaseGraphicsResources(home);
+  this->FetchKBuffer->ReleaseGraphicsResources(home);
+  this->InterlockKBuffer->ReleaseGraphicsResources(home);
+  this->ListKBuffer->ReleaseGraphicsResources(home);
+  home->RemoveObserver(this->WindowDeleteObserver);
+  this->Window = nullptr;
+  this->Uploaded = UploadedVersions();
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Window: " << this->Window << "\n";
+  this->GLMesh->PrintSelf(os, indent.GetNextIndent());
+  this->GLTable->PrintSelf(os, indent.GetNextIndent());
+  this->Targets->PrintSelf(os, indent.GetNextIndent());
+}

@@ -1,0 +1,374 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSDataSets.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSDataSets.h"
+
+#include "vtkAppendFilter.h"
+#include "vtkCell.h"
+#include "vtkCellType.h"
+#include "vtkDataSetTriangleFilter.h"
+#include "vtkDoubleArray.h"
+#include "vtkExtractCells.h"
+#include "vtkIdList.h"
+#include "vtkImageData.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkMultiBlockPLOT3DReader.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkThreshold.h"
+#include "vtkTransform.h"
+#include "vtkTransformFilter.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridReader.h"
+#include "vtkXMLUnstructuredGridReader.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+vtkStandardNewMacro(vtkHAVSDataSets);
+
+namespace
+{
+bool Readable(const std::string& path)
+{
+  return std::ifstream(path).good();
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> ThresholdedWavelet()
+{
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-8, 8, -8, 8, -8, 8);
+  vtkNew<vtkThreshold> threshold;
+  threshold->SetInputConnection(wavelet->GetOutputPort());
+  threshold->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "RTData");
+  threshold->SetLowerThreshold(160.0);
+  threshold->SetUpperThreshold(1000.0);
+  threshold->SetThresholdFunction(vtkThreshold::THRESHOLD_BETWEEN);
+  threshold->Update();
+  auto grid = vtkHAVSDataSets::Tetrahedralize(threshold->GetOutput());
+  grid->GetPointData()->SetActiveScalars("RTData");
+  return grid;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> HollowSphere()
+{
+  auto box = vtkHAVSDataSets::MakeBox(16, 16, 16, 1.0 / 16, 0.0, 1.0);
+  return vtkHAVSDataSets::KeepCells(box, [](const double* c) {
+    const double r = std::sqrt((c[0] - 0.5) * (c[0] - 0.5) + (c[1] - 0.5) * (c[1] - 0.5) +
+      (c[2] - 0.5) * (c[2] - 0.5));
+    return r > 0.22 && r < 0.48;
+  });
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> Torus()
+{
+  auto box = vtkHAVSDataSets::MakeBox(24, 24, 12, 1.0 / 24, 0.0, 2.0);
+  return vtkHAVSDataSets::KeepCells(box, [](const double* c) {
+    const double ring = std::sqrt((c[0] - 0.5) * (c[0] - 0.5) + (c[1] - 0.5) * (c[1] - 0.5));
+    return (ring - 0.32) * (ring - 0.32) + (c[2] - 0.25) * (c[2] - 0.25) < 0.13 * 0.13;
+  });
+}
+
+/// Two 1 x 1 x 1 blocks of 6^3 cubes (longest edge 0.29) with a gap of 0.08
+/// between them along x.
+vtkSmartPointer<vtkUnstructuredGrid> TwoBlocks()
+{
+  auto a = vtkHAVSDataSets::MakeBox(6, 6, 6, 1.0 / 6, 0.0, 1.0);
+  auto b = vtkHAVSDataSets::MakeBox(6, 6, 6, 1.0 / 6, 0.0, 1.0);
+  vtkNew<vtkTransform> shift;
+  shift->Translate(1.08, 0.0, 0.0);
+  vtkNew<vtkTransformFilter> moved;
+  moved->SetInputData(b);
+  moved->SetTransform(shift);
+  vtkNew<vtkAppendFilter> both;
+  both->AddInputData(a);
+  both->AddInputConnection(moved->GetOutputPort());
+  both->MergePointsOff();
+  both->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = both->GetOutput();
+  grid->GetPointData()->SetActiveScalars("s");
+  return grid;
+}
+
+struct RealDataSet
+{
+  const char* Name;
+  const char* Stem; // PLOT3D: <stem>xyz.bin, <stem>q.bin; empty: post.vtk
+  int Function;
+};
+const RealDataSet kRealDataSets[] = { { "bluntfin", "bluntfin", 100 }, { "loxpost", "post", 110 },
+  { "combustor", "comb", 100 }, { "loxpostvtk", "", 0 } };
+const char* const kMadeHere[] = { "gen1M", "gen4M", "gen10M", "box", "wavelet", "hollowsphere",
+  "torus", "twoblocks" };
+}
+
+//------------------------------------------------------------------------------
+std::string vtkHAVSDataSets::GetDataDirectory()
+{
+  const char* d = std::getenv("HAVS_DATA_DIR");
+  return d && *d ? d : "../shared/data";
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::string> vtkHAVSDataSets::GetNames()
+{
+  std::vector<std::string> names;
+  for (const RealDataSet& d : kRealDataSets)
+  {
+    names.emplace_back(d.Name);
+  }
+  names.insert(names.end(), std::begin(kMadeHere), std::end(kMadeHere));
+  return names;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSDataSets::IsRealDataSet(const std::string& name)
+{
+  for (const RealDataSet& d : kRealDataSets)
+  {
+    if (name == d.Name)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::Load(const std::string& name)
+{
+  const std::string dir = GetDataDirectory();
+  for (const RealDataSet& d : kRealDataSets)
+  {
+    if (name != d.Name)
+    {
+      continue;
+    }
+    if (!*d.Stem)
+    {
+      return ReadFile(dir + "/post.vtk", "Pressure");
+    }
+    return ReadPlot3D(
+      dir + "/" + d.Stem + "xyz.bin", dir + "/" + d.Stem + "q.bin", d.Function);
+  }
+  if (name == "gen1M")
+  {
+    return MakeGenerated(60);
+  }
+  if (name == "gen4M")
+  {
+    return MakeGenerated(94);
+  }
+  if (name == "gen10M")
+  {
+    return MakeGenerated(127);
+  }
+  if (name == "box")
+  {
+    return MakeBox(8, 8, 8, 0.125, 0.0, 1.0);
+  }
+  if (name == "wavelet")
+  {
+    return ThresholdedWavelet();
+  }
+  if (name == "hollowsphere")
+  {
+    return HollowSphere();
+  }
+  if (name == "torus")
+  {
+    return Torus();
+  }
+  if (name == "twoblocks")
+  {
+    return TwoBlocks();
+  }
+  vtkGenericWarningMacro("vtkHAVSDataSets: unknown data set '" << name << "'.");
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::ReadFile(
+  const std::string& path, const std::string& array)
+{
+  if (!Readable(path))
+  {
+    vtkGenericWarningMacro("vtkHAVSDataSets: cannot open " << path);
+    return nullptr;
+  }
+  vtkSmartPointer<vtkDataSet> data;
+  const bool xml = path.size() > 4 && path.substr(path.size() - 4) == ".vtu";
+  if (xml)
+  {
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    data = reader->GetOutput();
+  }
+  else
+  {
+    vtkNew<vtkUnstructuredGridReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    data = reader->GetOutput();
+  }
+  if (!data || data->GetNumberOfCells() == 0)
+  {
+    vtkGenericWarningMacro("vtkHAVSDataSets: no cells read from " << path);
+    return nullptr;
+  }
+  vtkPointData* pd = data->GetPointData();
+  if (!array.empty())
+  {
+    if (!pd->GetArray(array.c_str()))
+    {
+      vtkGenericWarningMacro("vtkHAVSDataSets: " << path << " has no point array " << array);
+      return nullptr;
+    }
+    pd->SetActiveScalars(array.c_str());
+  }
+  else if (!pd->GetScalars() && pd->GetNumberOfArrays() > 0)
+  {
+    pd->SetActiveScalars(pd->GetArrayName(0));
+  }
+  // A grid of tetrahedra only is taken as it is (points and cells in order).
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
+  bool tetrahedra = grid != nullptr;
+  for (vtkIdType c = 0; tetrahedra && c < grid->GetNumberOfCells(); ++c)
+  {
+    tetrahedra = grid->GetCellType(c) == VTK_TETRA;
+  }
+  if (tetrahedra)
+  {
+    return grid;
+  }
+  return Tetrahedralize(data);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::ReadPlot3D(
+  const std::string& xyzPath, const std::string& qPath, int function)
+{
+  for (const std::string& path : { xyzPath, qPath })
+  {
+    if (!Readable(path))
+    {
+      vtkGenericWarningMacro("vtkHAVSDataSets: cannot open " << path);
+      return nullptr;
+    }
+  }
+  vtkNew<vtkMultiBlockPLOT3DReader> reader;
+  reader->SetXYZFileName(xyzPath.c_str());
+  reader->SetQFileName(qPath.c_str());
+  reader->AutoDetectFormatOn();
+  reader->SetScalarFunctionNumber(function);
+  reader->Update();
+  vtkDataSet* block = reader->GetOutput() && reader->GetOutput()->GetNumberOfBlocks() > 0
+    ? vtkDataSet::SafeDownCast(reader->GetOutput()->GetBlock(0))
+    : nullptr;
+  if (!block || block->GetNumberOfCells() == 0)
+  {
+    vtkGenericWarningMacro("vtkHAVSDataSets: no grid read from " << xyzPath << " and " << qPath);
+    return nullptr;
+  }
+  return Tetrahedralize(block);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::Tetrahedralize(vtkDataSet* data)
+{
+  if (!data)
+  {
+    return nullptr;
+  }
+  vtkNew<vtkDataSetTriangleFilter> tets;
+  tets->SetInputData(data);
+  tets->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = tets->GetOutput();
+  return grid;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::MakeBox(
+  int nx, int ny, int nz, double h, double a, double b)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(nx + 1, ny + 1, nz + 1);
+  image->SetSpacing(h, h, h);
+  vtkNew<vtkDoubleArray> s;
+  s->SetName("s");
+  s->SetNumberOfTuples(image->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    image->GetPoint(i, x);
+    s->SetValue(i, a + b * x[2]);
+  }
+  image->GetPointData()->SetScalars(s);
+  return Tetrahedralize(image);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::MakeGenerated(int n)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(n + 1, n + 1, n + 1);
+  image->SetSpacing(1.0 / n, 1.0 / n, 1.0 / n);
+  vtkNew<vtkDoubleArray> field;
+  field->SetName("field");
+  field->SetNumberOfTuples(image->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    image->GetPoint(i, x);
+    field->SetValue(i, std::sin(6 * x[0]) * std::cos(5 * x[1]) + x[2]);
+  }
+  image->GetPointData()->SetScalars(field);
+  return Tetrahedralize(image);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::KeepCells(
+  vtkUnstructuredGrid* grid, const std::function<bool(const double*)>& keep)
+{
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    vtkIdList* points = grid->GetCell(c)->GetPointIds();
+    double centroid[3] = { 0, 0, 0 };
+    for (vtkIdType i = 0; i < points->GetNumberOfIds(); ++i)
+    {
+      double x[3];
+      grid->GetPoint(points->GetId(i), x);
+      for (int k = 0; k < 3; ++k)
+      {
+        centroid[k] += x[k] / points->GetNumberOfIds();
+      }
+    }
+    if (keep(centroid))
+    {
+      ids->InsertNextId(c);
+    }
+  }
+  vtkNew<vtkExtractCells> extract;
+  extract->SetInputData(grid);
+  extract->SetCellList(ids);
+  extract->Update();
+  return extract->GetOutput();
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSDataSets::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DataDirectory: " << GetDataDirectory() << "\n";
+}

@@ -1,0 +1,620 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSReferenceRenderer.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSReferenceRenderer.h"
+
+#include "vtkHAVSFaceRasterizer.h"
+#include "vtkHAVSFaceSet.h"
+#include "vtkHAVSPlaneSection.h"
+#include "vtkHAVSPreIntegrationTable.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkGenericCell.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
+#include "vtkPointData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkStaticCellLocator.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+
+vtkStandardNewMacro(vtkHAVSReferenceRenderer);
+
+//------------------------------------------------------------------------------
+vtkHAVSReferenceRenderer::vtkHAVSReferenceRenderer()
+{
+  this->Image->SetNumberOfComponents(4);
+}
+
+vtkHAVSReferenceRenderer::~vtkHAVSReferenceRenderer() = default;
+
+void vtkHAVSReferenceRenderer::SetInputData(vtkUnstructuredGrid* grid)
+{
+  this->Input = grid;
+  this->Modified();
+}
+
+void vtkHAVSReferenceRenderer::SetProperty(vtkVolumeProperty* property)
+{
+  this->Property = property;
+  this->Modified();
+}
+
+void vtkHAVSReferenceRenderer::SetCamera(vtkCamera* camera)
+{
+  this->Camera = camera;
+  this->Modified();
+}
+
+void vtkHAVSReferenceRenderer::SetClippingPlanes(vtkPlaneCollection* planes)
+{
+  this->ClippingPlanes = planes;
+  this->Modified();
+}
+
+vtkPlaneCollection* vtkHAVSReferenceRenderer::GetClippingPlanes()
+{
+  return this->ClippingPlanes;
+}
+
+void vtkHAVSReferenceRenderer::SetOpaqueDepth(vtkFloatArray* depth)
+{
+  this->OpaqueDepth = depth;
+  this->Modified();
+}
+
+void vtkHAVSReferenceRenderer::SetVolumeMatrix(vtkMatrix4x4* matrix)
+{
+  if (matrix)
+  {
+    this->VolumeMatrix->DeepCopy(matrix);
+  }
+  else
+  {
+    this->VolumeMatrix->Identity();
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSReferenceRenderer::ReportProgress(double progress)
+{
+  this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSReferenceRenderer::ComputeFragments()
+{
+  this->Fragments.clear();
+  this->PixelStart.assign(1, 0);
+  if (!this->Input || !this->Camera || this->Size[0] <= 0 || this->Size[1] <= 0)
+  {
+    vtkErrorMacro("Needs an input grid, a camera and a positive size.");
+    return false;
+  }
+  vtkDataArray* scalars = this->Input->GetPointData()->GetScalars();
+  if (!scalars)
+  {
+    vtkErrorMacro("The input has no point scalars.");
+    return false;
+  }
+  if (!this->Faces->Build(this->Input))
+  {
+    return false;
+  }
+  this->ReportProgress(0.0);
+
+  // World-space points and finite scalars (NaN/Inf -> the lowest finite value).
+  const vtkIdType numPoints = this->Input->GetNumberOfPoints();
+  std::vector<double> world(3 * numPoints);
+  std::vector<double> values(numPoints);
+  double range[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest() };
+  for (vtkIdType p = 0; p < numPoints; ++p)
+  {
+    double x[4] = { 0, 0, 0, 1 }, y[4];
+    this->Input->GetPoint(p, x);
+    this->VolumeMatrix->MultiplyPoint(x, y);
+    for (int k = 0; k < 3; ++k)
+    {
+      world[3 * p + k] = y[k] / y[3];
+    }
+    values[p] = scalars->GetComponent(p, 0);
+    if (std::isfinite(values[p]))
+    {
+      range[0] = std::min(range[0], values[p]);
+      range[1] = std::max(range[1], values[p]);
+    }
+  }
+  if (range[0] > range[1])
+  {
+    range[0] = range[1] = 0.0;
+  }
+  for (double& v : values)
+  {
+    v = std::isfinite(v) ? v : range[0];
+  }
+  this->ScalarRange[0] = range[0];
+  this->ScalarRange[1] = range[1];
+
+  // The camera, as the mapper sees it for an image of this size.
+  vtkNew<vtkMatrix4x4> worldToClip;
+  worldToClip->DeepCopy(this->Camera->GetCompositeProjectionTransformMatrix(
+    static_cast<double>(this->Size[0]) / this->Size[1], -1, 1));
+  double eye[3], directionOfProjection[3];
+  this->Camera->GetPosition(eye);
+  this->Camera->GetDirectionOfProjection(directionOfProjection);
+  const bool parallel = this->Camera->GetParallelProjection() != 0;
+  vtkNew<vtkHAVSFaceRasterizer> rasterizer;
+  rasterizer->SetView(
+    worldToClip->GetData(), eye, directionOfProjection, parallel, this->Size[0], this->Size[1]);
+  const bool mirrored = this->VolumeMatrix->Determinant() < 0.0;
+
+  // The near and clipping planes, world coordinates: kept where n.x + w >= 0.
+  struct WorldPlane
+  {
+    double N[3];
+    double W;
+  };
+  std::vector<WorldPlane> planes;
+  if (this->NearPlaneClipping)
+  {
+    double range[2];
+    this->Camera->GetClippingRange(range);
+    const double* d = directionOfProjection;
+    planes.push_back({ { d[0], d[1], d[2] }, -vtkMath::Dot(d, eye) - range[0] });
+  }
+  if (this->ClippingPlanes)
+  {
+    for (int i = 0; i < std::min(6, this->ClippingPlanes->GetNumberOfItems()); ++i)
+    {
+      vtkPlane* plane = this->ClippingPlanes->GetItem(i);
+      WorldPlane p;
+      plane->GetNormal(p.N);
+      if (vtkMath::Norm(p.N) > 0.0)
+      {
+        p.W = -vtkMath::Dot(p.N, plane->GetOrigin());
+        planes.push_back(p);
+      }
+    }
+  }
+  auto discarded = [&](const WorldPlane& plane, const double* x) {
+    return vtkMath::Dot(plane.N, x) + plane.W < 0.0;
+  };
+
+  // Every face at every pixel centre (faces wholly on the discarded side of
+  // a plane left out), each pixel's hits sorted by distance.
+  const std::vector<uint32_t>& faceVertices = this->Faces->GetFaceVertices();
+  const std::vector<uint8_t>& boundary = this->Faces->GetBoundaryFlags();
+  const int width = this->Size[0], height = this->Size[1];
+  rasterizer->Rasterize(world, faceVertices.data(), this->Faces->GetNumberOfFaces(),
+    [&](vtkIdType f) {
+      const uint32_t* ids = &faceVertices[3 * f];
+      for (const WorldPlane& plane : planes)
+      {
+        if (discarded(plane, &world[3 * ids[0]]) && discarded(plane, &world[3 * ids[1]]) &&
+          discarded(plane, &world[3 * ids[2]]))
+        {
+          return true;
+        }
+      }
+      return false;
+    });
+  this->ReportProgress(0.5);
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  this->PixelStart = rasterizer->GetPixelStart();
+  const std::vector<vtkHAVSFaceRasterizer::Hit>& hits = rasterizer->GetHits();
+  this->Fragments.resize(hits.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(hits.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType h = begin; h < end; ++h)
+    {
+      const vtkHAVSFaceRasterizer::Hit& hit = hits[h];
+      const uint32_t* ids = &faceVertices[3 * hit.Triangle];
+      Fragment& f = this->Fragments[h];
+      f.Distance = hit.Distance;
+      f.Scalar = hit.Weights[0] * values[ids[0]] + hit.Weights[1] * values[ids[1]] +
+        hit.Weights[2] * values[ids[2]];
+      f.Face = hit.Triangle;
+      f.Boundary = boundary[hit.Triangle] != 0;
+      f.Exit = f.Boundary && (mirrored ? hit.FrontFacing : !hit.FrontFacing);
+    }
+  });
+  rasterizer->ReleaseHits();
+  this->NumberOfStartedInside = 0;
+  const float* opaque = this->OpaqueDepth &&
+      this->OpaqueDepth->GetNumberOfValues() >= static_cast<vtkIdType>(width) * height
+    ? this->OpaqueDepth->GetPointer(0)
+    : nullptr;
+  if (!planes.empty() || opaque)
+  {
+    // Each ray's interval [t0, t1] kept by the planes: fragments outside it
+    // go; where it starts or ends inside the mesh, a synthetic entry or exit
+    // fragment carries the mesh's scalar there.
+    double worldBounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+      VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+    for (vtkIdType p = 0; p < numPoints; ++p)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        worldBounds[2 * k] = std::min(worldBounds[2 * k], world[3 * p + k]);
+        worldBounds[2 * k + 1] = std::max(worldBounds[2 * k + 1], world[3 * p + k]);
+      }
+    }
+    double diagonal2 = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      diagonal2 += (worldBounds[2 * k + 1] - worldBounds[2 * k]) *
+        (worldBounds[2 * k + 1] - worldBounds[2 * k]);
+    }
+    const double margin = 1e-9 * std::sqrt(diagonal2);
+    // Rays can start inside the mesh only where a plane cuts its bounds (or
+    // at an eye inside them): only then is the cell locator needed.
+    bool needLocator = !parallel;
+    for (int k = 0; k < 3; ++k)
+    {
+      needLocator = needLocator && eye[k] >= worldBounds[2 * k] - margin &&
+        eye[k] <= worldBounds[2 * k + 1] + margin;
+    }
+    for (const WorldPlane& plane : planes)
+    {
+      const double equation[4] = { plane.N[0], plane.N[1], plane.N[2], plane.W };
+      needLocator = needLocator || vtkHAVSPlaneSection::CutsBox(equation, worldBounds);
+    }
+    vtkNew<vtkStaticCellLocator> locator;
+    if (needLocator)
+    {
+      locator->SetDataSet(this->Input);
+      locator->BuildLocator();
+    }
+    vtkNew<vtkMatrix4x4> worldToModel;
+    vtkMatrix4x4::Invert(this->VolumeMatrix, worldToModel);
+    vtkUnstructuredGrid* grid = this->Input;
+
+    std::vector<std::vector<Fragment>> clipped(static_cast<size_t>(pixels));
+    std::vector<uint8_t> changed(static_cast<size_t>(pixels), 0);
+    vtkSMPThreadLocal<vtkSmartPointer<vtkGenericCell>> localCell;
+    vtkSMPThreadLocal<vtkIdType> localStarted(0);
+    vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
+      vtkSmartPointer<vtkGenericCell>& cell = localCell.Local();
+      if (!cell)
+      {
+        cell = vtkSmartPointer<vtkGenericCell>::New();
+      }
+      vtkIdType& started = localStarted.Local();
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        const vtkHAVSFaceRasterizer::Ray ray =
+          rasterizer->GetPixelRay(static_cast<int>(p % width), static_cast<int>(p / width));
+        double t0 = parallel ? -VTK_DOUBLE_MAX : 0.0, t1 = VTK_DOUBLE_MAX;
+        bool empty = false;
+        for (const WorldPlane& plane : planes)
+        {
+          const double nd = vtkMath::Dot(plane.N, ray.Direction);
+          const double c = vtkMath::Dot(plane.N, ray.Origin) + plane.W;
+          if (nd > 0.0)
+          {
+            t0 = std::max(t0, -c / nd);
+          }
+          else if (nd < 0.0)
+          {
+            t1 = std::min(t1, -c / nd);
+          }
+          else if (c < 0.0)
+          {
+            empty = true;
+          }
+        }
+        if (opaque && opaque[p] < 1.0f)
+        {
+          // The ray ends at the opaque surface.
+          const int i = static_cast<int>(p % width), j = static_cast<int>(p / width);
+          double surface[3], d[3];
+          rasterizer->Unproject((i + 0.5) / width * 2.0 - 1.0, (j + 0.5) / height * 2.0 - 1.0,
+            2.0 * opaque[p] - 1.0, surface);
+          vtkMath::Subtract(surface, ray.Origin, d);
+          t1 = std::min(t1, vtkMath::Dot(d, ray.Direction));
+        }
+        const Fragment* first = this->GetPixelFragmentsBegin(p);
+        const Fragment* last = this->GetPixelFragmentsEnd(p);
+        std::vector<Fragment>& out = clipped[p];
+        if (empty || t0 >= t1)
+        {
+          changed[p] = first != last;
+          continue;
+        }
+        const double d0 = ray.Offset + t0, d1 = ray.Offset + t1;
+
+        // Does the ray start inside the mesh? The tetrahedron at the start point.
+        bool startInside = false;
+        double startScalar = 0.0;
+        if (t0 > -VTK_DOUBLE_MAX)
+        {
+          double x[4] = { 0, 0, 0, 1 }, m[4];
+          for (int k = 0; k < 3; ++k)
+          {
+            x[k] = ray.Origin[k] + t0 * ray.Direction[k];
+          }
+          bool inBounds = true;
+          for (int k = 0; k < 3; ++k)
+          {
+            inBounds = inBounds && x[k] >= worldBounds[2 * k] - margin &&
+              x[k] <= worldBounds[2 * k + 1] + margin;
+          }
+          if (inBounds && needLocator)
+          {
+            worldToModel->MultiplyPoint(x, m);
+            double model[3] = { m[0] / m[3], m[1] / m[3], m[2] / m[3] };
+            double pcoords[3], weights[8];
+            int subId = 0;
+            const vtkIdType c = locator->FindCell(model, 0.0, cell, subId, pcoords, weights);
+            if (c >= 0 && grid->GetCellType(c) == VTK_TETRA)
+            {
+              startInside = true;
+              for (int i = 0; i < 4; ++i)
+              {
+                startScalar += weights[i] * values[cell->GetPointId(i)];
+              }
+            }
+          }
+        }
+        bool dropsSome = false;
+        for (const Fragment* f = first; f != last && !dropsSome; ++f)
+        {
+          dropsSome = f->Distance <= d0 || f->Distance >= d1;
+        }
+        if (!startInside && !dropsSome)
+        {
+          continue; // unchanged
+        }
+        changed[p] = 1;
+        started += startInside ? 1 : 0;
+        if (startInside)
+        {
+          out.push_back({ d0, startScalar, StartFace, true, false });
+        }
+        bool inside = startInside;
+        const Fragment* f = first;
+        while (f != last && f->Distance <= d0)
+        {
+          ++f;
+        }
+        while (f != last && f->Distance < d1)
+        {
+          const Fragment* next = f;
+          int boundaryHits = 0;
+          while (next != last && next->Distance == f->Distance)
+          {
+            boundaryHits += next->Boundary ? 1 : 0;
+            out.push_back(*next);
+            ++next;
+          }
+          inside = boundaryHits % 2 == 1 ? !inside : inside;
+          f = next;
+        }
+        if (inside && t1 < VTK_DOUBLE_MAX && !out.empty())
+        {
+          const Fragment& previous = out.back();
+          double scalar = previous.Scalar;
+          if (f != last && f->Distance > previous.Distance)
+          {
+            scalar += (f->Scalar - previous.Scalar) * (d1 - previous.Distance) /
+              (f->Distance - previous.Distance);
+          }
+          out.push_back({ d1, scalar, EndFace, true, true });
+        }
+      }
+    });
+    for (vtkIdType started : localStarted)
+    {
+      this->NumberOfStartedInside += started;
+    }
+    std::vector<Fragment> fragments;
+    std::vector<vtkIdType> start(static_cast<size_t>(pixels) + 1, 0);
+    for (vtkIdType p = 0; p < pixels; ++p)
+    {
+      start[p + 1] = start[p] +
+        (changed[p] ? static_cast<vtkIdType>(clipped[p].size())
+                    : this->PixelStart[p + 1] - this->PixelStart[p]);
+    }
+    fragments.resize(start[pixels]);
+    vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        if (changed[p])
+        {
+          std::copy(clipped[p].begin(), clipped[p].end(), fragments.begin() + start[p]);
+        }
+        else
+        {
+          std::copy(this->GetPixelFragmentsBegin(p), this->GetPixelFragmentsEnd(p),
+            fragments.begin() + start[p]);
+        }
+      }
+    });
+    this->Fragments.swap(fragments);
+    this->PixelStart.swap(start);
+  }
+  this->ReportProgress(1.0);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSReferenceRenderer::IntegrateSegmentExact(
+  vtkVolumeProperty* property, double sf, double sb, double length, double rgba[4])
+{
+  // Split at every node of the opacity and colour functions between sf and sb.
+  std::vector<double> cuts = { 0.0, 1.0 };
+  if (sf != sb)
+  {
+    const double lo = std::min(sf, sb), hi = std::max(sf, sb);
+    auto addNode = [&](double x) {
+      if (x > lo && x < hi)
+      {
+        cuts.push_back((x - sf) / (sb - sf));
+      }
+    };
+    vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+    double node[6];
+    for (int i = 0; i < opacity->GetSize(); ++i)
+    {
+      opacity->GetNodeValue(i, node);
+      addNode(node[0]);
+    }
+    if (property->GetColorChannels(0) == 1)
+    {
+      vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(0);
+      for (int i = 0; i < gray->GetSize(); ++i)
+      {
+        gray->GetNodeValue(i, node);
+        addNode(node[0]);
+      }
+    }
+    else
+    {
+      vtkColorTransferFunction* color = property->GetRGBTransferFunction(0);
+      for (int i = 0; i < color->GetSize(); ++i)
+      {
+        color->GetNodeValue(i, node);
+        addNode(node[0]);
+      }
+    }
+    std::sort(cuts.begin(), cuts.end());
+  }
+  double color[3] = { 0, 0, 0 }, transmittance = 1.0;
+  for (size_t i = 0; i + 1 < cuts.size(); ++i)
+  {
+    const double a = cuts[i], b = cuts[i + 1];
+    if (b <= a)
+    {
+      continue;
+    }
+    double piece[4];
+    vtkHAVSPreIntegrationTable::IntegrateSegment(
+      property, 0, sf + (sb - sf) * a, sf + (sb - sf) * b, length * (b - a), piece);
+    for (int c = 0; c < 3; ++c)
+    {
+      color[c] += transmittance * piece[c];
+    }
+    transmittance *= 1.0 - piece[3];
+  }
+  rgba[0] = color[0];
+  rgba[1] = color[1];
+  rgba[2] = color[2];
+  rgba[3] = 1.0 - transmittance;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSReferenceRenderer::IntegrateRay(
+  vtkVolumeProperty* property, const Fragment* begin, const Fragment* end, double rgba[4])
+{
+  double color[3] = { 0, 0, 0 }, transmittance = 1.0;
+  bool inside = false;
+  const Fragment* group = begin;
+  while (group != end)
+  {
+    // Fragments at the same distance: a crossing of a shared edge or vertex
+    // (once, by the tie-break), or a graze (an even number of boundary hits).
+    const Fragment* next = group;
+    int boundaryHits = 0;
+    while (next != end && next->Distance == group->Distance)
+    {
+      boundaryHits += next->Boundary ? 1 : 0;
+      ++next;
+    }
+    if (boundaryHits % 2 == 1)
+    {
+      inside = !inside;
+    }
+    if (inside && next != end)
+    {
+      double segment[4];
+      IntegrateSegmentExact(
+        property, group->Scalar, next->Scalar, next->Distance - group->Distance, segment);
+      for (int c = 0; c < 3; ++c)
+      {
+        color[c] += transmittance * segment[c];
+      }
+      transmittance *= 1.0 - segment[3];
+    }
+    group = next;
+  }
+  rgba[0] = color[0];
+  rgba[1] = color[1];
+  rgba[2] = color[2];
+  rgba[3] = 1.0 - transmittance;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSReferenceRenderer::Render()
+{
+  if (!this->Property)
+  {
+    vtkErrorMacro("No volume property.");
+    return false;
+  }
+  if (!this->ComputeFragments())
+  {
+    return false;
+  }
+  const vtkIdType pixels = static_cast<vtkIdType>(this->Size[0]) * this->Size[1];
+  this->Image->SetNumberOfComponents(4);
+  this->Image->SetNumberOfTuples(pixels);
+  float* out = this->Image->GetPointer(0);
+  // VTK's function objects are not promised to be thread-safe: one copy of
+  // the property per thread, made one at a time (DeepCopy creates missing
+  // functions in the source).
+  vtkSMPThreadLocal<vtkSmartPointer<vtkVolumeProperty>> localProperty;
+  std::mutex copying;
+  vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
+    vtkSmartPointer<vtkVolumeProperty>& property = localProperty.Local();
+    if (!property)
+    {
+      std::lock_guard<std::mutex> lock(copying);
+      property = vtkSmartPointer<vtkVolumeProperty>::New();
+      property->DeepCopy(this->Property);
+    }
+    for (vtkIdType p = begin; p < end; ++p)
+    {
+      double rgba[4];
+      IntegrateRay(property, this->GetPixelFragmentsBegin(p), this->GetPixelFragmentsEnd(p), rgba);
+      for (int c = 0; c < 4; ++c)
+      {
+        out[4 * p + c] = static_cast<float>(rgba[c]);
+      }
+    }
+  });
+  this->Image->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+  os << indent << "Fragments: " << this->Fragments.size() << "\n";
+  os << indent << "NearPlaneClipping: " << this->NearPlaneClipping << "\n";
+  os << indent << "ClippingPlanes: "
+     << (this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0) << "\n";
+  os << indent << "OpaqueDepth: " << (this->OpaqueDepth ? "set" : "none") << "\n";
+  os << indent << "NumberOfStartedInside: " << this->NumberOfStartedInside << "\n";
+}

@@ -1,0 +1,206 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSReferenceRenderer.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSReferenceRenderer
+ * @brief   The exact image of a tetrahedral grid: the yardstick of vtkHAVS.
+ *
+ * Plain C++, no OpenGL. One ray per pixel centre, exactly as VTK's camera
+ * maps pixels (the inverse of its composite projection, perspective or
+ * parallel). Every ray–face intersection is found in double precision with a
+ * watertight test (Woop, Benthin and Wald 2013: per ray, every vertex is
+ * sheared once into the ray's frame, so edge functions of shared edges are
+ * exactly opposite) and a consistent tie-break (simulation of simplicity: an
+ * edge function that is exactly 0 takes the sign the ray would see if moved by
+ * (e, e^2) in its frame), so a ray through a shared edge or vertex is neither
+ * missed nor counted twice. Faces are found per ray through their screen
+ * bounding boxes (a face-driven traversal, parallel over faces with
+ * vtkSMPTools).
+ *
+ * Along each ray the hits are sorted; whether a segment lies in the mesh
+ * follows from the parity of the boundary hits before it (a pair of
+ * boundary hits at the same distance — a ray grazing an edge — leaves it
+ * unchanged), so holes, cavities and separate parts are empty space. Each
+ * segment is integrated under the optical model of MISSION.md (scalar linear
+ * along it, colour and opacity from the property's own functions), split at
+ * the transfer-function nodes, each piece adaptively to 1e-6
+ * (vtkHAVSPreIntegrationTable::IntegrateSegment).
+ *
+ * Rays start at the camera's near plane and are cut by the clipping planes
+ * (SetClippingPlanes, world coordinates, the normal's side kept, as VTK's
+ * mappers). Where a ray enters the kept region inside the mesh (the camera
+ * inside the mesh, a clipping plane through it) it starts with a synthetic
+ * entry fragment (Face == StartFace) whose scalar is interpolated in the
+ * tetrahedron that holds the start point (vtkStaticCellLocator, barycentric
+ * weights); where it leaves the kept region inside the mesh it ends with a
+ * synthetic exit fragment (Face == EndFace), its scalar interpolated between
+ * the fragments around it. Faces wholly on the discarded side of a plane are
+ * not traversed.
+ *
+ * The per-pixel fragments (distance, scalar, face, exit flag) are kept for the
+ * k-requirement analysis and the software k-buffer.
+ */
+#ifndef vtkHAVSReferenceRenderer_h
+#define vtkHAVSReferenceRenderer_h
+
+#include "vtkHAVSValidationModule.h" // For export macro
+#include "vtkNew.h"        // For vtkNew
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
+#include <cstdint> // For uint32_t
+#include <vector>  // For std::vector
+
+class vtkCamera;
+class vtkFloatArray;
+class vtkHAVSFaceSet;
+class vtkMatrix4x4;
+class vtkPlaneCollection;
+class vtkUnstructuredGrid;
+class vtkVolumeProperty;
+
+class VTKHAVSVALIDATION_EXPORT vtkHAVSReferenceRenderer : public vtkObject
+{
+public:
+  static vtkHAVSReferenceRenderer* New();
+  vtkTypeMacro(vtkHAVSReferenceRenderer, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The scene: grid (active point scalars), property, camera, the volume's
+  /// matrix (identity when none), image size.
+  void SetInputData(vtkUnstructuredGrid* grid);
+  void SetProperty(vtkVolumeProperty* property);
+  void SetCamera(vtkCamera* camera);
+  void SetVolumeMatrix(vtkMatrix4x4* matrix);
+  vtkSetVector2Macro(Size, int);
+  vtkGetVector2Macro(Size, int);
+  ///@}
+
+  ///@{
+  /**
+   * Clipping planes (world coordinates; each keeps the side its normal points
+   * to), as vtkAbstractMapper::SetClippingPlanes. At most 6 are used.
+   */
+  void SetClippingPlanes(vtkPlaneCollection* planes);
+  vtkPlaneCollection* GetClippingPlanes();
+  ///@}
+
+  ///@{
+  /**
+   * Whether rays start at the camera's near plane (as every rasterizing
+   * mapper's do). On by default.
+   */
+  vtkSetMacro(NearPlaneClipping, bool);
+  vtkGetMacro(NearPlaneClipping, bool);
+  vtkBooleanMacro(NearPlaneClipping, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Opaque geometry in the scene: a depth image of Size (window depth values
+   * in [0, 1], bottom row first, as vtkRenderWindow::GetZbufferData gives);
+   * each ray ends at its depth (1: nothing there). nullptr: none.
+   */
+  void SetOpaqueDepth(vtkFloatArray* depth);
+  ///@}
+
+  /// Face ids of the synthetic fragments where a ray enters or leaves the
+  /// region kept by the near and clipping planes inside the mesh.
+  static constexpr uint32_t StartFace = 0xFFFFFFFEu;
+  static constexpr uint32_t EndFace = 0xFFFFFFFFu;
+
+  /// Pixels whose ray started inside the mesh at a plane, in the last frame.
+  vtkGetMacro(NumberOfStartedInside, vtkIdType);
+
+  /// One hit of a pixel's ray with a face.
+  struct Fragment
+  {
+    double Distance; ///< along the ray from the eye (parallel: along the view direction)
+    double Scalar;
+    uint32_t Face; ///< index in GetFaceSet()
+    bool Boundary;
+    bool Exit; ///< a boundary face seen from inside
+  };
+
+  /**
+   * Finds every pixel's fragments, sorted by distance. Returns false with an
+   * error for a missing or unusable input.
+   */
+  bool ComputeFragments();
+
+  /**
+   * ComputeFragments() if needed, then the exact image (premultiplied RGBA,
+   * bottom row first) in GetImage().
+   */
+  bool Render();
+
+  vtkFloatArray* GetImage() { return this->Image; }
+
+  /// The faces the fragments refer to.
+  vtkHAVSFaceSet* GetFaceSet() { return this->Faces; }
+
+  ///@{
+  /// The fragments of pixel p (= y * width + x), sorted by distance.
+  const Fragment* GetPixelFragmentsBegin(vtkIdType p) const
+  {
+    return this->Fragments.data() + this->PixelStart[p];
+  }
+  const Fragment* GetPixelFragmentsEnd(vtkIdType p) const
+  {
+    return this->Fragments.data() + this->PixelStart[p + 1];
+  }
+  vtkIdType GetNumberOfFragments() const { return static_cast<vtkIdType>(this->Fragments.size()); }
+  ///@}
+
+  /// The normalized scalar mapping (the mapper's): (s - range[0]) / span.
+  const double* GetScalarRange() const { return this->ScalarRange; }
+
+  /**
+   * The premultiplied colour of a ray integrated over its sorted fragments
+   * (the exact answer for one pixel).
+   */
+  static void IntegrateRay(vtkVolumeProperty* property, const Fragment* begin,
+    const Fragment* end, double rgba[4]);
+
+  /**
+   * The segment (sf -> sb, length) split at the property's transfer-function
+   * nodes and integrated piece by piece to 1e-6.
+   */
+  static void IntegrateSegmentExact(
+    vtkVolumeProperty* property, double sf, double sb, double length, double rgba[4]);
+
+protected:
+  vtkHAVSReferenceRenderer();
+  ~vtkHAVSReferenceRenderer() override;
+
+private:
+  vtkHAVSReferenceRenderer(const vtkHAVSReferenceRenderer&) = delete;
+  void operator=(const vtkHAVSReferenceRenderer&) = delete;
+
+  /// Invokes vtkCommand::ProgressEvent with the progress (0 … 1) as call data.
+  void ReportProgress(double progress);
+
+  vtkSmartPointer<vtkUnstructuredGrid> Input;
+  vtkSmartPointer<vtkVolumeProperty> Property;
+  vtkSmartPointer<vtkCamera> Camera;
+  vtkNew<vtkMatrix4x4> VolumeMatrix;
+  int Size[2] = { 64, 64 };
+  vtkNew<vtkHAVSFaceSet> Faces;
+  vtkNew<vtkFloatArray> Image;
+  vtkSmartPointer<vtkPlaneCollection> ClippingPlanes;
+  bool NearPlaneClipping = true;
+  vtkSmartPointer<vtkFloatArray> OpaqueDepth;
+  vtkIdType NumberOfStartedInside = 0;
+  std::vector<Fragment> Fragments;
+  std::vector<vtkIdType> PixelStart;
+  double ScalarRange[2] = { 0.0, 1.0 };
+};
+
+#endif
