@@ -319,6 +319,7 @@ struct TransferNode
 struct ScenePreset
 {
   std::string Title;
+  std::string Caption; ///< what the picture shows (may be empty)
   std::vector<TransferNode> Nodes;
   bool NodesInScalarUnits = false;          ///< else fractions of the scalar range
   double UnitDistanceFraction = 0.1;        ///< ScalarOpacityUnitDistance / mesh diagonal
@@ -364,6 +365,9 @@ ScenePreset BluntFinPreset()
 {
   ScenePreset p;
   p.Title = "NASA blunt fin";
+  p.Caption = "Supersonic flow from the left over a plate meets a fin: the bow shock and the gas "
+              "it compresses around the fin glow green to yellow, the stagnation line up the "
+              "leading edge red; blue: the low-density boundary layer on the plate.";
   p.NodesInScalarUnits = true;
   // { density, red, green, blue, opacity }
   p.Nodes = { { 0.19, 0.45, 0.65, 1.0, 0.6 }, { 0.45, 0.3, 0.55, 1.0, 0.3 },
@@ -1217,6 +1221,7 @@ void PutErrorLegend(Canvas& canvas, int x, int y, int width, double amplificatio
 struct Summary
 {
   std::string Title;
+  std::string Caption;
   std::string Subtitle;
   std::vector<std::string> Platform; ///< lines under the error legend
   double ReferenceSeconds = 0.0;
@@ -1292,14 +1297,16 @@ bool WritePicture(const std::vector<MapperRun>& runs, const std::vector<float>& 
   // The subtitle wraps to the width: draw it on a scratch canvas to count its lines.
   const unsigned char background[3] = { 28, 30, 34 };
   Canvas scratch(width, 200, background);
-  const int subtitleLines =
-    scratch.PutParagraph(margin, 0, width - 2 * margin, 18, summary.Subtitle, 14, kGrey);
-  const int titleHeight = 52 + 18 * subtitleLines;
+  const int textWidth = width - 2 * margin;
+  const int captionLines = scratch.PutParagraph(0, 0, textWidth, 18, summary.Caption, 14, kWhite);
+  const int subtitleLines = scratch.PutParagraph(0, 0, textWidth, 18, summary.Subtitle, 14, kGrey);
+  const int titleHeight = 52 + 18 * (captionLines + subtitleLines);
   const int height =
     titleHeight + headerHeight + o.Height + gap + differenceHeader + lowerRow + margin;
   Canvas canvas(width, height, background);
   canvas.PutText(margin, 12, summary.Title, 22, true, kWhite);
-  canvas.PutParagraph(margin, 42, width - 2 * margin, 18, summary.Subtitle, 14, kGrey);
+  canvas.PutParagraph(margin, 42, textWidth, 18, summary.Caption, 14, kWhite);
+  canvas.PutParagraph(margin, 42 + 18 * captionLines, textWidth, 18, summary.Subtitle, 14, kGrey);
   const MapperRun* havs = FindHAVS(runs);
   for (int column = 0; column < columns; ++column)
   {
@@ -1389,6 +1396,7 @@ Summary Summarize(
   const Scene& scene, const Options& o, const Platform& platform, double referenceSeconds)
 {
   Summary summary;
+  summary.Caption = scene.Preset.Caption;
   summary.Title =
     Format("%s: %s, %s tetrahedra, %d\u00d7%d", scene.Preset.Title.c_str(), scene.ArrayName.c_str(),
       WithThousands(scene.Grid->GetNumberOfCells()).c_str(), o.Width, o.Height);
