@@ -13,7 +13,8 @@
  *
  * Plain C++, no OpenGL. MPVO orders the cells of a mesh through their shared
  * faces, which is exact only for a convex mesh: where a ray leaves the mesh
- * and re-enters it, nothing relates the two parts. Following seed 004
+ * and re-enters it, nothing relates the two parts. Following Röttger, Guthe,
+ * Schieber and Ertl 2004 (seed 004)
  * (section 6 "Convexification of Tetrahedral Grids", after Williams' idea of
  * imaginary cells), the space around the mesh, inside a bounding box, is
  * filled with imaginary cells so that mesh and imaginary cells tile the box;

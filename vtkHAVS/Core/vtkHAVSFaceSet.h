@@ -11,7 +11,8 @@
  * @class   vtkHAVSFaceSet
  * @brief   The unique triangular faces of a tetrahedral grid, boundary flagged.
  *
- * Build() takes the VTK_TETRA cells of a vtkUnstructuredGrid (ghost cells
+ * HAVS draws these faces, not the cells (Callahan, Ikits, Comba and Silva
+ * 2005, section 4.1). Build() takes the VTK_TETRA cells of a vtkUnstructuredGrid (ghost cells
  * marked duplicate or hidden are left out, as another piece draws them; other cells
  * are counted as skipped; degenerate tetrahedra, with repeated points or
  * |volume| <= 1e-12 * (longest edge)^3, are counted and dropped) and stores

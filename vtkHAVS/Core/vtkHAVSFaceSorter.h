@@ -11,7 +11,8 @@
  * @class   vtkHAVSFaceSorter
  * @brief   Per-frame front-to-back centroid sort of a vtkHAVSFaceSet.
  *
- * The key of a face is its centroid's squared world-space distance to the eye
+ * HAVS's per-frame sort (Callahan, Ikits, Comba and Silva 2005). The key of a
+ * face is its centroid's squared world-space distance to the eye
  * (perspective) or its depth along the direction of projection (parallel),
  * after the volume's model-to-world matrix; keys are computed in parallel and
  * sorted with vtkHAVSRadixSorter. The sort is reused (Sort() returns false)

@@ -11,7 +11,9 @@
  * @class   vtkHAVSPreIntegrationTable
  * @brief   The 3D pre-integrated transfer-function table the k-buffer samples.
  *
- * Entry (f, b, l) holds the premultiplied colour and opacity of a ray segment
+ * Pre-integration (Röttger, Kraus and Ertl 2000; Engel, Kraus and Ertl 2001)
+ * as HAVS uses it (Callahan, Ikits, Comba and Silva 2005). Entry (f, b, l)
+ * holds the premultiplied colour and opacity of a ray segment
  * of world length L_l = l / (NL - 1) * MaxLength whose scalar goes linearly
  * from s_f to s_b (s_i = range[0] + i / (NS - 1) * (range[1] - range[0])),
  * under the optical model of VTK's unstructured-grid integrators:

@@ -11,7 +11,8 @@
  * @class   vtkHAVSRadixSorter
  * @brief   Stable parallel LSD radix sort of float keys (4 passes of 8 bits).
  *
- * Floats are mapped to uint32 keys that order like the floats
+ * The CPU sort of HAVS (Callahan, Ikits, Comba and Silva 2005, section
+ * 4.3.1). Floats are mapped to uint32 keys that order like the floats
  * (FloatToSortableKey). Each pass counts its byte per chunk of the input in
  * parallel (vtkSMPTools), turns the counts into per-chunk, per-bucket output
  * offsets (bucket-major, so chunks keep their input order: stable) and

@@ -9,7 +9,7 @@
 =========================================================================*/
 /**
  * @class   vtkHAVSVisibilityOrder
- * @brief   An exact object-space face order: Williams' MPVO for HAVS.
+ * @brief   An exact object-space face order: Williams' MPVO (1992) for HAVS.
  *
  * Plain C++, no OpenGL. Build() finds, once per mesh, the two tetrahedra of
  * every internal face of a vtkHAVSFaceSet and each face's plane (double
@@ -30,11 +30,12 @@
  * mesh and enters it again, the cell it enters must come after the one it
  * left, which no shared face says. Two ways to add those relations
  * (SetNonConvexMethod), so that they can be compared:
- * - Convexification (seed 004, Kraus and Ertl): the space around the mesh is
+ * - Convexification (Röttger, Guthe, Schieber and Ertl 2004, seed 004; after
+ *   Williams' imaginary cells and Kraus and Ertl 2001): the space around the mesh is
  *   cut into convex imaginary cells (vtkHAVSConvexification, once per mesh);
  *   they join the sort through the boundary faces and the planes between
  *   them, and draw nothing.
- * - BoundaryLayers (seed 003's idea, Krishnan, Silva and Wei): per view, the
+ * - BoundaryLayers (after Krishnan, Silva and Wei 2001, seed 003): per view, the
  *   boundary faces are rasterized (vtkHAVSFaceRasterizer, exactly, at the
  *   frame's pixel centres, SetViewSampling) and sorted by depth at every pixel; each exit followed
  *   by an entry gives the relation "cell left before cell entered". Exact at

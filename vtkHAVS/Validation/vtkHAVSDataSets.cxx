@@ -10,6 +10,7 @@
 #include "vtkHAVSDataSets.h"
 
 #include "vtkAppendFilter.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCell.h"
 #include "vtkCellType.h"
 #include "vtkDataSetTriangleFilter.h"
@@ -42,6 +43,21 @@ bool Readable(const std::string& path)
 {
   return std::ifstream(path).good();
 }
+
+/// Counts the errors a reader reports, so that a file it could only partly
+/// read is not taken for a mesh.
+struct ReaderErrors
+{
+  int Count = 0;
+  vtkNew<vtkCallbackCommand> Callback;
+  explicit ReaderErrors(vtkObject* reader)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback(
+      [](vtkObject*, unsigned long, void* self, void*) { ++static_cast<ReaderErrors*>(self)->Count; });
+    reader->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+  }
+};
 
 vtkSmartPointer<vtkUnstructuredGrid> ThresholdedWavelet()
 {
@@ -207,19 +223,30 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::ReadFile(
   }
   vtkSmartPointer<vtkDataSet> data;
   const bool xml = path.size() > 4 && path.substr(path.size() - 4) == ".vtu";
+  int readerErrors = 0;
   if (xml)
   {
     vtkNew<vtkXMLUnstructuredGridReader> reader;
+    ReaderErrors errors(reader);
     reader->SetFileName(path.c_str());
     reader->Update();
     data = reader->GetOutput();
+    readerErrors = errors.Count;
   }
   else
   {
     vtkNew<vtkUnstructuredGridReader> reader;
+    ReaderErrors errors(reader);
     reader->SetFileName(path.c_str());
     reader->Update();
     data = reader->GetOutput();
+    readerErrors = errors.Count;
+  }
+  if (readerErrors > 0)
+  {
+    vtkGenericWarningMacro("vtkHAVSDataSets: the reader reported " << readerErrors
+                                                                  << " errors reading " << path);
+    return nullptr;
   }
   if (!data || data->GetNumberOfCells() == 0)
   {
@@ -267,11 +294,19 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::ReadPlot3D(
     }
   }
   vtkNew<vtkMultiBlockPLOT3DReader> reader;
+  ReaderErrors errors(reader);
   reader->SetXYZFileName(xyzPath.c_str());
   reader->SetQFileName(qPath.c_str());
   reader->AutoDetectFormatOn();
   reader->SetScalarFunctionNumber(function);
   reader->Update();
+  if (errors.Count > 0)
+  {
+    vtkGenericWarningMacro("vtkHAVSDataSets: the reader reported " << errors.Count
+                                                                  << " errors reading " << xyzPath
+                                                                  << " and " << qPath);
+    return nullptr;
+  }
   vtkDataSet* block = reader->GetOutput() && reader->GetOutput()->GetNumberOfBlocks() > 0
     ? vtkDataSet::SafeDownCast(reader->GetOutput()->GetBlock(0))
     : nullptr;

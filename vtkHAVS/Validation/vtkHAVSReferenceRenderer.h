@@ -11,7 +11,8 @@
  * @class   vtkHAVSReferenceRenderer
  * @brief   The exact image of a tetrahedral grid: the yardstick of vtkHAVS.
  *
- * Plain C++, no OpenGL. One ray per pixel centre, exactly as VTK's camera
+ * Plain C++, no OpenGL. The optical model of Williams and Max 1992 (as VTK's
+ * unstructured-grid integrators), integrated exactly. One ray per pixel centre, exactly as VTK's camera
  * maps pixels (the inverse of its composite projection, perspective or
  * parallel). Every ray–face intersection is found in double precision with a
  * watertight test (Woop, Benthin and Wald 2013: per ray, every vertex is

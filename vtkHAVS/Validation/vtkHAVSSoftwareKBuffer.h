@@ -11,6 +11,7 @@
  * @class   vtkHAVSSoftwareKBuffer
  * @brief   The GPU k-buffer run on the CPU, and the k-requirement analysis.
  *
+ * The k-requirement analysis of Callahan 2005 (section 4.3.2, Table 4.2).
  * Each pixel's fragments (from vtkHAVSReferenceRenderer: exact ray–face
  * hits at the pixel centre) are put in the mapper's draw order (the face
  * order of its centroid sort) and fed through a k-entry buffer exactly as the
