@@ -25,10 +25,10 @@
 // --plot3d pair. Exits non-zero when a file cannot be read, a mapper reports
 // an error or the reference fails.
 #include "vtkHAVSDataSets.h"
+#include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSImageMetrics.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSRenderWindowFactory.h"
-#include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -849,8 +849,8 @@ bool RunMapper(vtkUnstructuredGridVolumeMapper* mapper, MapperRun& run, vtkUnstr
 // The exact reference
 //------------------------------------------------------------------------------
 /// The progress of the exact reference on stderr. vtkHAVSReferenceRenderer
-/// reports 0, 0.5 and 1 while it finds and sorts the ray/face intersections,
-/// then integrates every segment without reporting; on a terminal a ticker
+/// reports up to 0.1 while it finds and sorts the ray/face intersections, then
+/// after every twentieth of the pixels it integrated; on a terminal a ticker
 /// repaints the line twice a second so that the elapsed time keeps moving.
 class ReferenceProgress : public vtkCommand
 {
@@ -868,14 +868,16 @@ public:
   {
     this->StartTime = Now();
     this->Running = true;
-    this->Ticker = std::thread([this]() {
-      std::unique_lock<std::mutex> lock(this->Mutex);
-      while (this->Running)
+    this->Ticker = std::thread(
+      [this]()
       {
-        ShowProgress(this->Text(), Line::Transient);
-        this->Wake.wait_for(lock, std::chrono::milliseconds(500));
-      }
-    });
+        std::unique_lock<std::mutex> lock(this->Mutex);
+        while (this->Running)
+        {
+          ShowProgress(this->Text(), Line::Transient);
+          this->Wake.wait_for(lock, std::chrono::milliseconds(500));
+        }
+      });
   }
   void Stop(bool ok)
   {
@@ -897,13 +899,8 @@ private:
   std::string Text() const
   {
     const double progress = this->Progress, elapsed = Now() - this->StartTime;
-    if (progress < 1.0)
-    {
-      return Format("havs_demo: exact reference: ray/face intersections %3.0f%%, %.0f s",
-        100.0 * progress, elapsed);
-    }
-    return Format(
-      "havs_demo: exact reference: intersections done, integrating the segments, %.0f s", elapsed);
+    return Format("havs_demo: exact reference: %3.0f%% (%s), %.0f s", 100.0 * progress,
+      progress < 0.1 ? "ray/face intersections" : "integrating the segments", elapsed);
   }
   std::atomic<double> Progress{ 0.0 };
   std::atomic<double> StartTime{ 0.0 };
@@ -1056,7 +1053,8 @@ public:
     std::istringstream words(text);
     std::string word, line;
     int lines = 0;
-    auto flush = [&]() {
+    auto flush = [&]()
+    {
       this->PutText(x, y + lines++ * spacing, line, size, false, rgb);
       line.clear();
     };

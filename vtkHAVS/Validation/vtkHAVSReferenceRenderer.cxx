@@ -19,10 +19,10 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
+#include "vtkGenericCell.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkGenericCell.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
@@ -99,7 +99,9 @@ void vtkHAVSReferenceRenderer::SetVolumeMatrix(vtkMatrix4x4* matrix)
 //------------------------------------------------------------------------------
 void vtkHAVSReferenceRenderer::ReportProgress(double progress)
 {
-  this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+  double overall =
+    this->ProgressRange[0] + progress * (this->ProgressRange[1] - this->ProgressRange[0]);
+  this->InvokeEvent(vtkCommand::ProgressEvent, &overall);
 }
 
 //------------------------------------------------------------------------------
@@ -197,9 +199,8 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
       }
     }
   }
-  auto discarded = [&](const WorldPlane& plane, const double* x) {
-    return vtkMath::Dot(plane.N, x) + plane.W < 0.0;
-  };
+  auto discarded = [&](const WorldPlane& plane, const double* x)
+  { return vtkMath::Dot(plane.N, x) + plane.W < 0.0; };
 
   // Every face at every pixel centre (faces wholly on the discarded side of
   // a plane left out), each pixel's hits sorted by distance.
@@ -207,7 +208,8 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
   const std::vector<uint8_t>& boundary = this->Faces->GetBoundaryFlags();
   const int width = this->Size[0], height = this->Size[1];
   rasterizer->Rasterize(world, faceVertices.data(), this->Faces->GetNumberOfFaces(),
-    [&](vtkIdType f) {
+    [&](vtkIdType f)
+    {
       const uint32_t* ids = &faceVertices[3 * f];
       for (const WorldPlane& plane : planes)
       {
@@ -224,20 +226,22 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
   this->PixelStart = rasterizer->GetPixelStart();
   const std::vector<vtkHAVSFaceRasterizer::Hit>& hits = rasterizer->GetHits();
   this->Fragments.resize(hits.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(hits.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType h = begin; h < end; ++h)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(hits.size()),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const vtkHAVSFaceRasterizer::Hit& hit = hits[h];
-      const uint32_t* ids = &faceVertices[3 * hit.Triangle];
-      Fragment& f = this->Fragments[h];
-      f.Distance = hit.Distance;
-      f.Scalar = hit.Weights[0] * values[ids[0]] + hit.Weights[1] * values[ids[1]] +
-        hit.Weights[2] * values[ids[2]];
-      f.Face = hit.Triangle;
-      f.Boundary = boundary[hit.Triangle] != 0;
-      f.Exit = f.Boundary && (mirrored ? hit.FrontFacing : !hit.FrontFacing);
-    }
-  });
+      for (vtkIdType h = begin; h < end; ++h)
+      {
+        const vtkHAVSFaceRasterizer::Hit& hit = hits[h];
+        const uint32_t* ids = &faceVertices[3 * hit.Triangle];
+        Fragment& f = this->Fragments[h];
+        f.Distance = hit.Distance;
+        f.Scalar = hit.Weights[0] * values[ids[0]] + hit.Weights[1] * values[ids[1]] +
+          hit.Weights[2] * values[ids[2]];
+        f.Face = hit.Triangle;
+        f.Boundary = boundary[hit.Triangle] != 0;
+        f.Exit = f.Boundary && (mirrored ? hit.FrontFacing : !hit.FrontFacing);
+      }
+    });
   rasterizer->ReleaseHits();
   this->NumberOfStartedInside = 0;
   const float* opaque = this->OpaqueDepth &&
@@ -293,136 +297,138 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
     std::vector<uint8_t> changed(static_cast<size_t>(pixels), 0);
     vtkSMPThreadLocal<vtkSmartPointer<vtkGenericCell>> localCell;
     vtkSMPThreadLocal<vtkIdType> localStarted(0);
-    vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
-      vtkSmartPointer<vtkGenericCell>& cell = localCell.Local();
-      if (!cell)
+    vtkSMPTools::For(0, pixels,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        cell = vtkSmartPointer<vtkGenericCell>::New();
-      }
-      vtkIdType& started = localStarted.Local();
-      for (vtkIdType p = begin; p < end; ++p)
-      {
-        const vtkHAVSFaceRasterizer::Ray ray =
-          rasterizer->GetPixelRay(static_cast<int>(p % width), static_cast<int>(p / width));
-        double t0 = parallel ? -VTK_DOUBLE_MAX : 0.0, t1 = VTK_DOUBLE_MAX;
-        bool empty = false;
-        for (const WorldPlane& plane : planes)
+        vtkSmartPointer<vtkGenericCell>& cell = localCell.Local();
+        if (!cell)
         {
-          const double nd = vtkMath::Dot(plane.N, ray.Direction);
-          const double c = vtkMath::Dot(plane.N, ray.Origin) + plane.W;
-          if (nd > 0.0)
-          {
-            t0 = std::max(t0, -c / nd);
-          }
-          else if (nd < 0.0)
-          {
-            t1 = std::min(t1, -c / nd);
-          }
-          else if (c < 0.0)
-          {
-            empty = true;
-          }
+          cell = vtkSmartPointer<vtkGenericCell>::New();
         }
-        if (opaque && opaque[p] < 1.0f)
+        vtkIdType& started = localStarted.Local();
+        for (vtkIdType p = begin; p < end; ++p)
         {
-          // The ray ends at the opaque surface.
-          const int i = static_cast<int>(p % width), j = static_cast<int>(p / width);
-          double surface[3], d[3];
-          rasterizer->Unproject((i + 0.5) / width * 2.0 - 1.0, (j + 0.5) / height * 2.0 - 1.0,
-            2.0 * opaque[p] - 1.0, surface);
-          vtkMath::Subtract(surface, ray.Origin, d);
-          t1 = std::min(t1, vtkMath::Dot(d, ray.Direction));
-        }
-        const Fragment* first = this->GetPixelFragmentsBegin(p);
-        const Fragment* last = this->GetPixelFragmentsEnd(p);
-        std::vector<Fragment>& out = clipped[p];
-        if (empty || t0 >= t1)
-        {
-          changed[p] = first != last;
-          continue;
-        }
-        const double d0 = ray.Offset + t0, d1 = ray.Offset + t1;
-
-        // Does the ray start inside the mesh? The tetrahedron at the start point.
-        bool startInside = false;
-        double startScalar = 0.0;
-        if (t0 > -VTK_DOUBLE_MAX)
-        {
-          double x[4] = { 0, 0, 0, 1 }, m[4];
-          for (int k = 0; k < 3; ++k)
+          const vtkHAVSFaceRasterizer::Ray ray =
+            rasterizer->GetPixelRay(static_cast<int>(p % width), static_cast<int>(p / width));
+          double t0 = parallel ? -VTK_DOUBLE_MAX : 0.0, t1 = VTK_DOUBLE_MAX;
+          bool empty = false;
+          for (const WorldPlane& plane : planes)
           {
-            x[k] = ray.Origin[k] + t0 * ray.Direction[k];
-          }
-          bool inBounds = true;
-          for (int k = 0; k < 3; ++k)
-          {
-            inBounds = inBounds && x[k] >= worldBounds[2 * k] - margin &&
-              x[k] <= worldBounds[2 * k + 1] + margin;
-          }
-          if (inBounds && needLocator)
-          {
-            worldToModel->MultiplyPoint(x, m);
-            double model[3] = { m[0] / m[3], m[1] / m[3], m[2] / m[3] };
-            double pcoords[3], weights[8];
-            int subId = 0;
-            const vtkIdType c = locator->FindCell(model, 0.0, cell, subId, pcoords, weights);
-            if (c >= 0 && grid->GetCellType(c) == VTK_TETRA)
+            const double nd = vtkMath::Dot(plane.N, ray.Direction);
+            const double c = vtkMath::Dot(plane.N, ray.Origin) + plane.W;
+            if (nd > 0.0)
             {
-              startInside = true;
-              for (int i = 0; i < 4; ++i)
+              t0 = std::max(t0, -c / nd);
+            }
+            else if (nd < 0.0)
+            {
+              t1 = std::min(t1, -c / nd);
+            }
+            else if (c < 0.0)
+            {
+              empty = true;
+            }
+          }
+          if (opaque && opaque[p] < 1.0f)
+          {
+            // The ray ends at the opaque surface.
+            const int i = static_cast<int>(p % width), j = static_cast<int>(p / width);
+            double surface[3], d[3];
+            rasterizer->Unproject((i + 0.5) / width * 2.0 - 1.0, (j + 0.5) / height * 2.0 - 1.0,
+              2.0 * opaque[p] - 1.0, surface);
+            vtkMath::Subtract(surface, ray.Origin, d);
+            t1 = std::min(t1, vtkMath::Dot(d, ray.Direction));
+          }
+          const Fragment* first = this->GetPixelFragmentsBegin(p);
+          const Fragment* last = this->GetPixelFragmentsEnd(p);
+          std::vector<Fragment>& out = clipped[p];
+          if (empty || t0 >= t1)
+          {
+            changed[p] = first != last;
+            continue;
+          }
+          const double d0 = ray.Offset + t0, d1 = ray.Offset + t1;
+
+          // Does the ray start inside the mesh? The tetrahedron at the start point.
+          bool startInside = false;
+          double startScalar = 0.0;
+          if (t0 > -VTK_DOUBLE_MAX)
+          {
+            double x[4] = { 0, 0, 0, 1 }, m[4];
+            for (int k = 0; k < 3; ++k)
+            {
+              x[k] = ray.Origin[k] + t0 * ray.Direction[k];
+            }
+            bool inBounds = true;
+            for (int k = 0; k < 3; ++k)
+            {
+              inBounds = inBounds && x[k] >= worldBounds[2 * k] - margin &&
+                x[k] <= worldBounds[2 * k + 1] + margin;
+            }
+            if (inBounds && needLocator)
+            {
+              worldToModel->MultiplyPoint(x, m);
+              double model[3] = { m[0] / m[3], m[1] / m[3], m[2] / m[3] };
+              double pcoords[3], weights[8];
+              int subId = 0;
+              const vtkIdType c = locator->FindCell(model, 0.0, cell, subId, pcoords, weights);
+              if (c >= 0 && grid->GetCellType(c) == VTK_TETRA)
               {
-                startScalar += weights[i] * values[cell->GetPointId(i)];
+                startInside = true;
+                for (int i = 0; i < 4; ++i)
+                {
+                  startScalar += weights[i] * values[cell->GetPointId(i)];
+                }
               }
             }
           }
-        }
-        bool dropsSome = false;
-        for (const Fragment* f = first; f != last && !dropsSome; ++f)
-        {
-          dropsSome = f->Distance <= d0 || f->Distance >= d1;
-        }
-        if (!startInside && !dropsSome)
-        {
-          continue; // unchanged
-        }
-        changed[p] = 1;
-        started += startInside ? 1 : 0;
-        if (startInside)
-        {
-          out.push_back({ d0, startScalar, StartFace, true, false });
-        }
-        bool inside = startInside;
-        const Fragment* f = first;
-        while (f != last && f->Distance <= d0)
-        {
-          ++f;
-        }
-        while (f != last && f->Distance < d1)
-        {
-          const Fragment* next = f;
-          int boundaryHits = 0;
-          while (next != last && next->Distance == f->Distance)
+          bool dropsSome = false;
+          for (const Fragment* f = first; f != last && !dropsSome; ++f)
           {
-            boundaryHits += next->Boundary ? 1 : 0;
-            out.push_back(*next);
-            ++next;
+            dropsSome = f->Distance <= d0 || f->Distance >= d1;
           }
-          inside = boundaryHits % 2 == 1 ? !inside : inside;
-          f = next;
-        }
-        if (inside && t1 < VTK_DOUBLE_MAX && !out.empty())
-        {
-          const Fragment& previous = out.back();
-          double scalar = previous.Scalar;
-          if (f != last && f->Distance > previous.Distance)
+          if (!startInside && !dropsSome)
           {
-            scalar += (f->Scalar - previous.Scalar) * (d1 - previous.Distance) /
-              (f->Distance - previous.Distance);
+            continue; // unchanged
           }
-          out.push_back({ d1, scalar, EndFace, true, true });
+          changed[p] = 1;
+          started += startInside ? 1 : 0;
+          if (startInside)
+          {
+            out.push_back({ d0, startScalar, StartFace, true, false });
+          }
+          bool inside = startInside;
+          const Fragment* f = first;
+          while (f != last && f->Distance <= d0)
+          {
+            ++f;
+          }
+          while (f != last && f->Distance < d1)
+          {
+            const Fragment* next = f;
+            int boundaryHits = 0;
+            while (next != last && next->Distance == f->Distance)
+            {
+              boundaryHits += next->Boundary ? 1 : 0;
+              out.push_back(*next);
+              ++next;
+            }
+            inside = boundaryHits % 2 == 1 ? !inside : inside;
+            f = next;
+          }
+          if (inside && t1 < VTK_DOUBLE_MAX && !out.empty())
+          {
+            const Fragment& previous = out.back();
+            double scalar = previous.Scalar;
+            if (f != last && f->Distance > previous.Distance)
+            {
+              scalar += (f->Scalar - previous.Scalar) * (d1 - previous.Distance) /
+                (f->Distance - previous.Distance);
+            }
+            out.push_back({ d1, scalar, EndFace, true, true });
+          }
         }
-      }
-    });
+      });
     for (vtkIdType started : localStarted)
     {
       this->NumberOfStartedInside += started;
@@ -436,20 +442,22 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
                     : this->PixelStart[p + 1] - this->PixelStart[p]);
     }
     fragments.resize(start[pixels]);
-    vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType p = begin; p < end; ++p)
+    vtkSMPTools::For(0, pixels,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        if (changed[p])
+        for (vtkIdType p = begin; p < end; ++p)
         {
-          std::copy(clipped[p].begin(), clipped[p].end(), fragments.begin() + start[p]);
+          if (changed[p])
+          {
+            std::copy(clipped[p].begin(), clipped[p].end(), fragments.begin() + start[p]);
+          }
+          else
+          {
+            std::copy(this->GetPixelFragmentsBegin(p), this->GetPixelFragmentsEnd(p),
+              fragments.begin() + start[p]);
+          }
         }
-        else
-        {
-          std::copy(this->GetPixelFragmentsBegin(p), this->GetPixelFragmentsEnd(p),
-            fragments.begin() + start[p]);
-        }
-      }
-    });
+      });
     this->Fragments.swap(fragments);
     this->PixelStart.swap(start);
   }
@@ -466,7 +474,8 @@ void vtkHAVSReferenceRenderer::IntegrateSegmentExact(
   if (sf != sb)
   {
     const double lo = std::min(sf, sb), hi = std::max(sf, sb);
-    auto addNode = [&](double x) {
+    auto addNode = [&](double x)
+    {
       if (x > lo && x < hi)
       {
         cuts.push_back((x - sf) / (sb - sf));
@@ -571,7 +580,14 @@ bool vtkHAVSReferenceRenderer::Render()
     vtkErrorMacro("No volume property.");
     return false;
   }
-  if (!this->ComputeFragments())
+  // Progress: the fragments are the first tenth of the work, the
+  // integration (in 20 slices of pixels) the rest.
+  this->ProgressRange[0] = 0.0;
+  this->ProgressRange[1] = 0.1;
+  const bool fragments = this->ComputeFragments();
+  this->ProgressRange[0] = 0.0;
+  this->ProgressRange[1] = 1.0;
+  if (!fragments)
   {
     return false;
   }
@@ -584,24 +600,32 @@ bool vtkHAVSReferenceRenderer::Render()
   // functions in the source).
   vtkSMPThreadLocal<vtkSmartPointer<vtkVolumeProperty>> localProperty;
   std::mutex copying;
-  vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
-    vtkSmartPointer<vtkVolumeProperty>& property = localProperty.Local();
-    if (!property)
-    {
-      std::lock_guard<std::mutex> lock(copying);
-      property = vtkSmartPointer<vtkVolumeProperty>::New();
-      property->DeepCopy(this->Property);
-    }
-    for (vtkIdType p = begin; p < end; ++p)
-    {
-      double rgba[4];
-      IntegrateRay(property, this->GetPixelFragmentsBegin(p), this->GetPixelFragmentsEnd(p), rgba);
-      for (int c = 0; c < 4; ++c)
+  const vtkIdType slices = 20;
+  for (vtkIdType slice = 0; slice < slices; ++slice)
+  {
+    vtkSMPTools::For(slice * pixels / slices, (slice + 1) * pixels / slices,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        out[4 * p + c] = static_cast<float>(rgba[c]);
-      }
-    }
-  });
+        vtkSmartPointer<vtkVolumeProperty>& property = localProperty.Local();
+        if (!property)
+        {
+          std::lock_guard<std::mutex> lock(copying);
+          property = vtkSmartPointer<vtkVolumeProperty>::New();
+          property->DeepCopy(this->Property);
+        }
+        for (vtkIdType p = begin; p < end; ++p)
+        {
+          double rgba[4];
+          IntegrateRay(
+            property, this->GetPixelFragmentsBegin(p), this->GetPixelFragmentsEnd(p), rgba);
+          for (int c = 0; c < 4; ++c)
+          {
+            out[4 * p + c] = static_cast<float>(rgba[c]);
+          }
+        }
+      });
+    this->ReportProgress(0.1 + 0.9 * static_cast<double>(slice + 1) / slices);
+  }
   this->Image->Modified();
   return true;
 }
@@ -613,8 +637,9 @@ void vtkHAVSReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
   os << indent << "Fragments: " << this->Fragments.size() << "\n";
   os << indent << "NearPlaneClipping: " << this->NearPlaneClipping << "\n";
-  os << indent << "ClippingPlanes: "
-     << (this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0) << "\n";
+  os << indent
+     << "ClippingPlanes: " << (this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0)
+     << "\n";
   os << indent << "OpaqueDepth: " << (this->OpaqueDepth ? "set" : "none") << "\n";
   os << indent << "NumberOfStartedInside: " << this->NumberOfStartedInside << "\n";
 }

@@ -12,16 +12,14 @@
  * @brief   The exact image of a tetrahedral grid: the yardstick of vtkHAVS.
  *
  * Plain C++, no OpenGL. The optical model of Williams and Max 1992 (as VTK's
- * unstructured-grid integrators), integrated exactly. One ray per pixel centre, exactly as VTK's camera
- * maps pixels (the inverse of its composite projection, perspective or
- * parallel). Every ray–face intersection is found in double precision with a
- * watertight test (Woop, Benthin and Wald 2013: per ray, every vertex is
- * sheared once into the ray's frame, so edge functions of shared edges are
- * exactly opposite) and a consistent tie-break (simulation of simplicity: an
- * edge function that is exactly 0 takes the sign the ray would see if moved by
- * (e, e^2) in its frame), so a ray through a shared edge or vertex is neither
- * missed nor counted twice. Faces are found per ray through their screen
- * bounding boxes (a face-driven traversal, parallel over faces with
+ * unstructured-grid integrators), integrated exactly. One ray per pixel centre, exactly as VTK's
+ * camera maps pixels (the inverse of its composite projection, perspective or parallel). Every
+ * ray–face intersection is found in double precision with a watertight test (Woop, Benthin and Wald
+ * 2013: per ray, every vertex is sheared once into the ray's frame, so edge functions of shared
+ * edges are exactly opposite) and a consistent tie-break (simulation of simplicity: an edge
+ * function that is exactly 0 takes the sign the ray would see if moved by (e, e^2) in its frame),
+ * so a ray through a shared edge or vertex is neither missed nor counted twice. Faces are found per
+ * ray through their screen bounding boxes (a face-driven traversal, parallel over faces with
  * vtkSMPTools).
  *
  * Along each ray the hits are sorted; whether a segment lies in the mesh
@@ -51,7 +49,7 @@
 #define vtkHAVSReferenceRenderer_h
 
 #include "vtkHAVSValidationModule.h" // For export macro
-#include "vtkNew.h"        // For vtkNew
+#include "vtkNew.h"                  // For vtkNew
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
@@ -167,8 +165,8 @@ public:
    * The premultiplied colour of a ray integrated over its sorted fragments
    * (the exact answer for one pixel).
    */
-  static void IntegrateRay(vtkVolumeProperty* property, const Fragment* begin,
-    const Fragment* end, double rgba[4]);
+  static void IntegrateRay(
+    vtkVolumeProperty* property, const Fragment* begin, const Fragment* end, double rgba[4]);
 
   /**
    * The segment (sf -> sb, length) split at the property's transfer-function
@@ -187,6 +185,7 @@ private:
 
   /// Invokes vtkCommand::ProgressEvent with the progress (0 … 1) as call data.
   void ReportProgress(double progress);
+  double ProgressRange[2] = { 0.0, 1.0 }; // what ReportProgress's 0 … 1 maps to
 
   vtkSmartPointer<vtkUnstructuredGrid> Input;
   vtkSmartPointer<vtkVolumeProperty> Property;
