@@ -24,10 +24,10 @@
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFaceSorter.h"
-#include "vtkHAVSVisibilityOrder.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSSoftwareKBuffer.h"
 #include "vtkHAVSStandardViews.h"
+#include "vtkHAVSVisibilityOrder.h"
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -207,11 +207,13 @@ int main(int argc, char* argv[])
       }
     }
   }
-  std::printf("| data set | tets | views | size | fragments | longest list | max k | pixels k > 2 | "
-              "pixels k > 6 | pixels k > 14 | seconds |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+    "| data set | tets | views | size | fragments | longest list | max k | pixels k > 2 | "
+    "pixels k > 6 | pixels k > 14 | seconds |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::printf("| %s | %lld | %d | %d^2 | %lld | %d | %d | %lld | %lld | %lld | %.1f |\n",
-    input.empty() ? dataset.c_str() : input.c_str(), static_cast<long long>(grid->GetNumberOfCells()),
-    views, size, static_cast<long long>(fragments), longest, maxK, static_cast<long long>(over2),
+    input.empty() ? dataset.c_str() : input.c_str(),
+    static_cast<long long>(grid->GetNumberOfCells()), views, size,
+    static_cast<long long>(fragments), longest, maxK, static_cast<long long>(over2),
     static_cast<long long>(over6), static_cast<long long>(over14),
     vtkTimerLog::GetUniversalTime() - start);
   std::printf("(%s draw order, as vtkHAVSVolumeMapper; %.2f ms per view to order the faces; "

@@ -111,12 +111,12 @@ int TestHAVSAgainstReference(int argc, char* argv[])
   vtkNew<vtkIntArray> requiredK;
   vtkNew<vtkUnsignedCharArray> kImage;
   software->Analyze(reference, requiredK, kImage);
-  std::cout << dataset << " (" << grid->GetNumberOfCells() << " tets, " << size << "^2): "
-            << software->GetNumberOfFragments() << " fragments, longest list "
+  std::cout << dataset << " (" << grid->GetNumberOfCells() << " tets, " << size
+            << "^2): " << software->GetNumberOfFragments() << " fragments, longest list "
             << software->GetLongestList() << ", max required k " << software->GetMaximumRequiredK()
-            << ", pixels needing k > 2: " << software->GetPixelsOverK2() << ", > 6: "
-            << software->GetPixelsOverK6() << ", > 14: " << software->GetPixelsOverK14()
-            << std::endl;
+            << ", pixels needing k > 2: " << software->GetPixelsOverK2()
+            << ", > 6: " << software->GetPixelsOverK6()
+            << ", > 14: " << software->GetPixelsOverK14() << std::endl;
 
   vtkNew<vtkHAVSImageMetrics> metrics;
   // GPU against the software k-buffer at the same k.
@@ -129,18 +129,20 @@ int TestHAVSAgainstReference(int argc, char* argv[])
     software->Render(reference, mapper->GetPreIntegrationTable(), k, 1.0, cpu);
     metrics->Compare(gpu, cpu);
     std::cout << "GPU vs software k-buffer, k = " << k << ": RMSE " << metrics->GetRMSE()
-              << ", max " << metrics->GetMaxAbsError() << ", pixels off by > 1/255: "
-              << 100 * metrics->GetFractionOver1() << " % ("
+              << ", max " << metrics->GetMaxAbsError()
+              << ", pixels off by > 1/255: " << 100 * metrics->GetFractionOver1() << " % ("
               << std::lround(metrics->GetFractionOver1() * size * size) << " pixels)" << std::endl;
     vtkNew<vtkUnsignedCharArray> difference;
     metrics->DifferenceImage(gpu, cpu, difference);
-    havstest::WriteRGB(difference, size, size, dataset + "_gpu_vs_software_k" + std::to_string(k) + ".png");
+    havstest::WriteRGB(
+      difference, size, size, dataset + "_gpu_vs_software_k" + std::to_string(k) + ".png");
     havstest::Check(metrics->GetFractionOver1() <= 0.01,
       "GPU equals the software k-buffer within 1/255 on all but 1 % of the pixels");
   }
 
   // GPU at k = 14 against the reference, pixels needing k > 14 excluded.
-  auto compareToExact = [&](int k, int tableSize, const std::string& what) {
+  auto compareToExact = [&](int k, int tableSize, const std::string& what)
+  {
     mapper->SetKBufferSize(k);
     mapper->SetTableScalarResolution(tableSize);
     mapper->SetTableLengthResolution(tableSize);
@@ -151,22 +153,23 @@ int TestHAVSAgainstReference(int argc, char* argv[])
     Exclude(gpu, truth, requiredK, 14);
     metrics->Compare(gpu, truth);
     std::cout << what << ": RMSE " << metrics->GetRMSE() << ", max " << metrics->GetMaxAbsError()
-              << ", PSNR " << metrics->GetPSNR() << " dB, pixels > 1/255: "
-              << 100 * metrics->GetFractionOver1() << " %, > 4/255: "
-              << 100 * metrics->GetFractionOver4() << " %" << std::endl;
+              << ", PSNR " << metrics->GetPSNR()
+              << " dB, pixels > 1/255: " << 100 * metrics->GetFractionOver1()
+              << " %, > 4/255: " << 100 * metrics->GetFractionOver4() << " %" << std::endl;
     havstest::WritePNG(std::vector<float>(gpu->GetPointer(0), gpu->GetPointer(0) + 4 * size * size),
       size, size, dataset + "_" + std::to_string(k) + "_" + std::to_string(tableSize) + ".png");
     return metrics->GetRMSE() < rmseBound && metrics->GetMaxAbsError() < maxBound;
   };
   havstest::Check(compareToExact(14, 128, "GPU k = 14, 128^3 table vs reference"),
     "HAVS k = 14 within the bounds of the reference");
-  havstest::Check(!compareToExact(1, 128, "negative control k = 1"),
-    "negative control: k = 1 misses the bounds");
+  havstest::Check(
+    !compareToExact(1, 128, "negative control k = 1"), "negative control: k = 1 misses the bounds");
   havstest::Check(!compareToExact(14, 8, "negative control 8^3 table"),
     "negative control: an 8^3 table misses the bounds");
   // What a user sees: the window images of HAVS (k = 14) and of VTK's
   // projected-tetrahedra mapper against the reference's colour (over black).
-  auto windowError = [&](vtkRenderWindow* window, const std::string& what) {
+  auto windowError = [&](vtkRenderWindow* window, const std::string& what)
+  {
     const std::vector<float> rgba = havstest::ReadRGBA(window);
     vtkNew<vtkFloatArray> seen, truth;
     seen->SetNumberOfComponents(4);
@@ -178,7 +181,8 @@ int TestHAVSAgainstReference(int argc, char* argv[])
       for (int c = 0; c < 3; ++c)
       {
         seen->SetComponent(p, c, rgba[4 * p + c]);
-        truth->SetComponent(p, c, requiredK->GetValue(p) > 14 ? rgba[4 * p + c] : exact->GetComponent(p, c));
+        truth->SetComponent(
+          p, c, requiredK->GetValue(p) > 14 ? rgba[4 * p + c] : exact->GetComponent(p, c));
       }
       seen->SetComponent(p, 3, 0.0);
       truth->SetComponent(p, 3, 0.0);

@@ -107,8 +107,8 @@ double RenderBox(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, double 
     }
   }
   std::cout << name << ": path " << mapper->GetActiveKBufferPathName() << ", k "
-            << mapper->GetActiveKBufferSize() << ", " << covered
-            << " covered pixels, max error " << worst << std::endl;
+            << mapper->GetActiveKBufferSize() << ", " << covered << " covered pixels, max error "
+            << worst << std::endl;
   havstest::Check(covered > 300, name + ": the box covers pixels");
   return worst;
 }

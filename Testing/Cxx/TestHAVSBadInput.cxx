@@ -23,12 +23,12 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkPiecewiseFunction.h"
 #include "vtkDoubleArray.h"
 #include "vtkHAVSVisibilityOrder.h"
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkHexahedron.h"
 #include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkRenderWindow.h"
@@ -76,8 +76,8 @@ void CheckDefinedResult(int errors, const std::vector<float>& window,
   }
   else
   {
-    havstest::Check(!result.empty() && havstest::AllFinite(result),
-      name + ": a finite float result");
+    havstest::Check(
+      !result.empty() && havstest::AllFinite(result), name + ": a finite float result");
     havstest::Check(!AllZeroAlphaBackground(window), name + ": something drawn");
   }
 }
@@ -98,8 +98,8 @@ Outcome RenderOnce(vtkUnstructuredGrid* grid, const std::string& name)
   out.Text = messages->Text;
   out.Window = havstest::ReadRGBA(scene.Window);
   out.Result = havstest::FloatResult(mapper);
-  std::cout << name << ": " << out.Errors << " errors, " << out.Warnings << " warnings: "
-            << out.Text << std::endl;
+  std::cout << name << ": " << out.Errors << " errors, " << out.Warnings
+            << " warnings: " << out.Text << std::endl;
   CheckDefinedResult(messages->Errors, out.Window, out.Result, name);
 
   // The exact orders on the same input: no crash, the same defined result.
@@ -232,8 +232,8 @@ int TestHAVSBadInput(int, char*[])
     auto scene = havstest::MakeScene(grid, mapper, property, 32, 32);
     scene.Window->Render();
     scene.Window->Render();
-    std::cout << "shading + gradient opacity: " << messages->Warnings << " warnings: "
-              << messages->Text << std::endl;
+    std::cout << "shading + gradient opacity: " << messages->Warnings
+              << " warnings: " << messages->Text << std::endl;
     havstest::Check(messages->Warnings == 2 && Contains(messages->Text, "Shading") &&
         Contains(messages->Text, "Gradient opacity"),
       "shading and gradient opacity: one warning each");
@@ -274,8 +274,7 @@ int TestHAVSBadInput(int, char*[])
     cb->SetClippingRange(ca->GetClippingRange());
     b.Window->Render();
     const auto d = havstest::Compare(havstest::FloatResult(near), havstest::FloatResult(far));
-    std::cout << "huge coordinates (1e7 offset): RMSE " << d.RMSE << ", max " << d.Max
-              << std::endl;
+    std::cout << "huge coordinates (1e7 offset): RMSE " << d.RMSE << ", max " << d.Max << std::endl;
     havstest::Check(d.RMSE < 5e-3, "huge coordinates render as at the origin");
   }
   // A zero-size viewport: nothing happens, no error.

@@ -34,8 +34,8 @@
 #include "vtkHAVSDataSets.h"
 
 #include "vtkHAVSFaceSorter.h"
-#include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSFrameStatistics.h"
+#include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSVolumeMapper.h"
 
 #include "vtkActor.h"
@@ -101,8 +101,8 @@ std::vector<float> Reference(vtkUnstructuredGrid* grid, vtkVolumeProperty* prope
   return std::vector<float>(image->GetPointer(0), image->GetPointer(0) + 4 * kSize * kSize);
 }
 
-std::vector<float> RenderWith(havstest::VolumeScene& scene, vtkHAVSVolumeMapper* mapper,
-  const std::function<void()>& setup)
+std::vector<float> RenderWith(
+  havstest::VolumeScene& scene, vtkHAVSVolumeMapper* mapper, const std::function<void()>& setup)
 {
   mapper->SetKBufferPathToFramebufferFetch();
   mapper->SetKBufferSize(14);
@@ -132,8 +132,8 @@ bool ClearlyWrong(const havstest::ImageDifference& d, const havstest::ImageDiffe
 }
 
 /// The common checks of a non-convex mesh: tagged, perturbed, controls.
-void CheckMesh(const std::string& name, vtkUnstructuredGrid* grid, double azimuth,
-  double elevation, bool parallel, bool gapLengthMustFail)
+void CheckMesh(const std::string& name, vtkUnstructuredGrid* grid, double azimuth, double elevation,
+  bool parallel, bool gapLengthMustFail)
 {
   auto property = havstest::MakeRampPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> mapper;
@@ -152,10 +152,12 @@ void CheckMesh(const std::string& name, vtkUnstructuredGrid* grid, double azimut
   const auto lists = RenderWith(scene, mapper, [&] { mapper->SetKBufferPathToFragmentLists(); });
   const auto perturbed =
     RenderWith(scene, mapper, [&] { mapper->GetFaceSorter()->SetBlockReversal(40); });
-  const auto perturbedK1 = RenderWith(scene, mapper, [&] {
-    mapper->GetFaceSorter()->SetBlockReversal(40);
-    mapper->SetKBufferSize(1);
-  });
+  const auto perturbedK1 = RenderWith(scene, mapper,
+    [&]
+    {
+      mapper->GetFaceSorter()->SetBlockReversal(40);
+      mapper->SetKBufferSize(1);
+    });
   mapper->GetFaceSorter()->SetBlockReversal(1);
 
   Errors e;
@@ -197,7 +199,8 @@ void TestConvexBox()
   havstest::PlaceCamera(scene.Renderer, 30.0, 20.0, false);
   const auto automatic = RenderWith(scene, mapper, [] {});
   havstest::Check(mapper->IsInputConvex(), "box: detected as convex");
-  havstest::Check(!mapper->GetLastFrameStatistics()->GetTagging(), "box: convex, so no tagging (pays nothing)");
+  havstest::Check(
+    !mapper->GetLastFrameStatistics()->GetTagging(), "box: convex, so no tagging (pays nothing)");
   const auto tagged = RenderWith(scene, mapper, [&] { mapper->SetBoundaryModeToTagging(); });
   havstest::Check(mapper->GetLastFrameStatistics()->GetTagging(), "box: tagging when asked");
   const auto d = havstest::Compare(automatic, tagged);
@@ -258,24 +261,30 @@ void TestCameraInside(const std::string& name, vtkUnstructuredGrid* grid, const 
   // little farther than ResetCameraClippingRange's, so the slab is visible).
   const double length = grid->GetLength();
   camera->SetClippingRange(0.02 * length, 2.0 * length);
-  const auto choosePath = [&] {
+  const auto choosePath = [&]
+  {
     if (lists)
     {
       mapper->SetKBufferPathToFragmentLists();
     }
   };
   const auto havs = RenderWith(scene, mapper, choosePath);
-  havstest::Check(mapper->GetLastFrameStatistics()->GetPlaneCount() >= 1 && mapper->GetLastFrameStatistics()->GetSectionTriangles() > 0,
+  havstest::Check(mapper->GetLastFrameStatistics()->GetPlaneCount() >= 1 &&
+      mapper->GetLastFrameStatistics()->GetSectionTriangles() > 0,
     name + ": the near plane cuts the mesh, its section is drawn");
-  const auto noSection = RenderWith(scene, mapper, [&] {
-    choosePath();
-    mapper->PlaneSectionsOff();
-  });
+  const auto noSection = RenderWith(scene, mapper,
+    [&]
+    {
+      choosePath();
+      mapper->PlaneSectionsOff();
+    });
   mapper->PlaneSectionsOn();
-  const auto perturbed = RenderWith(scene, mapper, [&] {
-    choosePath();
-    mapper->GetFaceSorter()->SetBlockReversal(40);
-  });
+  const auto perturbed = RenderWith(scene, mapper,
+    [&]
+    {
+      choosePath();
+      mapper->GetFaceSorter()->SetBlockReversal(40);
+    });
   mapper->GetFaceSorter()->SetBlockReversal(1);
   vtkIdType started = 0;
   const auto exact = Reference(grid, property, scene.Renderer, nullptr, nullptr, &started);
@@ -456,10 +465,10 @@ void TestTranslucentActor()
     const auto without = havstest::Compare(havsVolume, ptVolume);
     Print(std::string("translucent actor") + (peeling ? " (peeling)" : ""),
       "HAVS vs PT with the actor", with);
-    Print(std::string("translucent actor") + (peeling ? " (peeling)" : ""),
-      "HAVS vs PT without it", without);
-    havstest::Check(with.RMSE < without.RMSE + 0.002,
-      "translucent actor: HAVS treats it as PT does");
+    Print(std::string("translucent actor") + (peeling ? " (peeling)" : ""), "HAVS vs PT without it",
+      without);
+    havstest::Check(
+      with.RMSE < without.RMSE + 0.002, "translucent actor: HAVS treats it as PT does");
   }
 }
 }

@@ -175,8 +175,9 @@ Surface Sphere(const std::string& name, int rings, int sectors, double bump)
   auto add = [&](double theta, double phi)
   {
     const double r = 1.0 + bump * std::sin(5.0 * theta) * std::cos(4.0 * phi);
-    s.Points.insert(s.Points.end(), { r * std::sin(theta) * std::cos(phi),
-                                      r * std::sin(theta) * std::sin(phi), r * std::cos(theta) });
+    s.Points.insert(s.Points.end(),
+      { r * std::sin(theta) * std::cos(phi), r * std::sin(theta) * std::sin(phi),
+        r * std::cos(theta) });
   };
   add(0.0, 0.0); // north pole: 0
   for (int i = 1; i < rings; ++i)
@@ -285,8 +286,9 @@ double TriangleDistance(const Vec& p, const Vec& a, const Vec& b, const Vec& c)
     const Vec d = Sub(p, q);
     return std::sqrt(Dot(d, d));
   };
-  auto along = [](const Vec& o, const Vec& e, double t) -> Vec
-  { return { o[0] + t * e[0], o[1] + t * e[1], o[2] + t * e[2] }; };
+  auto along = [](const Vec& o, const Vec& e, double t) -> Vec {
+    return { o[0] + t * e[0], o[1] + t * e[1], o[2] + t * e[2] };
+  };
   const double d1 = Dot(ab, ap), d2 = Dot(ac, ap);
   if (d1 <= 0 && d2 <= 0)
   {
@@ -339,8 +341,8 @@ double SurfaceDistance(const Surface& s, const Vec& x)
 }
 
 /// FindCell against ray parity on random points of the root box; the mismatches.
-int InsideOutsideMismatches(vtkHAVSConvexification* cvx, const Surface& s, int samples,
-  unsigned seed, bool print)
+int InsideOutsideMismatches(
+  vtkHAVSConvexification* cvx, const Surface& s, int samples, unsigned seed, bool print)
 {
   double box[6];
   cvx->GetRootBounds(box);
@@ -580,8 +582,8 @@ OrderFigures OrderExactness(vtkUnstructuredGrid* grid, int method, bool verbose)
     camera->SetFocalPoint(centre);
     camera->SetPosition(centre[0] + distance * view[0] / l, centre[1] + distance * view[1] / l,
       centre[2] + distance * view[2] / l);
-    camera->SetViewUp(std::fabs(view[2]) > 0.9 * l ? 1.0 : 0.0, 0.0,
-      std::fabs(view[2]) > 0.9 * l ? 0.0 : 1.0);
+    camera->SetViewUp(
+      std::fabs(view[2]) > 0.9 * l ? 1.0 : 0.0, 0.0, std::fabs(view[2]) > 0.9 * l ? 0.0 : 1.0);
     camera->OrthogonalizeViewUp();
     camera->SetViewAngle(30.0);
     camera->SetClippingRange(0.5 * (distance - radius), distance + 2.0 * radius);

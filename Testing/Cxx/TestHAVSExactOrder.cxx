@@ -39,14 +39,15 @@
 #include "vtkHAVSDataSets.h"
 
 #include "vtkCamera.h"
+#include "vtkCellType.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFaceSorter.h"
+#include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSSoftwareKBuffer.h"
 #include "vtkHAVSVisibilityOrder.h"
-#include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkIntArray.h"
 #include "vtkMatrix4x4.h"
@@ -55,7 +56,6 @@
 #include "vtkPoints.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkCellType.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolumeProperty.h"
 
@@ -171,9 +171,8 @@ int CycleScene(int size)
                 "%d (%lld pixels k > 2)\n  k = 1: RMSE %.6f max %.4f, %lld order violations; "
                 "k = %d: RMSE %.6f max %.4f, %lld order violations\n",
       names[m], static_cast<long long>(order->GetNumberOfCycleBreaks()),
-      static_cast<long long>(reported), needed,
-      static_cast<long long>(analysis->GetPixelsOverK2()), k1.RMSE, k1.Max,
-      static_cast<long long>(k1Violations), std::max(needed, 2), kn.RMSE, kn.Max,
+      static_cast<long long>(reported), needed, static_cast<long long>(analysis->GetPixelsOverK2()),
+      k1.RMSE, k1.Max, static_cast<long long>(k1Violations), std::max(needed, 2), kn.RMSE, kn.Max,
       static_cast<long long>(knViolations));
     const std::string what = std::string("cycle, ") + names[m] + ": ";
     havstest::Check(order->GetNumberOfCycleBreaks() > 0 && reported > 0,
@@ -238,8 +237,8 @@ int TestHAVSExactOrder(int argc, char* argv[])
   std::printf("%s: %lld tetrahedra, %d^2, 14 views\n", scene.c_str(),
     static_cast<long long>(grid->GetNumberOfCells()), size);
   auto property = havstest::MakeRampPropertyFor(grid);
-  const bool synthetic = scene == "wavelet" || scene == "hollowsphere" || scene == "twoblocks" ||
-    scene == "torus";
+  const bool synthetic =
+    scene == "wavelet" || scene == "hollowsphere" || scene == "twoblocks" || scene == "torus";
   // Meshes with face planes through their centre (the test meshes' voxel
   // grids; the LOX post's O-grid, symmetric about its axis planes): from
   // exactly the axis views the eye lies in such planes, and a whole line of
@@ -274,7 +273,8 @@ int TestHAVSExactOrder(int argc, char* argv[])
   layered->SetNonConvexMethod(vtkHAVSVisibilityOrder::NonConvexBoundaryLayers);
   vtkHAVSVisibilityOrder* mpvo[3] = { alone, convexified, layered };
   const int mapperMethods[3] = { vtkHAVSVisibilityOrder::NonConvexIgnore,
-    vtkHAVSVisibilityOrder::NonConvexConvexification, vtkHAVSVisibilityOrder::NonConvexBoundaryLayers };
+    vtkHAVSVisibilityOrder::NonConvexConvexification,
+    vtkHAVSVisibilityOrder::NonConvexBoundaryLayers };
   vtkNew<vtkHAVSSoftwareKBuffer> analysis;
   vtkNew<vtkIntArray> requiredK;
 
@@ -291,7 +291,8 @@ int TestHAVSExactOrder(int argc, char* argv[])
     std::getenv("HAVS_ONLY_VIEW") ? std::atoi(std::getenv("HAVS_ONLY_VIEW")) : -1;
   for (int v = 0; v < 14; ++v)
   {
-    if (onlyView >= 0 && v != onlyView) continue;
+    if (onlyView >= 0 && v != onlyView)
+      continue;
     const double tilt = turned ? 1.0 : 0.0;
     havstest::PlaceCamera(view.Renderer, kViews[v][0] + 7.0 * tilt,
       kViews[v][1] + (kViews[v][1] > 80.0 ? -5.0 : 5.0) * tilt, false);
@@ -343,7 +344,8 @@ int TestHAVSExactOrder(int argc, char* argv[])
     std::vector<uint8_t> foldedPixel(static_cast<size_t>(size) * size, 0);
     for (vtkIdType p = 0; p < static_cast<vtkIdType>(size) * size; ++p)
     {
-      for (auto* f = reference->GetPixelFragmentsBegin(p); f != reference->GetPixelFragmentsEnd(p); ++f)
+      for (auto* f = reference->GetPixelFragmentsBegin(p); f != reference->GetPixelFragmentsEnd(p);
+           ++f)
       {
         vtkIdType c[2];
         layered->GetFaceTetrahedra(f->Face, c);
@@ -392,8 +394,10 @@ int TestHAVSExactOrder(int argc, char* argv[])
     // GPU, k = 2, against the exact image.
     reference->Render();
     vtkFloatArray* exactImage = reference->GetImage();
-    std::vector<float> exact(exactImage->GetPointer(0), exactImage->GetPointer(0) + 4 * size * size);
-    auto withoutFolded = [&](std::vector<float> image) {
+    std::vector<float> exact(
+      exactImage->GetPointer(0), exactImage->GetPointer(0) + 4 * size * size);
+    auto withoutFolded = [&](std::vector<float> image)
+    {
       for (size_t p = 0; p < foldedPixel.size() && image.size() == exact.size(); ++p)
       {
         if (foldedPixel[p])
@@ -405,7 +409,8 @@ int TestHAVSExactOrder(int argc, char* argv[])
     };
     exact = withoutFolded(exact);
     // Near a folded pixel (within one pixel) the rasterizer may meet the folded cells too.
-    auto nearFolded = [&](int x, int y) {
+    auto nearFolded = [&](int x, int y)
+    {
       for (int dy = -1; dy <= 1; ++dy)
       {
         for (int dx = -1; dx <= 1; ++dx)
@@ -425,7 +430,8 @@ int TestHAVSExactOrder(int argc, char* argv[])
     // order in the frame's draw order (required k <= 2, `k`): there the GPU met
     // a fragment the exact ray does not have (a rasterization effect at an
     // edge), the order itself is right.
-    auto classifyViolations = [&](const std::vector<int>& k) {
+    auto classifyViolations = [&](const std::vector<int>& k)
+    {
       vtkNew<vtkIntArray> where;
       const int logged = mapper->GetLastFrameStatistics()->GetOrderViolationPixels(where);
       std::pair<long long, long long> counts(mapper->GetLastOrderViolations() - logged, 0);
@@ -470,7 +476,8 @@ int TestHAVSExactOrder(int argc, char* argv[])
       if (o > 1 && mapper->GetLastOrderViolations() > 0 && debug)
       {
         vtkNew<vtkIntArray> where;
-        for (int i = 0; i < std::min(mapper->GetLastFrameStatistics()->GetOrderViolationPixels(where), 3); ++i)
+        for (int i = 0;
+             i < std::min(mapper->GetLastFrameStatistics()->GetOrderViolationPixels(where), 3); ++i)
         {
           const int x = where->GetComponent(i, 0), y = where->GetComponent(i, 1);
           std::printf("view %d, %s: order violation at (%d, %d)%s:\n", v, r.Name, x, y,
@@ -480,8 +487,8 @@ int TestHAVSExactOrder(int argc, char* argv[])
       }
       if (o > 1 && !exactImage)
       {
-        std::printf("  view %d (%s): GPU k = 2 vs reference RMSE %.6f max %.4f\n", v, r.Name,
-          d.RMSE, d.Max);
+        std::printf(
+          "  view %d (%s): GPU k = 2 vs reference RMSE %.6f max %.4f\n", v, r.Name, d.RMSE, d.Max);
       }
     }
     // Automatic: MPVO as soon as the centroid order overflows k = 2.
@@ -528,8 +535,9 @@ int TestHAVSExactOrder(int argc, char* argv[])
     const std::string name = results[o].Name;
     havstest::Check(results[o].MaxK <= 2, name + ": every pixel needs k <= 2");
     havstest::Check(results[o].UnexplainedViolations == 0,
-      name + ": no order violation at k = 2 (but next to folded cells, or rasterization "
-             "effects at pixels whose exact fragments arrive in order)");
+      name +
+        ": no order violation at k = 2 (but next to folded cells, or rasterization "
+        "effects at pixels whose exact fragments arrive in order)");
     havstest::Check(results[o].ViewsMissingBounds == 0,
       name + ": k = 2 within the first-light bounds (RMSE < 0.0005, max < 0.01)");
   }

@@ -161,14 +161,13 @@ int main(int argc, char* argv[])
     {
       std::cerr << "FAIL: with vtkHAVSExpatFix, VTK's XML reader still cannot read back what "
                    "its writer wrote (expat "
-                << ExpatVersion() << ", reparse deferral " << (deferral ? "on" : "absent")
-                << ")." << std::endl;
+                << ExpatVersion() << ", reparse deferral " << (deferral ? "on" : "absent") << ")."
+                << std::endl;
       return EXIT_FAILURE;
     }
     if (deferral && after <= 0)
     {
-      std::cerr << "FAIL: this expat defers reparsing but the fix touched no parser."
-                << std::endl;
+      std::cerr << "FAIL: this expat defers reparsing but the fix touched no parser." << std::endl;
       return EXIT_FAILURE;
     }
     std::cout << "PASS: every round trip reads back the grid." << std::endl;
@@ -184,8 +183,8 @@ int main(int argc, char* argv[])
                 << std::endl;
       return EXIT_FAILURE;
     }
-    std::cout << "PASS (control): without the fix, this expat breaks VTK's XML reader ("
-              << 4 - same << " of 4 encodings), as expected." << std::endl;
+    std::cout << "PASS (control): without the fix, this expat breaks VTK's XML reader (" << 4 - same
+              << " of 4 encodings), as expected." << std::endl;
     return EXIT_SUCCESS;
   }
   if (!allSame)

@@ -84,8 +84,8 @@ std::vector<std::array<uint32_t, 3>> Faces(const std::vector<uint32_t>& triangle
 }
 
 /// Distance from the eye to a draw triangle's centroid.
-double Distance(vtkHAVSMesh* mesh, const std::vector<uint32_t>& triangles, size_t t,
-  const double eye[3])
+double Distance(
+  vtkHAVSMesh* mesh, const std::vector<uint32_t>& triangles, size_t t, const double eye[3])
 {
   double d2 = 0.0;
   for (int k = 0; k < 3; ++k)
@@ -120,7 +120,8 @@ int TestHAVSFaceOrderPolicy(int, char*[])
   // Centroid: made once per view.
   policy->SetVisibilityOrder(centroid);
   vtkHAVSFaceOrderPolicy::Plan plan = policy->Begin(mesh, 2, 1, true, true);
-  havstest::Check(plan.Order == centroid && !plan.Probe, "Centroid: the plan is the centroid order");
+  havstest::Check(
+    plan.Order == centroid && !plan.Probe, "Centroid: the plan is the centroid order");
   policy->Prepare(plan, mesh, grid, viewA);
   const vtkMTimeType first = policy->GetDrawOrderVersion();
   const vtkIdType sorts = sorter->GetNumberOfSorts();
@@ -153,11 +154,11 @@ int TestHAVSFaceOrderPolicy(int, char*[])
   havstest::Check(policy->Prepare(plan, mesh, grid, viewA), "MPVO: the order is made");
   const std::vector<uint32_t> exactA = policy->GetDrawTriangles();
   const vtkMTimeType exactVersion = policy->GetDrawOrderVersion();
-  havstest::Check(policy->GetLastOrder() == mpvo && !policy->GetLastReused() &&
-      Faces(exactA) == allFaces,
+  havstest::Check(
+    policy->GetLastOrder() == mpvo && !policy->GetLastReused() && Faces(exactA) == allFaces,
     "MPVO: a permutation of the faces, newly made");
-  havstest::Check(Distance(mesh, exactA, 0, eyeA) < Distance(mesh, exactA, n - 1, eyeA),
-    "MPVO: front to back");
+  havstest::Check(
+    Distance(mesh, exactA, 0, eyeA) < Distance(mesh, exactA, n - 1, eyeA), "MPVO: front to back");
   policy->Prepare(plan, mesh, grid, viewA);
   havstest::Check(policy->GetLastReused() && policy->GetDrawOrderVersion() == exactVersion,
     "MPVO: the same view reuses the order");
@@ -171,8 +172,8 @@ int TestHAVSFaceOrderPolicy(int, char*[])
   const vtkIdType sortsBefore = sorter->GetNumberOfSorts();
   policy->Prepare(policy->Begin(mesh, 2, 1, true, true), mesh, grid, viewB);
   policy->Prepare(policy->Begin(mesh, 2, 1, true, true), mesh, grid, viewA);
-  havstest::Check(sorter->GetNumberOfSorts() == sortsBefore + 1 &&
-      policy->GetDrawTriangles() == centroidA,
+  havstest::Check(
+    sorter->GetNumberOfSorts() == sortsBefore + 1 && policy->GetDrawTriangles() == centroidA,
     "switching back to the centroid order for a view it was made for only gathers");
 
   // A new mesh build: a new order.
@@ -189,12 +190,14 @@ int TestHAVSFaceOrderPolicy(int, char*[])
   havstest::Check(plan.Order == centroid && plan.Probe, "Automatic: a centroid probe first");
   havstest::Check(policy->ProbeResult(0).Order == -1, "Automatic: a clean probe is the frame");
   plan = policy->Begin(mesh, 2, 1, true, true);
-  havstest::Check(plan.Order == centroid && plan.Probe, "Automatic: still probing the centroid order");
+  havstest::Check(
+    plan.Order == centroid && plan.Probe, "Automatic: still probing the centroid order");
   const vtkHAVSFaceOrderPolicy::Plan again = policy->ProbeResult(7);
   havstest::Check(again.Order == mpvo && !again.Probe,
     "Automatic: a probe with violations is drawn again in the exact order");
   plan = policy->Begin(mesh, 2, 1, true, true);
-  havstest::Check(plan.Order == mpvo && !plan.Probe, "Automatic: MPVO stays for this mesh, k, path");
+  havstest::Check(
+    plan.Order == mpvo && !plan.Probe, "Automatic: MPVO stays for this mesh, k, path");
   plan = policy->Begin(mesh, 3, 1, true, true);
   havstest::Check(plan.Order == centroid && plan.Probe, "Automatic: another k probes again");
   plan = policy->Begin(mesh, 3, 1, true, false);

@@ -52,8 +52,8 @@ vtkSmartPointer<vtkUnstructuredGrid> MakeGrid(
   grid->Allocate(static_cast<vtkIdType>(cells.size()));
   for (const auto& c : cells)
   {
-    grid->InsertNextCell(c.size() == 4 ? VTK_TETRA : VTK_HEXAHEDRON,
-      static_cast<vtkIdType>(c.size()), c.data());
+    grid->InsertNextCell(
+      c.size() == 4 ? VTK_TETRA : VTK_HEXAHEDRON, static_cast<vtkIdType>(c.size()), c.data());
   }
   return grid;
 }
@@ -278,25 +278,25 @@ int TestHAVSFaceSet(int, char*[])
 
   // One tetrahedron, and the same one inverted (negative volume).
   const double tetInside[3] = { 0.25, 0.25, 0.25 };
-  CheckConvexMesh("single tet", faces, MakeGrid(tetPoints, { { 0, 1, 2, 3 } }), 1, 4, 4,
-    tetInside, 1.0 / 6.0);
+  CheckConvexMesh(
+    "single tet", faces, MakeGrid(tetPoints, { { 0, 1, 2, 3 } }), 1, 4, 4, tetInside, 1.0 / 6.0);
   havstest::CheckNear(faces->GetLongestEdge(), std::sqrt(2.0), 1e-12, "single tet: longest edge");
-  CheckConvexMesh("inverted tet", faces, MakeGrid(tetPoints, { { 0, 2, 1, 3 } }), 1, 4, 4,
-    tetInside, 1.0 / 6.0);
+  CheckConvexMesh(
+    "inverted tet", faces, MakeGrid(tetPoints, { { 0, 2, 1, 3 } }), 1, 4, 4, tetInside, 1.0 / 6.0);
 
   // Two tetrahedra sharing the face (1, 2, 3): a convex bipyramid.
   const double bipyramidInside[3] = { 0.4, 0.4, 0.4 };
-  CheckConvexMesh("two tets", faces, MakeGrid(tetPoints, { { 0, 1, 2, 3 }, { 4, 1, 3, 2 } }), 2,
-    7, 6, bipyramidInside, 0.5);
+  CheckConvexMesh("two tets", faces, MakeGrid(tetPoints, { { 0, 1, 2, 3 }, { 4, 1, 3, 2 } }), 2, 7,
+    6, bipyramidInside, 0.5);
 
   // The unit cube: 12 boundary triangles either way; 5 tets share 4 internal
   // faces (16 in all), 6 tets share 6 (18 in all).
   const double cubeCentre[3] = { 0.5, 0.5, 0.5 };
-  CheckConvexMesh("cube in 5", faces, MakeGrid(CubeCorners(), CubeInFive()), 5, 16, 12,
-    cubeCentre, 1.0);
+  CheckConvexMesh(
+    "cube in 5", faces, MakeGrid(CubeCorners(), CubeInFive()), 5, 16, 12, cubeCentre, 1.0);
   havstest::CheckNear(faces->GetLongestEdge(), std::sqrt(2.0), 1e-12, "cube in 5: longest edge");
-  CheckConvexMesh("cube in 6", faces, MakeGrid(CubeCorners(), CubeInSix()), 6, 18, 12,
-    cubeCentre, 1.0);
+  CheckConvexMesh(
+    "cube in 6", faces, MakeGrid(CubeCorners(), CubeInSix()), 6, 18, 12, cubeCentre, 1.0);
   havstest::CheckNear(faces->GetLongestEdge(), std::sqrt(3.0), 1e-12, "cube in 6: longest edge");
 
   // The same cubes with inverted cells (two points swapped: negative volume):
@@ -304,15 +304,15 @@ int TestHAVSFaceSet(int, char*[])
   auto invertedFive = CubeInFive();
   std::swap(invertedFive[1][0], invertedFive[1][1]);
   std::swap(invertedFive[4][2], invertedFive[4][3]);
-  CheckConvexMesh("cube in 5, two tets inverted", faces,
-    MakeGrid(CubeCorners(), invertedFive), 5, 16, 12, cubeCentre, 1.0);
+  CheckConvexMesh("cube in 5, two tets inverted", faces, MakeGrid(CubeCorners(), invertedFive), 5,
+    16, 12, cubeCentre, 1.0);
   auto invertedSix = CubeInSix();
   for (auto& tet : invertedSix)
   {
     std::swap(tet[0], tet[3]);
   }
-  CheckConvexMesh("cube in 6, all inverted", faces, MakeGrid(CubeCorners(), invertedSix), 6, 18,
-    12, cubeCentre, 1.0);
+  CheckConvexMesh("cube in 6, all inverted", faces, MakeGrid(CubeCorners(), invertedSix), 6, 18, 12,
+    cubeCentre, 1.0);
 
   // Three tetrahedra on one face: a non-manifold face, stored once, internal.
   const std::vector<Point> fanPoints = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0.2, 0.2, 1 },
@@ -327,11 +327,11 @@ int TestHAVSFaceSet(int, char*[])
   // Degenerate tetrahedra (flat, repeated point) and a hexahedron are counted
   // and dropped; a tiny but well-shaped tetrahedron is not degenerate.
   std::vector<Point> mixedPoints = CubeCorners();
-  mixedPoints.push_back({ 0.5, 0.5, 0.0 });                  // 8: in the plane z = 0
-  mixedPoints.push_back({ 2.0, 2.0, 2.0 });                  // 9
-  mixedPoints.push_back({ 2.00001, 2.0, 2.0 });              // 10
-  mixedPoints.push_back({ 2.0, 2.00001, 2.0 });              // 11
-  mixedPoints.push_back({ 2.0, 2.0, 2.00001 });              // 12
+  mixedPoints.push_back({ 0.5, 0.5, 0.0 });     // 8: in the plane z = 0
+  mixedPoints.push_back({ 2.0, 2.0, 2.0 });     // 9
+  mixedPoints.push_back({ 2.00001, 2.0, 2.0 }); // 10
+  mixedPoints.push_back({ 2.0, 2.00001, 2.0 }); // 11
+  mixedPoints.push_back({ 2.0, 2.0, 2.00001 }); // 12
   auto mixed = MakeGrid(mixedPoints,
     { { 0, 1, 2, 4 }, { 0, 1, 2, 8 }, { 0, 1, 1, 4 }, { 0, 1, 3, 2, 4, 5, 7, 6 },
       { 9, 10, 11, 12 } });
@@ -388,8 +388,8 @@ int TestHAVSFaceSet(int, char*[])
 
   std::ostringstream printed;
   faces->Print(printed);
-  havstest::Check(printed.str().find("NumberOfBoundaryFaces: " +
-                    std::to_string(12 * n * n)) != std::string::npos,
+  havstest::Check(
+    printed.str().find("NumberOfBoundaryFaces: " + std::to_string(12 * n * n)) != std::string::npos,
     "PrintSelf prints the counts");
   return havstest::Result();
 }

@@ -71,8 +71,8 @@ double Key(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* grid, vtkIdType f, const 
 
 /// True when `order` is a permutation of the faces along which Key ascends,
 /// up to the rounding of float keys.
-bool Ascending(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* grid,
-  const std::vector<uint32_t>& order, const View& view)
+bool Ascending(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* grid, const std::vector<uint32_t>& order,
+  const View& view)
 {
   std::vector<uint32_t> sorted = order;
   std::sort(sorted.begin(), sorted.end());
@@ -149,8 +149,8 @@ int TestHAVSFaceSorter(int, char*[])
   View scaledParallel = scaled;
   scaledParallel.Parallel = true;
   Sort(sorter, faces, scaledParallel);
-  havstest::Check(Ascending(faces, grid, sorter->GetOrder(), scaledParallel),
-    "scaled parallel order");
+  havstest::Check(
+    Ascending(faces, grid, sorter->GetOrder(), scaledParallel), "scaled parallel order");
 
   // Reuse: nothing changed, nothing sorted; any change sorts.
   Sort(sorter, faces, perspective);
@@ -160,8 +160,8 @@ int TestHAVSFaceSorter(int, char*[])
   havstest::Check(sorter->GetOrder() == perspectiveOrder, "the reused order is kept");
   View moved = perspective;
   moved.Eye[2] = 4.5;
-  havstest::Check(Sort(sorter, faces, moved) && sorter->GetNumberOfSorts() == sorts + 1,
-    "a moved eye re-sorts");
+  havstest::Check(
+    Sort(sorter, faces, moved) && sorter->GetNumberOfSorts() == sorts + 1, "a moved eye re-sorts");
   havstest::Check(Ascending(faces, grid, sorter->GetOrder(), moved), "moved eye order");
   View turned = moved;
   turned.Direction[0] = 0.0;

@@ -52,14 +52,14 @@ int TestHAVSPaths(int, char*[])
   havstest::PlaceCamera(scene.Renderer, 30.0, 25.0, false);
   scene.Window->Render(); // makes the context so that paths can be queried
 
-  const bool fetch = mapper->IsKBufferPathSupported(
-    scene.Window, vtkHAVSVolumeMapper::KBufferPathFramebufferFetch);
+  const bool fetch =
+    mapper->IsKBufferPathSupported(scene.Window, vtkHAVSVolumeMapper::KBufferPathFramebufferFetch);
   const bool interlock = mapper->IsKBufferPathSupported(
     scene.Window, vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock);
-  const bool lists = mapper->IsKBufferPathSupported(
-    scene.Window, vtkHAVSVolumeMapper::KBufferPathFragmentLists);
-  std::cout << "paths here: FramebufferFetch " << fetch << ", FragmentShaderInterlock "
-            << interlock << ", FragmentLists " << lists << std::endl;
+  const bool lists =
+    mapper->IsKBufferPathSupported(scene.Window, vtkHAVSVolumeMapper::KBufferPathFragmentLists);
+  std::cout << "paths here: FramebufferFetch " << fetch << ", FragmentShaderInterlock " << interlock
+            << ", FragmentLists " << lists << std::endl;
   havstest::Check(lists, "the fragment-list fallback runs here");
 
   // The exact image: fragment lists.
@@ -98,8 +98,8 @@ int TestHAVSPaths(int, char*[])
     const std::vector<float> image = havstest::FloatResult(mapper);
     const auto d = havstest::Compare(image, exact);
     std::cout << mapper->GetActiveKBufferPathName() << " k=" << run.second << ": RMSE " << d.RMSE
-              << ", max " << d.Max << ", pixels off by > 1/255: " << 100.0 * d.FractionOver1
-              << " %" << std::endl;
+              << ", max " << d.Max << ", pixels off by > 1/255: " << 100.0 * d.FractionOver1 << " %"
+              << std::endl;
     havstest::Check(mapper->GetActiveKBufferPath() == run.first, "the forced path ran");
     havstest::Check(havstest::AllFinite(image), "finite image");
     if (run.second == 1)
@@ -112,8 +112,9 @@ int TestHAVSPaths(int, char*[])
     }
     if (run.second >= 14)
     {
-      havstest::Check(d.FractionOver1 < 0.005, "k = 14 equals the exact image within 1/255 on "
-                                               "all but 0.5 % of the pixels");
+      havstest::Check(d.FractionOver1 < 0.005,
+        "k = 14 equals the exact image within 1/255 on "
+        "all but 0.5 % of the pixels");
       havstest::Check(d.RMSE < 1e-3, "k = 14 RMSE against the exact image below 1e-3");
     }
   }

@@ -94,8 +94,8 @@ int TestHAVSPreIntegrationTable(int, char*[])
     for (int i = 0; i < 32 * 32; ++i)
     {
       const float* e = t + 4 * (static_cast<size_t>(l) * 32 * 32 + i);
-      worst = std::max<double>({ worst, std::fabs(double(e[3]) - alpha), std::fabs(double(e[0]) - 0.2 * alpha),
-        std::fabs(double(e[2]) - 0.9 * alpha) });
+      worst = std::max<double>({ worst, std::fabs(double(e[3]) - alpha),
+        std::fabs(double(e[0]) - 0.2 * alpha), std::fabs(double(e[2]) - 0.9 * alpha) });
     }
   }
   std::cout << "constant: max error " << worst << std::endl;
@@ -117,7 +117,8 @@ int TestHAVSPreIntegrationTable(int, char*[])
         const double len = 2.0 * l / 31.0;
         const double alpha = 1.0 - std::exp(-len * (f / 31.0 + b / 31.0) / 2.0);
         const float* e = t + 4 * ((static_cast<size_t>(l) * 32 + b) * 32 + f);
-        worst = std::max<double>({ worst, std::fabs(double(e[3]) - alpha), std::fabs(double(e[1]) - 0.6 * alpha) });
+        worst = std::max<double>(
+          { worst, std::fabs(double(e[3]) - alpha), std::fabs(double(e[1]) - 0.6 * alpha) });
       }
     }
   }

@@ -141,8 +141,8 @@ void CheckKeyMap()
     nanLast = nanLast && vtkHAVSRadixSorter::FloatToSortableKey(FromBits(bits)) == 0xFFFFFFFFu;
   }
   havstest::Check(nanLast, "every NaN maps to 0xFFFFFFFF");
-  havstest::Check(vtkHAVSRadixSorter::FloatToSortableKey(Limits::infinity()) < 0xFFFFFFFFu,
-    "+inf below NaN");
+  havstest::Check(
+    vtkHAVSRadixSorter::FloatToSortableKey(Limits::infinity()) < 0xFFFFFFFFu, "+inf below NaN");
 }
 
 /// Test inputs of n keys.
@@ -195,8 +195,8 @@ int TestHAVSRadixSorter(int, char*[])
   const std::pair<const char*, Generator> inputs[] = { { "rounded uniform", RoundedUniform },
     { "any bits", AnyBits }, { "constant", Constant }, { "descending", Descending } };
   // The last size, after the largest, checks that reused scratch buffers do no harm.
-  for (size_t n : { size_t(0), size_t(1), size_t(1000), size_t(100000), size_t(1000003),
-         size_t(777) })
+  for (size_t n :
+    { size_t(0), size_t(1), size_t(1000), size_t(100000), size_t(1000003), size_t(777) })
   {
     for (const auto& input : inputs)
     {
@@ -204,7 +204,8 @@ int TestHAVSRadixSorter(int, char*[])
       const std::vector<float> keys = input.second(n, random);
       std::vector<uint32_t> order(3, 42); // stale content must be replaced
       sorter->Sort(keys.data(), n, order);
-      havstest::Check(order == StableOrder(keys, ReferenceLess), name + ": equals std::stable_sort");
+      havstest::Check(
+        order == StableOrder(keys, ReferenceLess), name + ": equals std::stable_sort");
       havstest::Check(SortedAndStable(keys, order), name + ": sorted and stable");
     }
   }
@@ -213,16 +214,16 @@ int TestHAVSRadixSorter(int, char*[])
   // after positive ones and larger negative magnitudes last; the checks above
   // must see it.
   const std::vector<float> keys = RoundedUniform(100000, random);
-  const std::vector<uint32_t> rawBitOrder = StableOrder(
-    keys, [](float a, float b) { return ToBits(a) < ToBits(b); });
+  const std::vector<uint32_t> rawBitOrder =
+    StableOrder(keys, [](float a, float b) { return ToBits(a) < ToBits(b); });
   havstest::Check(rawBitOrder != StableOrder(keys, ReferenceLess),
     "negative control: a raw bit sort differs from the reference");
-  havstest::Check(!SortedAndStable(keys, rawBitOrder),
-    "negative control: a raw bit sort fails the order check");
+  havstest::Check(
+    !SortedAndStable(keys, rawBitOrder), "negative control: a raw bit sort fails the order check");
   // ... and so must an unstable order of equal keys.
   std::vector<uint32_t> unstable = StableOrder(keys, ReferenceLess);
-  const auto tie = std::adjacent_find(unstable.begin(), unstable.end(),
-    [&](uint32_t a, uint32_t b) { return keys[a] == keys[b]; });
+  const auto tie = std::adjacent_find(
+    unstable.begin(), unstable.end(), [&](uint32_t a, uint32_t b) { return keys[a] == keys[b]; });
   std::iter_swap(tie, tie + 1);
   havstest::Check(!SortedAndStable(keys, unstable),
     "negative control: swapped equal keys fail the stability check");

@@ -70,8 +70,8 @@ double SlabError(vtkHAVSReferenceRenderer* ref, double scale, double expected, d
       const double y = 0.5 + scale * ((j + 0.5) / size[1] * 2 - 1);
       if (x > margin && x < 1 - margin && y > margin && y < 1 - margin)
       {
-        worst = std::max(
-          worst, std::fabs(ref->GetImage()->GetComponent(j * size[0] + i, 3) - expected));
+        worst =
+          std::max(worst, std::fabs(ref->GetImage()->GetComponent(j * size[0] + i, 3) - expected));
       }
     }
   }
@@ -199,8 +199,8 @@ int TestHAVSReference(int, char*[])
     camera->SetClippingRange(0.5, 10.0);
     ref->ComputeFragments();
     bad = CountBadCrossings(ref, &covered, &ties);
-    std::cout << "oblique " << angle << ": " << covered << " covered, " << bad << " bad, "
-              << ties << " ties" << std::endl;
+    std::cout << "oblique " << angle << ": " << covered << " covered, " << bad << " bad, " << ties
+              << " ties" << std::endl;
     havstest::Check(bad == 0 && covered > 100, "oblique rays: one entry and one exit each");
   }
 
@@ -244,7 +244,8 @@ int TestHAVSReference(int, char*[])
     {
       for (int i = 0; i < 24; ++i)
       {
-        double n[4] = { (i + 0.5) / 12.0 - 1, (j + 0.5) / 12.0 - 1, -1, 1 }, f[4] = { n[0], n[1], 1, 1 };
+        double n[4] = { (i + 0.5) / 12.0 - 1, (j + 0.5) / 12.0 - 1, -1, 1 },
+               f[4] = { n[0], n[1], 1, 1 };
         double pn[4], pf[4], dir[3];
         clipToWorld->MultiplyPoint(n, pn);
         clipToWorld->MultiplyPoint(f, pf);

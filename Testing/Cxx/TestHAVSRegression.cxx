@@ -66,8 +66,8 @@ bool Matches(const havstest::ImageDifference& d)
   return d.RMSE < 1.5 / 255 && d.FractionOver4 < 0.01;
 }
 
-void CheckScene(vtkUnstructuredGrid* grid, const std::string& scene, const std::string& control,
-  bool parallel)
+void CheckScene(
+  vtkUnstructuredGrid* grid, const std::string& scene, const std::string& control, bool parallel)
 {
   const int size = 128;
   if (!havstest::Check(grid != nullptr, scene + ": input read"))
@@ -92,12 +92,13 @@ void CheckScene(vtkUnstructuredGrid* grid, const std::string& scene, const std::
     return;
   }
   const auto d = CompareWithBaseline(image, baseline, size);
-  std::cout << scene << ": RMSE " << d.RMSE * 255 << "/255, pixels off by > 4/255: "
-            << 100 * d.FractionOver4 << " %" << std::endl;
+  std::cout << scene << ": RMSE " << d.RMSE * 255
+            << "/255, pixels off by > 4/255: " << 100 * d.FractionOver4 << " %" << std::endl;
   havstest::Check(Matches(d), scene + " matches its baseline");
-  const auto other = CompareWithBaseline(image, havstest::BaselineDir() + "/" + control + ".png", size);
-  std::cout << scene << " against " << control << "'s baseline (control): RMSE "
-            << other.RMSE * 255 << "/255" << std::endl;
+  const auto other =
+    CompareWithBaseline(image, havstest::BaselineDir() + "/" + control + ".png", size);
+  std::cout << scene << " against " << control << "'s baseline (control): RMSE " << other.RMSE * 255
+            << "/255" << std::endl;
   havstest::Check(!Matches(other), "control: " + scene + " does not match " + control);
 }
 }

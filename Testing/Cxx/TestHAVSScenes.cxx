@@ -207,8 +207,8 @@ void TestTwoVolumesAndViewports()
   const float a1 = PixelAlpha(rgba, 128, column(0.5), 32);
   const float a2 = PixelAlpha(rgba, 128, column(2.0), 32);
   const float gap = PixelAlpha(rgba, 128, column(1.25), 32);
-  std::cout << "two volumes: alpha " << a1 << ", " << a2 << " (expected " << expected
-            << "), gap " << gap << std::endl;
+  std::cout << "two volumes: alpha " << a1 << ", " << a2 << " (expected " << expected << "), gap "
+            << gap << std::endl;
   havstest::Check(std::fabs(a1 - expected) < 2.0 / 255 && std::fabs(a2 - expected) < 2.0 / 255,
     "two volumes in one renderer");
   havstest::Check(gap < 1.0 / 255, "nothing between them");
@@ -320,8 +320,8 @@ void TestExtremumBlend()
     std::cout << (minimum ? "minimum" : "maximum") << " intensity: " << p[0] << " " << p[1] << " "
               << p[2] << " " << p[3] << " (expected " << rgb[0] * a << " " << rgb[1] * a << " "
               << rgb[2] * a << " " << a << ")" << std::endl;
-    havstest::Check(std::fabs(p[3] - a) < 1e-2 && std::fabs(p[0] - rgb[0] * a) < 1e-2,
-      "extremum blend colour");
+    havstest::Check(
+      std::fabs(p[3] - a) < 1e-2 && std::fabs(p[0] - rgb[0] * a) < 1e-2, "extremum blend colour");
     havstest::Check(mapper->GetActiveKBufferSize() == 0, "extremum blend needs no k-buffer");
     centreAlpha[minimum] = p[3];
   }

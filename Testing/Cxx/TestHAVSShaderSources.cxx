@@ -17,8 +17,8 @@
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
 
-#include "vtkHAVSVolumeMapper.h"
 #include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSVolumeMapper.h"
 
 #include <cstdlib>
 #include <fstream>
@@ -51,7 +51,8 @@ int TestHAVSShaderSources(int, char*[])
     "negative control: a broken shader is rejected");
 
   int checked = 0;
-  auto check = [&](const std::string& source, const std::string& name, const char* stage) {
+  auto check = [&](const std::string& source, const std::string& name, const char* stage)
+  {
     havstest::Check(Validate(source, name, stage), name + " compiles");
     ++checked;
   };
@@ -61,19 +62,23 @@ int TestHAVSShaderSources(int, char*[])
   check(vtkHAVSKBufferShaders::ExtremumDrawShader(), "extremum_draw", "frag");
   check(vtkHAVSKBufferShaders::ExtremumResolveShader(), "extremum_resolve", "frag");
   check(vtkHAVSKBufferShaders::CompositeShader(), "composite", "frag");
-  check(vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true),
+  check(
+    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true),
     "list_resolve_vote", "frag");
-  check(vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, false),
+  check(
+    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, false),
     "list_resolve", "frag");
   for (int k : { 1, 2, 3, 6, 13, 14 })
   {
-    check(vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, k, false),
+    check(vtkHAVSKBufferShaders::ResolveShader(
+            vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, k, false),
       "fetch_resolve_k" + std::to_string(k), "frag");
   }
   for (int k : { 1, 2, 3, 6, 14, 15, 32, 64 })
   {
     const std::string suffix = "_k" + std::to_string(k);
-    check(vtkHAVSKBufferShaders::InterlockDrawShader(k, vtkHAVSKBufferShaders::InterlockARB), "interlock_draw" + suffix, "frag");
+    check(vtkHAVSKBufferShaders::InterlockDrawShader(k, vtkHAVSKBufferShaders::InterlockARB),
+      "interlock_draw" + suffix, "frag");
     check(vtkHAVSKBufferShaders::InterlockClearShader(k), "interlock_clear" + suffix, "frag");
     check(vtkHAVSKBufferShaders::ResolveShader(
             vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock, k, false),

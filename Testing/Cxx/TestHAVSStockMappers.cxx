@@ -82,9 +82,9 @@ void CheckStock(const std::string& name, const std::vector<float>& image,
 {
   const auto d = havstest::Compare(image, reference);
   const double drawn = Covered(reference, image), extra = Covered(image, reference);
-  std::cout << name << ": RMSE " << d.RMSE << ", max " << d.Max << ", covers "
-            << 100 * drawn << " % of the ray caster's pixels, " << 100 * extra
-            << " % of its own inside them" << std::endl;
+  std::cout << name << ": RMSE " << d.RMSE << ", max " << d.Max << ", covers " << 100 * drawn
+            << " % of the ray caster's pixels, " << 100 * extra << " % of its own inside them"
+            << std::endl;
   havstest::Check(drawn > 0.9 && extra > 0.9, name + " draws the scene's pixels");
   havstest::Check(d.RMSE < bound, name + " within its loose RMSE bound");
 }
@@ -119,8 +119,8 @@ int TestHAVSStockMappers(int argc, char* argv[])
   const auto image = RenderWith(grid, havs, property, size, dataset + "_havs", &t);
   const auto d = havstest::Compare(image, reference);
   std::cout << "HAVS k=14 (" << havs->GetActiveKBufferPathName() << "): " << t << " s, RMSE "
-            << d.RMSE << ", max " << d.Max << ", pixels > 1/255: " << 100 * d.FractionOver1
-            << " %" << std::endl;
+            << d.RMSE << ", max " << d.Max << ", pixels > 1/255: " << 100 * d.FractionOver1 << " %"
+            << std::endl;
   havstest::Check(d.RMSE < bound, "HAVS within the RMSE bound of the ray-cast mapper");
 
   vtkNew<vtkHAVSVolumeMapper> lists;

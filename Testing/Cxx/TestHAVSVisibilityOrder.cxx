@@ -24,15 +24,15 @@
 #include "vtkFloatArray.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFaceSorter.h"
+#include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSSoftwareKBuffer.h"
 #include "vtkHAVSVisibilityOrder.h"
+#include "vtkHAVSVolumeMapper.h"
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
-#include "vtkHAVSFrameStatistics.h"
-#include "vtkHAVSVolumeMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkUnstructuredGrid.h"
@@ -64,7 +64,8 @@ vtkSmartPointer<vtkUnstructuredGrid> ThinCells()
   return tets->GetOutput();
 }
 
-int MaximumRequiredK(vtkUnstructuredGrid* grid, vtkCamera* camera, const std::vector<uint32_t>& order)
+int MaximumRequiredK(
+  vtkUnstructuredGrid* grid, vtkCamera* camera, const std::vector<uint32_t>& order)
 {
   vtkNew<vtkHAVSReferenceRenderer> reference;
   reference->SetInputData(grid);
@@ -118,7 +119,8 @@ int TestHAVSVisibilityOrder(int, char*[])
       const int kMPVO = MaximumRequiredK(grid, camera, mpvo->GetOrder());
       const int kCentroid = MaximumRequiredK(grid, camera, centroid->GetOrder());
       worstCentroid = std::max(worstCentroid, kCentroid);
-      std::printf("%s view (%g, %g, %g): max required k: MPVO %d, centroid %d (MPVO sort %.2f ms)\n",
+      std::printf(
+        "%s view (%g, %g, %g): max required k: MPVO %d, centroid %d (MPVO sort %.2f ms)\n",
         parallel ? "parallel" : "perspective", v[0], v[1], v[2], kMPVO, kCentroid,
         1000.0 * mpvo->GetLastSortSeconds());
       havstest::Check(kMPVO <= 2, "MPVO: k <= 2 suffices");
@@ -142,7 +144,8 @@ int TestHAVSVisibilityOrder(int, char*[])
   mapper->SetVisibilityOrderToMPVO();
   scene.Window->Render();
   const auto mpvoImage = havstest::FloatResult(mapper);
-  havstest::Check(mapper->GetLastFrameStatistics()->GetCycleBreaks() == 0, "mapper: no cycle breaks");
+  havstest::Check(
+    mapper->GetLastFrameStatistics()->GetCycleBreaks() == 0, "mapper: no cycle breaks");
   mapper->SetVisibilityOrderToCentroid();
   scene.Window->Render();
   const auto centroidImage = havstest::FloatResult(mapper);
@@ -160,7 +163,7 @@ int TestHAVSVisibilityOrder(int, char*[])
   std::printf("k = 1, MPVO vs reference: RMSE %.6f, max %.4f; centroid: RMSE %.6f, max %.4f\n",
     a.RMSE, a.Max, b.RMSE, b.Max);
   havstest::Check(a.RMSE < 1e-3 && a.FractionOver1 < 0.01, "MPVO at k = 1 matches the reference");
-  havstest::Check(b.RMSE > 5 * a.RMSE && b.Max > 0.02,
-    "negative control: the centroid order at k = 1 does not");
+  havstest::Check(
+    b.RMSE > 5 * a.RMSE && b.Max > 0.02, "negative control: the centroid order at k = 1 does not");
   return havstest::Result();
 }

@@ -62,11 +62,11 @@ std::vector<float> FloatResult(vtkHAVSVolumeMapper* mapper)
   {
     return {};
   }
-  return std::vector<float>(
-    result->GetPointer(0), result->GetPointer(0) + 4 * size[0] * size[1]);
+  return std::vector<float>(result->GetPointer(0), result->GetPointer(0) + 4 * size[0] * size[1]);
 }
 
-ImageDifference Compare(const std::vector<float>& a, const std::vector<float>& b, size_t ignoreWorst)
+ImageDifference Compare(
+  const std::vector<float>& a, const std::vector<float>& b, size_t ignoreWorst)
 {
   vtkNew<vtkHAVSImageMetrics> metrics;
   metrics->SetIgnoreWorstPixels(static_cast<vtkIdType>(ignoreWorst));

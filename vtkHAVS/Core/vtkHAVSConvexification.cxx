@@ -187,13 +187,13 @@ struct vtkHAVSConvexification::vtkInternals
 {
   struct Node
   {
-    double Plane[4];      // unit normal (the triangle's outer side is in front), d
-    int32_t Class;        // its plane class
-    double Eps;           // its on-plane tolerance
-    int32_t Child[2];     // back, front (codes above)
-    int32_t Parent;       // -1 for the root
-    int32_t Side;         // which child of Parent this node is (0 back, 1 front)
-    uint32_t PieceBegin;  // pieces stored at the node: NodePieces[PieceBegin, PieceEnd)
+    double Plane[4];     // unit normal (the triangle's outer side is in front), d
+    int32_t Class;       // its plane class
+    double Eps;          // its on-plane tolerance
+    int32_t Child[2];    // back, front (codes above)
+    int32_t Parent;      // -1 for the root
+    int32_t Side;        // which child of Parent this node is (0 back, 1 front)
+    uint32_t PieceBegin; // pieces stored at the node: NodePieces[PieceBegin, PieceEnd)
     uint32_t PieceEnd;
   };
   struct Piece
@@ -461,8 +461,8 @@ void vtkHAVSConvexification::vtkInternals::BuildPlaneClasses(
     area[t] = 0.5 * std::sqrt(Dot(c, c));
     order.push_back(static_cast<uint32_t>(t));
   }
-  std::stable_sort(order.begin(), order.end(),
-    [&](uint32_t x, uint32_t y) { return area[x] > area[y]; });
+  std::stable_sort(
+    order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return area[x] > area[y]; });
 
   // A triangle joins the class whose first plane has all its vertices within
   // joinTolerance (the closest such), else starts one. Classes are filed by
@@ -867,8 +867,7 @@ void vtkHAVSConvexification::BuildTree()
           }
         }
         const size_t balance = std::min(inFront, behind);
-        if (straddling < bestStraddling ||
-          (straddling == bestStraddling && balance > bestBalance))
+        if (straddling < bestStraddling || (straddling == bestStraddling && balance > bestBalance))
         {
           bestStraddling = straddling;
           bestBalance = balance;
@@ -958,8 +957,8 @@ void vtkHAVSConvexification::BuildTree()
     {
       // Nothing in front: outside, unless all this node's pieces were
       // double walls (then the mesh lies on both sides).
-      node.Child[1] = node.PieceEnd > node.PieceBegin ? OutLeaf(this->NumberOfImaginaryCells++)
-                                                      : InLeaf;
+      node.Child[1] =
+        node.PieceEnd > node.PieceBegin ? OutLeaf(this->NumberOfImaginaryCells++) : InLeaf;
     }
     in.Nodes.push_back(node);
     if (!list.empty())

@@ -110,8 +110,8 @@ const std::vector<uint32_t>* vtkHAVSFaceOrderPolicy::MakeExactOrder(
 }
 
 //------------------------------------------------------------------------------
-bool vtkHAVSFaceOrderPolicy::Prepare(const Plan& plan, vtkHAVSMesh* mesh,
-  vtkUnstructuredGrid* grid, const vtkHAVSViewFrame& view)
+bool vtkHAVSFaceOrderPolicy::Prepare(
+  const Plan& plan, vtkHAVSMesh* mesh, vtkUnstructuredGrid* grid, const vtkHAVSViewFrame& view)
 {
   const double start = vtkTimerLog::GetUniversalTime();
   bool ok = true;
@@ -200,6 +200,6 @@ void vtkHAVSFaceOrderPolicy::PrintSelf(ostream& os, vtkIndent indent)
   const char* orders[] = { "Centroid", "MPVO", "Automatic" };
   os << indent << "VisibilityOrder: " << orders[std::min(std::max(this->VisibilityOrder, 0), 2)]
      << ", NonConvexMethod " << this->NonConvexMethod << "\n";
-  os << indent << "Last order: " << this->LastOrder << (this->LastReused ? " (reused)" : "")
-     << ", " << this->LastSeconds << " s\n";
+  os << indent << "Last order: " << this->LastOrder << (this->LastReused ? " (reused)" : "") << ", "
+     << this->LastSeconds << " s\n";
 }

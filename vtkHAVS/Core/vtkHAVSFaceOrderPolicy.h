@@ -93,8 +93,8 @@ public:
    * (the exact order reads its points). Returns false when the exact order
    * could not be made (the centroid order is then used, with an error).
    */
-  bool Prepare(const Plan& plan, vtkHAVSMesh* mesh, vtkUnstructuredGrid* grid,
-    const vtkHAVSViewFrame& view);
+  bool Prepare(
+    const Plan& plan, vtkHAVSMesh* mesh, vtkUnstructuredGrid* grid, const vtkHAVSViewFrame& view);
 
   ///@{
   /// The faces in draw order: 3 point ids each, and 1 per boundary face.

@@ -93,8 +93,8 @@ int PerturbedSign(const Sheared& a, const Sheared& b, double e0)
 
 /// Watertight ray-triangle test; on a hit, the distance along the ray and
 /// the barycentric weights.
-bool Intersect(
-  const ShearedRay& ray, const double* v0, const double* v1, const double* v2, double& t, double w[3])
+bool Intersect(const ShearedRay& ray, const double* v0, const double* v1, const double* v2,
+  double& t, double w[3])
 {
   const Sheared a = ToRayFrame(ray, v0), b = ToRayFrame(ray, v1), c = ToRayFrame(ray, v2);
   const double u = EdgeFunction(b, c), v = EdgeFunction(c, a), x = EdgeFunction(a, b);
@@ -199,9 +199,8 @@ bool vtkHAVSFaceRasterizer::Project(const double p[3], double& px, double& py) c
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSFaceRasterizer::Rasterize(const std::vector<double>& points,
-  const uint32_t* triangles, vtkIdType numberOfTriangles,
-  const std::function<bool(vtkIdType)>& skip)
+void vtkHAVSFaceRasterizer::Rasterize(const std::vector<double>& points, const uint32_t* triangles,
+  vtkIdType numberOfTriangles, const std::function<bool(vtkIdType)>& skip)
 {
   const int width = this->Width, height = this->Height;
   const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
@@ -214,68 +213,69 @@ void vtkHAVSFaceRasterizer::Rasterize(const std::vector<double>& points,
 
   // Triangle-driven: each triangle tests the pixel centres of its screen box.
   vtkSMPThreadLocal<std::vector<PixelHit>> localHits;
-  vtkSMPTools::For(0, numberOfTriangles, [&](vtkIdType begin, vtkIdType end) {
-    std::vector<PixelHit>& hits = localHits.Local();
-    for (vtkIdType f = begin; f < end; ++f)
+  vtkSMPTools::For(0, numberOfTriangles,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      if (skip && skip(f))
+      std::vector<PixelHit>& hits = localHits.Local();
+      for (vtkIdType f = begin; f < end; ++f)
       {
-        continue;
-      }
-      const uint32_t* ids = &triangles[3 * f];
-      const double* v[3] = { &points[3 * static_cast<size_t>(ids[0])],
-        &points[3 * static_cast<size_t>(ids[1])], &points[3 * static_cast<size_t>(ids[2])] };
-      int box[4] = { 0, width - 1, 0, height - 1 };
-      double lo[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max() };
-      double hi[2] = { std::numeric_limits<double>::lowest(),
-        std::numeric_limits<double>::lowest() };
-      bool projected = true;
-      for (int k = 0; k < 3 && projected; ++k)
-      {
-        double px, py;
-        projected = this->Project(v[k], px, py);
-        lo[0] = std::min(lo[0], px);
-        lo[1] = std::min(lo[1], py);
-        hi[0] = std::max(hi[0], px);
-        hi[1] = std::max(hi[1], py);
-      }
-      if (projected)
-      {
-        // One pixel of margin: the exact test decides. Clamped before the
-        // conversion (points near the eye project far away).
-        auto clampTo = [](double value, double limit) {
-          return std::min(std::max(value, -2.0), limit + 2.0);
-        };
-        box[0] = std::max(box[0], static_cast<int>(std::floor(clampTo(lo[0], width))) - 1);
-        box[1] = std::min(box[1], static_cast<int>(std::ceil(clampTo(hi[0], width))) + 1);
-        box[2] = std::max(box[2], static_cast<int>(std::floor(clampTo(lo[1], height))) - 1);
-        box[3] = std::min(box[3], static_cast<int>(std::ceil(clampTo(hi[1], height))) + 1);
-      }
-      double normal[3], e1[3], e2[3];
-      vtkMath::Subtract(v[1], v[0], e1);
-      vtkMath::Subtract(v[2], v[0], e2);
-      vtkMath::Cross(e1, e2, normal);
-      for (int j = box[2]; j <= box[3]; ++j)
-      {
-        for (int i = box[0]; i <= box[1]; ++i)
+        if (skip && skip(f))
         {
-          const ShearedRay ray = Shear(this->GetPixelRay(i, j));
-          double t, w[3];
-          if (!Intersect(ray, v[0], v[1], v[2], t, w))
+          continue;
+        }
+        const uint32_t* ids = &triangles[3 * f];
+        const double* v[3] = { &points[3 * static_cast<size_t>(ids[0])],
+          &points[3 * static_cast<size_t>(ids[1])], &points[3 * static_cast<size_t>(ids[2])] };
+        int box[4] = { 0, width - 1, 0, height - 1 };
+        double lo[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max() };
+        double hi[2] = { std::numeric_limits<double>::lowest(),
+          std::numeric_limits<double>::lowest() };
+        bool projected = true;
+        for (int k = 0; k < 3 && projected; ++k)
+        {
+          double px, py;
+          projected = this->Project(v[k], px, py);
+          lo[0] = std::min(lo[0], px);
+          lo[1] = std::min(lo[1], py);
+          hi[0] = std::max(hi[0], px);
+          hi[1] = std::max(hi[1], py);
+        }
+        if (projected)
+        {
+          // One pixel of margin: the exact test decides. Clamped before the
+          // conversion (points near the eye project far away).
+          auto clampTo = [](double value, double limit)
+          { return std::min(std::max(value, -2.0), limit + 2.0); };
+          box[0] = std::max(box[0], static_cast<int>(std::floor(clampTo(lo[0], width))) - 1);
+          box[1] = std::min(box[1], static_cast<int>(std::ceil(clampTo(hi[0], width))) + 1);
+          box[2] = std::max(box[2], static_cast<int>(std::floor(clampTo(lo[1], height))) - 1);
+          box[3] = std::min(box[3], static_cast<int>(std::ceil(clampTo(hi[1], height))) + 1);
+        }
+        double normal[3], e1[3], e2[3];
+        vtkMath::Subtract(v[1], v[0], e1);
+        vtkMath::Subtract(v[2], v[0], e2);
+        vtkMath::Cross(e1, e2, normal);
+        for (int j = box[2]; j <= box[3]; ++j)
+        {
+          for (int i = box[0]; i <= box[1]; ++i)
           {
-            continue;
+            const ShearedRay ray = Shear(this->GetPixelRay(i, j));
+            double t, w[3];
+            if (!Intersect(ray, v[0], v[1], v[2], t, w))
+            {
+              continue;
+            }
+            PixelHit hit;
+            hit.Pixel = static_cast<vtkIdType>(j) * width + i;
+            hit.Hit.Distance = ray.Ray.Offset + t;
+            std::copy(w, w + 3, hit.Hit.Weights);
+            hit.Hit.Triangle = static_cast<uint32_t>(f);
+            hit.Hit.FrontFacing = vtkMath::Dot(normal, ray.Ray.Direction) < 0.0;
+            hits.push_back(hit);
           }
-          PixelHit hit;
-          hit.Pixel = static_cast<vtkIdType>(j) * width + i;
-          hit.Hit.Distance = ray.Ray.Offset + t;
-          std::copy(w, w + 3, hit.Hit.Weights);
-          hit.Hit.Triangle = static_cast<uint32_t>(f);
-          hit.Hit.FrontFacing = vtkMath::Dot(normal, ray.Ray.Direction) < 0.0;
-          hits.push_back(hit);
         }
       }
-    }
-  });
+    });
 
   // Per-pixel lists (counting sort by pixel), each sorted by distance.
   for (auto& hits : localHits)
@@ -299,15 +299,18 @@ void vtkHAVSFaceRasterizer::Rasterize(const std::vector<double>& points,
     }
     std::vector<PixelHit>().swap(hits);
   }
-  vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType p = begin; p < end; ++p)
+  vtkSMPTools::For(0, pixels,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      std::sort(this->Hits.begin() + this->PixelStart[p],
-        this->Hits.begin() + this->PixelStart[p + 1], [](const Hit& a, const Hit& b) {
-          return a.Distance < b.Distance || (a.Distance == b.Distance && a.Triangle < b.Triangle);
-        });
-    }
-  });
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        std::sort(this->Hits.begin() + this->PixelStart[p],
+          this->Hits.begin() + this->PixelStart[p + 1],
+          [](const Hit& a, const Hit& b) {
+            return a.Distance < b.Distance || (a.Distance == b.Distance && a.Triangle < b.Triangle);
+          });
+      }
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -322,6 +325,5 @@ void vtkHAVSFaceRasterizer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Size: " << this->Width << " x " << this->Height
-     << (this->Parallel ? ", parallel" : ", perspective") << ", hits " << this->Hits.size()
-     << "\n";
+     << (this->Parallel ? ", parallel" : ", perspective") << ", hits " << this->Hits.size() << "\n";
 }

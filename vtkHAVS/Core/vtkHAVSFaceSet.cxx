@@ -148,12 +148,14 @@ std::vector<double> CopyCoordinates(vtkPoints* points)
 {
   vtkDataArray* data = points->GetData();
   std::vector<double> coordinates(3 * static_cast<size_t>(points->GetNumberOfPoints()));
-  vtkSMPTools::For(0, points->GetNumberOfPoints(), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
+  vtkSMPTools::For(0, points->GetNumberOfPoints(),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      data->GetTuple(i, &coordinates[3 * i]);
-    }
-  });
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        data->GetTuple(i, &coordinates[3 * i]);
+      }
+    });
   return coordinates;
 }
 
@@ -169,57 +171,59 @@ struct ReadCells
     using ValueType = typename CellStateT::ValueType;
     const ValueType* offsets = state.GetOffsets()->GetPointer(0);
     const ValueType* connectivity = state.GetConnectivity()->GetPointer(0);
-    vtkSMPTools::For(0, state.GetNumberOfCells(), [&](vtkIdType begin, vtkIdType end) {
-      CellCounts& local = counts.Local();
-      for (vtkIdType cell = begin; cell < end; ++cell)
+    vtkSMPTools::For(0, state.GetNumberOfCells(),
+      [&](vtkIdType begin, vtkIdType end)
       {
-        const ValueType first = offsets[cell];
-        if (ghosts &&
-          (ghosts[cell] &
-            (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL)) != 0)
+        CellCounts& local = counts.Local();
+        for (vtkIdType cell = begin; cell < end; ++cell)
         {
-          table.Status[cell] = GhostCell; // another piece draws it (or it is hidden)
-          ++local.Ghost;
-          continue;
-        }
-        if (types[cell] != VTK_TETRA || offsets[cell + 1] - first != 4)
-        {
-          table.Status[cell] = NotATetrahedron;
-          ++local.Skipped;
-          continue;
-        }
-        uint32_t* ids = &table.PointIds[4 * cell];
-        const double* x[4];
-        for (int i = 0; i < 4; ++i)
-        {
-          ids[i] = static_cast<uint32_t>(connectivity[first + i]);
-          x[i] = coordinates + 3 * static_cast<size_t>(ids[i]);
-        }
-        double longestSquared = 0.0;
-        for (int i = 0; i < 4; ++i)
-        {
-          for (int j = i + 1; j < 4; ++j)
+          const ValueType first = offsets[cell];
+          if (ghosts &&
+            (ghosts[cell] &
+              (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL)) != 0)
           {
-            const double d[3] = { x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2] };
-            longestSquared = std::max(longestSquared, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            table.Status[cell] = GhostCell; // another piece draws it (or it is hidden)
+            ++local.Ghost;
+            continue;
           }
+          if (types[cell] != VTK_TETRA || offsets[cell + 1] - first != 4)
+          {
+            table.Status[cell] = NotATetrahedron;
+            ++local.Skipped;
+            continue;
+          }
+          uint32_t* ids = &table.PointIds[4 * cell];
+          const double* x[4];
+          for (int i = 0; i < 4; ++i)
+          {
+            ids[i] = static_cast<uint32_t>(connectivity[first + i]);
+            x[i] = coordinates + 3 * static_cast<size_t>(ids[i]);
+          }
+          double longestSquared = 0.0;
+          for (int i = 0; i < 4; ++i)
+          {
+            for (int j = i + 1; j < 4; ++j)
+            {
+              const double d[3] = { x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2] };
+              longestSquared = std::max(longestSquared, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            }
+          }
+          const double sixVolume = TripleProduct(x[0], x[1], x[2], x[3]);
+          const double longest = std::sqrt(longestSquared);
+          const bool repeated = ids[0] == ids[1] || ids[0] == ids[2] || ids[0] == ids[3] ||
+            ids[1] == ids[2] || ids[1] == ids[3] || ids[2] == ids[3];
+          // Written so that a NaN volume is degenerate too.
+          if (repeated || !(std::fabs(sixVolume) / 6.0 > 1e-12 * longest * longest * longest))
+          {
+            table.Status[cell] = DegenerateTetrahedron;
+            ++local.Degenerate;
+            continue;
+          }
+          table.Status[cell] = UsedTetrahedron;
+          ++local.Used;
+          local.LongestEdgeSquared = std::max(local.LongestEdgeSquared, longestSquared);
         }
-        const double sixVolume = TripleProduct(x[0], x[1], x[2], x[3]);
-        const double longest = std::sqrt(longestSquared);
-        const bool repeated = ids[0] == ids[1] || ids[0] == ids[2] || ids[0] == ids[3] ||
-          ids[1] == ids[2] || ids[1] == ids[3] || ids[2] == ids[3];
-        // Written so that a NaN volume is degenerate too.
-        if (repeated || !(std::fabs(sixVolume) / 6.0 > 1e-12 * longest * longest * longest))
-        {
-          table.Status[cell] = DegenerateTetrahedron;
-          ++local.Degenerate;
-          continue;
-        }
-        table.Status[cell] = UsedTetrahedron;
-        ++local.Used;
-        local.LongestEdgeSquared = std::max(local.LongestEdgeSquared, longestSquared);
-      }
-    });
+      });
   }
 };
 
@@ -229,22 +233,25 @@ FaceUseBuckets FileFaceUses(const CellTable& table, vtkIdType numberOfPoints)
 {
   const vtkIdType numberOfCells = static_cast<vtkIdType>(table.Status.size());
   std::vector<std::atomic<vtkIdType>> cursor(static_cast<size_t>(numberOfPoints));
-  auto forEachFaceUse = [&](auto&& visit) {
-    vtkSMPTools::For(0, numberOfCells, [&](vtkIdType begin, vtkIdType end) {
-      uint32_t face[4];
-      for (vtkIdType cell = begin; cell < end; ++cell)
+  auto forEachFaceUse = [&](auto&& visit)
+  {
+    vtkSMPTools::For(0, numberOfCells,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        if (table.Status[cell] != UsedTetrahedron)
+        uint32_t face[4];
+        for (vtkIdType cell = begin; cell < end; ++cell)
         {
-          continue;
+          if (table.Status[cell] != UsedTetrahedron)
+          {
+            continue;
+          }
+          for (int f = 0; f < 4; ++f)
+          {
+            SortedFace(&table.PointIds[4 * cell], f, face);
+            visit(face);
+          }
         }
-        for (int f = 0; f < 4; ++f)
-        {
-          SortedFace(&table.PointIds[4 * cell], f, face);
-          visit(face);
-        }
-      }
-    });
+      });
   };
 
   forEachFaceUse(
@@ -258,10 +265,12 @@ FaceUseBuckets FileFaceUses(const CellTable& table, vtkIdType numberOfPoints)
     cursor[p].store(buckets.Start[p], std::memory_order_relaxed);
   }
   buckets.Uses.resize(static_cast<size_t>(buckets.Start[numberOfPoints]));
-  forEachFaceUse([&](const uint32_t* face) {
-    const vtkIdType at = cursor[face[0]].fetch_add(1, std::memory_order_relaxed);
-    buckets.Uses[at] = FaceUse{ face[1], face[2], face[3] };
-  });
+  forEachFaceUse(
+    [&](const uint32_t* face)
+    {
+      const vtkIdType at = cursor[face[0]].fetch_add(1, std::memory_order_relaxed);
+      buckets.Uses[at] = FaceUse{ face[1], face[2], face[3] };
+    });
   return buckets;
 }
 
@@ -273,26 +282,28 @@ FaceCounts SortBuckets(FaceUseBuckets& buckets, std::vector<vtkIdType>& faceStar
   const vtkIdType numberOfBuckets = static_cast<vtkIdType>(buckets.Start.size()) - 1;
   faceStart.assign(buckets.Start.size(), 0);
   vtkSMPThreadLocal<FaceCounts> counts;
-  vtkSMPTools::For(0, numberOfBuckets, [&](vtkIdType begin, vtkIdType end) {
-    FaceCounts& local = counts.Local();
-    for (vtkIdType p = begin; p < end; ++p)
+  vtkSMPTools::For(0, numberOfBuckets,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      FaceUse* first = buckets.Uses.data() + buckets.Start[p];
-      FaceUse* last = buckets.Uses.data() + buckets.Start[p + 1];
-      std::sort(first, last);
-      vtkIdType faces = 0;
-      for (const FaceUse* run = first; run != last;)
+      FaceCounts& local = counts.Local();
+      for (vtkIdType p = begin; p < end; ++p)
       {
-        const FaceUse* runEnd = EndOfFace(run, last);
-        const auto uses = runEnd - run;
-        local.Boundary += uses == 1 ? 1 : 0;
-        local.NonManifold += uses > 2 ? 1 : 0;
-        ++faces;
-        run = runEnd;
+        FaceUse* first = buckets.Uses.data() + buckets.Start[p];
+        FaceUse* last = buckets.Uses.data() + buckets.Start[p + 1];
+        std::sort(first, last);
+        vtkIdType faces = 0;
+        for (const FaceUse* run = first; run != last;)
+        {
+          const FaceUse* runEnd = EndOfFace(run, last);
+          const auto uses = runEnd - run;
+          local.Boundary += uses == 1 ? 1 : 0;
+          local.NonManifold += uses > 2 ? 1 : 0;
+          ++faces;
+          run = runEnd;
+        }
+        faceStart[p + 1] = faces;
       }
-      faceStart[p + 1] = faces;
-    }
-  });
+    });
   for (vtkIdType p = 0; p < numberOfBuckets; ++p)
   {
     faceStart[p + 1] += faceStart[p];
@@ -315,33 +326,35 @@ void WriteFaces(const FaceUseBuckets& buckets, const std::vector<vtkIdType>& fac
 {
   const vtkIdType numberOfBuckets = static_cast<vtkIdType>(buckets.Start.size()) - 1;
   auto point = [&](uint32_t id) { return &coordinates[3 * static_cast<size_t>(id)]; };
-  vtkSMPTools::For(0, numberOfBuckets, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType p = begin; p < end; ++p)
+  vtkSMPTools::For(0, numberOfBuckets,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const FaceUse* run = buckets.Uses.data() + buckets.Start[p];
-      const FaceUse* last = buckets.Uses.data() + buckets.Start[p + 1];
-      for (vtkIdType face = faceStart[p]; run != last; ++face)
+      for (vtkIdType p = begin; p < end; ++p)
       {
-        const FaceUse* runEnd = EndOfFace(run, last);
-        uint32_t ids[3] = { static_cast<uint32_t>(p), run->Middle, run->Largest };
-        const bool boundary = runEnd - run == 1;
-        // Outward: (x1 - x0) x (x2 - x0) must point away from the fourth point.
-        if (boundary &&
-          TripleProduct(point(ids[0]), point(ids[1]), point(ids[2]), point(run->Opposite)) > 0.0)
+        const FaceUse* run = buckets.Uses.data() + buckets.Start[p];
+        const FaceUse* last = buckets.Uses.data() + buckets.Start[p + 1];
+        for (vtkIdType face = faceStart[p]; run != last; ++face)
         {
-          std::swap(ids[1], ids[2]);
+          const FaceUse* runEnd = EndOfFace(run, last);
+          uint32_t ids[3] = { static_cast<uint32_t>(p), run->Middle, run->Largest };
+          const bool boundary = runEnd - run == 1;
+          // Outward: (x1 - x0) x (x2 - x0) must point away from the fourth point.
+          if (boundary &&
+            TripleProduct(point(ids[0]), point(ids[1]), point(ids[2]), point(run->Opposite)) > 0.0)
+          {
+            std::swap(ids[1], ids[2]);
+          }
+          boundaryFlags[face] = boundary ? 1 : 0;
+          for (int k = 0; k < 3; ++k)
+          {
+            vertices[3 * face + k] = ids[k];
+            centroids[3 * face + k] = static_cast<float>(
+              (point(ids[0])[k] + point(ids[1])[k] + point(ids[2])[k]) / 3.0 - origin[k]);
+          }
+          run = runEnd;
         }
-        boundaryFlags[face] = boundary ? 1 : 0;
-        for (int k = 0; k < 3; ++k)
-        {
-          vertices[3 * face + k] = ids[k];
-          centroids[3 * face + k] = static_cast<float>(
-            (point(ids[0])[k] + point(ids[1])[k] + point(ids[2])[k]) / 3.0 - origin[k]);
-        }
-        run = runEnd;
       }
-    }
-  });
+    });
 }
 
 /// Whether the outward-wound boundary faces form one closed, connected,
@@ -352,8 +365,8 @@ bool BoundaryIsConvex(const std::vector<uint32_t>& faceVertices,
 {
   struct EdgeUse
   {
-    uint64_t Key;     // the edge's two point ids, smaller first
-    uint32_t Face;    // index among the boundary faces
+    uint64_t Key;      // the edge's two point ids, smaller first
+    uint32_t Face;     // index among the boundary faces
     uint32_t Opposite; // the face's third point
   };
   std::vector<uint32_t> faces; // the boundary faces' indices
@@ -379,8 +392,8 @@ bool BoundaryIsConvex(const std::vector<uint32_t>& faceVertices,
       uses.push_back({ p < q ? (p << 32 | q) : (q << 32 | p), b, v[(e + 2) % 3] });
     }
   }
-  std::sort(uses.begin(), uses.end(),
-    [](const EdgeUse& a, const EdgeUse& b) { return a.Key < b.Key; });
+  std::sort(
+    uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) { return a.Key < b.Key; });
 
   // Union-find over the boundary faces: one component.
   std::vector<uint32_t> parent(faces.size());
@@ -388,7 +401,8 @@ bool BoundaryIsConvex(const std::vector<uint32_t>& faceVertices,
   {
     parent[i] = i;
   }
-  auto root = [&](uint32_t i) {
+  auto root = [&](uint32_t i)
+  {
     while (parent[i] != i)
     {
       parent[i] = parent[parent[i]];
@@ -397,7 +411,8 @@ bool BoundaryIsConvex(const std::vector<uint32_t>& faceVertices,
     return i;
   };
   // The far point lies on the inner side of the face's plane.
-  auto inside = [&](uint32_t b, uint32_t point) {
+  auto inside = [&](uint32_t b, uint32_t point)
+  {
     const uint32_t* v = &faceVertices[3 * static_cast<size_t>(faces[b])];
     const double* a = &coordinates[3 * static_cast<size_t>(v[0])];
     const double* c1 = &coordinates[3 * static_cast<size_t>(v[1])];
@@ -412,8 +427,7 @@ bool BoundaryIsConvex(const std::vector<uint32_t>& faceVertices,
     {
       return false;
     }
-    const double d =
-      (n[0] * (x[0] - a[0]) + n[1] * (x[1] - a[1]) + n[2] * (x[2] - a[2])) / length;
+    const double d = (n[0] * (x[0] - a[0]) + n[1] * (x[1] - a[1]) + n[2] * (x[2] - a[2])) / length;
     return d <= tolerance;
   };
   size_t components = faces.size();
@@ -514,9 +528,9 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
   this->NumberOfGhostCells = cells.Ghost;
   if (cells.Used == 0)
   {
-    vtkErrorMacro("Build: no usable tetrahedra (" << numberOfCells << " cells, "
-                                                  << cells.Skipped << " not tetrahedra, "
-                                                  << cells.Degenerate << " degenerate).");
+    vtkErrorMacro("Build: no usable tetrahedra (" << numberOfCells << " cells, " << cells.Skipped
+                                                  << " not tetrahedra, " << cells.Degenerate
+                                                  << " degenerate).");
     return false;
   }
   this->NumberOfTetrahedra = cells.Used;
@@ -548,8 +562,8 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
   {
     if (table.Status[c] == UsedTetrahedron)
     {
-      this->Tetrahedra.insert(this->Tetrahedra.end(), table.PointIds.begin() + 4 * c,
-        table.PointIds.begin() + 4 * c + 4);
+      this->Tetrahedra.insert(
+        this->Tetrahedra.end(), table.PointIds.begin() + 4 * c, table.PointIds.begin() + 4 * c + 4);
     }
   }
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +

@@ -42,9 +42,8 @@ bool vtkHAVSFaceSorter::Sort(vtkHAVSFaceSet* faces, const double modelToWorld[16
   std::copy(eyeWorld, eyeWorld + 3, eye.begin());
   std::copy(directionOfProjectionWorld, directionOfProjectionWorld + 3, direction.begin());
   if (this->Valid && faces->GetBuildTime() == this->LastFaceBuildTime &&
-    this->GetMTime() == this->LastSortMTime && matrix == this->LastMatrix &&
-    eye == this->LastEye && direction == this->LastDirection &&
-    parallelProjection == this->LastParallel)
+    this->GetMTime() == this->LastSortMTime && matrix == this->LastMatrix && eye == this->LastEye &&
+    direction == this->LastDirection && parallelProjection == this->LastParallel)
   {
     return false;
   }
@@ -64,21 +63,23 @@ bool vtkHAVSFaceSorter::Sort(vtkHAVSFaceSet* faces, const double modelToWorld[16
   const vtkIdType n = faces->GetNumberOfFaces();
   this->Keys.resize(static_cast<size_t>(n));
   float* keys = this->Keys.data();
-  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType f = begin; f < end; ++f)
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const float* c = centroids + 3 * f;
-      double w[3];
-      for (int r = 0; r < 3; ++r)
+      for (vtkIdType f = begin; f < end; ++f)
       {
-        w[r] = m[4 * r] * c[0] + m[4 * r + 1] * c[1] + m[4 * r + 2] * c[2] + offset[r];
+        const float* c = centroids + 3 * f;
+        double w[3];
+        for (int r = 0; r < 3; ++r)
+        {
+          w[r] = m[4 * r] * c[0] + m[4 * r + 1] * c[1] + m[4 * r + 2] * c[2] + offset[r];
+        }
+        const double key = parallelProjection
+          ? w[0] * direction[0] + w[1] * direction[1] + w[2] * direction[2]
+          : w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+        keys[f] = static_cast<float>(key);
       }
-      const double key = parallelProjection
-        ? w[0] * direction[0] + w[1] * direction[1] + w[2] * direction[2]
-        : w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-      keys[f] = static_cast<float>(key);
-    }
-  });
+    });
   this->RadixSorter->Sort(keys, static_cast<size_t>(n), this->Order);
   if (this->BlockReversal > 1)
   {

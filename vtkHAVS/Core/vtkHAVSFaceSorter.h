@@ -23,7 +23,7 @@
 #define vtkHAVSFaceSorter_h
 
 #include "vtkHAVSCoreModule.h" // For export macro
-#include "vtkNew.h"        // For vtkNew
+#include "vtkNew.h"            // For vtkNew
 #include "vtkObject.h"
 
 #include <array>   // For std::array

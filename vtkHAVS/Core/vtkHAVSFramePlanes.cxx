@@ -27,8 +27,8 @@ vtkHAVSFramePlanes::vtkHAVSFramePlanes() = default;
 vtkHAVSFramePlanes::~vtkHAVSFramePlanes() = default;
 
 //------------------------------------------------------------------------------
-bool vtkHAVSFramePlanes::Update(const vtkHAVSViewFrame& view, vtkPlaneCollection* clipping,
-  vtkHAVSMesh* mesh, bool sections)
+bool vtkHAVSFramePlanes::Update(
+  const vtkHAVSViewFrame& view, vtkPlaneCollection* clipping, vtkHAVSMesh* mesh, bool sections)
 {
   // Planes in eye-relative world coordinates (x_RC = world - eye), kept where
   // dot(n, x_RC) + w >= 0, with whether the rays enter the kept side there.
@@ -92,13 +92,13 @@ bool vtkHAVSFramePlanes::Update(const vtkHAVSViewFrame& view, vtkPlaneCollection
       continue; // the whole mesh is kept: the plane changes nothing
     }
     const int index = static_cast<int>(this->Planes.size());
-    this->Planes.push_back({ static_cast<float>(candidate.Equation[0]),
-      static_cast<float>(candidate.Equation[1]), static_cast<float>(candidate.Equation[2]),
-      static_cast<float>(candidate.Equation[3]) });
+    this->Planes.push_back(
+      { static_cast<float>(candidate.Equation[0]), static_cast<float>(candidate.Equation[1]),
+        static_cast<float>(candidate.Equation[2]), static_cast<float>(candidate.Equation[3]) });
     if (cutsMesh && sections)
     {
-      cuts.push_back(
-        { index, candidate.Entering, { planeModel[0], planeModel[1], planeModel[2], planeModel[3] } });
+      cuts.push_back({ index, candidate.Entering,
+        { planeModel[0], planeModel[1], planeModel[2], planeModel[3] } });
     }
   }
 
@@ -115,9 +115,9 @@ bool vtkHAVSFramePlanes::Update(const vtkHAVSViewFrame& view, vtkPlaneCollection
       Section section;
       section.PlaneIndex = cut.Index;
       section.Entering = cut.Entering;
-      this->SectionTriangles += this->Sectioner->Compute(mesh->GetFaceSet()->GetTetrahedra(),
-        mesh->GetPoints(), mesh->GetScalars(), cut.PlaneModel.data(), section.Points,
-        section.Scalars);
+      this->SectionTriangles +=
+        this->Sectioner->Compute(mesh->GetFaceSet()->GetTetrahedra(), mesh->GetPoints(),
+          mesh->GetScalars(), cut.PlaneModel.data(), section.Points, section.Scalars);
       this->Sections.push_back(std::move(section));
     }
     this->SectionSeconds = vtkTimerLog::GetUniversalTime() - start;

@@ -63,8 +63,8 @@ public:
    * comparison). Returns false when more clipping planes were given than are
    * used (the first MaximumClippingPlanes are).
    */
-  bool Update(const vtkHAVSViewFrame& view, vtkPlaneCollection* clipping, vtkHAVSMesh* mesh,
-    bool sections);
+  bool Update(
+    const vtkHAVSViewFrame& view, vtkPlaneCollection* clipping, vtkHAVSMesh* mesh, bool sections);
 
   /// Planes that cut or discard the mesh (the near plane first when it does).
   int GetNumberOfPlanes() const { return static_cast<int>(this->Planes.size()); }

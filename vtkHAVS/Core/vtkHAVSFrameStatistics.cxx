@@ -76,10 +76,9 @@ void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
      << ", boundary relations " << this->BoundaryRelations << " (" << this->BoundaryLayerSeconds
      << " s)\n";
   os << indent << "Tagging: " << this->Tagging << ", planes " << this->PlaneCount
-     << ", section triangles " << this->SectionTriangles << " (" << this->SectionSeconds
-     << " s)\n";
-  os << indent << "OrderViolations: " << this->OrderViolations << ", fragments "
-     << this->Fragments << ", faces drawn " << this->FacesDrawn << "\n";
+     << ", section triangles " << this->SectionTriangles << " (" << this->SectionSeconds << " s)\n";
+  os << indent << "OrderViolations: " << this->OrderViolations << ", fragments " << this->Fragments
+     << ", faces drawn " << this->FacesDrawn << "\n";
   os << indent << "Seconds: sort " << this->SortSeconds << ", draw " << this->DrawSeconds
      << ", flush " << this->FlushSeconds << ", composite " << this->CompositeSeconds
      << ", table (last build) " << this->TableSeconds << "\n";

@@ -75,7 +75,8 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   this->Valid = false;
   this->Error.clear();
   this->Warnings.clear();
-  auto report = [&](double p) {
+  auto report = [&](double p)
+  {
     if (progress)
     {
       progress(p);
@@ -106,8 +107,7 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   if (!scalars)
   {
     std::ostringstream why;
-    why << "The input has no scalars to render (scalar mode "
-        << ScalarModeName(selection.Mode)
+    why << "The input has no scalars to render (scalar mode " << ScalarModeName(selection.Mode)
         << (selection.Name.empty() ? "" : ", array " + selection.Name) << ").";
     return this->Fail(why.str());
   }

@@ -122,20 +122,22 @@ vtkIdType vtkHAVSPlaneSection::Compute(const std::vector<uint32_t>& tetrahedra,
   const vtkIdType blockSize = 4096;
   const vtkIdType blocks = (numberOfTetrahedra + blockSize - 1) / blockSize;
   std::vector<vtkIdType> counts(static_cast<size_t>(blocks) + 1, 0);
-  vtkSMPTools::For(0, blocks, [&](vtkIdType begin, vtkIdType end) {
-    float p[18], s[6];
-    for (vtkIdType block = begin; block < end; ++block)
+  vtkSMPTools::For(0, blocks,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      vtkIdType count = 0;
-      const vtkIdType last = std::min(numberOfTetrahedra, (block + 1) * blockSize);
-      for (vtkIdType t = block * blockSize; t < last; ++t)
+      float p[18], s[6];
+      for (vtkIdType block = begin; block < end; ++block)
       {
-        count += CutTetrahedron(&tetrahedra[4 * static_cast<size_t>(t)], points.data(),
-          scalars.data(), plane, p, s);
+        vtkIdType count = 0;
+        const vtkIdType last = std::min(numberOfTetrahedra, (block + 1) * blockSize);
+        for (vtkIdType t = block * blockSize; t < last; ++t)
+        {
+          count += CutTetrahedron(
+            &tetrahedra[4 * static_cast<size_t>(t)], points.data(), scalars.data(), plane, p, s);
+        }
+        counts[block + 1] = count;
       }
-      counts[block + 1] = count;
-    }
-  });
+    });
   for (vtkIdType block = 0; block < blocks; ++block)
   {
     counts[block + 1] += counts[block];
@@ -143,19 +145,21 @@ vtkIdType vtkHAVSPlaneSection::Compute(const std::vector<uint32_t>& tetrahedra,
   const vtkIdType triangles = counts[blocks];
   sectionPoints.resize(9 * static_cast<size_t>(triangles));
   sectionScalars.resize(3 * static_cast<size_t>(triangles));
-  vtkSMPTools::For(0, blocks, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType block = begin; block < end; ++block)
+  vtkSMPTools::For(0, blocks,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      vtkIdType at = counts[block];
-      const vtkIdType last = std::min(numberOfTetrahedra, (block + 1) * blockSize);
-      for (vtkIdType t = block * blockSize; t < last; ++t)
+      for (vtkIdType block = begin; block < end; ++block)
       {
-        at += CutTetrahedron(&tetrahedra[4 * static_cast<size_t>(t)], points.data(),
-          scalars.data(), plane, &sectionPoints[9 * static_cast<size_t>(at)],
-          &sectionScalars[3 * static_cast<size_t>(at)]);
+        vtkIdType at = counts[block];
+        const vtkIdType last = std::min(numberOfTetrahedra, (block + 1) * blockSize);
+        for (vtkIdType t = block * blockSize; t < last; ++t)
+        {
+          at += CutTetrahedron(&tetrahedra[4 * static_cast<size_t>(t)], points.data(),
+            scalars.data(), plane, &sectionPoints[9 * static_cast<size_t>(at)],
+            &sectionScalars[3 * static_cast<size_t>(at)]);
+        }
       }
-    }
-  });
+    });
   this->LastSeconds = vtkTimerLog::GetUniversalTime() - start;
   return triangles;
 }

@@ -65,8 +65,8 @@ inline void CompositeStep(const OpticalSample& a, const OpticalSample& b, double
 }
 
 /// The segment (sf -> sb, length) integrated with n sub-steps from the functions.
-void IntegrateSteps(vtkVolumeProperty* property, int component, double sf, double sb,
-  double length, int n, double rgba[4])
+void IntegrateSteps(vtkVolumeProperty* property, int component, double sf, double sb, double length,
+  int n, double rgba[4])
 {
   double color[3] = { 0, 0, 0 };
   double transmittance = 1.0;
@@ -86,8 +86,8 @@ void IntegrateSteps(vtkVolumeProperty* property, int component, double sf, doubl
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSPreIntegrationTable::IntegrateSegment(vtkVolumeProperty* property, int component,
-  double sf, double sb, double length, double rgba[4])
+void vtkHAVSPreIntegrationTable::IntegrateSegment(
+  vtkVolumeProperty* property, int component, double sf, double sb, double length, double rgba[4])
 {
   // Second-order sub-steps, doubled and Richardson-extrapolated until two
   // successive estimates agree to 1e-7.
@@ -123,8 +123,8 @@ void vtkHAVSPreIntegrationTable::Zero()
 }
 
 //------------------------------------------------------------------------------
-bool vtkHAVSPreIntegrationTable::NeedsRebuild(vtkVolumeProperty* property, int component,
-  const double scalarRange[2], double maxLength) const
+bool vtkHAVSPreIntegrationTable::NeedsRebuild(
+  vtkVolumeProperty* property, int component, const double scalarRange[2], double maxLength) const
 {
   if (!property || property != this->BuiltProperty || component != this->Component ||
     scalarRange[0] != this->ScalarRange[0] || scalarRange[1] != this->ScalarRange[1] ||
@@ -202,66 +202,68 @@ bool vtkHAVSPreIntegrationTable::Build(
   float* table = this->Table.data();
   const double lengthStep = maxLength / (nl - 1);
   const size_t layer = static_cast<size_t>(ns) * ns * 4;
-  auto entry = [&](int f, int b, int l) -> float* {
-    return table + static_cast<size_t>(l) * layer + (static_cast<size_t>(b) * ns + f) * 4;
-  };
+  auto entry = [&](int f, int b, int l) -> float*
+  { return table + static_cast<size_t>(l) * layer + (static_cast<size_t>(b) * ns + f) * 4; };
 
   if (this->ExactIntegration)
   {
-    vtkSMPTools::For(0, static_cast<vtkIdType>(ns) * ns, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType pair = begin; pair < end; ++pair)
+    vtkSMPTools::For(0, static_cast<vtkIdType>(ns) * ns,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        const int f = static_cast<int>(pair % ns), b = static_cast<int>(pair / ns);
-        for (int l = 1; l < nl; ++l)
+        for (vtkIdType pair = begin; pair < end; ++pair)
         {
-          double rgba[4];
-          IntegrateSegment(property, component, lo + span * f / (ns - 1),
-            lo + span * b / (ns - 1), l * lengthStep, rgba);
-          std::copy(rgba, rgba + 4, entry(f, b, l));
+          const int f = static_cast<int>(pair % ns), b = static_cast<int>(pair / ns);
+          for (int l = 1; l < nl; ++l)
+          {
+            double rgba[4];
+            IntegrateSegment(property, component, lo + span * f / (ns - 1),
+              lo + span * b / (ns - 1), l * lengthStep, rgba);
+            std::copy(rgba, rgba + 4, entry(f, b, l));
+          }
         }
-      }
-    });
+      });
   }
   else
   {
     // For a (front, back) pair the sub-steps are the same at every length:
     // a sub-step's attenuation at layer l is its layer-1 attenuation to the
     // power l, updated by one multiplication per layer.
-    vtkSMPTools::For(0, static_cast<vtkIdType>(ns) * ns, [&](vtkIdType begin, vtkIdType end) {
-      std::vector<double> unitAttenuation, attenuation;
-      for (vtkIdType pair = begin; pair < end; ++pair)
+    vtkSMPTools::For(0, static_cast<vtkIdType>(ns) * ns,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        const int f = static_cast<int>(pair % ns), b = static_cast<int>(pair / ns);
-        const int steps = std::max(1, std::abs(b - f) * sub);
-        const int direction = b >= f ? 1 : -1;
-        const int first = f * sub;
-        auto sample = [&](int j) -> const OpticalSample& {
-          return fine[f == b ? first : first + direction * j];
-        };
-        unitAttenuation.resize(steps);
-        attenuation.assign(steps, 1.0);
-        for (int j = 0; j < steps; ++j)
+        std::vector<double> unitAttenuation, attenuation;
+        for (vtkIdType pair = begin; pair < end; ++pair)
         {
-          const double meanTau = 0.5 * (sample(j).Tau + sample(j + 1).Tau);
-          unitAttenuation[j] = std::exp(-meanTau * lengthStep / steps);
-        }
-        for (int l = 1; l < nl; ++l)
-        {
-          double color[3] = { 0, 0, 0 };
-          double transmittance = 1.0;
+          const int f = static_cast<int>(pair % ns), b = static_cast<int>(pair / ns);
+          const int steps = std::max(1, std::abs(b - f) * sub);
+          const int direction = b >= f ? 1 : -1;
+          const int first = f * sub;
+          auto sample = [&](int j) -> const OpticalSample&
+          { return fine[f == b ? first : first + direction * j]; };
+          unitAttenuation.resize(steps);
+          attenuation.assign(steps, 1.0);
           for (int j = 0; j < steps; ++j)
           {
-            attenuation[j] *= unitAttenuation[j];
-            CompositeStep(sample(j), sample(j + 1), attenuation[j], color, transmittance);
+            const double meanTau = 0.5 * (sample(j).Tau + sample(j + 1).Tau);
+            unitAttenuation[j] = std::exp(-meanTau * lengthStep / steps);
           }
-          float* out = entry(f, b, l);
-          out[0] = static_cast<float>(color[0]);
-          out[1] = static_cast<float>(color[1]);
-          out[2] = static_cast<float>(color[2]);
-          out[3] = static_cast<float>(1.0 - transmittance);
+          for (int l = 1; l < nl; ++l)
+          {
+            double color[3] = { 0, 0, 0 };
+            double transmittance = 1.0;
+            for (int j = 0; j < steps; ++j)
+            {
+              attenuation[j] *= unitAttenuation[j];
+              CompositeStep(sample(j), sample(j + 1), attenuation[j], color, transmittance);
+            }
+            float* out = entry(f, b, l);
+            out[0] = static_cast<float>(color[0]);
+            out[1] = static_cast<float>(color[1]);
+            out[2] = static_cast<float>(color[2]);
+            out[3] = static_cast<float>(1.0 - transmittance);
+          }
         }
-      }
-    });
+      });
   }
   this->LastBuildSeconds = vtkTimerLog::GetUniversalTime() - start;
   return true;
@@ -273,9 +275,7 @@ void vtkHAVSPreIntegrationTable::Lookup(double sf, double sb, double length, dou
   const int ns = this->BuiltScalarResolution;
   const int nl = this->BuiltLengthResolution;
   const double span = this->ScalarRange[1] - this->ScalarRange[0];
-  auto coordinate = [](double t, int n) {
-    return std::min(std::max(t, 0.0), 1.0) * (n - 1);
-  };
+  auto coordinate = [](double t, int n) { return std::min(std::max(t, 0.0), 1.0) * (n - 1); };
   const double x = coordinate(span > 0 ? (sf - this->ScalarRange[0]) / span : 0.0, ns);
   const double y = coordinate(span > 0 ? (sb - this->ScalarRange[0]) / span : 0.0, ns);
   const double z = coordinate(this->MaxLength > 0 ? length / this->MaxLength : 0.0, nl);

@@ -37,12 +37,14 @@ void ForEachChunk(size_t chunks, Work&& work)
     work(size_t(0));
     return;
   }
-  vtkSMPTools::For(0, static_cast<vtkIdType>(chunks), 1, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType chunk = begin; chunk < end; ++chunk)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(chunks), 1,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      work(static_cast<size_t>(chunk));
-    }
-  });
+      for (vtkIdType chunk = begin; chunk < end; ++chunk)
+      {
+        work(static_cast<size_t>(chunk));
+      }
+    });
 }
 }
 
@@ -90,27 +92,31 @@ void vtkHAVSRadixSorter::Sort(const float* keys, size_t n, std::vector<uint32_t>
   uint32_t* outKeys = this->KeysScratch.data();
   uint32_t* inOrder = order.data();
   uint32_t* outOrder = this->OrderScratch.data();
-  ForEachChunk(chunks, [&](size_t chunk) {
-    for (size_t i = chunkBegin(chunk); i < chunkEnd(chunk); ++i)
+  ForEachChunk(chunks,
+    [&](size_t chunk)
     {
-      inKeys[i] = FloatToSortableKey(keys[i]);
-      inOrder[i] = static_cast<uint32_t>(i);
-    }
-  });
+      for (size_t i = chunkBegin(chunk); i < chunkEnd(chunk); ++i)
+      {
+        inKeys[i] = FloatToSortableKey(keys[i]);
+        inOrder[i] = static_cast<uint32_t>(i);
+      }
+    });
 
   for (int pass = 0; pass < NumberOfPasses; ++pass)
   {
     const int shift = 8 * pass;
     auto bucketOf = [shift](uint32_t key) { return (key >> shift) & 0xFFu; };
 
-    ForEachChunk(chunks, [&](size_t chunk) {
-      size_t* chunkCounts = counts + chunk * NumberOfBuckets;
-      std::fill(chunkCounts, chunkCounts + NumberOfBuckets, size_t(0));
-      for (size_t i = chunkBegin(chunk); i < chunkEnd(chunk); ++i)
+    ForEachChunk(chunks,
+      [&](size_t chunk)
       {
-        ++chunkCounts[bucketOf(inKeys[i])];
-      }
-    });
+        size_t* chunkCounts = counts + chunk * NumberOfBuckets;
+        std::fill(chunkCounts, chunkCounts + NumberOfBuckets, size_t(0));
+        for (size_t i = chunkBegin(chunk); i < chunkEnd(chunk); ++i)
+        {
+          ++chunkCounts[bucketOf(inKeys[i])];
+        }
+      });
 
     // A byte shared by every key leaves the order as it is.
     const uint32_t firstBucket = bucketOf(inKeys[0]);
@@ -138,15 +144,17 @@ void vtkHAVSRadixSorter::Sort(const float* keys, size_t n, std::vector<uint32_t>
       }
     }
 
-    ForEachChunk(chunks, [&](size_t chunk) {
-      size_t* chunkOffsets = counts + chunk * NumberOfBuckets;
-      for (size_t i = chunkBegin(chunk); i < chunkEnd(chunk); ++i)
+    ForEachChunk(chunks,
+      [&](size_t chunk)
       {
-        const size_t at = chunkOffsets[bucketOf(inKeys[i])]++;
-        outKeys[at] = inKeys[i];
-        outOrder[at] = inOrder[i];
-      }
-    });
+        size_t* chunkOffsets = counts + chunk * NumberOfBuckets;
+        for (size_t i = chunkBegin(chunk); i < chunkEnd(chunk); ++i)
+        {
+          const size_t at = chunkOffsets[bucketOf(inKeys[i])]++;
+          outKeys[at] = inKeys[i];
+          outOrder[at] = inOrder[i];
+        }
+      });
     std::swap(inKeys, outKeys);
     std::swap(inOrder, outOrder);
   }

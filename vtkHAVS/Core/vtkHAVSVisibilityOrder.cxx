@@ -127,40 +127,42 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
   vtkPoints* points = grid->GetPoints();
   this->FacePlanes.resize(4 * numberOfFaces);
   std::vector<uint8_t> folded(numberOfFaces, 0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(numberOfFaces), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType f = begin; f < end; ++f)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(numberOfFaces),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      double v[3][3], x[3];
-      for (int i = 0; i < 3; ++i)
+      for (vtkIdType f = begin; f < end; ++f)
       {
-        points->GetPoint(vertices[3 * f + i], v[i]);
+        double v[3][3], x[3];
+        for (int i = 0; i < 3; ++i)
+        {
+          points->GetPoint(vertices[3 * f + i], v[i]);
+        }
+        points->GetPoint(farPoint[2 * f], x);
+        const double e1[3] = { v[1][0] - v[0][0], v[1][1] - v[0][1], v[1][2] - v[0][2] };
+        const double e2[3] = { v[2][0] - v[0][0], v[2][1] - v[0][1], v[2][2] - v[0][2] };
+        double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+          e1[0] * e2[1] - e1[1] * e2[0] };
+        double d = -(n[0] * v[0][0] + n[1] * v[0][1] + n[2] * v[0][2]);
+        if (n[0] * x[0] + n[1] * x[1] + n[2] * x[2] + d > 0.0)
+        {
+          n[0] = -n[0];
+          n[1] = -n[1];
+          n[2] = -n[2];
+          d = -d;
+        }
+        double* plane = &this->FacePlanes[4 * f];
+        plane[0] = n[0];
+        plane[1] = n[1];
+        plane[2] = n[2];
+        plane[3] = d;
+        if (this->FaceCells[2 * f + 1] >= 0)
+        {
+          // Folded: the second cell lies on the first's side too (an inverted cell).
+          points->GetPoint(farPoint[2 * f + 1], x);
+          folded[f] = n[0] * x[0] + n[1] * x[1] + n[2] * x[2] + d < 0.0 ? 1 : 0;
+        }
       }
-      points->GetPoint(farPoint[2 * f], x);
-      const double e1[3] = { v[1][0] - v[0][0], v[1][1] - v[0][1], v[1][2] - v[0][2] };
-      const double e2[3] = { v[2][0] - v[0][0], v[2][1] - v[0][1], v[2][2] - v[0][2] };
-      double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-        e1[0] * e2[1] - e1[1] * e2[0] };
-      double d = -(n[0] * v[0][0] + n[1] * v[0][1] + n[2] * v[0][2]);
-      if (n[0] * x[0] + n[1] * x[1] + n[2] * x[2] + d > 0.0)
-      {
-        n[0] = -n[0];
-        n[1] = -n[1];
-        n[2] = -n[2];
-        d = -d;
-      }
-      double* plane = &this->FacePlanes[4 * f];
-      plane[0] = n[0];
-      plane[1] = n[1];
-      plane[2] = n[2];
-      plane[3] = d;
-      if (this->FaceCells[2 * f + 1] >= 0)
-      {
-        // Folded: the second cell lies on the first's side too (an inverted cell).
-        points->GetPoint(farPoint[2 * f + 1], x);
-        folded[f] = n[0] * x[0] + n[1] * x[1] + n[2] * x[2] + d < 0.0 ? 1 : 0;
-      }
-    }
-  });
+    });
   this->NumberOfFoldedFaces = std::count(folded.begin(), folded.end(), 1);
   this->FoldedFaces.swap(folded);
   if (this->NumberOfFoldedFaces > 0)
@@ -208,14 +210,17 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
       canonical[corners[i].second] = id;
     }
   }
-  auto normalsOppose = [&](uint32_t a, uint32_t b) {
+  auto normalsOppose = [&](uint32_t a, uint32_t b)
+  {
     const double* p = &this->FacePlanes[4 * static_cast<size_t>(this->BoundaryFaces[a])];
     const double* q = &this->FacePlanes[4 * static_cast<size_t>(this->BoundaryFaces[b])];
     return p[0] * q[0] + p[1] * q[1] + p[2] * q[2] < 0.0;
   };
-  auto addSeam = [&](uint32_t a, uint32_t b) {
+  auto addSeam = [&](uint32_t a, uint32_t b)
+  {
     const uint32_t fa = this->BoundaryFaces[a], fb = this->BoundaryFaces[b];
-    if (this->FaceCells[2 * static_cast<size_t>(fa)] != this->FaceCells[2 * static_cast<size_t>(fb)] &&
+    if (this->FaceCells[2 * static_cast<size_t>(fa)] !=
+        this->FaceCells[2 * static_cast<size_t>(fb)] &&
       normalsOppose(a, b))
     {
       this->SeamFaces.push_back(fa);
@@ -300,9 +305,12 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
         // triangle of one overlaps every triangle of the other.
         const auto& x = quads[a].second;
         const auto& y = quads[b].second;
-        auto sameTriangle = [&](uint32_t u, uint32_t v) {
-          std::array<uint32_t, 3> tu = { canonical[3 * u], canonical[3 * u + 1], canonical[3 * u + 2] };
-          std::array<uint32_t, 3> tv = { canonical[3 * v], canonical[3 * v + 1], canonical[3 * v + 2] };
+        auto sameTriangle = [&](uint32_t u, uint32_t v)
+        {
+          std::array<uint32_t, 3> tu = { canonical[3 * u], canonical[3 * u + 1],
+            canonical[3 * u + 2] };
+          std::array<uint32_t, 3> tv = { canonical[3 * v], canonical[3 * v + 1],
+            canonical[3 * v + 2] };
           std::sort(tu.begin(), tu.end());
           std::sort(tv.begin(), tv.end());
           return tu == tv;
@@ -327,8 +335,7 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSVisibilityOrder::SetViewSampling(
-  const double modelToClip[16], int width, int height)
+void vtkHAVSVisibilityOrder::SetViewSampling(const double modelToClip[16], int width, int height)
 {
   std::copy(modelToClip, modelToClip + 16, this->ModelToClip);
   this->SampleSize[0] = width;
@@ -363,8 +370,8 @@ void vtkHAVSVisibilityOrder::BuildConvexification()
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSVisibilityOrder::BoundaryLayerRelations(const double eye[3],
-  const double direction[3], bool parallel, std::vector<std::pair<uint32_t, uint32_t>>& relations)
+void vtkHAVSVisibilityOrder::BoundaryLayerRelations(const double eye[3], const double direction[3],
+  bool parallel, std::vector<std::pair<uint32_t, uint32_t>>& relations)
 {
   const double start = vtkTimerLog::GetUniversalTime();
   relations.clear();
@@ -386,8 +393,8 @@ void vtkHAVSVisibilityOrder::BoundaryLayerRelations(const double eye[3],
                  direction, parallel) > 0.0;
   }
   this->Rasterizer->SetView(this->ModelToClip, eye, direction, parallel, width, height);
-  this->Rasterizer->Rasterize(this->Points, this->BoundaryFaceVertices.data(),
-    static_cast<vtkIdType>(numberOfBoundary));
+  this->Rasterizer->Rasterize(
+    this->Points, this->BoundaryFaceVertices.data(), static_cast<vtkIdType>(numberOfBoundary));
   const std::vector<vtkIdType>& pixelStart = this->Rasterizer->GetPixelStart();
   const std::vector<vtkHAVSFaceRasterizer::Hit>& hits = this->Rasterizer->GetHits();
 
@@ -395,36 +402,39 @@ void vtkHAVSVisibilityOrder::BoundaryLayerRelations(const double eye[3],
   using Relations = std::vector<std::pair<uint32_t, uint32_t>>;
   vtkSMPThreadLocal<Relations> local;
   const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
-  vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
-    Relations& out = local.Local();
-    auto cellOf = [&](const vtkHAVSFaceRasterizer::Hit& h) {
-      return static_cast<uint32_t>(
-        this->FaceCells[2 * static_cast<size_t>(this->BoundaryFaces[h.Triangle])]);
-    };
-    for (vtkIdType p = begin; p < end; ++p)
+  vtkSMPTools::For(0, pixels,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      for (vtkIdType i = pixelStart[p]; i + 1 < pixelStart[p + 1]; ++i)
+      Relations& out = local.Local();
+      auto cellOf = [&](const vtkHAVSFaceRasterizer::Hit& h)
       {
-        const vtkHAVSFaceRasterizer::Hit& a = hits[i];
-        const vtkHAVSFaceRasterizer::Hit& b = hits[i + 1];
-        const bool aEntry = entry[a.Triangle] != 0, bEntry = entry[b.Triangle] != 0;
-        if (aEntry == bEntry)
+        return static_cast<uint32_t>(
+          this->FaceCells[2 * static_cast<size_t>(this->BoundaryFaces[h.Triangle])]);
+      };
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        for (vtkIdType i = pixelStart[p]; i + 1 < pixelStart[p + 1]; ++i)
         {
-          continue;
-        }
-        // An exit then an entry; also an entry then an exit at the same depth
-        // up to rounding (two different triangles through the same point, as
-        // on a seam whose quadrilaterals are split by different diagonals).
-        const vtkHAVSFaceRasterizer::Hit& exit = aEntry ? b : a;
-        const vtkHAVSFaceRasterizer::Hit& in = aEntry ? a : b;
-        const double tie = 1e-9 * std::max(std::abs(a.Distance), std::abs(b.Distance));
-        if ((!aEntry || b.Distance - a.Distance <= tie) && cellOf(exit) != cellOf(in))
-        {
-          out.emplace_back(cellOf(exit), cellOf(in));
+          const vtkHAVSFaceRasterizer::Hit& a = hits[i];
+          const vtkHAVSFaceRasterizer::Hit& b = hits[i + 1];
+          const bool aEntry = entry[a.Triangle] != 0, bEntry = entry[b.Triangle] != 0;
+          if (aEntry == bEntry)
+          {
+            continue;
+          }
+          // An exit then an entry; also an entry then an exit at the same depth
+          // up to rounding (two different triangles through the same point, as
+          // on a seam whose quadrilaterals are split by different diagonals).
+          const vtkHAVSFaceRasterizer::Hit& exit = aEntry ? b : a;
+          const vtkHAVSFaceRasterizer::Hit& in = aEntry ? a : b;
+          const double tie = 1e-9 * std::max(std::abs(a.Distance), std::abs(b.Distance));
+          if ((!aEntry || b.Distance - a.Distance <= tie) && cellOf(exit) != cellOf(in))
+          {
+            out.emplace_back(cellOf(exit), cellOf(in));
+          }
         }
       }
-    }
-  });
+    });
   this->Rasterizer->ReleaseHits();
   for (Relations& r : local)
   {
@@ -455,13 +465,15 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
   // Each face's back cell: the one the ray enters through it (-1: it leaves
   // the mesh there). cell 1 lies on the positive side of the plane.
   std::vector<int64_t> back(numberOfFaces);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(numberOfFaces), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType f = begin; f < end; ++f)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(numberOfFaces),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      back[f] = side(&this->FacePlanes[4 * f]) > 0.0 ? this->FaceCells[2 * f]
-                                                     : this->FaceCells[2 * f + 1];
-    }
-  });
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        back[f] = side(&this->FacePlanes[4 * f]) > 0.0 ? this->FaceCells[2 * f]
+                                                       : this->FaceCells[2 * f + 1];
+      }
+    });
 
   // Relations across the outside of a non-convex mesh (from -> to: from is
   // in front). Nodes numberOfTets.. are the imaginary cells.
@@ -561,7 +573,8 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
   std::vector<uint8_t> visited(numberOfNodes, 0);
   size_t visitedCount = 0;
   size_t scan = 0;
-  auto release = [&](size_t behind) {
+  auto release = [&](size_t behind)
+  {
     if (--waiting[behind] == 0 && !visited[behind])
     {
       ready.push_back(static_cast<uint32_t>(behind));
@@ -643,8 +656,8 @@ void vtkHAVSVisibilityOrder::PrintSelf(ostream& os, vtkIndent indent)
             : (this->NonConvexMethod == NonConvexBoundaryLayers ? "BoundaryLayers" : "Ignore"))
      << "\n";
   os << indent << "Seam face pairs: " << this->SeamFaces.size() / 2 << "\n";
-  os << indent << "NumberOfImaginaryCells: " << this->NumberOfImaginaryCells
-     << " (convexified in " << this->ConvexificationSeconds << " s)\n";
+  os << indent << "NumberOfImaginaryCells: " << this->NumberOfImaginaryCells << " (convexified in "
+     << this->ConvexificationSeconds << " s)\n";
   os << indent << "NumberOfBoundaryRelations: " << this->NumberOfBoundaryRelations << " ("
      << this->LastBoundaryLayerSeconds << " s)\n";
   os << indent << "NumberOfCycleBreaks: " << this->NumberOfCycleBreaks << "\n";

@@ -130,7 +130,10 @@ public:
   bool IsFaceFolded(vtkIdType face) const { return this->FoldedFaces[face] != 0; }
 
   /// Pairs of boundary faces found at the same place (seams) by Build().
-  vtkIdType GetNumberOfSeamFaces() const { return static_cast<vtkIdType>(this->SeamFaces.size() / 2); }
+  vtkIdType GetNumberOfSeamFaces() const
+  {
+    return static_cast<vtkIdType>(this->SeamFaces.size() / 2);
+  }
 
   /// Convexification: imaginary cells, and the seconds it took (once per mesh).
   vtkGetMacro(NumberOfImaginaryCells, vtkIdType);
@@ -152,12 +155,12 @@ private:
   void BoundaryLayerRelations(const double eye[3], const double direction[3], bool parallel,
     std::vector<std::pair<uint32_t, uint32_t>>& relations);
 
-  std::vector<int64_t> FaceCells;      // 2 per face: the tetrahedra (-1: none)
-  std::vector<double> FacePlanes;      // 4 per face: n, d with n.x + d > 0 on FaceCells[0]'s far side
-  std::vector<uint32_t> CellFaces;     // 4 per tetrahedron
+  std::vector<int64_t> FaceCells;  // 2 per face: the tetrahedra (-1: none)
+  std::vector<double> FacePlanes;  // 4 per face: n, d with n.x + d > 0 on FaceCells[0]'s far side
+  std::vector<uint32_t> CellFaces; // 4 per tetrahedron
   std::vector<uint32_t> Order;
-  std::vector<double> Points;          // the grid's points (3 per point)
-  std::vector<uint32_t> BoundaryFaces; // face ids of the boundary faces
+  std::vector<double> Points;                 // the grid's points (3 per point)
+  std::vector<uint32_t> BoundaryFaces;        // face ids of the boundary faces
   std::vector<uint32_t> BoundaryFaceVertices; // 3 per boundary face, wound outward
   std::vector<uint32_t> SeamFaces; // pairs of boundary faces at the same place (duplicated points)
   bool MeshConvex = true;

@@ -183,8 +183,7 @@ bool vtkHAVSVolumeMapper::PrepareMesh(vtkVolume* volume)
   const int components = this->Mesh->GetNumberOfComponents();
   if (components > 1)
   {
-    const std::string message = "The scalars have " + std::to_string(components) +
-      " components" +
+    const std::string message = "The scalars have " + std::to_string(components) + " components" +
       (volume->GetProperty()->GetIndependentComponents() ? " (independent)" : " (dependent)") +
       "; vtkHAVSVolumeMapper renders the first one only.";
     this->WarnOnce(WarnComponents, message.c_str());
@@ -218,8 +217,7 @@ bool vtkHAVSVolumeMapper::PrepareTable(vtkVolume* volume)
     const double column[3] = { m->GetElement(0, c), m->GetElement(1, c), m->GetElement(2, c) };
     stretch = std::max(stretch, vtkMath::Norm(column));
   }
-  const double maxLength =
-    std::max(this->Mesh->GetFaceSet()->GetLongestEdge() * stretch, 1e-30);
+  const double maxLength = std::max(this->Mesh->GetFaceSet()->GetLongestEdge() * stretch, 1e-30);
 
   this->Table->SetScalarResolution(this->TableScalarResolution);
   this->Table->SetLengthResolution(this->TableLengthResolution);
@@ -254,8 +252,9 @@ vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
   r.TerminationOpacity = static_cast<float>(this->EarlyRayTerminationOpacity);
   r.Tagging = this->BoundaryMode == BoundaryTagging ||
     (this->BoundaryMode == BoundaryAutomatic && !this->Mesh->GetFaceSet()->IsConvex());
-  r.GapLength =
-    this->BoundaryMode == BoundaryGapLength ? static_cast<float>(this->Table->GetMaxLength()) : 3.0e38f;
+  r.GapLength = this->BoundaryMode == BoundaryGapLength
+    ? static_cast<float>(this->Table->GetMaxLength())
+    : 3.0e38f;
   r.RasterBoundOnly = this->FaceRasterBoundMode;
   r.MeasureStages = this->MeasureStageTimes;
   r.KeepResult = this->KeepFloatResult;
@@ -327,7 +326,8 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   // 4. The near and clipping planes, and the mesh's sections with them.
   if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, this->PlaneSections))
   {
-    this->WarnOnce(WarnPlanes, "More than 6 clipping planes; vtkHAVSVolumeMapper uses the first 6.");
+    this->WarnOnce(
+      WarnPlanes, "More than 6 clipping planes; vtkHAVSVolumeMapper uses the first 6.");
   }
 
   // 5. The face order, and 6. the draw: Automatic's probe may ask for a

@@ -9,9 +9,9 @@
 =========================================================================*/
 #include "vtkHAVSEGLRenderWindow.h"
 
+#include "vtkHAVSOpenGL.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLState.h"
-#include "vtkHAVSOpenGL.h"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -62,7 +62,8 @@ EGLDisplayChoice OpenDisplay()
 
   if (getPlatformDisplay && HasExtension(clientExtensions, "EGL_MESA_platform_surfaceless"))
   {
-    EGLDisplay dpy = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLDisplay dpy =
+      getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (dpy != EGL_NO_DISPLAY && eglInitialize(dpy, nullptr, nullptr))
     {
       choice.Display = dpy;
@@ -73,7 +74,8 @@ EGLDisplayChoice OpenDisplay()
 
   auto queryDevices =
     reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
-  if (getPlatformDisplay && queryDevices && HasExtension(clientExtensions, "EGL_EXT_platform_device"))
+  if (getPlatformDisplay && queryDevices &&
+    HasExtension(clientExtensions, "EGL_EXT_platform_device"))
   {
     EGLDeviceEXT devices[16];
     EGLint count = 0;
@@ -132,12 +134,14 @@ bool vtkHAVSEGLRenderWindow::IsAvailable()
 {
   static std::once_flag once;
   static bool available = false;
-  std::call_once(once, [] {
-    vtkHAVSEGLRenderWindow* probe = vtkHAVSEGLRenderWindow::New();
-    available = probe->CreateContext();
-    probe->DestroyContext();
-    probe->Delete();
-  });
+  std::call_once(once,
+    []
+    {
+      vtkHAVSEGLRenderWindow* probe = vtkHAVSEGLRenderWindow::New();
+      available = probe->CreateContext();
+      probe->DestroyContext();
+      probe->Delete();
+    });
   return available;
 }
 
@@ -164,8 +168,7 @@ bool vtkHAVSEGLRenderWindow::CreateContext()
   const EGLint configAttributes[] = { EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE };
   EGLConfig config = nullptr;
   EGLint numConfigs = 0;
-  if (!eglChooseConfig(choice.Display, configAttributes, &config, 1, &numConfigs) ||
-    numConfigs < 1)
+  if (!eglChooseConfig(choice.Display, configAttributes, &config, 1, &numConfigs) || numConfigs < 1)
   {
     config = nullptr; // EGL_KHR_no_config_context
   }

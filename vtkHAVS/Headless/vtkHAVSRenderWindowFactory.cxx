@@ -48,8 +48,8 @@ const char* vtkHAVSRenderWindowFactory::GetSelectedBackend()
   }
   if (requested != "auto")
   {
-    vtkGenericWarningMacro("HAVS_RENDER_WINDOW=" << requested
-                                                 << " is not one of egl, display, auto; using auto.");
+    vtkGenericWarningMacro(
+      "HAVS_RENDER_WINDOW=" << requested << " is not one of egl, display, auto; using auto.");
   }
   if (vtkHAVSEGLRenderWindow::IsAvailable())
   {

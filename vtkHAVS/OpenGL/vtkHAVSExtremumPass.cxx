@@ -56,8 +56,7 @@ bool vtkHAVSExtremumPass::Resolve(vtkHAVSGLPassContext& context)
   context.Targets->BindResult();
   vtkTextureObject* function = context.Table->GetTransferFunction1D();
   function->Activate();
-  vtkShaderProgram* program =
-    context.QuadProgram(vtkHAVSKBufferShaders::ExtremumResolveShader());
+  vtkShaderProgram* program = context.QuadProgram(vtkHAVSKBufferShaders::ExtremumResolveShader());
   if (program)
   {
     program->SetUniformi("havsExtremumTexture", extremum->GetTextureUnit());

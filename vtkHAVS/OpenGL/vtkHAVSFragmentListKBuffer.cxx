@@ -78,8 +78,8 @@ bool vtkHAVSFragmentListKBuffer::Allocate(vtkHAVSGLPassContext& context)
     glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
     glGenBuffers(1, &this->Nodes);
   }
-  const GLuint wanted = static_cast<GLuint>(
-    std::max<size_t>(static_cast<size_t>(width) * height * 4, size_t(1) << 20));
+  const GLuint wanted =
+    static_cast<GLuint>(std::max<size_t>(static_cast<size_t>(width) * height * 4, size_t(1) << 20));
   if (this->Capacity < wanted)
   {
     this->GrowNodes(wanted);

@@ -117,8 +117,8 @@ bool vtkHAVSFramebufferFetchKBuffer::Resolve(vtkHAVSGLPassContext& context)
     program->SetUniformi("havsColorTexture", this->Targets[0]->GetTextureUnit());
     for (size_t a = 1; a < this->Targets.size(); ++a)
     {
-      program->SetUniformi(("havsEntryTexture" + std::to_string(a - 1)).c_str(),
-        this->Targets[a]->GetTextureUnit());
+      program->SetUniformi(
+        ("havsEntryTexture" + std::to_string(a - 1)).c_str(), this->Targets[a]->GetTextureUnit());
     }
     context.DrawFullViewport();
   }

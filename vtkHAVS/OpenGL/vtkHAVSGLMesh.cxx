@@ -76,8 +76,8 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
   }
   glBindVertexArray(this->VertexArray);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, triangles.size() * sizeof(uint32_t), triangles.data(),
-    GL_STREAM_DRAW);
+  glBufferData(
+    GL_ELEMENT_ARRAY_BUFFER, triangles.size() * sizeof(uint32_t), triangles.data(), GL_STREAM_DRAW);
   glBindVertexArray(0);
   this->IndexCount = static_cast<GLsizei>(triangles.size());
 
@@ -127,7 +127,8 @@ void vtkHAVSGLMesh::UploadSections(const std::vector<vtkHAVSFramePlanes::Section
     glGenBuffers(1, &this->SectionScalars);
   }
   glBindVertexArray(this->SectionArray);
-  UploadVertexAttributes(this->SectionPoints, this->SectionScalars, points, scalars, GL_STREAM_DRAW);
+  UploadVertexAttributes(
+    this->SectionPoints, this->SectionScalars, points, scalars, GL_STREAM_DRAW);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
@@ -137,7 +138,8 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing)
 {
   const bool roles = program->IsUniformUsed("havsRole");
   const bool ownPlane = program->IsUniformUsed("havsOwnPlane");
-  auto drawSections = [&](bool entering) {
+  auto drawSections = [&](bool entering)
+  {
     for (const SectionDraw& d : this->SectionDraws)
     {
       if (d.Entering != entering)

@@ -48,7 +48,8 @@ public:
   /// Points (3 floats each, model coordinates) and normalized scalars.
   void UploadGeometry(const std::vector<float>& points, const std::vector<float>& scalars);
   /// The faces in draw order (3 point ids each) and their boundary flags.
-  bool UploadFaceOrder(const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary);
+  bool UploadFaceOrder(
+    const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary);
   /// The sections of the next frames (empty: none).
   void UploadSections(const std::vector<vtkHAVSFramePlanes::Section>& sections);
 

@@ -117,8 +117,8 @@ void vtkOpenGLHAVSVolumeMapper::PrepareWindow(vtkOpenGLRenderWindow* window)
   this->Window = window;
   // A window that goes away while this mapper is not among its props (so that
   // it is not told to release) takes the resources with it: watch for that.
-  this->WindowDeleteObserver = window->AddObserver(
-    vtkCommand::DeleteEvent, this, &vtkOpenGLHAVSVolumeMapper::OnWindowDeleted);
+  this->WindowDeleteObserver =
+    window->AddObserver(vtkCommand::DeleteEvent, this, &vtkOpenGLHAVSVolumeMapper::OnWindowDeleted);
   window->MakeCurrent();
   this->GLMesh->SetContext(window);
   this->GLTable->SetContext(window);
@@ -185,7 +185,8 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   vtkHAVSGLPassContext context(window, this->GLMesh, this->GLTable, this->Targets, request);
   const bool extremum = request.BlendMode != COMPOSITE_BLEND;
   vtkHAVSKBuffer* kbuffer = this->GetKBuffer(request.Path);
-  auto now = [&request]() {
+  auto now = [&request]()
+  {
     if (!request.MeasureStages)
     {
       return 0.0;
@@ -261,9 +262,9 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   result.CompositeSeconds = t3 - t2;
   if (!ok)
   {
-    vtkErrorMacro("A vtkHAVS shader could not be built for the "
-      << GetKBufferPathName(request.Path) << " path with k = " << request.K
-      << "; see the shader log above.");
+    vtkErrorMacro("A vtkHAVS shader could not be built for the " << GetKBufferPathName(request.Path)
+                                                                 << " path with k = " << request.K
+                                                                 << "; see the shader log above.");
   }
   return ok;
 }

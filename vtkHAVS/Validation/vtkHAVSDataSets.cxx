@@ -53,8 +53,8 @@ struct ReaderErrors
   explicit ReaderErrors(vtkObject* reader)
   {
     this->Callback->SetClientData(this);
-    this->Callback->SetCallback(
-      [](vtkObject*, unsigned long, void* self, void*) { ++static_cast<ReaderErrors*>(self)->Count; });
+    this->Callback->SetCallback([](vtkObject*, unsigned long, void* self, void*)
+      { ++static_cast<ReaderErrors*>(self)->Count; });
     reader->AddObserver(vtkCommand::ErrorEvent, this->Callback);
   }
 };
@@ -78,20 +78,24 @@ vtkSmartPointer<vtkUnstructuredGrid> ThresholdedWavelet()
 vtkSmartPointer<vtkUnstructuredGrid> HollowSphere()
 {
   auto box = vtkHAVSDataSets::MakeBox(16, 16, 16, 1.0 / 16, 0.0, 1.0);
-  return vtkHAVSDataSets::KeepCells(box, [](const double* c) {
-    const double r = std::sqrt((c[0] - 0.5) * (c[0] - 0.5) + (c[1] - 0.5) * (c[1] - 0.5) +
-      (c[2] - 0.5) * (c[2] - 0.5));
-    return r > 0.22 && r < 0.48;
-  });
+  return vtkHAVSDataSets::KeepCells(box,
+    [](const double* c)
+    {
+      const double r = std::sqrt(
+        (c[0] - 0.5) * (c[0] - 0.5) + (c[1] - 0.5) * (c[1] - 0.5) + (c[2] - 0.5) * (c[2] - 0.5));
+      return r > 0.22 && r < 0.48;
+    });
 }
 
 vtkSmartPointer<vtkUnstructuredGrid> Torus()
 {
   auto box = vtkHAVSDataSets::MakeBox(24, 24, 12, 1.0 / 24, 0.0, 2.0);
-  return vtkHAVSDataSets::KeepCells(box, [](const double* c) {
-    const double ring = std::sqrt((c[0] - 0.5) * (c[0] - 0.5) + (c[1] - 0.5) * (c[1] - 0.5));
-    return (ring - 0.32) * (ring - 0.32) + (c[2] - 0.25) * (c[2] - 0.25) < 0.13 * 0.13;
-  });
+  return vtkHAVSDataSets::KeepCells(box,
+    [](const double* c)
+    {
+      const double ring = std::sqrt((c[0] - 0.5) * (c[0] - 0.5) + (c[1] - 0.5) * (c[1] - 0.5));
+      return (ring - 0.32) * (ring - 0.32) + (c[2] - 0.25) * (c[2] - 0.25) < 0.13 * 0.13;
+    });
 }
 
 /// Two 1 x 1 x 1 blocks of 6^3 cubes (longest edge 0.29) with a gap of 0.08
@@ -173,8 +177,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::Load(const std::string& na
     {
       return ReadFile(dir + "/post.vtk", "Pressure");
     }
-    return ReadPlot3D(
-      dir + "/" + d.Stem + "xyz.bin", dir + "/" + d.Stem + "q.bin", d.Function);
+    return ReadPlot3D(dir + "/" + d.Stem + "xyz.bin", dir + "/" + d.Stem + "q.bin", d.Function);
   }
   if (name == "gen1M")
   {
@@ -244,8 +247,8 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::ReadFile(
   }
   if (readerErrors > 0)
   {
-    vtkGenericWarningMacro("vtkHAVSDataSets: the reader reported " << readerErrors
-                                                                  << " errors reading " << path);
+    vtkGenericWarningMacro(
+      "vtkHAVSDataSets: the reader reported " << readerErrors << " errors reading " << path);
     return nullptr;
   }
   if (!data || data->GetNumberOfCells() == 0)
@@ -302,9 +305,8 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::ReadPlot3D(
   reader->Update();
   if (errors.Count > 0)
   {
-    vtkGenericWarningMacro("vtkHAVSDataSets: the reader reported " << errors.Count
-                                                                  << " errors reading " << xyzPath
-                                                                  << " and " << qPath);
+    vtkGenericWarningMacro("vtkHAVSDataSets: the reader reported "
+      << errors.Count << " errors reading " << xyzPath << " and " << qPath);
     return nullptr;
   }
   vtkDataSet* block = reader->GetOutput() && reader->GetOutput()->GetNumberOfBlocks() > 0

@@ -142,7 +142,8 @@ void DrawOrder(const Fragment* begin, const Fragment* end, const std::vector<uin
   }
   // The synthetic fragments where the near or a clipping plane cuts the mesh
   // are drawn first (entries) or last (exits), as the mapper draws them.
-  const auto rankOf = [&](uint32_t face) -> int64_t {
+  const auto rankOf = [&](uint32_t face) -> int64_t
+  {
     return face == vtkHAVSReferenceRenderer::StartFace
       ? -1
       : (face == vtkHAVSReferenceRenderer::EndFace ? std::numeric_limits<int64_t>::max()
@@ -242,24 +243,26 @@ bool vtkHAVSSoftwareKBuffer::Render(vtkHAVSReferenceRenderer* fragments,
   image->SetNumberOfComponents(4);
   image->SetNumberOfTuples(pixels);
   float* out = image->GetPointer(0);
-  vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
-    std::vector<const Fragment*> ordered;
-    for (vtkIdType p = begin; p < end; ++p)
+  vtkSMPTools::For(0, pixels,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      DrawOrder(fragments->GetPixelFragmentsBegin(p), fragments->GetPixelFragmentsEnd(p),
-        this->DrawRank, ordered);
-      PixelKBuffer buffer(k, table, terminationOpacity);
-      for (const Fragment* f : ordered)
+      std::vector<const Fragment*> ordered;
+      for (vtkIdType p = begin; p < end; ++p)
       {
-        buffer.Insert({ f->Distance, f->Scalar, f->Exit, f->Boundary && !f->Exit });
+        DrawOrder(fragments->GetPixelFragmentsBegin(p), fragments->GetPixelFragmentsEnd(p),
+          this->DrawRank, ordered);
+        PixelKBuffer buffer(k, table, terminationOpacity);
+        for (const Fragment* f : ordered)
+        {
+          buffer.Insert({ f->Distance, f->Scalar, f->Exit, f->Boundary && !f->Exit });
+        }
+        buffer.Flush();
+        for (int c = 0; c < 4; ++c)
+        {
+          out[4 * p + c] = static_cast<float>(buffer.Color[c]);
+        }
       }
-      buffer.Flush();
-      for (int c = 0; c < 4; ++c)
-      {
-        out[4 * p + c] = static_cast<float>(buffer.Color[c]);
-      }
-    }
-  });
+    });
   image->Modified();
   return true;
 }
@@ -278,29 +281,32 @@ bool vtkHAVSSoftwareKBuffer::Analyze(
   requiredK->SetNumberOfComponents(1);
   requiredK->SetNumberOfTuples(pixels);
   int* k = requiredK->GetPointer(0);
-  vtkSMPTools::For(0, pixels, [&](vtkIdType begin, vtkIdType end) {
-    std::vector<const Fragment*> ordered;
-    std::vector<double> distances;
-    for (vtkIdType p = begin; p < end; ++p)
+  vtkSMPTools::For(0, pixels,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      DrawOrder(fragments->GetPixelFragmentsBegin(p), fragments->GetPixelFragmentsEnd(p),
-        this->DrawRank, ordered);
-      distances.clear();
-      for (const Fragment* f : ordered)
+      std::vector<const Fragment*> ordered;
+      std::vector<double> distances;
+      for (vtkIdType p = begin; p < end; ++p)
       {
-        distances.push_back(f->Distance);
+        DrawOrder(fragments->GetPixelFragmentsBegin(p), fragments->GetPixelFragmentsEnd(p),
+          this->DrawRank, ordered);
+        distances.clear();
+        for (const Fragment* f : ordered)
+        {
+          distances.push_back(f->Distance);
+        }
+        k[p] =
+          distances.empty() ? 0 : RequiredK(distances.data(), static_cast<int>(distances.size()));
       }
-      k[p] = distances.empty() ? 0 : RequiredK(distances.data(), static_cast<int>(distances.size()));
-    }
-  });
+    });
   this->NumberOfFragments = fragments->GetNumberOfFragments();
   this->LongestList = 0;
   this->MaximumRequiredK = 0;
   this->PixelsOverK2 = this->PixelsOverK6 = this->PixelsOverK14 = 0;
   for (vtkIdType p = 0; p < pixels; ++p)
   {
-    const int n = static_cast<int>(
-      fragments->GetPixelFragmentsEnd(p) - fragments->GetPixelFragmentsBegin(p));
+    const int n =
+      static_cast<int>(fragments->GetPixelFragmentsEnd(p) - fragments->GetPixelFragmentsBegin(p));
     this->LongestList = std::max(this->LongestList, n);
     this->MaximumRequiredK = std::max(this->MaximumRequiredK, k[p]);
     this->PixelsOverK2 += k[p] > 2 ? 1 : 0;

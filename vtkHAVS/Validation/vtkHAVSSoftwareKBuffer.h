@@ -31,7 +31,7 @@
 #define vtkHAVSSoftwareKBuffer_h
 
 #include "vtkHAVSValidationModule.h" // For export macro
-#include "vtkNew.h"        // For vtkNew
+#include "vtkNew.h"                  // For vtkNew
 #include "vtkObject.h"
 
 #include <cstdint> // For uint32_t

@@ -16,8 +16,7 @@
 vtkStandardNewMacro(vtkHAVSStructuredGridVolumeRepresentation);
 
 //------------------------------------------------------------------------------
-int vtkHAVSStructuredGridVolumeRepresentation::FillInputPortInformation(
-  int, vtkInformation* info)
+int vtkHAVSStructuredGridVolumeRepresentation::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkStructuredGrid");
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");

@@ -119,8 +119,9 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
     // HAVS's own level of detail instead of ParaView's LOD geometry: keep the
     // volume while interacting, with fewer k-buffer entries.
     vtkAlgorithmOutput* producer = vtkPVRenderView::GetPieceProducer(inInfo, this);
-    vtkDataSet* piece =
-      producer ? vtkDataSet::SafeDownCast(producer->GetProducer()->GetOutputDataObject(0)) : nullptr;
+    vtkDataSet* piece = producer
+      ? vtkDataSet::SafeDownCast(producer->GetProducer()->GetOutputDataObject(0))
+      : nullptr;
     if (!piece || piece->GetNumberOfCells() == 0)
     {
       this->Actor->SetMapper(nullptr); // an empty piece of a parallel run: nothing to draw
@@ -133,9 +134,8 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
       return 1; // ParaView's LOD geometry while interacting
     }
     this->Actor->SetEnableLOD(0);
-    this->HAVSMapper->SetKBufferSize(interactive
-        ? std::min(this->InteractiveKBufferSize, this->KBufferSize)
-        : this->KBufferSize);
+    this->HAVSMapper->SetKBufferSize(
+      interactive ? std::min(this->InteractiveKBufferSize, this->KBufferSize) : this->KBufferSize);
   }
   return 1;
 }
