@@ -40,6 +40,7 @@
 // size). A configuration whose frames exceed the time budget stops early and
 // says how many views it measured. Output: CSV, Markdown (with ratios) and,
 // where matplotlib is installed, plots.
+#include "havsAppOptions.h"
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFaceSorter.h"
@@ -108,21 +109,6 @@ struct Options
   std::string CacheDir = "build/benchmark-cache";
   std::string Self;
 };
-
-std::vector<std::string> Split(const std::string& text)
-{
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ','))
-  {
-    if (!item.empty())
-    {
-      out.push_back(item);
-    }
-  }
-  return out;
-}
 
 /// Not empty, not opaque; every opacity node is a colour node (so that VTK's
 /// linear ray integrator integrates it exactly).
@@ -776,7 +762,7 @@ int main(int argc, char* argv[])
       o.Size = std::max(16, std::atoi(next().c_str()));
     else if (a == "--sizes")
     {
-      for (const std::string& v : Split(next()))
+      for (const std::string& v : havsapp::SplitList(next()))
       {
         o.Sizes.push_back(std::max(16, std::atoi(v.c_str())));
       }
@@ -823,11 +809,11 @@ int main(int argc, char* argv[])
     o.Repeats = set[2] ? o.Repeats : 1;
     o.Budget = set[3] ? o.Budget : 60;
   }
-  o.DataSets = Split(!datasets.empty()
+  o.DataSets = havsapp::SplitList(!datasets.empty()
       ? datasets
       : (o.Quick ? "loxpostvtk,bluntfin"
                  : "loxpostvtk,bluntfin,combustor,loxpost,gen1M,gen4M,gen10M"));
-  o.Configs = Split(!configs.empty()
+  o.Configs = havsapp::SplitList(!configs.empty()
       ? configs
       : (o.Quick
             ? "havs-k2,havs-k6,havs-k14,raster-bound,sort-bound,pt,raycast"
@@ -856,7 +842,7 @@ int main(int argc, char* argv[])
   std::vector<Row> rows;
   if (!fromCsv.empty())
   {
-    for (const std::string& file : Split(fromCsv))
+    for (const std::string& file : havsapp::SplitList(fromCsv))
     {
       std::vector<Row> more = ReadCsv(file);
       for (Row& r : more)

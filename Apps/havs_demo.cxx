@@ -24,6 +24,7 @@
 // --data-dir, or <source dir>/../shared/data; or any --input .vtu/.vtk or
 // --plot3d pair. Exits non-zero when a file cannot be read, a mapper reports
 // an error or the reference fails.
+#include "havsAppOptions.h"
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSImageMetrics.h"
@@ -126,21 +127,6 @@ void PrintUsage()
        "--amplify A: the error that shows full red in the difference images is 1/A.\n";
 }
 
-std::vector<std::string> SplitList(const std::string& text)
-{
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ','))
-  {
-    if (!item.empty())
-    {
-      items.push_back(item);
-    }
-  }
-  return items;
-}
-
 /// Returns 0 to run, 1 for an error, 2 for --help.
 int ParseArguments(int argc, char* argv[], Options& o)
 {
@@ -204,7 +190,7 @@ int ParseArguments(int argc, char* argv[], Options& o)
     }
     else if (a == "--mappers")
     {
-      o.Mappers = SplitList(next());
+      o.Mappers = havsapp::SplitList(next());
     }
     else if (a == "--output")
     {
