@@ -31,7 +31,30 @@
 #include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
 
+#include <dlfcn.h>
+
 vtkStandardNewMacro(vtkOpenGLHAVSVolumeMapper);
+
+namespace
+{
+/// Keeps this library loaded until the process ends. vtk_module_autoinit
+/// registers this module's object factory with VTK, and VTK deletes the
+/// registered factories in its own static cleanup at exit; a ParaView plugin
+/// that brought this library in may be unloaded before that (ParaView 5.13
+/// does), and the factory's code with it: the exit then crashed in
+/// vtkObjectFactory::UnRegisterAllFactories. RTLD_NODELETE pins the library.
+struct KeepLoaded
+{
+  KeepLoaded()
+  {
+    Dl_info self;
+    if (dladdr(reinterpret_cast<void*>(&vtkOpenGLHAVSVolumeMapper::New), &self) && self.dli_fname)
+    {
+      dlopen(self.dli_fname, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
+    }
+  }
+} keepLoaded;
+}
 
 //------------------------------------------------------------------------------
 vtkOpenGLHAVSVolumeMapper::vtkOpenGLHAVSVolumeMapper() = default;
