@@ -52,8 +52,10 @@
 #include "vtkHAVSVisibilityOrder.h"
 #include "vtkHAVSVolumeMapper.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkCubeSource.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -63,6 +65,7 @@
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProjectedTetrahedraMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -202,7 +205,7 @@ int RunWorker(const Options& o)
   auto property = MakeProperty(grid);
   const vtkIdType tets = grid->GetNumberOfCells();
 
-  std::vector<double> frame, sort, draw, flush, composite;
+  std::vector<double> frame, sort, draw, flush, composite, upload, readback, layers;
   double sumSquares = 0, maxError = 0;
   double over1 = 0, pixels = 0;
   int viewsDone = 0;
@@ -262,6 +265,7 @@ int RunWorker(const Options& o)
     window->AddRenderer(renderer);
     vtkSmartPointer<vtkUnstructuredGridVolumeMapper> mapper;
     vtkHAVSVolumeMapper* havs = nullptr;
+    vtkSmartPointer<vtkActor> opaqueActor; // -opaque: in the scene, behind the eye
     if (config.rfind("havs", 0) == 0 || config == "raster-bound")
     {
       auto m = vtkSmartPointer<vtkHAVSVolumeMapper>::New();
@@ -293,6 +297,14 @@ int RunWorker(const Options& o)
         else if (config.find("-auto") != std::string::npos)
         {
           m->SetVisibilityOrderToAutomatic(); // centroid until it overflows, then MPVO
+        }
+        if (config.find("-count") != std::string::npos)
+        {
+          m->CountOrderViolationsOn(); // what the order-violation counter costs
+        }
+        if (config.find("-noterm") != std::string::npos)
+        {
+          m->SetEarlyRayTerminationOpacity(1.0); // what early ray termination saves
         }
         if (config.find("-untagged") != std::string::npos)
         {
@@ -335,6 +347,20 @@ int RunWorker(const Options& o)
       return EXIT_FAILURE;
     }
     mapper->SetInputData(grid);
+    if (config.find("-opaque") != std::string::npos)
+    {
+      // What the opaque cut costs: an opaque actor in the scene (behind the
+      // camera, so the image is the same) makes the mapper copy the depth
+      // and compile the cut into its shaders.
+      vtkNew<vtkCubeSource> cube;
+      vtkNew<vtkPolyDataMapper> cubeMapper;
+      cubeMapper->SetInputConnection(cube->GetOutputPort());
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(cubeMapper);
+      actor->SetScale(1e-6 * grid->GetLength());
+      renderer->AddActor(actor);
+      opaqueActor = actor;
+    }
     vtkNew<vtkVolume> volume;
     volume->SetMapper(mapper);
     volume->SetProperty(property);
@@ -350,6 +376,15 @@ int RunWorker(const Options& o)
     for (int view = 0; view < o.Views; ++view)
     {
       vtkHAVSStandardViews::PlaceCamera(camera, grid, view);
+      if (opaqueActor)
+      {
+        // Behind the eye: in the scene, never in the picture.
+        double eye[3], dop[3];
+        camera->GetPosition(eye);
+        camera->GetDirectionOfProjection(dop);
+        const double back = 0.5 * grid->GetLength();
+        opaqueActor->SetPosition(eye[0] - back * dop[0], eye[1] - back * dop[1], eye[2] - back * dop[2]);
+      }
       for (int r = 0; r < o.Repeats; ++r)
       {
         if (havs)
@@ -368,6 +403,9 @@ int RunWorker(const Options& o)
           draw.push_back(1000.0 * havs->GetLastFrameStatistics()->GetDrawSeconds());
           flush.push_back(1000.0 * havs->GetLastFrameStatistics()->GetFlushSeconds());
           composite.push_back(1000.0 * havs->GetLastFrameStatistics()->GetCompositeSeconds());
+          upload.push_back(1000.0 * havs->GetLastFrameStatistics()->GetUploadSeconds());
+          readback.push_back(1000.0 * havs->GetLastFrameStatistics()->GetReadbackSeconds());
+          layers.push_back(1000.0 * havs->GetLastFrameStatistics()->GetBoundaryLayerSeconds());
         }
       }
       if (config != "raster-bound")
@@ -403,11 +441,13 @@ int RunWorker(const Options& o)
   }
   std::printf("RESULT dataset=%s config=%s size=%d tets=%lld views=%d frames=%zu ms_median=%.3f "
               "ms_min=%.3f ms_max=%.3f sort_ms=%.3f draw_ms=%.3f flush_ms=%.3f "
-              "composite_ms=%.3f rmse=%.6f max=%.6f over1=%.6f peak_mb=%.1f smp=%s threads=%d\n",
+              "composite_ms=%.3f upload_ms=%.3f readback_ms=%.3f layers_ms=%.3f rmse=%.6f max=%.6f "
+              "over1=%.6f peak_mb=%.1f smp=%s threads=%d\n",
     dataset.c_str(), config.c_str(), o.Size, static_cast<long long>(tets), viewsDone, frame.size(),
     Median(frame), frame.empty() ? NAN : *std::min_element(frame.begin(), frame.end()),
     frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort), Median(draw),
-    Median(flush), Median(composite), rmse, maxError, pixels > 0 ? over1 / pixels : NAN,
+    Median(flush), Median(composite), Median(upload), Median(readback), Median(layers), rmse,
+    maxError, pixels > 0 ? over1 / pixels : NAN,
     PeakMegabytes(), vtkSMPTools::GetBackend(), vtkSMPTools::GetEstimatedNumberOfThreads());
   return EXIT_SUCCESS;
 }
@@ -431,7 +471,8 @@ std::map<std::string, std::string> ParseResult(const std::string& line)
 using Row = std::map<std::string, std::string>;
 
 const char* const kColumns[] = { "dataset", "config", "size", "tets", "views", "frames",
-  "ms_median", "ms_min", "ms_max", "sort_ms", "draw_ms", "flush_ms", "composite_ms", "mtets_per_s",
+  "ms_median", "ms_min", "ms_max", "sort_ms", "draw_ms", "flush_ms", "composite_ms", "upload_ms",
+  "readback_ms", "layers_ms", "mtets_per_s",
   "rmse", "max", "over1", "peak_mb", "smp", "threads", "command" };
 
 /// A CSV field, quoted where it holds a comma or a quote.

@@ -28,6 +28,7 @@ void vtkHAVSFrameStatistics::Reset()
   this->BoundaryRelations = 0;
   this->BoundaryLayerSeconds = 0.0;
   this->Tagging = false;
+  this->OpaqueGeometry = false;
   this->PlaneCount = 0;
   this->SectionTriangles = 0;
   this->SectionSeconds = 0.0;
@@ -36,9 +37,11 @@ void vtkHAVSFrameStatistics::Reset()
   this->Fragments = 0;
   this->FacesDrawn = 0;
   this->SortSeconds = 0.0;
+  this->UploadSeconds = 0.0;
   this->DrawSeconds = 0.0;
   this->FlushSeconds = 0.0;
   this->CompositeSeconds = 0.0;
+  this->ReadbackSeconds = 0.0;
   this->Modified();
 }
 
@@ -79,7 +82,9 @@ void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
      << ", section triangles " << this->SectionTriangles << " (" << this->SectionSeconds << " s)\n";
   os << indent << "OrderViolations: " << this->OrderViolations << ", fragments " << this->Fragments
      << ", faces drawn " << this->FacesDrawn << "\n";
-  os << indent << "Seconds: sort " << this->SortSeconds << ", draw " << this->DrawSeconds
-     << ", flush " << this->FlushSeconds << ", composite " << this->CompositeSeconds
+  os << indent << "OpaqueGeometry: " << this->OpaqueGeometry << "\n";
+  os << indent << "Seconds: sort " << this->SortSeconds << ", upload " << this->UploadSeconds
+     << ", draw " << this->DrawSeconds << ", flush " << this->FlushSeconds << ", read-backs "
+     << this->ReadbackSeconds << ", composite " << this->CompositeSeconds
      << ", table (last build) " << this->TableSeconds << "\n";
 }

@@ -74,6 +74,13 @@ public:
   ///@}
 
   ///@{
+  /// Whether opaque geometry could end the rays (the depth was copied and the
+  /// shaders compiled with the cut; off when the renderer has none).
+  vtkSetMacro(OpaqueGeometry, bool);
+  vtkGetMacro(OpaqueGeometry, bool);
+  ///@}
+
+  ///@{
   /// Boundary fragments tagged; planes cutting the mesh (near and clipping);
   /// triangles of their sections and the seconds those took.
   vtkSetMacro(Tagging, bool);
@@ -107,14 +114,19 @@ public:
   ///@}
 
   ///@{
-  /// Stage times in seconds: face order (sort), draw, flush (resolve),
-  /// composite; the table's last build (kept until the next build).
+  /// Stage times in seconds: face order (sort and gather), upload, draw,
+  /// flush (resolve), read-backs (violation count, kept result), composite;
+  /// the table's last build (kept until the next build).
   vtkSetMacro(SortSeconds, double);
   vtkGetMacro(SortSeconds, double);
+  vtkSetMacro(UploadSeconds, double);
+  vtkGetMacro(UploadSeconds, double);
   vtkSetMacro(DrawSeconds, double);
   vtkGetMacro(DrawSeconds, double);
   vtkSetMacro(FlushSeconds, double);
   vtkGetMacro(FlushSeconds, double);
+  vtkSetMacro(ReadbackSeconds, double);
+  vtkGetMacro(ReadbackSeconds, double);
   vtkSetMacro(CompositeSeconds, double);
   vtkGetMacro(CompositeSeconds, double);
   vtkSetMacro(TableSeconds, double);
@@ -137,6 +149,7 @@ private:
   vtkIdType BoundaryRelations = 0;
   double BoundaryLayerSeconds = 0.0;
   bool Tagging = false;
+  bool OpaqueGeometry = false;
   int PlaneCount = 0;
   vtkIdType SectionTriangles = 0;
   double SectionSeconds = 0.0;
@@ -145,9 +158,11 @@ private:
   vtkIdType Fragments = 0;
   vtkIdType FacesDrawn = 0;
   double SortSeconds = 0.0;
+  double UploadSeconds = 0.0;
   double DrawSeconds = 0.0;
   double FlushSeconds = 0.0;
   double CompositeSeconds = 0.0;
+  double ReadbackSeconds = 0.0;
   double TableSeconds = 0.0;
 };
 

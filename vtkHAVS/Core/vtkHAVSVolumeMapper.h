@@ -223,7 +223,9 @@ public:
    * Count order violations: fragments the k-buffer composited out of depth
    * order (nearer than what their pixel had been integrated to), i.e. pixels
    * where the face order plus k were not enough and the image is not exact.
-   * On by default; the count is read back after each frame (a GPU sync).
+   * Off by default (the counter is then compiled out of the shaders; Automatic
+   * counts while it probes the centroid order). When on, the count is read
+   * back after each frame (a GPU sync).
    */
   vtkSetMacro(CountOrderViolations, bool);
   vtkGetMacro(CountOrderViolations, bool);
@@ -365,6 +367,7 @@ public:
     int BlendMode = COMPOSITE_BLEND;
     float TerminationOpacity = 1.0f;
     bool Tagging = true;       ///< boundary fragments carry their entry/exit role
+    bool Opaque = true;        ///< opaque geometry may be in the depth buffer (rays end there)
     float GapLength = 3.0e38f; ///< segments longer than this contribute nothing (3e38: off)
     bool Composite = true;     ///< composite the result over the window (else keep it)
     bool CountViolations = true;
@@ -379,9 +382,11 @@ public:
     vtkIdType Violations = 0;
     std::vector<int> ViolationPixels;
     vtkIdType Fragments = 0;
+    double UploadSeconds = 0.0;
     double DrawSeconds = 0.0;
     double FlushSeconds = 0.0;
     double CompositeSeconds = 0.0;
+    double ReadbackSeconds = 0.0;
   };
 
 protected:
@@ -414,7 +419,7 @@ protected:
   int BoundaryMode = BoundaryAutomatic;
   int VisibilityOrder = VisibilityOrderCentroid;
   int NonConvexMethod = 1; // vtkHAVSVisibilityOrder::NonConvexBoundaryLayers
-  bool CountOrderViolations = true;
+  bool CountOrderViolations = false;
   bool PlaneSections = true;
 
 private:
@@ -423,7 +428,7 @@ private:
 
   bool PrepareMesh(vtkVolume* volume);
   bool PrepareTable(vtkVolume* volume);
-  FrameRequest MakeRequest(const vtkHAVSViewFrame& view, int path, int k);
+  FrameRequest MakeRequest(const vtkHAVSViewFrame& view, int path, int k, bool opaque);
   void WarnOnce(int which, const char* message);
 
   vtkNew<vtkHAVSMesh> Mesh;

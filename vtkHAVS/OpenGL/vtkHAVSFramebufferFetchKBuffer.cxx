@@ -95,7 +95,8 @@ bool vtkHAVSFramebufferFetchKBuffer::Clear(vtkHAVSGLPassContext&)
 bool vtkHAVSFramebufferFetchKBuffer::Draw(vtkHAVSGLPassContext& context)
 {
   vtkShaderProgram* program =
-    context.FaceProgram(vtkHAVSKBufferShaders::FetchDrawShader(context.Request.K));
+    context.FaceProgram(
+    vtkHAVSKBufferShaders::FetchDrawShader(context.Request.K, context.ShaderFeatures()));
   if (program)
   {
     context.DrawFaces(program);
@@ -111,7 +112,8 @@ bool vtkHAVSFramebufferFetchKBuffer::Resolve(vtkHAVSGLPassContext& context)
     t->Activate();
   }
   vtkShaderProgram* program = context.QuadProgram(vtkHAVSKBufferShaders::ResolveShader(
-    vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, context.Request.K, false));
+    vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, context.Request.K, false,
+    context.ShaderFeatures()));
   if (program)
   {
     program->SetUniformi("havsColorTexture", this->Targets[0]->GetTextureUnit());

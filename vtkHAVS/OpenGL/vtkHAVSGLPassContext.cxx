@@ -53,6 +53,15 @@ int vtkHAVSGLPassContext::Height() const
   return this->Targets->GetSize()[1];
 }
 
+vtkHAVSKBufferShaders::Features vtkHAVSGLPassContext::ShaderFeatures() const
+{
+  vtkHAVSKBufferShaders::Features f;
+  f.CountViolations = this->Request.CountViolations;
+  f.Tagging = this->Request.Tagging;
+  f.Opaque = this->Request.Opaque;
+  return f;
+}
+
 //------------------------------------------------------------------------------
 vtkShaderProgram* vtkHAVSGLPassContext::Program(
   const std::string& vertexShader, const std::string& fragmentShader)

@@ -196,27 +196,32 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
     return false;
   }
   this->PrepareWindow(window);
-  if (!this->Upload(request))
-  {
-    return false;
-  }
-  const vtkHAVSViewFrame& view = *request.View;
-  const int width = view.Width, height = view.Height;
-  vtkOpenGLState* state = window->GetState();
-  this->Targets->Resize(width, height);
-  this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height);
-  vtkHAVSGLPassContext context(window, this->GLMesh, this->GLTable, this->Targets, request);
-  const bool extremum = request.BlendMode != COMPOSITE_BLEND;
-  vtkHAVSKBuffer* kbuffer = this->GetKBuffer(request.Path);
-  auto now = [&request]()
-  {
-    if (!request.MeasureStages)
+  const bool measure = request.MeasureStages;
+  auto now = [measure]() {
+    if (!measure)
     {
       return 0.0;
     }
     glFinish();
     return vtkTimerLog::GetUniversalTime();
   };
+  const double uploadStart = now();
+  if (!this->Upload(request))
+  {
+    return false;
+  }
+  result.UploadSeconds = now() - uploadStart;
+  const vtkHAVSViewFrame& view = *request.View;
+  const int width = view.Width, height = view.Height;
+  vtkOpenGLState* state = window->GetState();
+  this->Targets->Resize(width, height);
+  if (request.Opaque)
+  {
+    this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height);
+  }
+  vtkHAVSGLPassContext context(window, this->GLMesh, this->GLTable, this->Targets, request);
+  const bool extremum = request.BlendMode != COMPOSITE_BLEND;
+  vtkHAVSKBuffer* kbuffer = this->GetKBuffer(request.Path);
 
   vtkHAVSGLScopedPassState passState(state);
   state->vtkglDisable(GL_BLEND);
@@ -255,6 +260,7 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   }
 
   // Read backs.
+  const double tr = now();
   if (ok && !request.RasterBoundOnly && !extremum && request.CountViolations)
   {
     result.Violations =
@@ -281,7 +287,8 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   }
   const double t3 = now();
   result.DrawSeconds = t1 - t0;
-  result.FlushSeconds = t2 - t1;
+  result.FlushSeconds = tr - t1;
+  result.ReadbackSeconds = t2 - tr;
   result.CompositeSeconds = t3 - t2;
   if (!ok)
   {

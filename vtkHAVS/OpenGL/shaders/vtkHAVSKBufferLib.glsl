@@ -26,6 +26,21 @@
 // goes on inside, and a ray leaving through an edge shared by an internal and
 // a boundary face ends outside.
 
+// Features compiled in or out per frame (vtkHAVSKBufferShaders::Features):
+// HAVS_COUNT_VIOLATIONS the order-violation counter and its tie tolerance;
+// HAVS_TAGGING the boundary role of a mesh face's fragment (a per-fragment
+// fetch); HAVS_OPAQUE the opaque surface that ends the rays (a per-fragment
+// depth fetch). A feature a frame does not need costs nothing.
+#ifndef HAVS_COUNT_VIOLATIONS
+#define HAVS_COUNT_VIOLATIONS 1
+#endif
+#ifndef HAVS_TAGGING
+#define HAVS_TAGGING 1
+#endif
+#ifndef HAVS_OPAQUE
+#define HAVS_OPAQUE 1
+#endif
+
 const float HAVS_EMPTY = 3.0e38;     // an empty waiting slot
 const float HAVS_NO_FRONT = -2.0e38; // nothing composited yet
 const float HAVS_DONE = -3.0e38;     // the ray has ended (opaque surface reached)
@@ -110,13 +125,18 @@ float havsDistance(vec3 positionRC)
 // it takes screen-space derivatives).
 float havsTieTolerance(vec3 positionRC)
 {
+#if HAVS_COUNT_VIOLATIONS
   float d = havsDistance(positionRC);
   return HAVS_TIE * abs(d) + fwidth(d) * 0.5;
+#else
+  return 0.0;
+#endif
 }
 
 // Eye distance of the opaque surface at this pixel, HAVS_EMPTY when none.
 float havsOpaqueDistance(vec2 fragCoord)
 {
+#if HAVS_OPAQUE
   float z = texelFetch(havsOpaqueDepth, ivec2(fragCoord), 0).r;
   if (z >= 1.0)
   {
@@ -125,6 +145,9 @@ float havsOpaqueDistance(vec2 fragCoord)
   vec4 ndc = vec4(fragCoord / havsViewportSize * 2.0 - 1.0, z * 2.0 - 1.0, 1.0);
   vec4 p = havsDCRC * ndc;
   return havsDistance(p.xyz / p.w);
+#else
+  return HAVS_EMPTY;
+#endif
 }
 
 // Premultiplied colour and opacity of the segment from a to b.
@@ -178,10 +201,12 @@ bool havsRayEnded(vec4 color, vec2 front)
 void havsInsert(
   inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float opaqueDistance, float tolerance)
 {
+#if HAVS_COUNT_VIOLATIONS
   if (E[0].x > HAVS_NO_FRONT && f.x < E[0].x - tolerance)
   {
     havsCountViolation();
   }
+#endif
   vec2 leaving = f;
 #if HAVS_K > 1
   int nearest = 0;
@@ -262,7 +287,8 @@ vec2 havsFaceEntry(vec3 positionRC, float scalar)
   {
     code += 2.0;
   }
-  else if (havsTagging != 0 && texelFetch(havsFaceIsBoundary, gl_PrimitiveID).r != 0u)
+  else if (HAVS_TAGGING != 0 && havsTagging != 0 &&
+    texelFetch(havsFaceIsBoundary, gl_PrimitiveID).r != 0u)
   {
     code += gl_FrontFacing ? 4.0 : 2.0;
   }
@@ -278,10 +304,12 @@ vec2 havsFaceEntry(vec3 positionRC, float scalar)
 // depth order, in particular for any list no longer than HAVS_K - 1.
 void havsRetreat(inout vec4 color, inout vec2 back, vec2 p, float opaqueDistance)
 {
+#if HAVS_COUNT_VIOLATIONS
   if (back.x > HAVS_NO_FRONT && p.x > back.x + HAVS_TIE * abs(back.x))
   {
     havsCountViolation();
   }
+#endif
   if (back.x > HAVS_NO_FRONT && p.x < opaqueDistance)
   {
     vec2 b = back;
