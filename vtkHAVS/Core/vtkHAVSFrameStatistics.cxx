@@ -32,11 +32,12 @@ void vtkHAVSFrameStatistics::Reset()
   this->PlaneCount = 0;
   this->SectionTriangles = 0;
   this->SectionSeconds = 0.0;
-  this->OrderViolations = 0;
+  this->OrderViolations = -1;
   this->ViolationPixels.clear();
   this->Fragments = 0;
   this->FacesDrawn = 0;
   this->SortSeconds = 0.0;
+  this->GatherSeconds = 0.0;
   this->UploadSeconds = 0.0;
   this->DrawSeconds = 0.0;
   this->FlushSeconds = 0.0;
@@ -83,7 +84,7 @@ void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OrderViolations: " << this->OrderViolations << ", fragments " << this->Fragments
      << ", faces drawn " << this->FacesDrawn << "\n";
   os << indent << "OpaqueGeometry: " << this->OpaqueGeometry << "\n";
-  os << indent << "Seconds: sort " << this->SortSeconds << ", upload " << this->UploadSeconds
+  os << indent << "Seconds: sort " << this->SortSeconds << " (gather " << this->GatherSeconds << "), upload " << this->UploadSeconds
      << ", draw " << this->DrawSeconds << ", flush " << this->FlushSeconds << ", read-backs "
      << this->ReadbackSeconds << ", composite " << this->CompositeSeconds
      << ", table (last build) " << this->TableSeconds << "\n";

@@ -94,7 +94,8 @@ public:
   ///@}
 
   ///@{
-  /// Fragments composited out of depth order (0 when not counted).
+  /// Fragments composited out of depth order (-1 when the frame did not count
+  /// them: vtkHAVSVolumeMapper::SetCountOrderViolations).
   vtkSetMacro(OrderViolations, vtkIdType);
   vtkGetMacro(OrderViolations, vtkIdType);
   /// Where the first ones were: x, y in the viewport, two values each.
@@ -114,11 +115,14 @@ public:
   ///@}
 
   ///@{
-  /// Stage times in seconds: face order (sort and gather), upload, draw,
+  /// Stage times in seconds: face order (sort and gather; the boundary layers
+  /// and the gather are parts of it, see BoundaryLayerSeconds), upload, draw,
   /// flush (resolve), read-backs (violation count, kept result), composite;
   /// the table's last build (kept until the next build).
   vtkSetMacro(SortSeconds, double);
   vtkGetMacro(SortSeconds, double);
+  vtkSetMacro(GatherSeconds, double);
+  vtkGetMacro(GatherSeconds, double);
   vtkSetMacro(UploadSeconds, double);
   vtkGetMacro(UploadSeconds, double);
   vtkSetMacro(DrawSeconds, double);
@@ -153,11 +157,12 @@ private:
   int PlaneCount = 0;
   vtkIdType SectionTriangles = 0;
   double SectionSeconds = 0.0;
-  vtkIdType OrderViolations = 0;
+  vtkIdType OrderViolations = -1;
   std::vector<int> ViolationPixels;
   vtkIdType Fragments = 0;
   vtkIdType FacesDrawn = 0;
   double SortSeconds = 0.0;
+  double GatherSeconds = 0.0;
   double UploadSeconds = 0.0;
   double DrawSeconds = 0.0;
   double FlushSeconds = 0.0;

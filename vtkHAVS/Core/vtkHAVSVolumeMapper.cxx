@@ -404,11 +404,12 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   stats->SetBoundaryRelations(this->FaceOrder->GetLastBoundaryRelations());
   stats->SetBoundaryLayerSeconds(this->FaceOrder->GetLastBoundaryLayerSeconds());
   stats->SetSortSeconds(this->FaceOrder->GetLastSeconds());
+  stats->SetGatherSeconds(this->FaceOrder->GetLastGatherSeconds());
   stats->SetTagging(request.Tagging);
   stats->SetPlaneCount(this->Planes->GetNumberOfPlanes());
   stats->SetSectionTriangles(this->Planes->GetNumberOfSectionTriangles());
   stats->SetSectionSeconds(this->Planes->GetSectionSeconds());
-  stats->SetOrderViolations(result.Violations);
+  stats->SetOrderViolations(request.CountViolations ? result.Violations : -1);
   stats->SetOrderViolationPixels(result.ViolationPixels);
   stats->SetFragments(result.Fragments);
   stats->SetFacesDrawn(this->Mesh->GetFaceSet()->GetNumberOfFaces());
