@@ -101,10 +101,8 @@ void vtkHAVSGLPassContext::SetCommonUniforms(vtkShaderProgram* program)
   program->SetUniform3f("havsDirectionOfProjection", this->Direction);
   program->SetUniformMatrix4x4("havsMCRC", this->ModelToEyeRelative);
   program->SetUniformMatrix4x4("havsMCDC", this->ModelToClip);
-  program->SetUniformi("havsFaceIsBoundary", this->Mesh->GetBoundaryTexture()->GetTextureUnit());
   program->SetUniformi(
     "havsMinimum", r.BlendMode == vtkHAVSVolumeMapper::MINIMUM_INTENSITY_BLEND ? 1 : 0);
-  program->SetUniformi("havsTagging", r.Tagging ? 1 : 0);
   program->SetUniformf("havsGapLength", r.GapLength);
   program->SetUniformi("havsRole", 0);
   program->SetUniformi("havsOwnPlane", -1);

@@ -164,13 +164,16 @@ bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request)
     this->Uploaded.Geometry = mesh->GetBuildTime();
     this->Uploaded.Order = 0;
   }
-  if (this->Uploaded.Order != request.DrawOrderVersion)
+  if (this->Uploaded.Order != request.DrawOrderVersion ||
+    this->Uploaded.Tagged != request.Tagging)
   {
-    if (!this->GLMesh->UploadFaceOrder(*request.DrawTriangles, *request.DrawBoundary))
+    if (!this->GLMesh->UploadFaceOrder(
+          *request.DrawTriangles, *request.DrawBoundary, request.Tagging))
     {
       return false;
     }
     this->Uploaded.Order = request.DrawOrderVersion;
+    this->Uploaded.Tagged = request.Tagging;
   }
   if (this->Uploaded.Sections != request.Planes->GetSectionsVersion())
   {
@@ -227,8 +230,7 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   state->vtkglDisable(GL_BLEND);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   state->vtkglViewport(0, 0, width, height);
-  vtkTextureObject* textures[] = { this->GLTable->GetTable(), this->Targets->GetOpaqueDepth(),
-    this->GLMesh->GetBoundaryTexture() };
+  vtkTextureObject* textures[] = { this->GLTable->GetTable(), this->Targets->GetOpaqueDepth() };
   for (vtkTextureObject* t : textures)
   {
     t->Activate();

@@ -96,6 +96,7 @@ private:
   {
     vtkMTimeType Geometry = 0;
     vtkMTimeType Order = 0;
+    bool Tagged = false; // the order went up with boundary vertices
     vtkMTimeType Sections = 0;
     vtkMTimeType Table = 0;
   };

@@ -28,8 +28,7 @@
 
 // Features compiled in or out per frame (vtkHAVSKBufferShaders::Features):
 // HAVS_COUNT_VIOLATIONS the order-violation counter and its tie tolerance;
-// HAVS_TAGGING the boundary role of a mesh face's fragment (a per-fragment
-// fetch); HAVS_OPAQUE the opaque surface that ends the rays (a per-fragment
+// HAVS_TAGGING the boundary role of a boundary face's fragment (its facing); HAVS_OPAQUE the opaque surface that ends the rays (a per-fragment
 // depth fetch). A feature a frame does not need costs nothing.
 #ifndef HAVS_COUNT_VIOLATIONS
 #define HAVS_COUNT_VIOLATIONS 1
@@ -58,8 +57,6 @@ uniform int havsParallel;
 uniform vec3 havsDirectionOfProjection;
 
 // Boundary handling and clipping (see vtkHAVSVolumeMapper::SetBoundaryMode).
-uniform usamplerBuffer havsFaceIsBoundary; // per primitive of the mesh draw, in draw order
-uniform int havsTagging;     // 1: boundary faces carry their entry/exit role
 uniform float havsGapLength; // segments longer than this contribute nothing (VTK 5's
                              // heuristic; 3e38 = off)
 uniform int havsRole;        // what is drawn: 0 mesh faces, 1 a section that enters the
@@ -275,22 +272,29 @@ bool havsClipped(vec3 positionRC)
 
 // The k-buffer entry of the fragment being shaded: a mesh face's (tagged by
 // the facing of its outward-wound boundary face when tagging is on) or a
-// section's (an entry or an exit by its role).
+// section's (an entry or an exit by its role). With tagging, a boundary face
+// is drawn with vertices of its own whose scalar is + 2 (vtkHAVSGLMesh): the
+// fragment knows it is on the boundary from its scalar alone.
 vec2 havsFaceEntry(vec3 positionRC, float scalar)
 {
-  float code = clamp(scalar, 0.0, 1.0);
-  if (havsRole == 1)
+  float code;
+#if HAVS_TAGGING
+  if (scalar > 1.5)
   {
-    code += 4.0;
+    code = clamp(scalar - 2.0, 0.0, 1.0) + (gl_FrontFacing ? 4.0 : 2.0);
   }
-  else if (havsRole == 2)
+  else
+#endif
   {
-    code += 2.0;
-  }
-  else if (HAVS_TAGGING != 0 && havsTagging != 0 &&
-    texelFetch(havsFaceIsBoundary, gl_PrimitiveID).r != 0u)
-  {
-    code += gl_FrontFacing ? 4.0 : 2.0;
+    code = clamp(scalar, 0.0, 1.0);
+    if (havsRole == 1)
+    {
+      code += 4.0;
+    }
+    else if (havsRole == 2)
+    {
+      code += 2.0;
+    }
   }
   return vec2(havsDistance(positionRC), code);
 }
