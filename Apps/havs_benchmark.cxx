@@ -286,7 +286,8 @@ int RunWorker(const Options& o)
       else if (config == "havs-default")
       {
         // The mapper as a user gets it: nothing set but the stage timer.
-        m->SetEarlyRayTerminationOpacity(vtkNew<vtkHAVSVolumeMapper>()->GetEarlyRayTerminationOpacity());
+        m->SetEarlyRayTerminationOpacity(
+          vtkNew<vtkHAVSVolumeMapper>()->GetEarlyRayTerminationOpacity());
       }
       else
       {
@@ -393,7 +394,8 @@ int RunWorker(const Options& o)
         camera->GetPosition(eye);
         camera->GetDirectionOfProjection(dop);
         const double back = 0.5 * grid->GetLength();
-        opaqueActor->SetPosition(eye[0] - back * dop[0], eye[1] - back * dop[1], eye[2] - back * dop[2]);
+        opaqueActor->SetPosition(
+          eye[0] - back * dop[0], eye[1] - back * dop[1], eye[2] - back * dop[2]);
       }
       for (int r = 0; r < o.Repeats; ++r)
       {
@@ -456,10 +458,9 @@ int RunWorker(const Options& o)
               "over1=%.6f peak_mb=%.1f smp=%s threads=%d\n",
     dataset.c_str(), config.c_str(), o.Size, static_cast<long long>(tets), viewsDone, frame.size(),
     Median(frame), frame.empty() ? NAN : *std::min_element(frame.begin(), frame.end()),
-    frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort), Median(gather),
-    Median(draw),
-    Median(flush), Median(composite), Median(upload), Median(readback), Median(layers), rmse,
-    maxError, pixels > 0 ? over1 / pixels : NAN,
+    frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort),
+    Median(gather), Median(draw), Median(flush), Median(composite), Median(upload),
+    Median(readback), Median(layers), rmse, maxError, pixels > 0 ? over1 / pixels : NAN,
     PeakMegabytes(), vtkSMPTools::GetBackend(), vtkSMPTools::GetEstimatedNumberOfThreads());
   return EXIT_SUCCESS;
 }
@@ -483,9 +484,9 @@ std::map<std::string, std::string> ParseResult(const std::string& line)
 using Row = std::map<std::string, std::string>;
 
 const char* const kColumns[] = { "dataset", "config", "size", "tets", "views", "frames",
-  "ms_median", "ms_min", "ms_max", "sort_ms", "gather_ms", "draw_ms", "flush_ms", "composite_ms", "upload_ms",
-  "readback_ms", "layers_ms", "mtets_per_s",
-  "rmse", "max", "over1", "peak_mb", "smp", "threads", "command" };
+  "ms_median", "ms_min", "ms_max", "sort_ms", "gather_ms", "draw_ms", "flush_ms", "composite_ms",
+  "upload_ms", "readback_ms", "layers_ms", "mtets_per_s", "rmse", "max", "over1", "peak_mb", "smp",
+  "threads", "command" };
 
 /// A CSV field, quoted where it holds a comma or a quote.
 std::string CsvField(const std::string& text)
@@ -790,7 +791,8 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
       const double gatherMs = std::isfinite(Value(r, "gather_ms")) ? Value(r, "gather_ms") : 0.0;
       const double layersMs = std::isfinite(Value(r, "layers_ms")) ? Value(r, "layers_ms") : 0.0;
       double known = sortMs;
-      for (const char* stage : { "upload_ms", "draw_ms", "flush_ms", "readback_ms", "composite_ms" })
+      for (const char* stage :
+        { "upload_ms", "draw_ms", "flush_ms", "readback_ms", "composite_ms" })
       {
         known += std::isfinite(Value(r, stage)) ? Value(r, stage) : 0.0;
       }
@@ -798,8 +800,8 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
       std::snprintf(order, sizeof(order), "%.1f", sortMs - gatherMs - layersMs);
       std::snprintf(other, sizeof(other), "%.1f", total - known);
       md << "| " << r.at("config") << " | " << Cell(r, "ms_median", "%.1f") << " | " << order
-         << " | " << Cell(r, "layers_ms", "%.1f") << " | " << Cell(r, "gather_ms", "%.1f")
-         << " | " << Cell(r, "upload_ms", "%.1f") << " | " << Cell(r, "draw_ms", "%.1f") << " | "
+         << " | " << Cell(r, "layers_ms", "%.1f") << " | " << Cell(r, "gather_ms", "%.1f") << " | "
+         << Cell(r, "upload_ms", "%.1f") << " | " << Cell(r, "draw_ms", "%.1f") << " | "
          << Cell(r, "flush_ms", "%.1f") << " | " << Cell(r, "readback_ms", "%.1f") << " | "
          << Cell(r, "composite_ms", "%.1f") << " | " << other << " |\n";
     }
@@ -837,9 +839,9 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
         char dt[32], dd[32];
         std::snprintf(dt, sizeof(dt), "%+.1f", Value(r, "ms_median") - havs6);
         std::snprintf(dd, sizeof(dd), "%+.1f", Value(r, "draw_ms") - Value(base, "draw_ms"));
-        md << "| " << v[0] << " | " << v[1] << " | " << Cell(r, "ms_median", "%.1f") << " | "
-           << dt << " | " << Cell(r, "draw_ms", "%.1f") << " | " << dd << " | "
-           << Cell(r, "rmse", "%.5f") << " |\n";
+        md << "| " << v[0] << " | " << v[1] << " | " << Cell(r, "ms_median", "%.1f") << " | " << dt
+           << " | " << Cell(r, "draw_ms", "%.1f") << " | " << dd << " | " << Cell(r, "rmse", "%.5f")
+           << " |\n";
       }
     }
     // The measures of the default settings.
@@ -971,14 +973,13 @@ int main(int argc, char* argv[])
                  : "loxpostvtk,bluntfin,combustor,loxpost,gen1M,gen4M,gen10M"));
   o.Configs = havsapp::SplitList(!configs.empty()
       ? configs
-      : (o.Quick
-            ? "havs-default,havs-k2,havs-k6,havs-k14,raster-bound,sort-bound,pt,raycast"
-            : "havs-default,havs-k1,havs-k2,havs-k4,havs-k6,havs-k8,havs-k14,havs-k14-table32,"
-              "havs-k14-table64,havs-k6-count,havs-k6-untagged,havs-k6-noterm,havs-k6-opaque,"
-              "havs-k6-table64,havs-k6-table256,havs-k6-auto,havs-k6-mpvo,"
-              "havs-k1-mpvo,havs-k2-mpvo,havs-k2-mpvo-convex,havs-k2-auto,havs-lists,"
-              "raster-bound,sort-bound,pt,"
-              "zsweep,raycast"));
+      : (o.Quick ? "havs-default,havs-k2,havs-k6,havs-k14,raster-bound,sort-bound,pt,raycast"
+                 : "havs-default,havs-k1,havs-k2,havs-k4,havs-k6,havs-k8,havs-k14,havs-k14-table32,"
+                   "havs-k14-table64,havs-k6-count,havs-k6-untagged,havs-k6-noterm,havs-k6-opaque,"
+                   "havs-k6-table64,havs-k6-table256,havs-k6-auto,havs-k6-mpvo,"
+                   "havs-k1-mpvo,havs-k2-mpvo,havs-k2-mpvo-convex,havs-k2-auto,havs-lists,"
+                   "raster-bound,sort-bound,pt,"
+                   "zsweep,raycast"));
   if (o.Worker)
   {
     return RunWorker(o);

@@ -40,8 +40,8 @@
 #include "vtkTransformFilter.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
-#include <algorithm>
 #include "vtkVolumeProperty.h"
+#include <algorithm>
 
 #include <cmath>
 #include <cstdlib>
@@ -328,9 +328,10 @@ void TestExtremumBlend()
     property->GetRGBTransferFunction()->GetColor(s, rgb);
     const double a = property->GetScalarOpacity()->GetValue(s);
     const float* p = &result[4 * (24 * 48 + 24)];
-    std::cout << (minimum ? "minimum" : "maximum") << (run == 2 ? " (tagged)" : "") << " intensity: " << p[0] << " " << p[1] << " "
-              << p[2] << " " << p[3] << " (expected " << rgb[0] * a << " " << rgb[1] * a << " "
-              << rgb[2] * a << " " << a << ")" << std::endl;
+    std::cout << (minimum ? "minimum" : "maximum") << (run == 2 ? " (tagged)" : "")
+              << " intensity: " << p[0] << " " << p[1] << " " << p[2] << " " << p[3]
+              << " (expected " << rgb[0] * a << " " << rgb[1] * a << " " << rgb[2] * a << " " << a
+              << ")" << std::endl;
     havstest::Check(
       std::fabs(p[3] - a) < 1e-2 && std::fabs(p[0] - rgb[0] * a) < 1e-2, "extremum blend colour");
     havstest::Check(mapper->GetActiveKBufferSize() == 0, "extremum blend needs no k-buffer");

@@ -143,11 +143,11 @@ if args.mode == "serial":
         display.UpdatePropertyInformation()
         return display.GetProperty("HAVSLastOrderViolations").GetElement(0)
 
-    check(mapper.GetVisibilityOrder() == display.HAVSVisibilityOrder == 2
-          and not mapper.GetCountOrderViolations(),
-          "default: the Automatic order, violations counted only while it probes")
+    check(mapper.GetVisibilityOrder() == 1 and display.HAVSVisibilityOrder == "MPVO (exact)"
+          and not mapper.GetCountOrderViolations() and violations() == -1,
+          "default: the MPVO order, violations not counted (%d)" % violations())
     display.HAVSCountOrderViolations = 1
-    display.HAVSVisibilityOrder = 0
+    display.HAVSVisibilityOrder = "Centroid sort"
     display.HAVSKBufferSize = 1
     Render(view)
     centroid_k1 = violations()
@@ -155,18 +155,18 @@ if args.mode == "serial":
           and centroid_k1 > 0,
           "negative control: the centroid order at k = 1 violates the depth order (%d)"
           % centroid_k1)
-    display.HAVSVisibilityOrder = 1
-    display.HAVSNonConvexMethod = 2
+    display.HAVSVisibilityOrder = "MPVO (exact)"
+    display.HAVSNonConvexMethod = "Convexification"
     Render(view)
     check(mapper.GetVisibilityOrder() == 1 and mapper.GetNonConvexMethod() == 2
           and mapper.GetLastVisibilityOrder() == 1,
           "the MPVO order with the convexification reached the mapper")
-    display.HAVSNonConvexMethod = 1
+    display.HAVSNonConvexMethod = "Boundary layers"
     display.HAVSKBufferSize = 2
     Render(view)
     check(mapper.GetNonConvexMethod() == 1 and violations() == 0,
           "MPVO with the boundary layers at k = 2: no violations (%d)" % violations())
-    display.HAVSVisibilityOrder = 2
+    display.HAVSVisibilityOrder = "MPVO (exact)"
     display.HAVSCountOrderViolations = 0
     display.HAVSKBufferSize = 14
     Render(view)

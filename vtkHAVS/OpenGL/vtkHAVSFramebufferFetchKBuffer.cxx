@@ -94,8 +94,7 @@ bool vtkHAVSFramebufferFetchKBuffer::Clear(vtkHAVSGLPassContext&)
 //------------------------------------------------------------------------------
 bool vtkHAVSFramebufferFetchKBuffer::Draw(vtkHAVSGLPassContext& context)
 {
-  vtkShaderProgram* program =
-    context.FaceProgram(
+  vtkShaderProgram* program = context.FaceProgram(
     vtkHAVSKBufferShaders::FetchDrawShader(context.Request.K, context.ShaderFeatures()));
   if (program)
   {
@@ -111,9 +110,9 @@ bool vtkHAVSFramebufferFetchKBuffer::Resolve(vtkHAVSGLPassContext& context)
   {
     t->Activate();
   }
-  vtkShaderProgram* program = context.QuadProgram(vtkHAVSKBufferShaders::ResolveShader(
-    vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, context.Request.K, false,
-    context.ShaderFeatures()));
+  vtkShaderProgram* program = context.QuadProgram(
+    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFramebufferFetch,
+      context.Request.K, false, context.ShaderFeatures()));
   if (program)
   {
     program->SetUniformi("havsColorTexture", this->Targets[0]->GetTextureUnit());

@@ -123,17 +123,17 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
       this->VertexCapacity = vertices;
     }
     glBindBuffer(GL_ARRAY_BUFFER, this->PointBuffer);
-    glBufferSubData(GL_ARRAY_BUFFER, 3 * numPoints * sizeof(float), points.size() * sizeof(float),
-      points.data());
+    glBufferSubData(
+      GL_ARRAY_BUFFER, 3 * numPoints * sizeof(float), points.size() * sizeof(float), points.data());
     glBindBuffer(GL_ARRAY_BUFFER, this->ScalarBuffer);
-    glBufferSubData(GL_ARRAY_BUFFER, numPoints * sizeof(float), scalars.size() * sizeof(float),
-      scalars.data());
+    glBufferSubData(
+      GL_ARRAY_BUFFER, numPoints * sizeof(float), scalars.size() * sizeof(float), scalars.data());
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     indices = &rewritten;
   }
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, indices->size() * sizeof(uint32_t), indices->data(),
-    GL_STREAM_DRAW);
+  glBufferData(
+    GL_ELEMENT_ARRAY_BUFFER, indices->size() * sizeof(uint32_t), indices->data(), GL_STREAM_DRAW);
   glBindVertexArray(0);
   this->IndexCount = static_cast<GLsizei>(indices->size());
   return true;

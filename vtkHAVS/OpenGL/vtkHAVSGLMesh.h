@@ -86,7 +86,7 @@ private:
   GLuint ScalarBuffer = 0;
   GLuint IndexBuffer = 0;
   GLsizei IndexCount = 0;
-  std::vector<float> Points;  // as uploaded, for the boundary vertices
+  std::vector<float> Points; // as uploaded, for the boundary vertices
   std::vector<float> Scalars;
   size_t VertexCapacity = 0; // vertices the point and scalar buffers hold
 

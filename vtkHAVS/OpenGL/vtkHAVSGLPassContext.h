@@ -23,7 +23,7 @@
 
 #include "vtkHAVSKBufferShaders.h" // For Features
 #include "vtkHAVSVolumeMapper.h"   // For FrameRequest
-#include "vtkOpenGLState.h"      // For the scoped state savers
+#include "vtkOpenGLState.h"        // For the scoped state savers
 
 #include <string> // For std::string
 

@@ -91,9 +91,9 @@ bool vtkHAVSInterlockKBuffer::Draw(vtkHAVSGLPassContext& context)
 bool vtkHAVSInterlockKBuffer::Resolve(vtkHAVSGLPassContext& context)
 {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->PixelEntries);
-  vtkShaderProgram* program = context.QuadProgram(vtkHAVSKBufferShaders::ResolveShader(
-    vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock, context.Request.K, false,
-    context.ShaderFeatures()));
+  vtkShaderProgram* program = context.QuadProgram(
+    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock,
+      context.Request.K, false, context.ShaderFeatures()));
   if (program)
   {
     context.DrawFullViewport();

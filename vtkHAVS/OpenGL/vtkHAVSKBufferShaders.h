@@ -51,7 +51,6 @@ public:
   /// What a k-buffer shader compiles in (vtkHAVSKBufferShaderFeatures).
   using Features = vtkHAVSKBufferShaderFeatures;
 
-
   /// Vertex shader of the passes that rasterize the faces.
   static std::string FaceVertexShader();
   /// Vertex shader of the full-viewport passes.

@@ -164,8 +164,7 @@ bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request)
     this->Uploaded.Geometry = mesh->GetBuildTime();
     this->Uploaded.Order = 0;
   }
-  if (this->Uploaded.Order != request.DrawOrderVersion ||
-    this->Uploaded.Tagged != request.Tagging)
+  if (this->Uploaded.Order != request.DrawOrderVersion || this->Uploaded.Tagged != request.Tagging)
   {
     if (!this->GLMesh->UploadFaceOrder(
           *request.DrawTriangles, *request.DrawBoundary, request.Tagging))
@@ -200,7 +199,8 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   }
   this->PrepareWindow(window);
   const bool measure = request.MeasureStages;
-  auto now = [measure]() {
+  auto now = [measure]()
+  {
     if (!measure)
     {
       return 0.0;

@@ -98,7 +98,7 @@ private:
   void operator=(const vtkHAVSUnstructuredGridVolumeRepresentation&) = delete;
 
   vtkHAVSVolumeMapper* HAVSMapper;
-  int KBufferSize = 6;
+  int KBufferSize = 2;
   int InteractiveKBufferSize = 2;
   bool InteractiveLOD = true;
 };
