@@ -29,6 +29,8 @@ void vtkHAVSFrameStatistics::Reset()
   this->BoundaryLayerSeconds = 0.0;
   this->Tagging = false;
   this->OpaqueGeometry = false;
+  this->OpaqueDepthMultisampled = false;
+  this->OpaqueDepthCaptured = false;
   this->PlaneCount = 0;
   this->SectionTriangles = 0;
   this->SectionSeconds = 0.0;
@@ -83,9 +85,10 @@ void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
      << ", section triangles " << this->SectionTriangles << " (" << this->SectionSeconds << " s)\n";
   os << indent << "OrderViolations: " << this->OrderViolations << ", fragments " << this->Fragments
      << ", faces drawn " << this->FacesDrawn << "\n";
-  os << indent << "OpaqueGeometry: " << this->OpaqueGeometry << "\n";
-  os << indent << "Seconds: sort " << this->SortSeconds << " (gather " << this->GatherSeconds << "), upload " << this->UploadSeconds
-     << ", draw " << this->DrawSeconds << ", flush " << this->FlushSeconds << ", read-backs "
-     << this->ReadbackSeconds << ", composite " << this->CompositeSeconds
-     << ", table (last build) " << this->TableSeconds << "\n";
+  os << indent << "OpaqueGeometry: " << this->OpaqueGeometry << " (depth multisampled "
+     << this->OpaqueDepthMultisampled << ", captured " << this->OpaqueDepthCaptured << ")\n";
+  os << indent << "Seconds: sort " << this->SortSeconds << " (gather " << this->GatherSeconds
+     << "), upload " << this->UploadSeconds << ", draw " << this->DrawSeconds << ", flush "
+     << this->FlushSeconds << ", read-backs " << this->ReadbackSeconds << ", composite "
+     << this->CompositeSeconds << ", table (last build) " << this->TableSeconds << "\n";
 }

@@ -106,6 +106,16 @@ public:
   ///@}
 
   ///@{
+  /// With opaque geometry: whether its depth came from a multisampled
+  /// framebuffer (resolved by a blit), and whether it was captured at all
+  /// (false: the rays were not cut, a warning said so once).
+  vtkSetMacro(OpaqueDepthMultisampled, bool);
+  vtkGetMacro(OpaqueDepthMultisampled, bool);
+  vtkSetMacro(OpaqueDepthCaptured, bool);
+  vtkGetMacro(OpaqueDepthCaptured, bool);
+  ///@}
+
+  ///@{
   /// Fragment-list path: fragments stored.
   vtkSetMacro(Fragments, vtkIdType);
   vtkGetMacro(Fragments, vtkIdType);
@@ -154,6 +164,8 @@ private:
   double BoundaryLayerSeconds = 0.0;
   bool Tagging = false;
   bool OpaqueGeometry = false;
+  bool OpaqueDepthMultisampled = false;
+  bool OpaqueDepthCaptured = false;
   int PlaneCount = 0;
   vtkIdType SectionTriangles = 0;
   double SectionSeconds = 0.0;

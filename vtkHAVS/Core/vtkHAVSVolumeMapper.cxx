@@ -414,6 +414,8 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   stats->SetFragments(result.Fragments);
   stats->SetFacesDrawn(this->Mesh->GetFaceSet()->GetNumberOfFaces());
   stats->SetOpaqueGeometry(request.Opaque);
+  stats->SetOpaqueDepthMultisampled(result.OpaqueDepthMultisampled);
+  stats->SetOpaqueDepthCaptured(result.OpaqueDepthCaptured);
   stats->SetUploadSeconds(result.UploadSeconds);
   stats->SetReadbackSeconds(result.ReadbackSeconds);
   stats->SetDrawSeconds(result.DrawSeconds);

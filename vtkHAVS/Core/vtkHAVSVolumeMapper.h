@@ -387,6 +387,8 @@ public:
     vtkIdType Violations = 0;
     std::vector<int> ViolationPixels;
     vtkIdType Fragments = 0;
+    bool OpaqueDepthMultisampled = false; ///< the opaque depth came from a multisampled framebuffer
+    bool OpaqueDepthCaptured = false;     ///< the opaque depth was read (resolved if multisampled)
     double UploadSeconds = 0.0;
     double DrawSeconds = 0.0;
     double FlushSeconds = 0.0;

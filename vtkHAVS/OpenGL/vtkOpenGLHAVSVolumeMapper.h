@@ -90,6 +90,7 @@ private:
   vtkNew<vtkHAVSFragmentListKBuffer> ListKBuffer;
   vtkNew<vtkHAVSExtremumPass> Extremum;
   vtkNew<vtkHAVSRasterBoundPass> RasterBound;
+  bool WarnedUncapturedDepth = false; ///< the multisampled-depth warning was given
 
   /// The versions of the request's inputs on the GPU (0: none).
   struct UploadedVersions
