@@ -12,6 +12,9 @@
 //   havs_benchmark [--quick] [--size N | --sizes a,b] [--views N] [--repeats N]
 //                  [--datasets a,b,...] [--configs a,b,...] [--output-dir DIR]
 //                  [--cache-dir DIR] [--budget SECONDS] [--from-csv FILE]
+//                  [--dump-case DIR]
+// (--dump-case DIR: only write view 0 of each data set, drawn by the default
+// mapper, as a frame case for Apps/GPUBench/havs_gpu_bench.)
 // (--from-csv a.csv,b.csv: only make the report again from earlier runs' CSVs;
 // rows without a size column take --size.)
 //
@@ -54,6 +57,7 @@
 #include "vtkHAVSStandardViews.h"
 #include "vtkHAVSVisibilityOrder.h"
 #include "vtkHAVSVolumeMapper.h"
+#include "vtkOpenGLHAVSVolumeMapper.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -113,6 +117,7 @@ struct Options
   std::vector<std::string> Configs;
   std::string OutputDir = "Documentation";
   std::string CacheDir = "build/benchmark-cache";
+  std::string DumpCase; // --dump-case DIR: the GPU program's input, then exit
   std::string Self;
 };
 
@@ -196,6 +201,47 @@ double Median(std::vector<double> v)
 }
 
 /// One (data set, configuration): prints a RESULT line.
+/// --dump-case DIR: view 0 of each data set at --size with the default
+/// mapper, its GPU inputs written into DIR/<data set> (vtkHAVSGLFrameCapture)
+/// for Apps/GPUBench/havs_gpu_bench.
+int DumpCases(const Options& o)
+{
+  int failures = 0;
+  for (const std::string& dataset : o.DataSets)
+  {
+    vtkSmartPointer<vtkUnstructuredGrid> grid = vtkHAVSDataSets::Load(dataset);
+    vtkSmartPointer<vtkRenderWindow> window;
+    window.TakeReference(vtkHAVSRenderWindowFactory::CreateRenderWindow());
+    if (!grid || grid->GetNumberOfCells() == 0 || !window)
+    {
+      std::cerr << "cannot load " << dataset << " or make a window" << std::endl;
+      ++failures;
+      continue;
+    }
+    window->SetSize(o.Size, o.Size);
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetBackground(0, 0, 0);
+    window->AddRenderer(renderer);
+    vtkNew<vtkOpenGLHAVSVolumeMapper> mapper; // the defaults, as a user gets them
+    mapper->SetInputData(grid);
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(mapper);
+    volume->SetProperty(MakeProperty(grid));
+    renderer->AddVolume(volume);
+    vtkHAVSStandardViews::PlaceCamera(renderer->GetActiveCamera(), grid, 0);
+    window->Render();
+    const std::string dir = o.DumpCase + "/" + dataset + "_" + std::to_string(o.Size);
+    mapper->SetCaptureDirectory(dir.c_str());
+    window->Render();
+    const bool ok = mapper->GetLastCaptureSucceeded();
+    std::cout << (ok ? "wrote " : "FAILED ") << dir << " (" << grid->GetNumberOfCells()
+              << " cells, " << mapper->GetActiveKBufferPathName()
+              << ", k = " << mapper->GetKBufferSize() << ")" << std::endl;
+    failures += ok ? 0 : 1;
+  }
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int RunWorker(const Options& o)
 {
   const std::string dataset = o.DataSets.at(0), config = o.Configs.at(0);
@@ -941,12 +987,14 @@ int main(int argc, char* argv[])
       o.CacheDir = next();
     else if (a == "--from-csv")
       fromCsv = next();
+    else if (a == "--dump-case")
+      o.DumpCase = next();
     else
     {
       std::cout
         << "usage: havs_benchmark [--quick] [--size N | --sizes a,b] [--views N] [--repeats N] "
            "[--datasets a,b] [--configs a,b] [--output-dir DIR] [--cache-dir DIR] "
-           "[--budget SECONDS] [--from-csv FILE]\n";
+           "[--budget SECONDS] [--from-csv FILE] [--dump-case DIR]\n";
       return a == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
     }
   }
@@ -983,6 +1031,10 @@ int main(int argc, char* argv[])
   if (o.Worker)
   {
     return RunWorker(o);
+  }
+  if (!o.DumpCase.empty())
+  {
+    return DumpCases(o);
   }
 
   std::ostringstream commandLine;

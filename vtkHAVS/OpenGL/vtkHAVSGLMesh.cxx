@@ -174,6 +174,26 @@ void vtkHAVSGLMesh::UploadSections(const std::vector<vtkHAVSFramePlanes::Section
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSGLMesh::ReadBack(
+  std::vector<float>& points, std::vector<float>& scalars, std::vector<uint32_t>& indices) const
+{
+  auto read = [](GLuint buffer, auto& out, size_t count)
+  {
+    out.resize(count);
+    glBindBuffer(GL_COPY_READ_BUFFER, buffer);
+    if (count > 0)
+    {
+      glGetBufferSubData(GL_COPY_READ_BUFFER, 0, count * sizeof(out[0]), out.data());
+    }
+    glBindBuffer(GL_COPY_READ_BUFFER, 0);
+  };
+  const size_t vertices = std::max(this->VertexCapacity, this->Scalars.size());
+  read(this->PointBuffer, points, 3 * vertices);
+  read(this->ScalarBuffer, scalars, vertices);
+  read(this->IndexBuffer, indices, static_cast<size_t>(this->IndexCount));
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing)
 {
   const bool roles = program->IsUniformUsed("havsRole");

@@ -61,6 +61,16 @@ public:
   void UploadSections(const std::vector<vtkHAVSFramePlanes::Section>& sections);
 
   vtkIdType GetNumberOfFaces() const { return this->IndexCount / 3; }
+  /// Whether the next frames draw plane sections.
+  bool HasSections() const { return !this->SectionDraws.empty(); }
+
+  /**
+   * Reads back what DrawFaces draws (for vtkHAVSGLFrameCapture): the vertex
+   * buffers (3 floats and 1 scalar per vertex, boundary vertices included)
+   * and the indices in draw order.
+   */
+  void ReadBack(
+    std::vector<float>& points, std::vector<float>& scalars, std::vector<uint32_t>& indices) const;
 
   /**
    * Draws, with `program` bound: the entering sections, the faces (front

@@ -13,6 +13,7 @@
 #include "vtkHAVSFragmentListKBuffer.h"
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSFramebufferFetchKBuffer.h"
+#include "vtkHAVSGLFrameCapture.h"
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLMesh.h"
 #include "vtkHAVSGLPassContext.h"
@@ -30,6 +31,7 @@
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
+#include "vtkUnstructuredGridBase.h"
 
 #include <dlfcn.h>
 
@@ -62,6 +64,7 @@ vtkOpenGLHAVSVolumeMapper::vtkOpenGLHAVSVolumeMapper() = default;
 vtkOpenGLHAVSVolumeMapper::~vtkOpenGLHAVSVolumeMapper()
 {
   this->ReleaseGraphicsResources(nullptr);
+  this->SetCaptureDirectory(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -283,6 +286,17 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
     this->KeptSize[1] = height;
   }
   const double t2 = now();
+  if (ok && this->CaptureDirectory && !request.RasterBoundOnly && !extremum)
+  {
+    std::string error;
+    this->LastCaptureSucceeded = vtkHAVSGLFrameCapture::Write(this->CaptureDirectory, context,
+      this->GetInput() ? this->GetInput()->GetNumberOfCells() : 0, error);
+    if (!this->LastCaptureSucceeded)
+    {
+      vtkErrorMacro("No frame capture: " << error << ".");
+    }
+    this->SetCaptureDirectory(nullptr);
+  }
   for (vtkTextureObject* t : textures)
   {
     t->Deactivate();
@@ -360,6 +374,9 @@ void vtkOpenGLHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Window: " << this->Window << "\n";
+  os << indent
+     << "CaptureDirectory: " << (this->CaptureDirectory ? this->CaptureDirectory : "(none)")
+     << ", last capture " << (this->LastCaptureSucceeded ? "written" : "none") << "\n";
   this->GLMesh->PrintSelf(os, indent.GetNextIndent());
   this->GLTable->PrintSelf(os, indent.GetNextIndent());
   this->Targets->PrintSelf(os, indent.GetNextIndent());

@@ -57,6 +57,19 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   bool IsKBufferPathSupported(vtkRenderWindow* window, int path) override;
+
+  ///@{
+  /**
+   * Benchmark aid: the next frame drawn through the framebuffer-fetch or
+   * interlock k-buffer writes its GPU inputs, shaders and result into this
+   * directory (vtkHAVSGLFrameCapture, for Apps/GPUBench/havs_gpu_bench); the
+   * setting is cleared after that frame. GetLastCaptureSucceeded() says
+   * whether it was written.
+   */
+  vtkSetStringMacro(CaptureDirectory);
+  vtkGetStringMacro(CaptureDirectory);
+  vtkGetMacro(LastCaptureSucceeded, bool);
+  ///@}
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:
@@ -91,6 +104,8 @@ private:
   vtkNew<vtkHAVSExtremumPass> Extremum;
   vtkNew<vtkHAVSRasterBoundPass> RasterBound;
   bool WarnedUncapturedDepth = false; ///< the multisampled-depth warning was given
+  char* CaptureDirectory = nullptr;
+  bool LastCaptureSucceeded = false;
 
   /// The versions of the request's inputs on the GPU (0: none).
   struct UploadedVersions
