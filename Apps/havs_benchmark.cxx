@@ -12,6 +12,9 @@
 //   havs_benchmark [--quick] [--size N | --sizes a,b] [--views N] [--repeats N]
 //                  [--datasets a,b,...] [--configs a,b,...] [--output-dir DIR]
 //                  [--cache-dir DIR] [--budget SECONDS] [--from-csv FILE]
+//                  [--dump-case DIR]
+// (--dump-case DIR: only write view 0 of each data set, drawn by the default
+// mapper, as a frame case for Apps/GPUBench/havs_gpu_bench.)
 // (--from-csv a.csv,b.csv: only make the report again from earlier runs' CSVs;
 // rows without a size column take --size.)
 //
@@ -23,7 +26,10 @@
 // 32^3 and 64^3 tables, HAVS k = 6 without boundary tagging (its cost and
 // what it buys; -gaplength: VTK 5's heuristic), -mpvo (the MPVO face order instead of
 // the centroid sort, with the boundary layers, e.g. havs-k2-mpvo; -mpvo-convex: with the
-// convexification), -auto (the Automatic order), HAVS fragment lists (exact per-pixel sort),
+// convexification), -auto (the Automatic order; without -mpvo or -auto the centroid sort),
+// -count (the order-violation counter on), -noterm (no early ray termination), -opaque (an
+// opaque actor in the scene, so the opaque-depth cut runs), havs-default (the mapper with its
+// default settings: what a user gets), HAVS fragment lists (exact per-pixel sort),
 // raster-bound (the same faces in the same order with a trivial shader: the
 // lower bound of any face-based method; sort-bound is the sort alone),
 // reference (the exact images, computed and cached in their own process before
@@ -51,9 +57,12 @@
 #include "vtkHAVSStandardViews.h"
 #include "vtkHAVSVisibilityOrder.h"
 #include "vtkHAVSVolumeMapper.h"
+#include "vtkOpenGLHAVSVolumeMapper.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkCubeSource.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -63,6 +72,7 @@
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProjectedTetrahedraMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -107,6 +117,7 @@ struct Options
   std::vector<std::string> Configs;
   std::string OutputDir = "Documentation";
   std::string CacheDir = "build/benchmark-cache";
+  std::string DumpCase; // --dump-case DIR: the GPU program's input, then exit
   std::string Self;
 };
 
@@ -190,6 +201,47 @@ double Median(std::vector<double> v)
 }
 
 /// One (data set, configuration): prints a RESULT line.
+/// --dump-case DIR: view 0 of each data set at --size with the default
+/// mapper, its GPU inputs written into DIR/<data set> (vtkHAVSGLFrameCapture)
+/// for Apps/GPUBench/havs_gpu_bench.
+int DumpCases(const Options& o)
+{
+  int failures = 0;
+  for (const std::string& dataset : o.DataSets)
+  {
+    vtkSmartPointer<vtkUnstructuredGrid> grid = vtkHAVSDataSets::Load(dataset);
+    vtkSmartPointer<vtkRenderWindow> window;
+    window.TakeReference(vtkHAVSRenderWindowFactory::CreateRenderWindow());
+    if (!grid || grid->GetNumberOfCells() == 0 || !window)
+    {
+      std::cerr << "cannot load " << dataset << " or make a window" << std::endl;
+      ++failures;
+      continue;
+    }
+    window->SetSize(o.Size, o.Size);
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetBackground(0, 0, 0);
+    window->AddRenderer(renderer);
+    vtkNew<vtkOpenGLHAVSVolumeMapper> mapper; // the defaults, as a user gets them
+    mapper->SetInputData(grid);
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(mapper);
+    volume->SetProperty(MakeProperty(grid));
+    renderer->AddVolume(volume);
+    vtkHAVSStandardViews::PlaceCamera(renderer->GetActiveCamera(), grid, 0);
+    window->Render();
+    const std::string dir = o.DumpCase + "/" + dataset + "_" + std::to_string(o.Size);
+    mapper->SetCaptureDirectory(dir.c_str());
+    window->Render();
+    const bool ok = mapper->GetLastCaptureSucceeded();
+    std::cout << (ok ? "wrote " : "FAILED ") << dir << " (" << grid->GetNumberOfCells()
+              << " cells, " << mapper->GetActiveKBufferPathName()
+              << ", k = " << mapper->GetKBufferSize() << ")" << std::endl;
+    failures += ok ? 0 : 1;
+  }
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int RunWorker(const Options& o)
 {
   const std::string dataset = o.DataSets.at(0), config = o.Configs.at(0);
@@ -202,7 +254,7 @@ int RunWorker(const Options& o)
   auto property = MakeProperty(grid);
   const vtkIdType tets = grid->GetNumberOfCells();
 
-  std::vector<double> frame, sort, draw, flush, composite;
+  std::vector<double> frame, sort, gather, draw, flush, composite, upload, readback, layers;
   double sumSquares = 0, maxError = 0;
   double over1 = 0, pixels = 0;
   int viewsDone = 0;
@@ -262,6 +314,7 @@ int RunWorker(const Options& o)
     window->AddRenderer(renderer);
     vtkSmartPointer<vtkUnstructuredGridVolumeMapper> mapper;
     vtkHAVSVolumeMapper* havs = nullptr;
+    vtkSmartPointer<vtkActor> opaqueActor; // -opaque: in the scene, behind the eye
     if (config.rfind("havs", 0) == 0 || config == "raster-bound")
     {
       auto m = vtkSmartPointer<vtkHAVSVolumeMapper>::New();
@@ -274,9 +327,17 @@ int RunWorker(const Options& o)
       else if (config == "raster-bound")
       {
         m->FaceRasterBoundModeOn();
+        m->SetVisibilityOrderToCentroid();
+      }
+      else if (config == "havs-default")
+      {
+        // The mapper as a user gets it: nothing set but the stage timer.
+        m->SetEarlyRayTerminationOpacity(
+          vtkNew<vtkHAVSVolumeMapper>()->GetEarlyRayTerminationOpacity());
       }
       else
       {
+        m->SetVisibilityOrderToCentroid(); // unless -mpvo or -auto says otherwise
         const size_t k = config.find("-k");
         m->SetKBufferSize(k == std::string::npos ? 6 : std::atoi(config.c_str() + k + 2));
         const size_t t = config.find("-table");
@@ -293,6 +354,14 @@ int RunWorker(const Options& o)
         else if (config.find("-auto") != std::string::npos)
         {
           m->SetVisibilityOrderToAutomatic(); // centroid until it overflows, then MPVO
+        }
+        if (config.find("-count") != std::string::npos)
+        {
+          m->CountOrderViolationsOn(); // what the order-violation counter costs
+        }
+        if (config.find("-noterm") != std::string::npos)
+        {
+          m->SetEarlyRayTerminationOpacity(1.0); // what early ray termination saves
         }
         if (config.find("-untagged") != std::string::npos)
         {
@@ -335,6 +404,20 @@ int RunWorker(const Options& o)
       return EXIT_FAILURE;
     }
     mapper->SetInputData(grid);
+    if (config.find("-opaque") != std::string::npos)
+    {
+      // What the opaque cut costs: an opaque actor in the scene (behind the
+      // camera, so the image is the same) makes the mapper copy the depth
+      // and compile the cut into its shaders.
+      vtkNew<vtkCubeSource> cube;
+      vtkNew<vtkPolyDataMapper> cubeMapper;
+      cubeMapper->SetInputConnection(cube->GetOutputPort());
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(cubeMapper);
+      actor->SetScale(1e-6 * grid->GetLength());
+      renderer->AddActor(actor);
+      opaqueActor = actor;
+    }
     vtkNew<vtkVolume> volume;
     volume->SetMapper(mapper);
     volume->SetProperty(property);
@@ -350,6 +433,16 @@ int RunWorker(const Options& o)
     for (int view = 0; view < o.Views; ++view)
     {
       vtkHAVSStandardViews::PlaceCamera(camera, grid, view);
+      if (opaqueActor)
+      {
+        // Behind the eye: in the scene, never in the picture.
+        double eye[3], dop[3];
+        camera->GetPosition(eye);
+        camera->GetDirectionOfProjection(dop);
+        const double back = 0.5 * grid->GetLength();
+        opaqueActor->SetPosition(
+          eye[0] - back * dop[0], eye[1] - back * dop[1], eye[2] - back * dop[2]);
+      }
       for (int r = 0; r < o.Repeats; ++r)
       {
         if (havs)
@@ -365,9 +458,13 @@ int RunWorker(const Options& o)
         if (havs)
         {
           sort.push_back(1000.0 * havs->GetLastFrameStatistics()->GetSortSeconds());
+          gather.push_back(1000.0 * havs->GetLastFrameStatistics()->GetGatherSeconds());
           draw.push_back(1000.0 * havs->GetLastFrameStatistics()->GetDrawSeconds());
           flush.push_back(1000.0 * havs->GetLastFrameStatistics()->GetFlushSeconds());
           composite.push_back(1000.0 * havs->GetLastFrameStatistics()->GetCompositeSeconds());
+          upload.push_back(1000.0 * havs->GetLastFrameStatistics()->GetUploadSeconds());
+          readback.push_back(1000.0 * havs->GetLastFrameStatistics()->GetReadbackSeconds());
+          layers.push_back(1000.0 * havs->GetLastFrameStatistics()->GetBoundaryLayerSeconds());
         }
       }
       if (config != "raster-bound")
@@ -402,12 +499,14 @@ int RunWorker(const Options& o)
     maxError = NAN;
   }
   std::printf("RESULT dataset=%s config=%s size=%d tets=%lld views=%d frames=%zu ms_median=%.3f "
-              "ms_min=%.3f ms_max=%.3f sort_ms=%.3f draw_ms=%.3f flush_ms=%.3f "
-              "composite_ms=%.3f rmse=%.6f max=%.6f over1=%.6f peak_mb=%.1f smp=%s threads=%d\n",
+              "ms_min=%.3f ms_max=%.3f sort_ms=%.3f gather_ms=%.3f draw_ms=%.3f flush_ms=%.3f "
+              "composite_ms=%.3f upload_ms=%.3f readback_ms=%.3f layers_ms=%.3f rmse=%.6f max=%.6f "
+              "over1=%.6f peak_mb=%.1f smp=%s threads=%d\n",
     dataset.c_str(), config.c_str(), o.Size, static_cast<long long>(tets), viewsDone, frame.size(),
     Median(frame), frame.empty() ? NAN : *std::min_element(frame.begin(), frame.end()),
-    frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort), Median(draw),
-    Median(flush), Median(composite), rmse, maxError, pixels > 0 ? over1 / pixels : NAN,
+    frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort),
+    Median(gather), Median(draw), Median(flush), Median(composite), Median(upload),
+    Median(readback), Median(layers), rmse, maxError, pixels > 0 ? over1 / pixels : NAN,
     PeakMegabytes(), vtkSMPTools::GetBackend(), vtkSMPTools::GetEstimatedNumberOfThreads());
   return EXIT_SUCCESS;
 }
@@ -431,8 +530,9 @@ std::map<std::string, std::string> ParseResult(const std::string& line)
 using Row = std::map<std::string, std::string>;
 
 const char* const kColumns[] = { "dataset", "config", "size", "tets", "views", "frames",
-  "ms_median", "ms_min", "ms_max", "sort_ms", "draw_ms", "flush_ms", "composite_ms", "mtets_per_s",
-  "rmse", "max", "over1", "peak_mb", "smp", "threads", "command" };
+  "ms_median", "ms_min", "ms_max", "sort_ms", "gather_ms", "draw_ms", "flush_ms", "composite_ms",
+  "upload_ms", "readback_ms", "layers_ms", "mtets_per_s", "rmse", "max", "over1", "peak_mb", "smp",
+  "threads", "command" };
 
 /// A CSV field, quoted where it holds a comma or a quote.
 std::string CsvField(const std::string& text)
@@ -720,6 +820,107 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
          << " | " << Cell(r, "rmse", "%.5f") << " | " << Cell(r, "max", "%.4f") << " | "
          << Cell(r, "over1", "%.4f") << " |\n";
     }
+    // The stages of one frame, HAVS's rows (medians of each stage: they need not add up
+    // to the median total; "other" is the rest: VTK's render, the window, the clear).
+    md << "\nStages (ms, medians; order is the sort or MPVO order without its boundary layers "
+          "and gather, which follow; other is the frame's rest: VTK's render pass, the "
+          "clear):\n\n"
+       << "| configuration | total | order | boundary layers | gather | upload | draw | "
+          "resolve | read-backs | composite | other |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Row& r : rows)
+    {
+      if (r.at("dataset") != dataset || sizeOf(r) != size || !std::isfinite(Value(r, "sort_ms")))
+        continue;
+      const double total = Value(r, "ms_median");
+      const double sortMs = Value(r, "sort_ms");
+      const double gatherMs = std::isfinite(Value(r, "gather_ms")) ? Value(r, "gather_ms") : 0.0;
+      const double layersMs = std::isfinite(Value(r, "layers_ms")) ? Value(r, "layers_ms") : 0.0;
+      double known = sortMs;
+      for (const char* stage :
+        { "upload_ms", "draw_ms", "flush_ms", "readback_ms", "composite_ms" })
+      {
+        known += std::isfinite(Value(r, stage)) ? Value(r, stage) : 0.0;
+      }
+      char order[32], other[32];
+      std::snprintf(order, sizeof(order), "%.1f", sortMs - gatherMs - layersMs);
+      std::snprintf(other, sizeof(other), "%.1f", total - known);
+      md << "| " << r.at("config") << " | " << Cell(r, "ms_median", "%.1f") << " | " << order
+         << " | " << Cell(r, "layers_ms", "%.1f") << " | " << Cell(r, "gather_ms", "%.1f") << " | "
+         << Cell(r, "upload_ms", "%.1f") << " | " << Cell(r, "draw_ms", "%.1f") << " | "
+         << Cell(r, "flush_ms", "%.1f") << " | " << Cell(r, "readback_ms", "%.1f") << " | "
+         << Cell(r, "composite_ms", "%.1f") << " | " << other << " |\n";
+    }
+    // The draw shader feature by feature: each variant of havs-k6 changes one thing.
+    if (std::isfinite(havs6))
+    {
+      std::map<std::string, Row> byConfig;
+      for (const Row& r : rows)
+      {
+        if (r.at("dataset") == dataset && sizeOf(r) == size)
+          byConfig[r.at("config")] = r;
+      }
+      const Row& base = byConfig["havs-k6"];
+      const char* const variants[][2] = { { "havs-k6-count", "the order-violation counter on" },
+        { "havs-k6-untagged", "boundary tagging off" },
+        { "havs-k6-noterm", "early ray termination off" },
+        { "havs-k6-opaque", "an opaque actor in the scene (the depth cut)" },
+        { "havs-k6-table64", "a 64³ table instead of 128³" },
+        { "havs-k6-table256", "a 256³ table instead of 128³" },
+        { "havs-k6-auto", "the Automatic order" }, { "havs-k6-mpvo", "the MPVO order" } };
+      bool header = false;
+      for (const auto& v : variants)
+      {
+        if (!byConfig.count(v[0]))
+          continue;
+        if (!header)
+        {
+          md << "\nFeatures, one at a time against havs-k6 (" << Cell(base, "ms_median", "%.1f")
+             << " ms, draw " << Cell(base, "draw_ms", "%.1f") << " ms):\n\n"
+             << "| configuration | what changes | total | Δ total | draw | Δ draw | RMSE |\n"
+             << "|---|---|---|---|---|---|---|\n";
+          header = true;
+        }
+        const Row& r = byConfig[v[0]];
+        char dt[32], dd[32];
+        std::snprintf(dt, sizeof(dt), "%+.1f", Value(r, "ms_median") - havs6);
+        std::snprintf(dd, sizeof(dd), "%+.1f", Value(r, "draw_ms") - Value(base, "draw_ms"));
+        md << "| " << v[0] << " | " << v[1] << " | " << Cell(r, "ms_median", "%.1f") << " | " << dt
+           << " | " << Cell(r, "draw_ms", "%.1f") << " | " << dd << " | " << Cell(r, "rmse", "%.5f")
+           << " |\n";
+      }
+    }
+    // The measures of the default settings.
+    if (ms.count("havs-default"))
+    {
+      Row def;
+      for (const Row& r : rows)
+      {
+        if (r.at("dataset") == dataset && sizeOf(r) == size && r.at("config") == "havs-default")
+          def = r;
+      }
+      const double t = ms["havs-default"];
+      const bool exact = Value(def, "rmse") < 5e-4 && Value(def, "max") < 0.01;
+      md << "\nDefault settings (havs-default): " << Cell(def, "ms_median", "%.1f") << " ms, RMSE "
+         << Cell(def, "rmse", "%.5f") << ", max " << Cell(def, "max", "%.4f") << " ("
+         << (exact ? "exact" : "not exact") << ": RMSE < 5e-4 and max < 0.01)";
+      if (ms.count("raster-bound"))
+      {
+        md << "; " << std::setprecision(3) << t / ms["raster-bound"] << "× raster-bound";
+      }
+      if (ms.count("pt"))
+      {
+        for (const Row& r : rows)
+        {
+          if (r.at("dataset") == dataset && sizeOf(r) == size && r.at("config") == "pt")
+          {
+            md << "; " << std::setprecision(3) << t / ms["pt"] << "× the time of PT (RMSE "
+               << Cell(r, "rmse", "%.5f") << ")";
+          }
+        }
+      }
+      md << ".\n";
+    }
     if (std::isfinite(havs6) &&
       (ms.count("pt") || ms.count("zsweep") || ms.count("raycast") || ms.count("raster-bound")))
     {
@@ -735,10 +936,13 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
       md << "\n";
     }
   }
-  md << "\nCSV: `benchmark.csv`. Plots: `benchmark_time_error.png` (time against RMSE, log axes, "
-        "Pareto front dashed), `benchmark_time_tets.png` (time against the number of tets), "
-        "`benchmark_time_pixels.png` (time against the number of pixels).\n\n"
+  md << "\nCSV: `benchmark.csv`. Plots: `benchmark_time_error.png` (time against RMSE, one "
+        "panel per data set, Pareto front dashed, the face-raster bound as a line), "
+        "`benchmark_stages.png` (HAVS's stages, stacked), `benchmark_time_tets.png` (time "
+        "against the number of tets), `benchmark_time_pixels.png` (time against the number of "
+        "pixels).\n\n"
      << "![time against error](benchmark_time_error.png)\n\n"
+     << "![stages](benchmark_stages.png)\n\n"
      << "![time against tets](benchmark_time_tets.png)\n\n"
      << "![time against pixels](benchmark_time_pixels.png)\n";
   return md.str();
@@ -783,12 +987,14 @@ int main(int argc, char* argv[])
       o.CacheDir = next();
     else if (a == "--from-csv")
       fromCsv = next();
+    else if (a == "--dump-case")
+      o.DumpCase = next();
     else
     {
       std::cout
         << "usage: havs_benchmark [--quick] [--size N | --sizes a,b] [--views N] [--repeats N] "
            "[--datasets a,b] [--configs a,b] [--output-dir DIR] [--cache-dir DIR] "
-           "[--budget SECONDS] [--from-csv FILE]\n";
+           "[--budget SECONDS] [--from-csv FILE] [--dump-case DIR]\n";
       return a == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
     }
   }
@@ -815,16 +1021,20 @@ int main(int argc, char* argv[])
                  : "loxpostvtk,bluntfin,combustor,loxpost,gen1M,gen4M,gen10M"));
   o.Configs = havsapp::SplitList(!configs.empty()
       ? configs
-      : (o.Quick
-            ? "havs-k2,havs-k6,havs-k14,raster-bound,sort-bound,pt,raycast"
-            : "havs-k1,havs-k2,havs-k4,havs-k6,havs-k8,havs-k14,havs-k14-table32,"
-              "havs-k14-table64,havs-k6-untagged,havs-k1-mpvo,havs-k2-mpvo,havs-k2-mpvo-convex,"
-              "havs-k2-auto,havs-lists,"
-              "raster-bound,sort-bound,pt,"
-              "zsweep,raycast"));
+      : (o.Quick ? "havs-default,havs-k2,havs-k6,havs-k14,raster-bound,sort-bound,pt,raycast"
+                 : "havs-default,havs-k1,havs-k2,havs-k4,havs-k6,havs-k8,havs-k14,havs-k14-table32,"
+                   "havs-k14-table64,havs-k6-count,havs-k6-untagged,havs-k6-noterm,havs-k6-opaque,"
+                   "havs-k6-table64,havs-k6-table256,havs-k6-auto,havs-k6-mpvo,"
+                   "havs-k1-mpvo,havs-k2-mpvo,havs-k2-mpvo-convex,havs-k2-auto,havs-lists,"
+                   "raster-bound,sort-bound,pt,"
+                   "zsweep,raycast"));
   if (o.Worker)
   {
     return RunWorker(o);
+  }
+  if (!o.DumpCase.empty())
+  {
+    return DumpCases(o);
   }
 
   std::ostringstream commandLine;

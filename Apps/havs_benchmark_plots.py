@@ -1,7 +1,13 @@
 # Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
-"""Plots of havs_benchmark's CSV: time against RMSE (log axes, Pareto front),
-time against the number of tets, time against the number of pixels. Needs matplotlib (Debian
-python3-matplotlib); without it, says so and does nothing."""
+"""Plots of havs_benchmark's CSV:
+
+- benchmark_time_error.png: time against RMSE, one panel per data set (at one image size:
+  512 where measured, else the largest), one marker and colour per mapper family, the Pareto
+  front, the face-raster bound as a vertical line;
+- benchmark_stages.png: HAVS's frame stages as stacked bars, one panel per data set;
+- benchmark_time_tets.png, benchmark_time_pixels.png: time against tets and pixels.
+
+Needs matplotlib (Debian python3-matplotlib); without it, says so and does nothing."""
 import csv
 import math
 import sys
@@ -22,59 +28,170 @@ def number(text):
     try:
         value = float(text)
         return value if math.isfinite(value) else None
-    except ValueError:
+    except (TypeError, ValueError):
         return None
 
 
-fig, ax = plt.subplots(figsize=(8, 6))
-for dataset in sorted({r["dataset"] for r in rows}):
-    points = [(number(r["ms_median"]), number(r["rmse"]), r["config"]) for r in rows
-              if r["dataset"] == dataset and number(r["rmse"]) and number(r["ms_median"])]
-    if not points:
-        continue
-    xs, ys, names = zip(*points)
-    ax.scatter(xs, ys, label=dataset)
-    for x, y, name in points:
-        ax.annotate(name, (x, y), fontsize=6)
-    front, best = [], math.inf
-    for x, y, _ in sorted(points):
-        if y < best:
-            front.append((x, y))
-            best = y
-    ax.plot([p[0] for p in front], [p[1] for p in front], linestyle="--", linewidth=0.8)
-ax.set_xscale("log")
-ax.set_yscale("log")
-ax.set_xlabel("ms per frame (median)")
-ax.set_ylabel("RMSE against the exact reference")
-ax.set_title("vtkHAVS benchmark: time against error (dashed: Pareto front)")
-ax.legend(fontsize=7)
-fig.savefig(f"{out}/benchmark_time_error.png", dpi=120)
+# Mapper families: (label, marker, colour), in legend order.
+FAMILIES = [
+    ("HAVS default settings", "*", "tab:red"),
+    ("HAVS centroid order", "o", "tab:blue"),
+    ("HAVS MPVO order", "s", "tab:green"),
+    ("HAVS Automatic order", "D", "tab:olive"),
+    ("HAVS fragment lists", "P", "tab:purple"),
+    ("VTK PT", "^", "tab:orange"),
+    ("VTK ZSweep", "v", "tab:brown"),
+    ("VTK RayCast", "X", "tab:gray"),
+]
 
+
+def family(config):
+    if config == "havs-default":
+        return FAMILIES[0]
+    if config == "havs-lists":
+        return FAMILIES[4]
+    if config.startswith("havs"):
+        if "-mpvo" in config:
+            return FAMILIES[2]
+        if "-auto" in config:
+            return FAMILIES[3]
+        return FAMILIES[1]
+    return {"pt": FAMILIES[5], "zsweep": FAMILIES[6], "raycast": FAMILIES[7]}.get(config)
+
+
+def plot_size(dataset):
+    sizes = {number(r.get("size")) for r in rows if r["dataset"] == dataset}
+    sizes.discard(None)
+    if not sizes:
+        return None
+    return 512 if 512 in sizes else max(sizes)
+
+
+datasets = sorted({r["dataset"] for r in rows})
+
+
+def grid_of(count):
+    columns = min(3, max(1, count))
+    return (count + columns - 1) // columns, columns
+
+
+# Time against error, one panel per data set.
+nrows, ncols = grid_of(len(datasets))
+fig, axes = plt.subplots(nrows, ncols, figsize=(5.2 * ncols, 4.4 * nrows), squeeze=False)
+handles = {}
+for index, dataset in enumerate(datasets):
+    ax = axes[index // ncols][index % ncols]
+    size = plot_size(dataset)
+    here = [r for r in rows if r["dataset"] == dataset and number(r.get("size")) == size]
+    points = []
+    for r in here:
+        f, t, e = family(r["config"]), number(r["ms_median"]), number(r["rmse"])
+        if f and t and e is not None:
+            e = max(e, 1e-6)  # an exact zero on log axes
+            points.append((t, e))
+            h = ax.scatter([t], [e], marker=f[1], color=f[2], s=60 if f[1] == "*" else 30,
+                           edgecolors="black", linewidths=0.3, zorder=3)
+            handles.setdefault(f[0], h)
+    front, best = [], math.inf
+    for t, e in sorted(points):
+        if e < best:
+            front.append((t, e))
+            best = e
+    if front:
+        h, = ax.plot([p[0] for p in front], [p[1] for p in front], linestyle="--",
+                     color="black", linewidth=0.8, drawstyle="steps-post", zorder=2)
+        handles.setdefault("Pareto front", h)
+    for r in here:
+        if r["config"] == "raster-bound" and number(r["ms_median"]):
+            h = ax.axvline(number(r["ms_median"]), color="tab:cyan", linewidth=1.2, zorder=1)
+            handles.setdefault("face-raster bound", h)
+    ax.axhline(5e-4, color="tab:red", linewidth=0.6, linestyle=":", zorder=1)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    tets = here[0]["tets"] if here else "?"
+    ax.set_title(f"{dataset} ({tets} tets, {int(size) if size else '?'}²)", fontsize=9)
+    ax.set_xlabel("ms per frame (median)", fontsize=8)
+    ax.set_ylabel("RMSE against the exact reference", fontsize=8)
+    ax.tick_params(labelsize=7)
+for index in range(len(datasets), nrows * ncols):
+    axes[index // ncols][index % ncols].axis("off")
+order = [f[0] for f in FAMILIES] + ["Pareto front", "face-raster bound"]
+labels = [name for name in order if name in handles]
+fig.legend([handles[n] for n in labels], labels, loc="lower center", ncol=min(5, len(labels)),
+           fontsize=8, frameon=False)
+fig.suptitle("vtkHAVS benchmark: time against error (dotted red: the exact bound, RMSE 5e-4)",
+             fontsize=10)
+fig.tight_layout(rect=(0, 0.07, 1, 0.96))
+fig.savefig(f"{out}/benchmark_time_error.png", dpi=110)
+
+# The stages of HAVS's frames as stacked bars.
+STAGES = [("order", "tab:blue"), ("boundary layers", "tab:green"), ("gather", "tab:olive"),
+          ("upload", "tab:pink"), ("draw", "tab:red"), ("resolve", "tab:orange"),
+          ("read-backs", "tab:purple"), ("composite", "tab:brown"), ("other", "tab:gray")]
+
+
+def stages(r):
+    get = lambda key: number(r.get(key)) or 0.0
+    sort, gather, layers = get("sort_ms"), get("gather_ms"), get("layers_ms")
+    parts = [max(0.0, sort - gather - layers), layers, gather, get("upload_ms"), get("draw_ms"),
+             get("flush_ms"), get("readback_ms"), get("composite_ms")]
+    parts.append(max(0.0, (number(r["ms_median"]) or 0.0) - sum(parts)))
+    return parts
+
+
+fig, axes = plt.subplots(nrows, ncols, figsize=(5.6 * ncols, 4.6 * nrows), squeeze=False)
+for index, dataset in enumerate(datasets):
+    ax = axes[index // ncols][index % ncols]
+    size = plot_size(dataset)
+    here = [r for r in rows if r["dataset"] == dataset and number(r.get("size")) == size
+            and r["config"].startswith(("havs", "raster")) and number(r.get("sort_ms")) is not None
+            and number(r["ms_median"])]
+    names = [r["config"] for r in here]
+    left = [0.0] * len(here)
+    for s, (label, colour) in enumerate(STAGES):
+        widths = [stages(r)[s] for r in here]
+        ax.barh(range(len(here)), widths, left=left, color=colour, label=label, height=0.7)
+        left = [a + b for a, b in zip(left, widths)]
+    ax.set_yticks(range(len(here)))
+    ax.set_yticklabels(names, fontsize=6)
+    ax.invert_yaxis()
+    ax.set_xlabel("ms per frame (stage medians)", fontsize=8)
+    ax.set_title(f"{dataset} ({int(size) if size else '?'}²)", fontsize=9)
+    ax.tick_params(axis="x", labelsize=7)
+for index in range(len(datasets), nrows * ncols):
+    axes[index // ncols][index % ncols].axis("off")
+fig.legend([plt.Rectangle((0, 0), 1, 1, color=c) for _, c in STAGES], [n for n, _ in STAGES],
+           loc="lower center", ncol=len(STAGES), fontsize=8, frameon=False)
+fig.suptitle("vtkHAVS benchmark: where a frame's time goes", fontsize=10)
+fig.tight_layout(rect=(0, 0.05, 1, 0.96))
+fig.savefig(f"{out}/benchmark_stages.png", dpi=110)
+
+# Time against the number of tets and of pixels.
 fig, ax = plt.subplots(figsize=(8, 6))
 for config in sorted({r["config"] for r in rows}):
     points = sorted((number(r["tets"]), number(r["ms_median"])) for r in rows
-                    if r["config"] == config and number(r["ms_median"]))
+                    if r["config"] == config and number(r["ms_median"]) and number(r["tets"]))
     if points:
         ax.plot([p[0] for p in points], [p[1] for p in points], marker="o", label=config)
 ax.set_xscale("log")
 ax.set_yscale("log")
 ax.set_xlabel("tetrahedra")
 ax.set_ylabel("ms per frame (median)")
-ax.legend(fontsize=6)
-fig.savefig(f"{out}/benchmark_time_tets.png", dpi=120)
+ax.legend(fontsize=6, ncol=2)
+fig.savefig(f"{out}/benchmark_time_tets.png", dpi=110)
 fig, ax = plt.subplots(figsize=(8, 6))
 for key in sorted({(r["dataset"], r["config"]) for r in rows}):
-    points = sorted((number(r.get("size", "")) ** 2, number(r["ms_median"])) for r in rows
-                    if (r["dataset"], r["config"]) == key and number(r.get("size", ""))
+    points = sorted((number(r.get("size")) ** 2, number(r["ms_median"])) for r in rows
+                    if (r["dataset"], r["config"]) == key and number(r.get("size"))
                     and number(r["ms_median"]))
-    if points:
+    if len(points) > 1:
         ax.plot([p[0] for p in points], [p[1] for p in points], marker="o",
                 label=f"{key[0]} {key[1]}")
 ax.set_xscale("log")
 ax.set_yscale("log")
 ax.set_xlabel("pixels")
 ax.set_ylabel("ms per frame (median)")
-ax.legend(fontsize=6)
-fig.savefig(f"{out}/benchmark_time_pixels.png", dpi=120)
-print("havs_benchmark_plots: wrote benchmark_time_error.png, benchmark_time_tets.png, "
-      "benchmark_time_pixels.png")
+ax.legend(fontsize=6, ncol=2)
+fig.savefig(f"{out}/benchmark_time_pixels.png", dpi=110)
+print("havs_benchmark_plots: wrote benchmark_time_error.png, benchmark_stages.png, "
+      "benchmark_time_tets.png, benchmark_time_pixels.png")

@@ -88,6 +88,7 @@ int TestHAVSAgainstReference(int argc, char* argv[])
   }
   auto property = havstest::MakeRampPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> mapper;
+  havstest::UseCentroidOrder(mapper); // the k-buffer's own test: a nearly sorted order
   mapper->KeepFloatResultOn();
   mapper->SetEarlyRayTerminationOpacity(1.0);
   mapper->SetKBufferPathToFramebufferFetch();

@@ -137,6 +137,7 @@ void CheckMesh(const std::string& name, vtkUnstructuredGrid* grid, double azimut
 {
   auto property = havstest::MakeRampPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> mapper;
+  havstest::UseCentroidOrder(mapper); // the k-buffer's own test: a nearly sorted order
   mapper->KeepFloatResultOn();
   mapper->SetEarlyRayTerminationOpacity(1.0);
   auto scene = havstest::MakeScene(grid, mapper, property, kSize, kSize);
@@ -194,6 +195,7 @@ void TestConvexBox()
   auto grid = vtkHAVSDataSets::MakeBox(8, 8, 8, 0.125, 0.0, 1.0);
   auto property = havstest::MakeRampPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> mapper;
+  havstest::UseCentroidOrder(mapper); // the k-buffer's own test: a nearly sorted order
   mapper->KeepFloatResultOn();
   auto scene = havstest::MakeScene(grid, mapper, property, kSize, kSize);
   havstest::PlaceCamera(scene.Renderer, 30.0, 20.0, false);
@@ -213,6 +215,7 @@ void TestOpaqueSphere()
   auto grid = vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
   auto property = havstest::MakeRampPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> mapper;
+  havstest::UseCentroidOrder(mapper); // the k-buffer's own test: a nearly sorted order
   mapper->KeepFloatResultOn();
   mapper->SetEarlyRayTerminationOpacity(1.0);
   auto scene = havstest::MakeScene(grid, mapper, property, kSize, kSize);
@@ -249,6 +252,7 @@ void TestCameraInside(const std::string& name, vtkUnstructuredGrid* grid, const 
 {
   auto property = havstest::MakeRampPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> mapper;
+  havstest::UseCentroidOrder(mapper); // the k-buffer's own test: a nearly sorted order
   mapper->KeepFloatResultOn();
   mapper->SetEarlyRayTerminationOpacity(1.0);
   auto scene = havstest::MakeScene(grid, mapper, property, kSize, kSize);
@@ -333,6 +337,7 @@ void TestClippingPlanes(bool parallel)
   auto grid = vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
   auto property = havstest::MakeRampPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> mapper;
+  havstest::UseCentroidOrder(mapper); // the k-buffer's own test: a nearly sorted order
   mapper->KeepFloatResultOn();
   mapper->SetEarlyRayTerminationOpacity(1.0);
   auto scene = havstest::MakeScene(grid, mapper, property, kSize, kSize);
@@ -395,6 +400,7 @@ void TestTranslucentActor()
   auto grid = vtkHAVSDataSets::MakeBox(8, 8, 8, 0.125, 0.0, 1.0);
   auto property = havstest::MakeRampPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> havs;
+  havstest::UseCentroidOrder(havs); // the k-buffer's own test: a nearly sorted order
   havs->KeepFloatResultOn();
   vtkNew<vtkProjectedTetrahedraMapper> pt;
   pt->SetInputData(grid);

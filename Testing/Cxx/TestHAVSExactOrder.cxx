@@ -116,6 +116,7 @@ int CycleScene(int size)
   auto grid = ThreeSticks();
   auto property = havstest::MakeRampProperty(0.0, 1.0, 1.0, 0.08);
   vtkNew<vtkHAVSVolumeMapper> mapper;
+  mapper->CountOrderViolationsOn();
   mapper->KeepFloatResultOn();
   mapper->SetEarlyRayTerminationOpacity(1.0);
   mapper->SetKBufferPathToFramebufferFetch();
@@ -253,6 +254,7 @@ int TestHAVSExactOrder(int argc, char* argv[])
 
   // GPU scene (k = 2, framebuffer fetch; every fragment composited: no early termination).
   vtkNew<vtkHAVSVolumeMapper> mapper;
+  mapper->CountOrderViolationsOn();
   mapper->KeepFloatResultOn();
   mapper->SetEarlyRayTerminationOpacity(1.0);
   mapper->SetKBufferSize(2);

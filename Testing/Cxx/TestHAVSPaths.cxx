@@ -43,6 +43,7 @@ int TestHAVSPaths(int, char*[])
   // Give the scalar some variation across x too.
   auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
   vtkNew<vtkHAVSVolumeMapper> mapper;
+  havstest::UseCentroidOrder(mapper); // the k-buffer's own test: a nearly sorted order
   mapper->KeepFloatResultOn();
   mapper->SetEarlyRayTerminationOpacity(1.0);
   // The centroid order of this regular block is nearly exact; reversing blocks

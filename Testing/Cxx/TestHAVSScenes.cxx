@@ -27,6 +27,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
@@ -40,6 +41,7 @@
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+#include <algorithm>
 
 #include <cmath>
 #include <cstdlib>
@@ -296,10 +298,19 @@ void TestExtremumBlend()
   property->GetScalarOpacity()->AddPoint(0.0, 0.3);
   property->GetScalarOpacity()->AddPoint(1.0, 0.8);
   float centreAlpha[2] = { -1.0f, -1.0f };
-  for (int minimum = 0; minimum < 2; ++minimum)
+  std::vector<float> untaggedMinimum;
+  for (int run = 0; run < 3; ++run)
   {
+    // Run 2: the minimum with boundary tagging forced on (the boundary faces
+    // are then drawn with vertices of their own, scalar + 2: the extremum pass
+    // must read the scalar through that; the minimum 0 lies on a boundary face).
+    const int minimum = run > 0 ? 1 : 0;
     vtkNew<vtkHAVSVolumeMapper> mapper;
     mapper->KeepFloatResultOn();
+    if (run == 2)
+    {
+      mapper->SetBoundaryModeToTagging();
+    }
     if (minimum)
     {
       mapper->SetBlendModeToMinimumIntensity();
@@ -317,12 +328,29 @@ void TestExtremumBlend()
     property->GetRGBTransferFunction()->GetColor(s, rgb);
     const double a = property->GetScalarOpacity()->GetValue(s);
     const float* p = &result[4 * (24 * 48 + 24)];
-    std::cout << (minimum ? "minimum" : "maximum") << " intensity: " << p[0] << " " << p[1] << " "
-              << p[2] << " " << p[3] << " (expected " << rgb[0] * a << " " << rgb[1] * a << " "
-              << rgb[2] * a << " " << a << ")" << std::endl;
+    std::cout << (minimum ? "minimum" : "maximum") << (run == 2 ? " (tagged)" : "")
+              << " intensity: " << p[0] << " " << p[1] << " " << p[2] << " " << p[3]
+              << " (expected " << rgb[0] * a << " " << rgb[1] * a << " " << rgb[2] * a << " " << a
+              << ")" << std::endl;
     havstest::Check(
       std::fabs(p[3] - a) < 1e-2 && std::fabs(p[0] - rgb[0] * a) < 1e-2, "extremum blend colour");
     havstest::Check(mapper->GetActiveKBufferSize() == 0, "extremum blend needs no k-buffer");
+    if (run == 1)
+    {
+      untaggedMinimum = result;
+    }
+    else if (run == 2)
+    {
+      double worst = 0.0;
+      for (size_t i = 0; i < result.size() && result.size() == untaggedMinimum.size(); ++i)
+      {
+        worst = std::max(worst, std::fabs(double(result[i]) - untaggedMinimum[i]));
+      }
+      std::cout << "minimum with tagging against without: max difference " << worst << std::endl;
+      havstest::Check(mapper->GetLastFrameStatistics()->GetTagging() &&
+          result.size() == untaggedMinimum.size() && worst < 2e-3,
+        "extremum blend with the tagged boundary vertices: the same image");
+    }
     centreAlpha[minimum] = p[3];
   }
   havstest::Check(std::fabs(centreAlpha[0] - centreAlpha[1]) > 0.4,

@@ -84,6 +84,35 @@ int TestHAVSShaderSources(int, char*[])
             vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock, k, false),
       "interlock_resolve" + suffix, "frag");
   }
+  // Every combination of the per-fragment features compiled in or out
+  // (counter, tagging, opaque cut), on each path's draw and resolve (the
+  // framebuffer-fetch draw is not checked: glslangValidator has no
+  // EXT_shader_framebuffer_fetch for desktop GLSL; it shares the library).
+  for (int mask = 0; mask < 8; ++mask)
+  {
+    vtkHAVSKBufferShaders::Features f;
+    f.CountViolations = (mask & 1) != 0;
+    f.Tagging = (mask & 2) != 0;
+    f.Opaque = (mask & 4) != 0;
+    const std::string suffix = "_features" + std::to_string(mask);
+    check(vtkHAVSKBufferShaders::ResolveShader(
+            vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, 2, false, f),
+      "fetch_resolve" + suffix, "frag");
+    check(vtkHAVSKBufferShaders::InterlockDrawShader(6, vtkHAVSKBufferShaders::InterlockARB, f),
+      "interlock_draw" + suffix, "frag");
+    check(vtkHAVSKBufferShaders::ListDrawShader(f), "list_draw" + suffix, "frag");
+    check(vtkHAVSKBufferShaders::ResolveShader(
+            vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true, f),
+      "list_resolve" + suffix, "frag");
+  }
+  // The features left out are really out of the source (no fetch, no atomic).
+  vtkHAVSKBufferShaders::Features none;
+  none.CountViolations = none.Tagging = none.Opaque = false;
+  const std::string lean = vtkHAVSKBufferShaders::FetchDrawShader(2, none);
+  havstest::Check(lean.find("#define HAVS_COUNT_VIOLATIONS 0") != std::string::npos &&
+      lean.find("#define HAVS_TAGGING 0") != std::string::npos &&
+      lean.find("#define HAVS_OPAQUE 0") != std::string::npos,
+    "a shader without the features says so in its defines");
   std::cout << checked << " shader sources checked with glslangValidator" << std::endl;
   return havstest::Result();
 }

@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "havsTestScenes.h"
 
+#include "vtkHAVSVolumeMapper.h"
+
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
@@ -62,5 +64,11 @@ void PlaceCamera(vtkRenderer* renderer, double azimuth, double elevation, bool p
   camera->OrthogonalizeViewUp();
   renderer->ResetCamera();
   renderer->ResetCameraClippingRange();
+}
+
+void UseCentroidOrder(vtkHAVSVolumeMapper* mapper)
+{
+  mapper->SetVisibilityOrderToCentroid();
+  mapper->SetKBufferSize(6);
 }
 }

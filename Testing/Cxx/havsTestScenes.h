@@ -18,6 +18,7 @@
 #include "vtkSmartPointer.h"
 
 class vtkAbstractVolumeMapper;
+class vtkHAVSVolumeMapper;
 class vtkRenderWindow;
 class vtkRenderer;
 class vtkUnstructuredGrid;
@@ -38,6 +39,14 @@ struct VolumeScene
 };
 VolumeScene MakeScene(vtkUnstructuredGrid* grid, vtkAbstractVolumeMapper* mapper,
   vtkVolumeProperty* property, int width, int height);
+
+/**
+ * The centroid face order at k = 6 (the mapper's defaults before issue 16
+ * made MPVO at k = 2 the default): for the tests of the k-buffer itself
+ * (ordering, paths, the software k-buffer, k = 1 controls), which need the
+ * order to be nearly, not exactly, sorted. Later SetKBufferSize calls win.
+ */
+void UseCentroidOrder(vtkHAVSVolumeMapper* mapper);
 
 /// Places the camera: looking at the grid's centre from (azimuth, elevation)
 /// degrees, perspective unless parallel is set; resets the clipping range.

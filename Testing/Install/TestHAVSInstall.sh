@@ -31,7 +31,7 @@ else
 fi
 for f in lib/cmake/vtkHAVS/vtkHAVSConfig.cmake lib/cmake/vtkHAVS/vtkHAVSConfigVersion.cmake \
     lib/cmake/vtkHAVS/vtkHAVS-targets.cmake include/vtkHAVS/vtkHAVSVolumeMapper.h \
-    bin/havs_demo bin/havs_reference bin/havs_benchmark lib/libvtkHAVSExpatFix.so \
+    bin/havs_demo bin/havs_reference bin/havs_benchmark bin/havs_gpu_bench lib/libvtkHAVSExpatFix.so \
     lib/paraview-plugins/HAVSRepresentation/HAVSRepresentation.so \
     "$pydest/vtkhavs/__init__.py" share/doc/vtkHAVS/LICENSE; do
   [ -e "$prefix/$f" ] && ok "installed $f" || fail "not installed: $f"

@@ -137,6 +137,40 @@ if rank == 0:
               % (args.mode, label, rmse, bound))
 
 if args.mode == "serial":
+    # The face-order settings of the panel reach the mapper, and the violation count
+    # comes back as an information property.
+    def violations():
+        display.UpdatePropertyInformation()
+        return display.GetProperty("HAVSLastOrderViolations").GetElement(0)
+
+    check(mapper.GetVisibilityOrder() == 1 and display.HAVSVisibilityOrder == "MPVO (exact)"
+          and not mapper.GetCountOrderViolations() and violations() == -1,
+          "default: the MPVO order, violations not counted (%d)" % violations())
+    display.HAVSCountOrderViolations = 1
+    display.HAVSVisibilityOrder = "Centroid sort"
+    display.HAVSKBufferSize = 1
+    Render(view)
+    centroid_k1 = violations()
+    check(mapper.GetVisibilityOrder() == 0 and mapper.GetCountOrderViolations()
+          and centroid_k1 > 0,
+          "negative control: the centroid order at k = 1 violates the depth order (%d)"
+          % centroid_k1)
+    display.HAVSVisibilityOrder = "MPVO (exact)"
+    display.HAVSNonConvexMethod = "Convexification"
+    Render(view)
+    check(mapper.GetVisibilityOrder() == 1 and mapper.GetNonConvexMethod() == 2
+          and mapper.GetLastVisibilityOrder() == 1,
+          "the MPVO order with the convexification reached the mapper")
+    display.HAVSNonConvexMethod = "Boundary layers"
+    display.HAVSKBufferSize = 2
+    Render(view)
+    check(mapper.GetNonConvexMethod() == 1 and violations() == 0,
+          "MPVO with the boundary layers at k = 2: no violations (%d)" % violations())
+    display.HAVSVisibilityOrder = "MPVO (exact)"
+    display.HAVSCountOrderViolations = 0
+    display.HAVSKBufferSize = 14
+    Render(view)
+
     # A structured grid (the blunt fin, PLOT3D) through the same representation type.
     Hide(tets, view)
     xyz = os.path.join(os.environ["HAVS_DATA_DIR"], "bluntfinxyz.bin")

@@ -47,6 +47,7 @@ prop.SetScalarOpacity(opacity)
 prop.SetScalarOpacityUnitDistance(0.5)
 
 mapper = vtkhavs.vtkHAVSVolumeMapper()
+mapper.CountOrderViolationsOn()
 mapper.SetInputConnection(tets.GetOutputPort())
 mapper.SetKBufferSize(4)
 mapper.KeepFloatResultOn()

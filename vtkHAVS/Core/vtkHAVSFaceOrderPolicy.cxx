@@ -136,10 +136,13 @@ bool vtkHAVSFaceOrderPolicy::Prepare(
   // The draw triangles: gathered for a new order; any order will do without one.
   const bool gather = changed || this->GatheredMesh != mesh->GetBuildTime() ||
     (drawn >= 0 && this->GatheredOrder != drawn);
+  this->LastGatherSeconds = 0.0;
   if (gather)
   {
+    const double gatherStart = vtkTimerLog::GetUniversalTime();
     this->Gather(mesh, order);
     this->GatheredOrder = drawn;
+    this->LastGatherSeconds = vtkTimerLog::GetUniversalTime() - gatherStart;
   }
   this->LastOrder = drawn;
   this->LastReused = !gather;

@@ -110,6 +110,8 @@ public:
   vtkGetMacro(LastOrder, int);
   vtkGetMacro(LastReused, bool);
   vtkGetMacro(LastSeconds, double);
+  /// The part of LastSeconds that gathered the draw triangles in the new order.
+  vtkGetMacro(LastGatherSeconds, double);
   /// The exact order's cycle breaks, boundary relations and their seconds.
   vtkIdType GetLastCycleBreaks() const;
   vtkIdType GetLastBoundaryRelations() const;
@@ -186,6 +188,7 @@ private:
   int LastOrder = -1;
   bool LastReused = false;
   double LastSeconds = 0.0;
+  double LastGatherSeconds = 0.0;
 };
 
 #endif

@@ -28,17 +28,23 @@ void vtkHAVSFrameStatistics::Reset()
   this->BoundaryRelations = 0;
   this->BoundaryLayerSeconds = 0.0;
   this->Tagging = false;
+  this->OpaqueGeometry = false;
+  this->OpaqueDepthMultisampled = false;
+  this->OpaqueDepthCaptured = false;
   this->PlaneCount = 0;
   this->SectionTriangles = 0;
   this->SectionSeconds = 0.0;
-  this->OrderViolations = 0;
+  this->OrderViolations = -1;
   this->ViolationPixels.clear();
   this->Fragments = 0;
   this->FacesDrawn = 0;
   this->SortSeconds = 0.0;
+  this->GatherSeconds = 0.0;
+  this->UploadSeconds = 0.0;
   this->DrawSeconds = 0.0;
   this->FlushSeconds = 0.0;
   this->CompositeSeconds = 0.0;
+  this->ReadbackSeconds = 0.0;
   this->Modified();
 }
 
@@ -79,7 +85,10 @@ void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
      << ", section triangles " << this->SectionTriangles << " (" << this->SectionSeconds << " s)\n";
   os << indent << "OrderViolations: " << this->OrderViolations << ", fragments " << this->Fragments
      << ", faces drawn " << this->FacesDrawn << "\n";
-  os << indent << "Seconds: sort " << this->SortSeconds << ", draw " << this->DrawSeconds
-     << ", flush " << this->FlushSeconds << ", composite " << this->CompositeSeconds
-     << ", table (last build) " << this->TableSeconds << "\n";
+  os << indent << "OpaqueGeometry: " << this->OpaqueGeometry << " (depth multisampled "
+     << this->OpaqueDepthMultisampled << ", captured " << this->OpaqueDepthCaptured << ")\n";
+  os << indent << "Seconds: sort " << this->SortSeconds << " (gather " << this->GatherSeconds
+     << "), upload " << this->UploadSeconds << ", draw " << this->DrawSeconds << ", flush "
+     << this->FlushSeconds << ", read-backs " << this->ReadbackSeconds << ", composite "
+     << this->CompositeSeconds << ", table (last build) " << this->TableSeconds << "\n";
 }

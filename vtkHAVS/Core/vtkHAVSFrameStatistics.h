@@ -74,6 +74,13 @@ public:
   ///@}
 
   ///@{
+  /// Whether opaque geometry could end the rays (the depth was copied and the
+  /// shaders compiled with the cut; off when the renderer has none).
+  vtkSetMacro(OpaqueGeometry, bool);
+  vtkGetMacro(OpaqueGeometry, bool);
+  ///@}
+
+  ///@{
   /// Boundary fragments tagged; planes cutting the mesh (near and clipping);
   /// triangles of their sections and the seconds those took.
   vtkSetMacro(Tagging, bool);
@@ -87,7 +94,8 @@ public:
   ///@}
 
   ///@{
-  /// Fragments composited out of depth order (0 when not counted).
+  /// Fragments composited out of depth order (-1 when the frame did not count
+  /// them: vtkHAVSVolumeMapper::SetCountOrderViolations).
   vtkSetMacro(OrderViolations, vtkIdType);
   vtkGetMacro(OrderViolations, vtkIdType);
   /// Where the first ones were: x, y in the viewport, two values each.
@@ -95,6 +103,16 @@ public:
   const std::vector<int>& GetOrderViolationPixelList() const { return this->ViolationPixels; }
   /// The same into an array of 2-component tuples; returns their number.
   int GetOrderViolationPixels(vtkIntArray* pixels) const;
+  ///@}
+
+  ///@{
+  /// With opaque geometry: whether its depth came from a multisampled
+  /// framebuffer (resolved by a blit), and whether it was captured at all
+  /// (false: the rays were not cut, a warning said so once).
+  vtkSetMacro(OpaqueDepthMultisampled, bool);
+  vtkGetMacro(OpaqueDepthMultisampled, bool);
+  vtkSetMacro(OpaqueDepthCaptured, bool);
+  vtkGetMacro(OpaqueDepthCaptured, bool);
   ///@}
 
   ///@{
@@ -107,14 +125,22 @@ public:
   ///@}
 
   ///@{
-  /// Stage times in seconds: face order (sort), draw, flush (resolve),
-  /// composite; the table's last build (kept until the next build).
+  /// Stage times in seconds: face order (sort and gather; the boundary layers
+  /// and the gather are parts of it, see BoundaryLayerSeconds), upload, draw,
+  /// flush (resolve), read-backs (violation count, kept result), composite;
+  /// the table's last build (kept until the next build).
   vtkSetMacro(SortSeconds, double);
   vtkGetMacro(SortSeconds, double);
+  vtkSetMacro(GatherSeconds, double);
+  vtkGetMacro(GatherSeconds, double);
+  vtkSetMacro(UploadSeconds, double);
+  vtkGetMacro(UploadSeconds, double);
   vtkSetMacro(DrawSeconds, double);
   vtkGetMacro(DrawSeconds, double);
   vtkSetMacro(FlushSeconds, double);
   vtkGetMacro(FlushSeconds, double);
+  vtkSetMacro(ReadbackSeconds, double);
+  vtkGetMacro(ReadbackSeconds, double);
   vtkSetMacro(CompositeSeconds, double);
   vtkGetMacro(CompositeSeconds, double);
   vtkSetMacro(TableSeconds, double);
@@ -137,17 +163,23 @@ private:
   vtkIdType BoundaryRelations = 0;
   double BoundaryLayerSeconds = 0.0;
   bool Tagging = false;
+  bool OpaqueGeometry = false;
+  bool OpaqueDepthMultisampled = false;
+  bool OpaqueDepthCaptured = false;
   int PlaneCount = 0;
   vtkIdType SectionTriangles = 0;
   double SectionSeconds = 0.0;
-  vtkIdType OrderViolations = 0;
+  vtkIdType OrderViolations = -1;
   std::vector<int> ViolationPixels;
   vtkIdType Fragments = 0;
   vtkIdType FacesDrawn = 0;
   double SortSeconds = 0.0;
+  double GatherSeconds = 0.0;
+  double UploadSeconds = 0.0;
   double DrawSeconds = 0.0;
   double FlushSeconds = 0.0;
   double CompositeSeconds = 0.0;
+  double ReadbackSeconds = 0.0;
   double TableSeconds = 0.0;
 };
 

@@ -25,6 +25,8 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkProp.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGrid.h"
@@ -48,6 +50,28 @@ enum OnceWarnings
   WarnPlanes,
   WarnOrder
 };
+
+/// Whether the depth buffer can hold opaque geometry when `volume` is drawn:
+/// the renderer keeps an earlier depth buffer, or a visible prop other than a
+/// volume has opaque geometry.
+bool RendererHasOpaqueGeometry(vtkRenderer* renderer)
+{
+  if (renderer->GetPreserveDepthBuffer())
+  {
+    return true;
+  }
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) && prop->HasOpaqueGeometry())
+    {
+      return true;
+    }
+  }
+  return false;
+}
 
 bool IsConstantOne(vtkPiecewiseFunction* f)
 {
@@ -238,7 +262,7 @@ bool vtkHAVSVolumeMapper::PrepareTable(vtkVolume* volume)
 
 //------------------------------------------------------------------------------
 vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
-  const vtkHAVSViewFrame& view, int path, int k)
+  const vtkHAVSViewFrame& view, int path, int k, bool opaque)
 {
   FrameRequest r;
   r.View = &view;
@@ -256,6 +280,7 @@ vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
     ? static_cast<float>(this->Table->GetMaxLength())
     : 3.0e38f;
   r.RasterBoundOnly = this->FaceRasterBoundMode;
+  r.Opaque = opaque;
   r.MeasureStages = this->MeasureStageTimes;
   r.KeepResult = this->KeepFloatResult;
   return r;
@@ -320,7 +345,7 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       GetKBufferPathName(path) + " path's maximum; using k = " + std::to_string(maxK) + ".";
     this->WarnOnce(WarnK, message.c_str());
   }
-  FrameRequest request = this->MakeRequest(view, path, k);
+  FrameRequest request = this->MakeRequest(view, path, k, RendererHasOpaqueGeometry(renderer));
   const bool composite = this->BlendMode == COMPOSITE_BLEND;
 
   // 4. The near and clipping planes, and the mesh's sections with them.
@@ -379,14 +404,20 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   stats->SetBoundaryRelations(this->FaceOrder->GetLastBoundaryRelations());
   stats->SetBoundaryLayerSeconds(this->FaceOrder->GetLastBoundaryLayerSeconds());
   stats->SetSortSeconds(this->FaceOrder->GetLastSeconds());
+  stats->SetGatherSeconds(this->FaceOrder->GetLastGatherSeconds());
   stats->SetTagging(request.Tagging);
   stats->SetPlaneCount(this->Planes->GetNumberOfPlanes());
   stats->SetSectionTriangles(this->Planes->GetNumberOfSectionTriangles());
   stats->SetSectionSeconds(this->Planes->GetSectionSeconds());
-  stats->SetOrderViolations(result.Violations);
+  stats->SetOrderViolations(request.CountViolations ? result.Violations : -1);
   stats->SetOrderViolationPixels(result.ViolationPixels);
   stats->SetFragments(result.Fragments);
   stats->SetFacesDrawn(this->Mesh->GetFaceSet()->GetNumberOfFaces());
+  stats->SetOpaqueGeometry(request.Opaque);
+  stats->SetOpaqueDepthMultisampled(result.OpaqueDepthMultisampled);
+  stats->SetOpaqueDepthCaptured(result.OpaqueDepthCaptured);
+  stats->SetUploadSeconds(result.UploadSeconds);
+  stats->SetReadbackSeconds(result.ReadbackSeconds);
   stats->SetDrawSeconds(result.DrawSeconds);
   stats->SetFlushSeconds(result.FlushSeconds);
   stats->SetCompositeSeconds(result.CompositeSeconds);

@@ -30,7 +30,8 @@ bool vtkHAVSExtremumPass::Draw(vtkHAVSGLPassContext& context)
   context.Targets->BindResult();
   const float zero[4] = { 0, 0, 0, 0 };
   glClearBufferfv(GL_COLOR, 0, zero);
-  vtkShaderProgram* program = context.FaceProgram(vtkHAVSKBufferShaders::ExtremumDrawShader());
+  vtkShaderProgram* program =
+    context.FaceProgram(vtkHAVSKBufferShaders::ExtremumDrawShader(context.ShaderFeatures()));
   if (!program)
   {
     return false;

@@ -114,7 +114,8 @@ bool vtkHAVSFragmentListKBuffer::Draw(vtkHAVSGLPassContext& context)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->Nodes);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, this->Counter);
     glBindImageTexture(0, this->Heads, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-    vtkShaderProgram* program = context.FaceProgram(vtkHAVSKBufferShaders::ListDrawShader());
+    vtkShaderProgram* program =
+      context.FaceProgram(vtkHAVSKBufferShaders::ListDrawShader(context.ShaderFeatures()));
     ok = program != nullptr;
     if (!ok)
     {
@@ -144,8 +145,9 @@ bool vtkHAVSFragmentListKBuffer::Resolve(vtkHAVSGLPassContext& context)
   const bool vote = vtkHAVSGLCapabilities::HasExtension("GL_ARB_shader_group_vote");
   glBindImageTexture(0, this->Heads, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->Nodes);
-  vtkShaderProgram* program = context.QuadProgram(vtkHAVSKBufferShaders::ResolveShader(
-    vtkHAVSVolumeMapper::KBufferPathFragmentLists, context.Request.K, vote));
+  vtkShaderProgram* program = context.QuadProgram(
+    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists,
+      context.Request.K, vote, context.ShaderFeatures()));
   if (program)
   {
     program->SetUniformi("havsNodeCapacity", static_cast<int>(this->Capacity));

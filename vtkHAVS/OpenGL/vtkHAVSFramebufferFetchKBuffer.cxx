@@ -94,8 +94,8 @@ bool vtkHAVSFramebufferFetchKBuffer::Clear(vtkHAVSGLPassContext&)
 //------------------------------------------------------------------------------
 bool vtkHAVSFramebufferFetchKBuffer::Draw(vtkHAVSGLPassContext& context)
 {
-  vtkShaderProgram* program =
-    context.FaceProgram(vtkHAVSKBufferShaders::FetchDrawShader(context.Request.K));
+  vtkShaderProgram* program = context.FaceProgram(
+    vtkHAVSKBufferShaders::FetchDrawShader(context.Request.K, context.ShaderFeatures()));
   if (program)
   {
     context.DrawFaces(program);
@@ -110,8 +110,9 @@ bool vtkHAVSFramebufferFetchKBuffer::Resolve(vtkHAVSGLPassContext& context)
   {
     t->Activate();
   }
-  vtkShaderProgram* program = context.QuadProgram(vtkHAVSKBufferShaders::ResolveShader(
-    vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, context.Request.K, false));
+  vtkShaderProgram* program = context.QuadProgram(
+    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFramebufferFetch,
+      context.Request.K, false, context.ShaderFeatures()));
   if (program)
   {
     program->SetUniformi("havsColorTexture", this->Targets[0]->GetTextureUnit());

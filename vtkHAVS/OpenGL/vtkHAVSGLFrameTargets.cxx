@@ -50,6 +50,7 @@ void vtkHAVSGLFrameTargets::Resize(int width, int height)
   this->OpaqueDepth = vtkSmartPointer<vtkTextureObject>::New();
   this->OpaqueDepth->SetContext(this->Window);
   this->OpaqueDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
+  this->OpaqueDepthFormat = vtkTextureObject::Float32;
   this->Result = NewFloatTexture(this->Window, width, height);
   this->ResultFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
   this->ResultFramebuffer->SetContext(this->Window);
@@ -62,25 +63,113 @@ void vtkHAVSGLFrameTargets::Resize(int width, int height)
 }
 
 //------------------------------------------------------------------------------
+int vtkHAVSGLFrameTargets::ReadFramebufferDepthFormat()
+{
+  GLint binding = 0;
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &binding);
+  const GLenum attachment = binding == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT;
+  GLint type = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+  if (type == GL_NONE)
+  {
+    return -1;
+  }
+  GLint bits = 0, component = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &component);
+  if (component == GL_FLOAT)
+  {
+    return vtkTextureObject::Float32;
+  }
+  switch (bits)
+  {
+    case 16:
+      return vtkTextureObject::Fixed16;
+    case 24:
+      return vtkTextureObject::Fixed24;
+    case 32:
+      return vtkTextureObject::Fixed32;
+    default:
+      return -1;
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSGLFrameTargets::CaptureOpaqueDepth(int x, int y, int width, int height)
 {
   GLint sampleBuffers = 0;
   glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
-  this->OpaqueDepth->Activate();
+  this->LastCaptureMultisampled = sampleBuffers != 0;
+  this->LastCaptureResolved = false;
   if (sampleBuffers == 0)
   {
+    this->OpaqueDepth->Activate();
     glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, x, y, width, height);
+    this->OpaqueDepth->Deactivate();
+    this->LastCaptureResolved = true;
+    return;
   }
-  else
+
+  // A multisampled framebuffer cannot be copied from; its depth is resolved
+  // by a blit into a single-sample depth texture. The blit needs the same
+  // depth format on both sides, so the texture takes the framebuffer's.
+  while (glGetError() != GL_NO_ERROR)
   {
-    // A multisampled framebuffer cannot be copied from: no opaque cut.
+  }
+  const int format = ReadFramebufferDepthFormat();
+  if (format >= 0 && format != this->OpaqueDepthFormat)
+  {
+    this->OpaqueDepth->ReleaseGraphicsResources(this->Window);
+    this->OpaqueDepth->AllocateDepth(width, height, format);
+    this->OpaqueDepthFormat = format;
+    if (this->DepthResolveFramebuffer)
+    {
+      this->DepthResolveFramebuffer->ReleaseGraphicsResources(this->Window);
+      this->DepthResolveFramebuffer = nullptr;
+    }
+  }
+  vtkOpenGLState* state = this->Window->GetState();
+  if (format >= 0)
+  {
+    state->PushDrawFramebufferBinding();
+    if (!this->DepthResolveFramebuffer)
+    {
+      this->DepthResolveFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      this->DepthResolveFramebuffer->SetContext(this->Window);
+      this->DepthResolveFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+      this->DepthResolveFramebuffer->AddDepthAttachment(this->OpaqueDepth);
+    }
+    else
+    {
+      this->DepthResolveFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+    }
+    vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+    state->vtkglDisable(GL_SCISSOR_TEST); // the blit's destination starts at (0, 0)
+    state->vtkglBlitFramebuffer(
+      x, y, x + width, y + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    state->PopDrawFramebufferBinding();
+    this->LastCaptureResolved = glGetError() == GL_NO_ERROR;
+  }
+  if (!this->LastCaptureResolved)
+  {
+    // No resolve: no opaque cut (the far plane everywhere), said once.
     std::vector<float> far(static_cast<size_t>(width) * height, 1.0f);
+    this->OpaqueDepth->ReleaseGraphicsResources(this->Window);
+    this->OpaqueDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    this->OpaqueDepthFormat = vtkTextureObject::Float32;
+    if (this->DepthResolveFramebuffer)
+    {
+      this->DepthResolveFramebuffer->ReleaseGraphicsResources(this->Window);
+      this->DepthResolveFramebuffer = nullptr;
+    }
+    this->OpaqueDepth->Activate();
     glTexSubImage2D(
       GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, far.data());
-    vtkGenericWarningMacro(
-      "vtkHAVS: multisampled framebuffer; opaque geometry does not end the volume's rays.");
+    this->OpaqueDepth->Deactivate();
   }
-  this->OpaqueDepth->Deactivate();
 }
 
 //------------------------------------------------------------------------------
@@ -189,6 +278,11 @@ void vtkHAVSGLFrameTargets::ReleaseSizeDependent(vtkWindow* window)
   {
     this->ResultFramebuffer->ReleaseGraphicsResources(window);
   }
+  if (this->DepthResolveFramebuffer)
+  {
+    this->DepthResolveFramebuffer->ReleaseGraphicsResources(window);
+  }
+  this->DepthResolveFramebuffer = nullptr;
   this->OpaqueDepth = nullptr;
   this->Result = nullptr;
   this->ResultFramebuffer = nullptr;
@@ -216,4 +310,6 @@ void vtkHAVSGLFrameTargets::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+  os << indent << "LastCaptureMultisampled: " << this->LastCaptureMultisampled << "\n";
+  os << indent << "LastCaptureResolved: " << this->LastCaptureResolved << "\n";
 }

@@ -51,8 +51,17 @@ public:
   void Resize(int width, int height);
   const int* GetSize() const { return this->Size; }
 
-  /// Copies the depth of VTK's current framebuffer at the viewport.
+  /**
+   * Copies the depth of VTK's current (read) framebuffer at the viewport. A
+   * multisampled framebuffer (an X window's, VTK's default) is resolved by a
+   * blit into a single-sample depth texture of the framebuffer's own depth
+   * format; where that fails, the far plane everywhere.
+   */
   void CaptureOpaqueDepth(int x, int y, int width, int height);
+  /// Whether the last capture read a multisampled framebuffer; whether it got
+  /// its depth (false: the far plane, no cut; the mapper warns once).
+  bool GetLastCaptureMultisampled() const { return this->LastCaptureMultisampled; }
+  bool GetLastCaptureResolved() const { return this->LastCaptureResolved; }
   vtkTextureObject* GetOpaqueDepth() { return this->OpaqueDepth; }
 
   /// The result's framebuffer bound for drawing, one colour attachment.
@@ -89,10 +98,16 @@ private:
   void operator=(const vtkHAVSGLFrameTargets&) = delete;
 
   void ReleaseSizeDependent(vtkWindow* window);
+  /// The vtkTextureObject depth format of the read framebuffer's depth, -1 if none.
+  static int ReadFramebufferDepthFormat();
 
   vtkOpenGLRenderWindow* Window = nullptr;
   int Size[2] = { 0, 0 };
   vtkSmartPointer<vtkTextureObject> OpaqueDepth;
+  int OpaqueDepthFormat = -1;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> DepthResolveFramebuffer;
+  bool LastCaptureMultisampled = false;
+  bool LastCaptureResolved = false;
   vtkSmartPointer<vtkTextureObject> Result;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResultFramebuffer;
   GLuint ViolationCounter = 0;

@@ -58,6 +58,9 @@ void vtkHAVSGLMesh::UploadGeometry(
     glGenBuffers(1, &this->ScalarBuffer);
     glGenBuffers(1, &this->IndexBuffer);
   }
+  this->Points = points;
+  this->Scalars = scalars;
+  this->VertexCapacity = scalars.size();
   glBindVertexArray(this->VertexArray);
   UploadVertexAttributes(this->PointBuffer, this->ScalarBuffer, points, scalars, GL_STATIC_DRAW);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
@@ -67,35 +70,72 @@ void vtkHAVSGLMesh::UploadGeometry(
 
 //------------------------------------------------------------------------------
 bool vtkHAVSGLMesh::UploadFaceOrder(
-  const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary)
+  const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary, bool tagged)
 {
   if (!this->VertexArray)
   {
     vtkErrorMacro("UploadFaceOrder before UploadGeometry.");
     return false;
   }
+  const size_t faces = triangles.size() / 3;
+  const size_t numPoints = this->Scalars.size();
+  size_t boundaryFaces = 0;
+  if (tagged)
+  {
+    for (size_t f = 0; f < faces && f < boundary.size(); ++f)
+    {
+      boundaryFaces += boundary[f] ? 1 : 0;
+    }
+  }
+  const std::vector<uint32_t>* indices = &triangles;
+  std::vector<uint32_t> rewritten;
   glBindVertexArray(this->VertexArray);
+  if (boundaryFaces > 0)
+  {
+    // The boundary faces' own vertices, in draw order, after the points.
+    std::vector<float> points(9 * boundaryFaces), scalars(3 * boundaryFaces);
+    rewritten = triangles;
+    uint32_t next = static_cast<uint32_t>(numPoints);
+    size_t b = 0;
+    for (size_t f = 0; f < faces && f < boundary.size(); ++f)
+    {
+      if (!boundary[f])
+      {
+        continue;
+      }
+      for (int v = 0; v < 3; ++v, ++b)
+      {
+        const uint32_t p = triangles[3 * f + v];
+        std::copy_n(&this->Points[3 * p], 3, &points[3 * b]);
+        scalars[b] = this->Scalars[p] + 2.0f;
+        rewritten[3 * f + v] = next++;
+      }
+    }
+    const size_t vertices = numPoints + 3 * boundaryFaces;
+    if (vertices > this->VertexCapacity)
+    {
+      // Grow once: the points again, room for the boundary vertices.
+      std::vector<float> allPoints(this->Points), allScalars(this->Scalars);
+      allPoints.resize(3 * vertices);
+      allScalars.resize(vertices);
+      UploadVertexAttributes(
+        this->PointBuffer, this->ScalarBuffer, allPoints, allScalars, GL_DYNAMIC_DRAW);
+      this->VertexCapacity = vertices;
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, this->PointBuffer);
+    glBufferSubData(
+      GL_ARRAY_BUFFER, 3 * numPoints * sizeof(float), points.size() * sizeof(float), points.data());
+    glBindBuffer(GL_ARRAY_BUFFER, this->ScalarBuffer);
+    glBufferSubData(
+      GL_ARRAY_BUFFER, numPoints * sizeof(float), scalars.size() * sizeof(float), scalars.data());
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    indices = &rewritten;
+  }
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
   glBufferData(
-    GL_ELEMENT_ARRAY_BUFFER, triangles.size() * sizeof(uint32_t), triangles.data(), GL_STREAM_DRAW);
+    GL_ELEMENT_ARRAY_BUFFER, indices->size() * sizeof(uint32_t), indices->data(), GL_STREAM_DRAW);
   glBindVertexArray(0);
-  this->IndexCount = static_cast<GLsizei>(triangles.size());
-
-  if (!this->BoundaryBuffer)
-  {
-    this->BoundaryBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-    this->BoundaryTexture = vtkSmartPointer<vtkTextureObject>::New();
-    this->BoundaryTexture->SetContext(this->Window);
-  }
-  // One byte per face: 255 for a boundary face (read as 1.0 from an R8 buffer).
-  std::vector<uint8_t> flags(std::max<size_t>(boundary.size(), 1), 0);
-  for (size_t i = 0; i < boundary.size(); ++i)
-  {
-    flags[i] = boundary[i] ? 255 : 0;
-  }
-  this->BoundaryBuffer->Upload(flags, vtkOpenGLBufferObject::TextureBuffer);
-  this->BoundaryTexture->CreateTextureBuffer(
-    static_cast<unsigned int>(flags.size()), 1, VTK_UNSIGNED_CHAR, this->BoundaryBuffer);
+  this->IndexCount = static_cast<GLsizei>(indices->size());
   return true;
 }
 
@@ -131,6 +171,26 @@ void vtkHAVSGLMesh::UploadSections(const std::vector<vtkHAVSFramePlanes::Section
     this->SectionPoints, this->SectionScalars, points, scalars, GL_STREAM_DRAW);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLMesh::ReadBack(
+  std::vector<float>& points, std::vector<float>& scalars, std::vector<uint32_t>& indices) const
+{
+  auto read = [](GLuint buffer, auto& out, size_t count)
+  {
+    out.resize(count);
+    glBindBuffer(GL_COPY_READ_BUFFER, buffer);
+    if (count > 0)
+    {
+      glGetBufferSubData(GL_COPY_READ_BUFFER, 0, count * sizeof(out[0]), out.data());
+    }
+    glBindBuffer(GL_COPY_READ_BUFFER, 0);
+  };
+  const size_t vertices = std::max(this->VertexCapacity, this->Scalars.size());
+  read(this->PointBuffer, points, 3 * vertices);
+  read(this->ScalarBuffer, scalars, vertices);
+  read(this->IndexBuffer, indices, static_cast<size_t>(this->IndexCount));
 }
 
 //------------------------------------------------------------------------------
@@ -198,17 +258,8 @@ void vtkHAVSGLMesh::ReleaseGraphicsResources(vtkWindow* window)
       *array = 0;
     }
   }
-  if (this->BoundaryTexture)
-  {
-    this->BoundaryTexture->ReleaseGraphicsResources(window);
-  }
-  if (this->BoundaryBuffer)
-  {
-    this->BoundaryBuffer->ReleaseGraphicsResources();
-  }
-  this->BoundaryTexture = nullptr;
-  this->BoundaryBuffer = nullptr;
   this->IndexCount = 0;
+  this->VertexCapacity = 0;
 }
 
 //------------------------------------------------------------------------------

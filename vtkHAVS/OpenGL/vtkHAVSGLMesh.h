@@ -45,17 +45,32 @@ public:
   /// The context every buffer lives in (set before any upload).
   void SetContext(vtkOpenGLRenderWindow* window) { this->Window = window; }
 
-  /// Points (3 floats each, model coordinates) and normalized scalars.
+  /// Points (3 floats each, model coordinates) and normalized scalars (in
+  /// [0, 1]); kept on the host too, for the boundary vertices.
   void UploadGeometry(const std::vector<float>& points, const std::vector<float>& scalars);
-  /// The faces in draw order (3 point ids each) and their boundary flags.
+  /**
+   * The faces in draw order (3 point ids each) and their boundary flags. With
+   * `tagged`, each boundary face is drawn with vertices of its own, appended
+   * after the points, whose scalar is the point's + 2: the fragment shader
+   * tells a boundary fragment by its scalar (above 1.5), with no per-fragment
+   * look-up, and only boundary fragments do the tagging work.
+   */
   bool UploadFaceOrder(
-    const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary);
+    const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary, bool tagged);
   /// The sections of the next frames (empty: none).
   void UploadSections(const std::vector<vtkHAVSFramePlanes::Section>& sections);
 
-  /// The per-face boundary flags (R8 texture buffer), for the draw passes.
-  vtkTextureObject* GetBoundaryTexture() { return this->BoundaryTexture; }
   vtkIdType GetNumberOfFaces() const { return this->IndexCount / 3; }
+  /// Whether the next frames draw plane sections.
+  bool HasSections() const { return !this->SectionDraws.empty(); }
+
+  /**
+   * Reads back what DrawFaces draws (for vtkHAVSGLFrameCapture): the vertex
+   * buffers (3 floats and 1 scalar per vertex, boundary vertices included)
+   * and the indices in draw order.
+   */
+  void ReadBack(
+    std::vector<float>& points, std::vector<float>& scalars, std::vector<uint32_t>& indices) const;
 
   /**
    * Draws, with `program` bound: the entering sections, the faces (front
@@ -81,8 +96,9 @@ private:
   GLuint ScalarBuffer = 0;
   GLuint IndexBuffer = 0;
   GLsizei IndexCount = 0;
-  vtkSmartPointer<vtkOpenGLBufferObject> BoundaryBuffer;
-  vtkSmartPointer<vtkTextureObject> BoundaryTexture;
+  std::vector<float> Points; // as uploaded, for the boundary vertices
+  std::vector<float> Scalars;
+  size_t VertexCapacity = 0; // vertices the point and scalar buffers hold
 
   GLuint SectionArray = 0;
   GLuint SectionPoints = 0;

@@ -53,6 +53,15 @@ int vtkHAVSGLPassContext::Height() const
   return this->Targets->GetSize()[1];
 }
 
+vtkHAVSKBufferShaders::Features vtkHAVSGLPassContext::ShaderFeatures() const
+{
+  vtkHAVSKBufferShaders::Features f;
+  f.CountViolations = this->Request.CountViolations;
+  f.Tagging = this->Request.Tagging;
+  f.Opaque = this->Request.Opaque;
+  return f;
+}
+
 //------------------------------------------------------------------------------
 vtkShaderProgram* vtkHAVSGLPassContext::Program(
   const std::string& vertexShader, const std::string& fragmentShader)
@@ -92,10 +101,8 @@ void vtkHAVSGLPassContext::SetCommonUniforms(vtkShaderProgram* program)
   program->SetUniform3f("havsDirectionOfProjection", this->Direction);
   program->SetUniformMatrix4x4("havsMCRC", this->ModelToEyeRelative);
   program->SetUniformMatrix4x4("havsMCDC", this->ModelToClip);
-  program->SetUniformi("havsFaceIsBoundary", this->Mesh->GetBoundaryTexture()->GetTextureUnit());
   program->SetUniformi(
     "havsMinimum", r.BlendMode == vtkHAVSVolumeMapper::MINIMUM_INTENSITY_BLEND ? 1 : 0);
-  program->SetUniformi("havsTagging", r.Tagging ? 1 : 0);
   program->SetUniformf("havsGapLength", r.GapLength);
   program->SetUniformi("havsRole", 0);
   program->SetUniformi("havsOwnPlane", -1);

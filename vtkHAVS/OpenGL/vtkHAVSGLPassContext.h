@@ -21,8 +21,9 @@
 #ifndef vtkHAVSGLPassContext_h
 #define vtkHAVSGLPassContext_h
 
-#include "vtkHAVSVolumeMapper.h" // For FrameRequest
-#include "vtkOpenGLState.h"      // For the scoped state savers
+#include "vtkHAVSKBufferShaders.h" // For Features
+#include "vtkHAVSVolumeMapper.h"   // For FrameRequest
+#include "vtkOpenGLState.h"        // For the scoped state savers
 
 #include <string> // For std::string
 
@@ -46,6 +47,9 @@ public:
 
   int Width() const;
   int Height() const;
+
+  /// What the frame's k-buffer shaders compile in (counter, tagging, opaque cut).
+  vtkHAVSKBufferShaders::Features ShaderFeatures() const;
 
   /// The face vertex shader with `fragmentShader`, common uniforms set; nullptr on failure.
   vtkShaderProgram* FaceProgram(const std::string& fragmentShader);

@@ -77,7 +77,7 @@ bool vtkHAVSInterlockKBuffer::Clear(vtkHAVSGLPassContext& context)
 bool vtkHAVSInterlockKBuffer::Draw(vtkHAVSGLPassContext& context)
 {
   vtkShaderProgram* program = context.FaceProgram(vtkHAVSKBufferShaders::InterlockDrawShader(
-    context.Request.K, vtkHAVSGLCapabilities::AvailableInterlock()));
+    context.Request.K, vtkHAVSGLCapabilities::AvailableInterlock(), context.ShaderFeatures()));
   if (program)
   {
     context.DrawFaces(program);
@@ -91,8 +91,9 @@ bool vtkHAVSInterlockKBuffer::Draw(vtkHAVSGLPassContext& context)
 bool vtkHAVSInterlockKBuffer::Resolve(vtkHAVSGLPassContext& context)
 {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->PixelEntries);
-  vtkShaderProgram* program = context.QuadProgram(vtkHAVSKBufferShaders::ResolveShader(
-    vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock, context.Request.K, false));
+  vtkShaderProgram* program = context.QuadProgram(
+    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock,
+      context.Request.K, false, context.ShaderFeatures()));
   if (program)
   {
     context.DrawFullViewport();

@@ -38,11 +38,15 @@ void Replace(std::string& text, const std::string& marker, const std::string& wi
 }
 
 /// A fragment-shader template with the defines and the k-buffer library in.
-std::string Compose(const char* templ, int k, int pixelStride)
+std::string Compose(const char* templ, int k, int pixelStride,
+  const vtkHAVSKBufferShaders::Features& features = vtkHAVSKBufferShaders::Features())
 {
   std::string source = templ;
   std::ostringstream defines;
-  defines << "#define HAVS_K " << k << "\n#define HAVS_PIXEL_STRIDE " << pixelStride << "\n";
+  defines << "#define HAVS_K " << k << "\n#define HAVS_PIXEL_STRIDE " << pixelStride << "\n"
+          << "#define HAVS_COUNT_VIOLATIONS " << (features.CountViolations ? 1 : 0) << "\n"
+          << "#define HAVS_TAGGING " << (features.Tagging ? 1 : 0) << "\n"
+          << "#define HAVS_OPAQUE " << (features.Opaque ? 1 : 0) << "\n";
   Replace(source, "//HAVS::Defines", defines.str());
   Replace(source, "//HAVS::KBufferLib", vtkHAVSKBufferLib);
   return source;
@@ -70,7 +74,7 @@ std::string vtkHAVSKBufferShaders::QuadVertexShader()
   return vtkHAVSQuadVS;
 }
 
-std::string vtkHAVSKBufferShaders::FetchDrawShader(int k)
+std::string vtkHAVSKBufferShaders::FetchDrawShader(int k, const Features& features)
 {
   const int pairs = FetchAttachments(k) - 1;
   std::ostringstream declarations, store;
@@ -83,14 +87,15 @@ std::string vtkHAVSKBufferShaders::FetchDrawShader(int k)
           << (second < k ? "E[" + std::to_string(second) + "]" : "vec2(HAVS_EMPTY, 0.0)")
           << ");\n  ";
   }
-  std::string source = Compose(vtkHAVSFetchDrawFS, k, 1);
+  std::string source = Compose(vtkHAVSFetchDrawFS, k, 1, features);
   Replace(source, "//HAVS::FetchDeclarations", declarations.str());
   Replace(source, "//HAVS::FetchLoad", UnpackEntries("havsEntries", k));
   Replace(source, "//HAVS::FetchStore", store.str());
   return source;
 }
 
-std::string vtkHAVSKBufferShaders::InterlockDrawShader(int k, InterlockKind kind)
+std::string vtkHAVSKBufferShaders::InterlockDrawShader(
+  int k, InterlockKind kind, const Features& features)
 {
   static const char* const extension[] = { "#extension GL_ARB_fragment_shader_interlock : require",
     "#extension GL_NV_fragment_shader_interlock : require", "" };
@@ -100,7 +105,7 @@ std::string vtkHAVSKBufferShaders::InterlockDrawShader(int k, InterlockKind kind
     "beginInvocationInterlockNV();", "" };
   static const char* const end[] = { "endInvocationInterlockARB();", "endInvocationInterlockNV();",
     "" };
-  std::string source = Compose(vtkHAVSInterlockDrawFS, k, InterlockPixelStride(k));
+  std::string source = Compose(vtkHAVSInterlockDrawFS, k, InterlockPixelStride(k), features);
   Replace(source, "//HAVS::InterlockExtension", extension[kind]);
   Replace(source, "//HAVS::InterlockLayout", layout[kind]);
   Replace(source, "//HAVS::InterlockBegin", begin[kind]);
@@ -113,12 +118,13 @@ std::string vtkHAVSKBufferShaders::InterlockClearShader(int k)
   return Compose(vtkHAVSClearFS, k, InterlockPixelStride(k));
 }
 
-std::string vtkHAVSKBufferShaders::ListDrawShader()
+std::string vtkHAVSKBufferShaders::ListDrawShader(const Features& features)
 {
-  return Compose(vtkHAVSListDrawFS, 1, 1);
+  return Compose(vtkHAVSListDrawFS, 1, 1, features);
 }
 
-std::string vtkHAVSKBufferShaders::ResolveShader(int path, int k, bool groupVote)
+std::string vtkHAVSKBufferShaders::ResolveShader(
+  int path, int k, bool groupVote, const Features& features)
 {
   std::string extension, declarations, load;
   int resolveK = k;
@@ -194,12 +200,12 @@ std::string vtkHAVSKBufferShaders::ResolveShader(int path, int k, bool groupVote
   Replace(source, "//HAVS::ResolveExtension", extension);
   Replace(source, "//HAVS::ResolveDeclarations", declarations);
   Replace(source, "//HAVS::ResolveLoad", load);
-  return Compose(source.c_str(), resolveK, stride);
+  return Compose(source.c_str(), resolveK, stride, features);
 }
 
-std::string vtkHAVSKBufferShaders::ExtremumDrawShader()
+std::string vtkHAVSKBufferShaders::ExtremumDrawShader(const Features& features)
 {
-  return Compose(vtkHAVSExtremumDrawFS, 1, 1);
+  return Compose(vtkHAVSExtremumDrawFS, 1, 1, features);
 }
 
 std::string vtkHAVSKBufferShaders::ExtremumResolveShader()

@@ -24,6 +24,18 @@
 
 #include <string> // For std::string
 
+/**
+ * What a k-buffer shader does per fragment besides the k-buffer itself;
+ * each feature left out is compiled out (no cost where a frame does not
+ * need it).
+ */
+struct vtkHAVSKBufferShaderFeatures
+{
+  bool CountViolations = true; ///< the order-violation counter and its tie tolerance (fwidth)
+  bool Tagging = true;         ///< boundary fragments carry their role (a per-fragment fetch)
+  bool Opaque = true;          ///< opaque geometry may end the rays (a per-fragment depth fetch)
+};
+
 class VTKHAVSOPENGL_EXPORT vtkHAVSKBufferShaders
 {
 public:
@@ -36,13 +48,16 @@ public:
   static constexpr int ListResolveCapacity = 64;
   ///@}
 
+  /// What a k-buffer shader compiles in (vtkHAVSKBufferShaderFeatures).
+  using Features = vtkHAVSKBufferShaderFeatures;
+
   /// Vertex shader of the passes that rasterize the faces.
   static std::string FaceVertexShader();
   /// Vertex shader of the full-viewport passes.
   static std::string QuadVertexShader();
 
   /// Framebuffer-fetch draw pass: entries in 1 + (k+1)/2 colour attachments.
-  static std::string FetchDrawShader(int k);
+  static std::string FetchDrawShader(int k, const Features& features = Features());
   /// How the interlock draw pass guards its read-modify-write.
   enum InterlockKind
   {
@@ -53,22 +68,24 @@ public:
                    ///< to test the path's storage layout, clear and resolve
   };
   /// Interlock draw pass.
-  static std::string InterlockDrawShader(int k, InterlockKind kind);
+  static std::string InterlockDrawShader(
+    int k, InterlockKind kind, const Features& features = Features());
   /// Interlock clear pass (per-pixel storage to empty).
   static std::string InterlockClearShader(int k);
   /// Fragment-list draw pass (append to per-pixel lists).
-  static std::string ListDrawShader();
+  static std::string ListDrawShader(const Features& features = Features());
 
   /// Resolve (flush) pass of a path (vtkHAVSVolumeMapper::KBufferPaths);
   /// `groupVote`: the fragment-list walk uses ARB_shader_group_vote.
-  static std::string ResolveShader(int path, int k, bool groupVote);
+  static std::string ResolveShader(
+    int path, int k, bool groupVote, const Features& features = Features());
   /// Number of storage slots (vec4) per pixel on the interlock path.
   static int InterlockPixelStride(int k) { return 1 + (k + 1) / 2; }
   /// Colour attachments of the framebuffer-fetch path.
   static int FetchAttachments(int k) { return 1 + (k + 1) / 2; }
 
   /// Maximum / minimum intensity passes.
-  static std::string ExtremumDrawShader();
+  static std::string ExtremumDrawShader(const Features& features = Features());
   static std::string ExtremumResolveShader();
 
   /// Benchmark aid: a trivial fragment shader (rasterization cost alone).

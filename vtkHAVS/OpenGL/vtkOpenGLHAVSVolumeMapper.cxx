@@ -13,6 +13,7 @@
 #include "vtkHAVSFragmentListKBuffer.h"
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSFramebufferFetchKBuffer.h"
+#include "vtkHAVSGLFrameCapture.h"
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLMesh.h"
 #include "vtkHAVSGLPassContext.h"
@@ -30,6 +31,7 @@
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
+#include "vtkUnstructuredGridBase.h"
 
 #include <dlfcn.h>
 
@@ -62,6 +64,7 @@ vtkOpenGLHAVSVolumeMapper::vtkOpenGLHAVSVolumeMapper() = default;
 vtkOpenGLHAVSVolumeMapper::~vtkOpenGLHAVSVolumeMapper()
 {
   this->ReleaseGraphicsResources(nullptr);
+  this->SetCaptureDirectory(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -164,13 +167,15 @@ bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request)
     this->Uploaded.Geometry = mesh->GetBuildTime();
     this->Uploaded.Order = 0;
   }
-  if (this->Uploaded.Order != request.DrawOrderVersion)
+  if (this->Uploaded.Order != request.DrawOrderVersion || this->Uploaded.Tagged != request.Tagging)
   {
-    if (!this->GLMesh->UploadFaceOrder(*request.DrawTriangles, *request.DrawBoundary))
+    if (!this->GLMesh->UploadFaceOrder(
+          *request.DrawTriangles, *request.DrawBoundary, request.Tagging))
     {
       return false;
     }
     this->Uploaded.Order = request.DrawOrderVersion;
+    this->Uploaded.Tagged = request.Tagging;
   }
   if (this->Uploaded.Sections != request.Planes->GetSectionsVersion())
   {
@@ -196,34 +201,47 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
     return false;
   }
   this->PrepareWindow(window);
-  if (!this->Upload(request))
+  const bool measure = request.MeasureStages;
+  auto now = [measure]()
   {
-    return false;
-  }
-  const vtkHAVSViewFrame& view = *request.View;
-  const int width = view.Width, height = view.Height;
-  vtkOpenGLState* state = window->GetState();
-  this->Targets->Resize(width, height);
-  this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height);
-  vtkHAVSGLPassContext context(window, this->GLMesh, this->GLTable, this->Targets, request);
-  const bool extremum = request.BlendMode != COMPOSITE_BLEND;
-  vtkHAVSKBuffer* kbuffer = this->GetKBuffer(request.Path);
-  auto now = [&request]()
-  {
-    if (!request.MeasureStages)
+    if (!measure)
     {
       return 0.0;
     }
     glFinish();
     return vtkTimerLog::GetUniversalTime();
   };
+  const double uploadStart = now();
+  if (!this->Upload(request))
+  {
+    return false;
+  }
+  result.UploadSeconds = now() - uploadStart;
+  const vtkHAVSViewFrame& view = *request.View;
+  const int width = view.Width, height = view.Height;
+  vtkOpenGLState* state = window->GetState();
+  this->Targets->Resize(width, height);
+  if (request.Opaque)
+  {
+    this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height);
+    result.OpaqueDepthMultisampled = this->Targets->GetLastCaptureMultisampled();
+    result.OpaqueDepthCaptured = this->Targets->GetLastCaptureResolved();
+    if (!result.OpaqueDepthCaptured && !this->WarnedUncapturedDepth)
+    {
+      vtkWarningMacro("The depth of this window's multisampled framebuffer could not be resolved: "
+                      "opaque geometry does not end the volume's rays (said once).");
+      this->WarnedUncapturedDepth = true;
+    }
+  }
+  vtkHAVSGLPassContext context(window, this->GLMesh, this->GLTable, this->Targets, request);
+  const bool extremum = request.BlendMode != COMPOSITE_BLEND;
+  vtkHAVSKBuffer* kbuffer = this->GetKBuffer(request.Path);
 
   vtkHAVSGLScopedPassState passState(state);
   state->vtkglDisable(GL_BLEND);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   state->vtkglViewport(0, 0, width, height);
-  vtkTextureObject* textures[] = { this->GLTable->GetTable(), this->Targets->GetOpaqueDepth(),
-    this->GLMesh->GetBoundaryTexture() };
+  vtkTextureObject* textures[] = { this->GLTable->GetTable(), this->Targets->GetOpaqueDepth() };
   for (vtkTextureObject* t : textures)
   {
     t->Activate();
@@ -255,6 +273,7 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   }
 
   // Read backs.
+  const double tr = now();
   if (ok && !request.RasterBoundOnly && !extremum && request.CountViolations)
   {
     result.Violations =
@@ -267,6 +286,17 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
     this->KeptSize[1] = height;
   }
   const double t2 = now();
+  if (ok && this->CaptureDirectory && !request.RasterBoundOnly && !extremum)
+  {
+    std::string error;
+    this->LastCaptureSucceeded = vtkHAVSGLFrameCapture::Write(this->CaptureDirectory, context,
+      this->GetInput() ? this->GetInput()->GetNumberOfCells() : 0, error);
+    if (!this->LastCaptureSucceeded)
+    {
+      vtkErrorMacro("No frame capture: " << error << ".");
+    }
+    this->SetCaptureDirectory(nullptr);
+  }
   for (vtkTextureObject* t : textures)
   {
     t->Deactivate();
@@ -281,7 +311,8 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   }
   const double t3 = now();
   result.DrawSeconds = t1 - t0;
-  result.FlushSeconds = t2 - t1;
+  result.FlushSeconds = tr - t1;
+  result.ReadbackSeconds = t2 - tr;
   result.CompositeSeconds = t3 - t2;
   if (!ok)
   {
@@ -343,6 +374,9 @@ void vtkOpenGLHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Window: " << this->Window << "\n";
+  os << indent
+     << "CaptureDirectory: " << (this->CaptureDirectory ? this->CaptureDirectory : "(none)")
+     << ", last capture " << (this->LastCaptureSucceeded ? "written" : "none") << "\n";
   this->GLMesh->PrintSelf(os, indent.GetNextIndent());
   this->GLTable->PrintSelf(os, indent.GetNextIndent());
   this->Targets->PrintSelf(os, indent.GetNextIndent());

@@ -57,6 +57,19 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   bool IsKBufferPathSupported(vtkRenderWindow* window, int path) override;
+
+  ///@{
+  /**
+   * Benchmark aid: the next frame drawn through the framebuffer-fetch or
+   * interlock k-buffer writes its GPU inputs, shaders and result into this
+   * directory (vtkHAVSGLFrameCapture, for Apps/GPUBench/havs_gpu_bench); the
+   * setting is cleared after that frame. GetLastCaptureSucceeded() says
+   * whether it was written.
+   */
+  vtkSetStringMacro(CaptureDirectory);
+  vtkGetStringMacro(CaptureDirectory);
+  vtkGetMacro(LastCaptureSucceeded, bool);
+  ///@}
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:
@@ -90,12 +103,16 @@ private:
   vtkNew<vtkHAVSFragmentListKBuffer> ListKBuffer;
   vtkNew<vtkHAVSExtremumPass> Extremum;
   vtkNew<vtkHAVSRasterBoundPass> RasterBound;
+  bool WarnedUncapturedDepth = false; ///< the multisampled-depth warning was given
+  char* CaptureDirectory = nullptr;
+  bool LastCaptureSucceeded = false;
 
   /// The versions of the request's inputs on the GPU (0: none).
   struct UploadedVersions
   {
     vtkMTimeType Geometry = 0;
     vtkMTimeType Order = 0;
+    bool Tagged = false; // the order went up with boundary vertices
     vtkMTimeType Sections = 0;
     vtkMTimeType Table = 0;
   };

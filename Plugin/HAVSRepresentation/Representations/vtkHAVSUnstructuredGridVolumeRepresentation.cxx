@@ -105,6 +105,29 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSBoundaryMode(int mode)
   this->Modified();
 }
 
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSVisibilityOrder(int order)
+{
+  this->HAVSMapper->SetVisibilityOrder(order);
+  this->Modified();
+}
+
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSNonConvexMethod(int method)
+{
+  this->HAVSMapper->SetNonConvexMethod(method);
+  this->Modified();
+}
+
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSCountOrderViolations(int count)
+{
+  this->HAVSMapper->SetCountOrderViolations(count != 0);
+  this->Modified();
+}
+
+int vtkHAVSUnstructuredGridVolumeRepresentation::GetHAVSLastOrderViolations()
+{
+  return static_cast<int>(this->HAVSMapper->GetLastOrderViolations());
+}
+
 //------------------------------------------------------------------------------
 int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
   vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)

@@ -50,7 +50,15 @@ public:
   void SetHAVSEarlyRayTerminationOpacity(double opacity);
   void SetHAVSTableResolution(int resolution);
   void SetHAVSBoundaryMode(int mode);
+  void SetHAVSVisibilityOrder(int order);
+  void SetHAVSNonConvexMethod(int method);
+  void SetHAVSCountOrderViolations(int count);
   ///@}
+
+  /// The order violations of the last frame this rank rendered (counted when
+  /// SetHAVSCountOrderViolations is on or while Automatic probes; -1 when not
+  /// counted).
+  int GetHAVSLastOrderViolations();
 
   ///@{
   /**
@@ -90,7 +98,7 @@ private:
   void operator=(const vtkHAVSUnstructuredGridVolumeRepresentation&) = delete;
 
   vtkHAVSVolumeMapper* HAVSMapper;
-  int KBufferSize = 6;
+  int KBufferSize = 2;
   int InteractiveKBufferSize = 2;
   bool InteractiveLOD = true;
 };

@@ -21,6 +21,7 @@ void main()
   {
     discard;
   }
-  float s = clamp(havsScalar, 0.0, 1.0);
+  // (+ 2 on a boundary face's own vertices, see vtkHAVSGLMesh::UploadFaceOrder)
+  float s = clamp(havsScalar > 1.5 ? havsScalar - 2.0 : havsScalar, 0.0, 1.0);
   havsExtremum = vec4(havsMinimum != 0 ? 1.0 - s : s, 1.0, 0.0, 0.0);
 }

@@ -26,6 +26,20 @@
 // goes on inside, and a ray leaving through an edge shared by an internal and
 // a boundary face ends outside.
 
+// Features compiled in or out per frame (vtkHAVSKBufferShaders::Features):
+// HAVS_COUNT_VIOLATIONS the order-violation counter and its tie tolerance;
+// HAVS_TAGGING the boundary role of a boundary face's fragment (its facing); HAVS_OPAQUE the opaque surface that ends the rays (a per-fragment
+// depth fetch). A feature a frame does not need costs nothing.
+#ifndef HAVS_COUNT_VIOLATIONS
+#define HAVS_COUNT_VIOLATIONS 1
+#endif
+#ifndef HAVS_TAGGING
+#define HAVS_TAGGING 1
+#endif
+#ifndef HAVS_OPAQUE
+#define HAVS_OPAQUE 1
+#endif
+
 const float HAVS_EMPTY = 3.0e38;     // an empty waiting slot
 const float HAVS_NO_FRONT = -2.0e38; // nothing composited yet
 const float HAVS_DONE = -3.0e38;     // the ray has ended (opaque surface reached)
@@ -43,8 +57,6 @@ uniform int havsParallel;
 uniform vec3 havsDirectionOfProjection;
 
 // Boundary handling and clipping (see vtkHAVSVolumeMapper::SetBoundaryMode).
-uniform usamplerBuffer havsFaceIsBoundary; // per primitive of the mesh draw, in draw order
-uniform int havsTagging;     // 1: boundary faces carry their entry/exit role
 uniform float havsGapLength; // segments longer than this contribute nothing (VTK 5's
                              // heuristic; 3e38 = off)
 uniform int havsRole;        // what is drawn: 0 mesh faces, 1 a section that enters the
@@ -110,13 +122,18 @@ float havsDistance(vec3 positionRC)
 // it takes screen-space derivatives).
 float havsTieTolerance(vec3 positionRC)
 {
+#if HAVS_COUNT_VIOLATIONS
   float d = havsDistance(positionRC);
   return HAVS_TIE * abs(d) + fwidth(d) * 0.5;
+#else
+  return 0.0;
+#endif
 }
 
 // Eye distance of the opaque surface at this pixel, HAVS_EMPTY when none.
 float havsOpaqueDistance(vec2 fragCoord)
 {
+#if HAVS_OPAQUE
   float z = texelFetch(havsOpaqueDepth, ivec2(fragCoord), 0).r;
   if (z >= 1.0)
   {
@@ -125,6 +142,9 @@ float havsOpaqueDistance(vec2 fragCoord)
   vec4 ndc = vec4(fragCoord / havsViewportSize * 2.0 - 1.0, z * 2.0 - 1.0, 1.0);
   vec4 p = havsDCRC * ndc;
   return havsDistance(p.xyz / p.w);
+#else
+  return HAVS_EMPTY;
+#endif
 }
 
 // Premultiplied colour and opacity of the segment from a to b.
@@ -178,10 +198,12 @@ bool havsRayEnded(vec4 color, vec2 front)
 void havsInsert(
   inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float opaqueDistance, float tolerance)
 {
+#if HAVS_COUNT_VIOLATIONS
   if (E[0].x > HAVS_NO_FRONT && f.x < E[0].x - tolerance)
   {
     havsCountViolation();
   }
+#endif
   vec2 leaving = f;
 #if HAVS_K > 1
   int nearest = 0;
@@ -250,21 +272,29 @@ bool havsClipped(vec3 positionRC)
 
 // The k-buffer entry of the fragment being shaded: a mesh face's (tagged by
 // the facing of its outward-wound boundary face when tagging is on) or a
-// section's (an entry or an exit by its role).
+// section's (an entry or an exit by its role). With tagging, a boundary face
+// is drawn with vertices of its own whose scalar is + 2 (vtkHAVSGLMesh): the
+// fragment knows it is on the boundary from its scalar alone.
 vec2 havsFaceEntry(vec3 positionRC, float scalar)
 {
-  float code = clamp(scalar, 0.0, 1.0);
-  if (havsRole == 1)
+  float code;
+#if HAVS_TAGGING
+  if (scalar > 1.5)
   {
-    code += 4.0;
+    code = clamp(scalar - 2.0, 0.0, 1.0) + (gl_FrontFacing ? 4.0 : 2.0);
   }
-  else if (havsRole == 2)
+  else
+#endif
   {
-    code += 2.0;
-  }
-  else if (havsTagging != 0 && texelFetch(havsFaceIsBoundary, gl_PrimitiveID).r != 0u)
-  {
-    code += gl_FrontFacing ? 4.0 : 2.0;
+    code = clamp(scalar, 0.0, 1.0);
+    if (havsRole == 1)
+    {
+      code += 4.0;
+    }
+    else if (havsRole == 2)
+    {
+      code += 2.0;
+    }
   }
   return vec2(havsDistance(positionRC), code);
 }
@@ -278,10 +308,12 @@ vec2 havsFaceEntry(vec3 positionRC, float scalar)
 // depth order, in particular for any list no longer than HAVS_K - 1.
 void havsRetreat(inout vec4 color, inout vec2 back, vec2 p, float opaqueDistance)
 {
+#if HAVS_COUNT_VIOLATIONS
   if (back.x > HAVS_NO_FRONT && p.x > back.x + HAVS_TIE * abs(back.x))
   {
     havsCountViolation();
   }
+#endif
   if (back.x > HAVS_NO_FRONT && p.x < opaqueDistance)
   {
     vec2 b = back;

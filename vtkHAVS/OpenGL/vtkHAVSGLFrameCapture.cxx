@@ -1,0 +1,214 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSGLFrameCapture.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSGLFrameCapture.h"
+
+#include "vtkHAVSGLCapabilities.h"
+#include "vtkHAVSGLFrameTargets.h"
+#include "vtkHAVSGLMesh.h"
+#include "vtkHAVSGLPassContext.h"
+#include "vtkHAVSGLTable.h"
+#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSOpenGL.h"
+#include "vtkHAVSViewFrame.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+template <typename T>
+bool WriteBinary(const std::string& path, const std::vector<T>& values)
+{
+  std::ofstream out(path, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(values.data()),
+    static_cast<std::streamsize>(values.size() * sizeof(T)));
+  return static_cast<bool>(out);
+}
+
+bool WriteText(const std::string& path, const std::string& text)
+{
+  std::ofstream out(path);
+  out << text;
+  return static_cast<bool>(out);
+}
+
+/// Every active non-sampler uniform of `program`: "uniform name type count values...".
+std::string UniformLines(GLuint program)
+{
+  std::ostringstream lines;
+  lines.precision(9);
+  GLint count = 0, longest = 0;
+  glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
+  glGetProgramiv(program, GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
+  std::vector<char> name(static_cast<size_t>(longest) + 1);
+  for (GLint u = 0; u < count; ++u)
+  {
+    GLint size = 0;
+    GLenum type = 0;
+    glGetActiveUniform(program, u, longest, nullptr, &size, &type, name.data());
+    std::string base(name.data());
+    const size_t bracket = base.find('[');
+    if (bracket != std::string::npos)
+    {
+      base = base.substr(0, bracket);
+    }
+    int components = 0;
+    bool integer = false;
+    const char* typeName = nullptr;
+    switch (type)
+    {
+      case GL_FLOAT:
+        components = 1, typeName = "float";
+        break;
+      case GL_FLOAT_VEC2:
+        components = 2, typeName = "vec2";
+        break;
+      case GL_FLOAT_VEC3:
+        components = 3, typeName = "vec3";
+        break;
+      case GL_FLOAT_VEC4:
+        components = 4, typeName = "vec4";
+        break;
+      case GL_FLOAT_MAT4:
+        components = 16, typeName = "mat4";
+        break;
+      case GL_INT:
+      case GL_BOOL:
+        components = 1, integer = true, typeName = "int";
+        break;
+      default: // samplers and images: bound by the program that draws
+        continue;
+    }
+    for (GLint i = 0; i < size; ++i)
+    {
+      const std::string element = size > 1 ? base + "[" + std::to_string(i) + "]" : base;
+      const GLint location = glGetUniformLocation(program, element.c_str());
+      if (location < 0)
+      {
+        continue;
+      }
+      lines << "uniform " << element << " " << typeName << " " << components;
+      if (integer)
+      {
+        GLint value = 0;
+        glGetUniformiv(program, location, &value);
+        lines << " " << value;
+      }
+      else
+      {
+        float values[16] = {};
+        glGetUniformfv(program, location, values);
+        for (int c = 0; c < components; ++c)
+        {
+          lines << " " << values[c];
+        }
+      }
+      lines << "\n";
+    }
+  }
+  return lines.str();
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSGLFrameCapture::Write(
+  const std::string& directory, vtkHAVSGLPassContext& context, vtkIdType cells, std::string& error)
+{
+  using Shaders = vtkHAVSKBufferShaders;
+  const vtkHAVSVolumeMapper::FrameRequest& request = context.Request;
+  const bool fetch = request.Path == vtkHAVSVolumeMapper::KBufferPathFramebufferFetch;
+  const bool interlock = request.Path == vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock;
+  if ((!fetch && !interlock) || request.BlendMode != vtkHAVSVolumeMapper::COMPOSITE_BLEND ||
+    request.RasterBoundOnly)
+  {
+    error = "only composite frames of the framebuffer-fetch or interlock path are captured";
+    return false;
+  }
+  if (request.Opaque || context.Mesh->HasSections() || request.CountViolations)
+  {
+    error = "frames with opaque geometry, plane sections or the violation counter are not "
+            "captured (the stand-alone program draws the faces alone)";
+    return false;
+  }
+  if (!vtksys::SystemTools::MakeDirectory(directory))
+  {
+    error = "cannot make " + directory;
+    return false;
+  }
+  const std::string dir = directory + "/";
+  const Shaders::Features features = context.ShaderFeatures();
+  const int k = request.K;
+
+  // The draw program of the frame's path, for its uniforms (the shader cache
+  // gives back the program the frame used, its uniforms set again).
+  const std::string drawShader = fetch
+    ? Shaders::FetchDrawShader(k, features)
+    : Shaders::InterlockDrawShader(k, vtkHAVSGLCapabilities::AvailableInterlock(), features);
+  vtkShaderProgram* program = context.FaceProgram(drawShader);
+  if (!program)
+  {
+    error = "the draw program is not available";
+    return false;
+  }
+  const std::string uniforms = UniformLines(program->GetHandle());
+
+  std::vector<float> points, scalars, result;
+  std::vector<uint32_t> indices;
+  context.Mesh->ReadBack(points, scalars, indices);
+  vtkTextureObject* tableTexture = context.Table->GetTable();
+  std::vector<float> table(static_cast<size_t>(tableTexture->GetWidth()) *
+    tableTexture->GetHeight() * tableTexture->GetDepth() * 4);
+  tableTexture->Activate();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, table.data());
+  tableTexture->Deactivate();
+  context.Targets->ReadResult(result);
+
+  std::ostringstream text;
+  text << "# vtkHAVS frame case (vtkHAVSGLFrameCapture): the stand-alone GPU program's input\n"
+       << "width " << context.Width() << "\nheight " << context.Height() << "\nk " << k
+       << "\ncells " << cells << "\nvertices " << scalars.size() << "\nindices " << indices.size()
+       << "\ntable " << tableTexture->GetWidth() << " " << tableTexture->GetHeight() << " "
+       << tableTexture->GetDepth() << "\nflip_facing " << (request.View->FlipFacing ? 1 : 0)
+       << "\ntagging " << (features.Tagging ? 1 : 0) << "\ncaptured_path "
+       << (fetch ? "fetch" : "interlock") << "\nfetch_attachments " << Shaders::FetchAttachments(k)
+       << "\ninterlock_stride " << Shaders::InterlockPixelStride(k) << "\n"
+       << uniforms;
+
+  const int fetchPath = vtkHAVSVolumeMapper::KBufferPathFramebufferFetch;
+  const int interlockPath = vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock;
+  bool ok = WriteText(dir + "case.txt", text.str()) && WriteBinary(dir + "points.f32", points) &&
+    WriteBinary(dir + "scalars.f32", scalars) && WriteBinary(dir + "indices.u32", indices) &&
+    WriteBinary(dir + "table.f32", table) && WriteBinary(dir + "result.f32", result) &&
+    WriteText(dir + "face.vert", Shaders::FaceVertexShader()) &&
+    WriteText(dir + "quad.vert", Shaders::QuadVertexShader()) &&
+    WriteText(dir + "trivial.frag", Shaders::TrivialShader()) &&
+    WriteText(dir + "fetch_draw.frag", Shaders::FetchDrawShader(k, features)) &&
+    WriteText(dir + "fetch_resolve.frag", Shaders::ResolveShader(fetchPath, k, false, features)) &&
+    WriteText(dir + "interlock_arb_draw.frag",
+      Shaders::InterlockDrawShader(k, Shaders::InterlockARB, features)) &&
+    WriteText(dir + "interlock_nv_draw.frag",
+      Shaders::InterlockDrawShader(k, Shaders::InterlockNV, features)) &&
+    WriteText(dir + "interlock_none_draw.frag",
+      Shaders::InterlockDrawShader(k, Shaders::InterlockNone, features)) &&
+    WriteText(dir + "interlock_clear.frag", Shaders::InterlockClearShader(k)) &&
+    WriteText(
+      dir + "interlock_resolve.frag", Shaders::ResolveShader(interlockPath, k, false, features));
+  if (!ok)
+  {
+    error = "cannot write the case into " + directory;
+  }
+  return ok;
+}
