@@ -211,10 +211,9 @@ bool MakeContext(std::string& platform)
         egl.MakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
       {
         platform = name + " (EGL " + std::to_string(major) + "." + std::to_string(minor) + ", " +
-          (egl.QueryString(display, EGL_VENDOR) ? egl.QueryString(display, EGL_VENDOR) : "?") +
-          ")";
+          (egl.QueryString(display, EGL_VENDOR) ? egl.QueryString(display, EGL_VENDOR) : "?") + ")";
 #define HAVS_GL_LOAD(type, name)                                                                   \
-  gl.name = reinterpret_cast<type>(egl.GetProcAddress("gl" #name));                               \
+  gl.name = reinterpret_cast<type>(egl.GetProcAddress("gl" #name));                                \
   if (!gl.name)                                                                                    \
   {                                                                                                \
     return Fail("no gl" #name);                                                                    \
@@ -322,9 +321,8 @@ bool ReadCase(const std::string& dir, Case& c)
     }
     std::string rest;
     std::getline(words, rest);
-    c.Keys[key] = rest.substr(rest.find_first_not_of(' ') == std::string::npos
-        ? rest.size()
-        : rest.find_first_not_of(' '));
+    c.Keys[key] = rest.substr(
+      rest.find_first_not_of(' ') == std::string::npos ? rest.size() : rest.find_first_not_of(' '));
   }
   c.Width = c.Int("width");
   c.Height = c.Int("height");
@@ -623,8 +621,8 @@ int main(int argc, char* argv[])
   gl.EnableVertexAttribArray(1);
   gl.VertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
   gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[2]);
-  gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, c.Indices.size() * sizeof(uint32_t), c.Indices.data(),
-    GL_STATIC_DRAW);
+  gl.BufferData(
+    GL_ELEMENT_ARRAY_BUFFER, c.Indices.size() * sizeof(uint32_t), c.Indices.data(), GL_STATIC_DRAW);
   const GLsizei indexCount = static_cast<GLsizei>(c.Indices.size());
   GLuint quadVao = 0;
   gl.GenVertexArrays(1, &quadVao);
