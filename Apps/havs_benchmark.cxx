@@ -33,7 +33,8 @@
 // raster-bound (the same faces in the same order with a trivial shader: the
 // lower bound of any face-based method; sort-bound is the sort alone),
 // reference (the exact images, computed and cached in their own process before
-// the timed configurations; always run first), and
+// the timed configurations; always run first), cellproj (vtkHAVSCellProjectionMapper:
+// the exact MPVO cell order, boundary layers; cellproj-convex: the convexification), and
 // VTK's vtkProjectedTetrahedraMapper, vtkUnstructuredGridVolumeZSweepMapper and
 // vtkUnstructuredGridVolumeRayCastMapper (ImageSampleDistance 1,
 // AutoAdjustSampleDistances off, vtkUnstructuredGridLinearRayIntegrator).
@@ -47,6 +48,7 @@
 // says how many views it measured. Output: CSV, Markdown (with ratios) and,
 // where matplotlib is installed, plots.
 #include "havsAppOptions.h"
+#include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFaceSorter.h"
@@ -314,6 +316,7 @@ int RunWorker(const Options& o)
     window->AddRenderer(renderer);
     vtkSmartPointer<vtkUnstructuredGridVolumeMapper> mapper;
     vtkHAVSVolumeMapper* havs = nullptr;
+    vtkHAVSCellProjectionMapper* cellProjection = nullptr;
     vtkSmartPointer<vtkActor> opaqueActor; // -opaque: in the scene, behind the eye
     if (config.rfind("havs", 0) == 0 || config == "raster-bound")
     {
@@ -378,6 +381,18 @@ int RunWorker(const Options& o)
     else if (config == "pt")
     {
       mapper = vtkSmartPointer<vtkProjectedTetrahedraMapper>::New();
+    }
+    else if (config == "cellproj" || config == "cellproj-convex")
+    {
+      // vtkHAVSCellProjectionMapper (issue 22): the exact MPVO cell order.
+      auto m = vtkSmartPointer<vtkHAVSCellProjectionMapper>::New();
+      m->MeasureStageTimesOn();
+      if (config == "cellproj-convex")
+      {
+        m->SetNonConvexMethod(vtkHAVSVisibilityOrder::NonConvexConvexification);
+      }
+      cellProjection = m;
+      mapper = m;
     }
     else if (config == "zsweep" || config == "raycast")
     {
@@ -465,6 +480,11 @@ int RunWorker(const Options& o)
           upload.push_back(1000.0 * havs->GetLastFrameStatistics()->GetUploadSeconds());
           readback.push_back(1000.0 * havs->GetLastFrameStatistics()->GetReadbackSeconds());
           layers.push_back(1000.0 * havs->GetLastFrameStatistics()->GetBoundaryLayerSeconds());
+        }
+        else if (cellProjection)
+        {
+          sort.push_back(1000.0 * cellProjection->GetLastOrderSeconds());
+          draw.push_back(1000.0 * cellProjection->GetLastDrawSeconds());
         }
       }
       if (config != "raster-bound")
@@ -921,6 +941,28 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
       }
       md << ".\n";
     }
+    if (ms.count("cellproj"))
+    {
+      // vtkHAVSCellProjectionMapper against HAVS's defaults and PT (issue 22).
+      for (const Row& r : rows)
+      {
+        if (r.at("dataset") == dataset && sizeOf(r) == size && r.at("config") == "cellproj")
+        {
+          md << "\nCell projection (cellproj, the exact MPVO cell order): "
+             << Cell(r, "ms_median", "%.1f") << " ms (order " << Cell(r, "sort_ms", "%.1f")
+             << ", draw " << Cell(r, "draw_ms", "%.1f") << "), RMSE " << Cell(r, "rmse", "%.5f")
+             << ", max " << Cell(r, "max", "%.4f");
+          for (const char* other : { "havs-default", "pt", "raster-bound" })
+          {
+            if (ms.count(other))
+            {
+              md << "; " << std::setprecision(3) << ms["cellproj"] / ms[other] << "× " << other;
+            }
+          }
+          md << ".\n";
+        }
+      }
+    }
     if (std::isfinite(havs6) &&
       (ms.count("pt") || ms.count("zsweep") || ms.count("raycast") || ms.count("raster-bound")))
     {
@@ -1026,7 +1068,7 @@ int main(int argc, char* argv[])
                    "havs-k14-table64,havs-k6-count,havs-k6-untagged,havs-k6-noterm,havs-k6-opaque,"
                    "havs-k6-table64,havs-k6-table256,havs-k6-auto,havs-k6-mpvo,"
                    "havs-k1-mpvo,havs-k2-mpvo,havs-k2-mpvo-convex,havs-k2-auto,havs-lists,"
-                   "raster-bound,sort-bound,pt,"
+                   "cellproj,raster-bound,sort-bound,pt,"
                    "zsweep,raycast"));
   if (o.Worker)
   {

@@ -42,6 +42,7 @@ FAMILIES = [
     ("VTK PT", "^", "tab:orange"),
     ("VTK ZSweep", "v", "tab:brown"),
     ("VTK RayCast", "X", "tab:gray"),
+    ("cell projection (MPVO cell order)", "h", "tab:cyan"),
 ]
 
 
@@ -56,6 +57,8 @@ def family(config):
         if "-auto" in config:
             return FAMILIES[3]
         return FAMILIES[1]
+    if config.startswith("cellproj"):
+        return FAMILIES[8]
     return {"pt": FAMILIES[5], "zsweep": FAMILIES[6], "raycast": FAMILIES[7]}.get(config)
 
 

@@ -219,16 +219,7 @@ void TestOpaqueSphere()
   mapper->KeepFloatResultOn();
   mapper->SetEarlyRayTerminationOpacity(1.0);
   auto scene = havstest::MakeScene(grid, mapper, property, kSize, kSize);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(0.55, 0.5, 0.45);
-  sphere->SetRadius(0.3);
-  sphere->SetThetaResolution(48);
-  sphere->SetPhiResolution(48);
-  vtkNew<vtkPolyDataMapper> sphereMapper;
-  sphereMapper->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(sphereMapper);
-  scene.Renderer->AddActor(actor);
+  havstest::AddOpaqueSphere(scene.Renderer);
   havstest::PlaceCamera(scene.Renderer, 25.0, 15.0, false);
   const auto havs = RenderWith(scene, mapper, [] {});
   vtkNew<vtkFloatArray> depth;

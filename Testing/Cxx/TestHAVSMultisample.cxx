@@ -77,7 +77,6 @@ struct XScene
   vtkNew<vtkRenderWindow> Window;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkVolume> Volume;
-  vtkNew<vtkActor> Sphere;
 };
 
 void Build(XScene& scene, vtkUnstructuredGrid* grid, vtkHAVSVolumeMapper* mapper,
@@ -92,15 +91,7 @@ void Build(XScene& scene, vtkUnstructuredGrid* grid, vtkHAVSVolumeMapper* mapper
   scene.Volume->SetMapper(mapper);
   scene.Volume->SetProperty(property);
   scene.Renderer->AddVolume(scene.Volume);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(0.55, 0.5, 0.45);
-  sphere->SetRadius(0.3);
-  sphere->SetThetaResolution(48);
-  sphere->SetPhiResolution(48);
-  vtkNew<vtkPolyDataMapper> sphereMapper;
-  sphereMapper->SetInputConnection(sphere->GetOutputPort());
-  scene.Sphere->SetMapper(sphereMapper);
-  scene.Renderer->AddActor(scene.Sphere);
+  havstest::AddOpaqueSphere(scene.Renderer);
 }
 }
 

@@ -62,6 +62,9 @@ int TestHAVSShaderSources(int, char*[])
   check(vtkHAVSKBufferShaders::ExtremumDrawShader(), "extremum_draw", "frag");
   check(vtkHAVSKBufferShaders::ExtremumResolveShader(), "extremum_resolve", "frag");
   check(vtkHAVSKBufferShaders::CompositeShader(), "composite", "frag");
+  check(vtkHAVSKBufferShaders::CellProjectionVertexShader(), "cell_projection", "vert");
+  check(vtkHAVSKBufferShaders::CellProjectionShader(false), "cell_projection", "frag");
+  check(vtkHAVSKBufferShaders::CellProjectionShader(true), "cell_projection_opaque", "frag");
   check(
     vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true),
     "list_resolve_vote", "frag");

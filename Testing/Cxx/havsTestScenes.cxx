@@ -11,6 +11,7 @@
 
 #include "vtkHAVSVolumeMapper.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
@@ -18,8 +19,10 @@
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSphereSource.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
@@ -52,6 +55,20 @@ VolumeScene MakeScene(vtkUnstructuredGrid* grid, vtkAbstractVolumeMapper* mapper
   scene.Volume->SetProperty(property);
   scene.Renderer->AddVolume(scene.Volume);
   return scene;
+}
+
+void AddOpaqueSphere(vtkRenderer* renderer)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(0.55, 0.5, 0.45);
+  sphere->SetRadius(0.3);
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(48);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
 }
 
 void PlaceCamera(vtkRenderer* renderer, double azimuth, double elevation, bool parallel)

@@ -48,6 +48,10 @@ VolumeScene MakeScene(vtkUnstructuredGrid* grid, vtkAbstractVolumeMapper* mapper
  */
 void UseCentroidOrder(vtkHAVSVolumeMapper* mapper);
 
+/// An opaque sphere (centre 0.55, 0.5, 0.45, radius 0.3) added to the
+/// renderer: inside the unit box of the opaque-geometry tests.
+void AddOpaqueSphere(vtkRenderer* renderer);
+
 /// Places the camera: looking at the grid's centre from (azimuth, elevation)
 /// degrees, perspective unless parallel is set; resets the clipping range.
 void PlaceCamera(vtkRenderer* renderer, double azimuth, double elevation, bool parallel);

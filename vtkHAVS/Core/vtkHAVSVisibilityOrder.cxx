@@ -458,6 +458,8 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
   const size_t numberOfTets = this->CellFaces.size() / 4;
   this->Order.clear();
   this->Order.reserve(numberOfFaces);
+  this->CellOrder.clear();
+  this->CellOrder.reserve(numberOfTets);
   this->NumberOfCycleBreaks = 0;
   this->NumberOfBoundaryRelations = 0;
   auto side = [&](const double* p) { return EyeSide(p, eye, direction, parallel); };
@@ -614,6 +616,7 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
     ++visitedCount;
     if (c < numberOfTets)
     {
+      this->CellOrder.push_back(c);
       const uint32_t* cellFaces = &this->CellFaces[4 * static_cast<size_t>(c)];
       // Entries (the faces behind which c lies), then the mesh's exits from c.
       for (int j = 0; j < 4; ++j)

@@ -118,6 +118,13 @@ public:
   /// Face indices, first drawn first.
   const std::vector<uint32_t>& GetOrder() const { return this->Order; }
 
+  /**
+   * The tetrahedra (indices into the face set's GetTetrahedra()) in the same
+   * sort, front to back: the cell order of vtkHAVSCellProjectionMapper. A
+   * cycle break (GetNumberOfCycleBreaks) takes one tetrahedron out of order.
+   */
+  const std::vector<uint32_t>& GetCellOrder() const { return this->CellOrder; }
+
   /// Tetrahedra taken out of order to break visibility cycles in the last Sort().
   vtkGetMacro(NumberOfCycleBreaks, vtkIdType);
 
@@ -159,6 +166,7 @@ private:
   std::vector<double> FacePlanes;  // 4 per face: n, d with n.x + d > 0 on FaceCells[0]'s far side
   std::vector<uint32_t> CellFaces; // 4 per tetrahedron
   std::vector<uint32_t> Order;
+  std::vector<uint32_t> CellOrder;
   std::vector<double> Points;                 // the grid's points (3 per point)
   std::vector<uint32_t> BoundaryFaces;        // face ids of the boundary faces
   std::vector<uint32_t> BoundaryFaceVertices; // 3 per boundary face, wound outward

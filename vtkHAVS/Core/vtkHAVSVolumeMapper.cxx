@@ -14,6 +14,7 @@
 #include "vtkHAVSFaceSorter.h"
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSFrameStatistics.h"
+#include "vtkHAVSMapperInputs.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSPreIntegrationTable.h"
 #include "vtkHAVSViewFrame.h"
@@ -39,57 +40,9 @@ vtkAbstractObjectFactoryNewMacro(vtkHAVSVolumeMapper);
 
 namespace
 {
-/// The warnings given once per mapper.
-enum OnceWarnings
-{
-  WarnShading,
-  WarnGradient,
-  WarnComponents,
-  WarnPath,
-  WarnK,
-  WarnPlanes,
-  WarnOrder
-};
-
-/// Whether the depth buffer can hold opaque geometry when `volume` is drawn:
-/// the renderer keeps an earlier depth buffer, or a visible prop other than a
-/// volume has opaque geometry.
-bool RendererHasOpaqueGeometry(vtkRenderer* renderer)
-{
-  if (renderer->GetPreserveDepthBuffer())
-  {
-    return true;
-  }
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    if (prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) && prop->HasOpaqueGeometry())
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
-bool IsConstantOne(vtkPiecewiseFunction* f)
-{
-  if (!f)
-  {
-    return true;
-  }
-  double node[4];
-  for (int i = 0; i < f->GetSize(); ++i)
-  {
-    f->GetNodeValue(i, node);
-    if (node[1] != 1.0)
-    {
-      return false;
-    }
-  }
-  return true;
-}
+// The warnings given once per mapper (vtkHAVSMapperInputs::OnceWarning).
+using Inputs = vtkHAVSMapperInputs;
+const int WarnPath = Inputs::WarnPath, WarnK = Inputs::WarnK, WarnPlanes = Inputs::WarnPlanes;
 }
 
 //------------------------------------------------------------------------------
@@ -165,99 +118,36 @@ const std::vector<float>* vtkHAVSVolumeMapper::GetKeptResult(int[2])
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSVolumeMapper::WarnOnce(int which, const char* message)
+void vtkHAVSVolumeMapper::WarnOnce(int which, const std::string& message)
 {
-  if (!this->Warned[which])
-  {
-    this->Warned[which] = true;
-    vtkWarningMacro(<< message);
-  }
+  vtkHAVSMapperInputs::WarnOnceBy(this, this->Warned[which], message);
 }
 
 //------------------------------------------------------------------------------
 bool vtkHAVSVolumeMapper::PrepareMesh(vtkVolume* volume)
 {
-  vtkHAVSMesh::ScalarSelection selection;
-  selection.Mode = this->ScalarMode;
-  selection.AccessMode = this->ArrayAccessMode;
-  selection.Id = this->ArrayId;
-  selection.Name = this->ArrayName ? this->ArrayName : "";
-  vtkDataObject* input = this->GetInput();
-  if (!input)
+  const auto state = vtkHAVSMapperInputs::PrepareMesh(this, volume, this->Mesh,
+    "vtkHAVSVolumeMapper", [this](int which, const std::string& m) { this->WarnOnce(which, m); });
+  if (state != vtkHAVSMapperInputs::MeshUnchanged)
   {
-    vtkErrorMacro("No input.");
-    return false;
+    this->FaceOrder->Invalidate();
   }
-  if (!this->Mesh->NeedsBuild(input, selection))
-  {
-    return this->Mesh->IsValid();
-  }
-  this->FaceOrder->Invalidate();
-  const bool built =
-    this->Mesh->Build(input, selection, [this](double p) { this->UpdateProgress(p); });
-  for (const std::string& warning : this->Mesh->GetWarnings())
-  {
-    vtkWarningMacro(<< warning);
-  }
-  if (!built)
-  {
-    vtkErrorMacro(<< this->Mesh->GetError());
-    return false;
-  }
-  const int components = this->Mesh->GetNumberOfComponents();
-  if (components > 1)
-  {
-    const std::string message = "The scalars have " + std::to_string(components) + " components" +
-      (volume->GetProperty()->GetIndependentComponents() ? " (independent)" : " (dependent)") +
-      "; vtkHAVSVolumeMapper renders the first one only.";
-    this->WarnOnce(WarnComponents, message.c_str());
-  }
-  return true;
+  return state != vtkHAVSMapperInputs::MeshFailed;
 }
 
 //------------------------------------------------------------------------------
 bool vtkHAVSVolumeMapper::PrepareTable(vtkVolume* volume)
 {
-  vtkVolumeProperty* property = volume->GetProperty();
-  const int component = this->Mesh->GetComponent();
-  if (property->GetShade(component))
+  bool rebuilt = false;
+  const bool ok = vtkHAVSMapperInputs::PrepareTable(
+    this, volume, this->Mesh, this->Table, this->TableScalarResolution, this->TableLengthResolution,
+    "vtkHAVSVolumeMapper", [this](int which, const std::string& m) { this->WarnOnce(which, m); },
+    &rebuilt);
+  if (rebuilt)
   {
-    this->WarnOnce(
-      WarnShading, "Shading is not supported by vtkHAVSVolumeMapper; the volume is unshaded.");
-  }
-  if (!property->GetDisableGradientOpacity(component) && property->HasGradientOpacity(component) &&
-    !IsConstantOne(property->GetGradientOpacity(component)))
-  {
-    this->WarnOnce(
-      WarnGradient, "Gradient opacity is not supported by vtkHAVSVolumeMapper; it is ignored.");
-  }
-
-  // The longest segment inside one tetrahedron is its longest edge; in world
-  // space after the volume's matrix, at most that times the largest stretch.
-  vtkMatrix4x4* m = volume->GetMatrix();
-  double stretch = 0.0;
-  for (int c = 0; c < 3; ++c)
-  {
-    const double column[3] = { m->GetElement(0, c), m->GetElement(1, c), m->GetElement(2, c) };
-    stretch = std::max(stretch, vtkMath::Norm(column));
-  }
-  const double maxLength = std::max(this->Mesh->GetFaceSet()->GetLongestEdge() * stretch, 1e-30);
-
-  this->Table->SetScalarResolution(this->TableScalarResolution);
-  this->Table->SetLengthResolution(this->TableLengthResolution);
-  const double* range = this->Mesh->GetScalarRange();
-  if (this->Table->NeedsRebuild(property, component, range, maxLength))
-  {
-    this->UpdateProgress(0.0);
-    if (!this->Table->Build(property, component, range, maxLength))
-    {
-      vtkErrorMacro("The pre-integrated transfer-function table could not be built.");
-      return false;
-    }
     this->TableBuildTime.Modified();
-    this->UpdateProgress(1.0);
   }
-  return true;
+  return ok;
 }
 
 //------------------------------------------------------------------------------
@@ -345,7 +235,8 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       GetKBufferPathName(path) + " path's maximum; using k = " + std::to_string(maxK) + ".";
     this->WarnOnce(WarnK, message.c_str());
   }
-  FrameRequest request = this->MakeRequest(view, path, k, RendererHasOpaqueGeometry(renderer));
+  FrameRequest request =
+    this->MakeRequest(view, path, k, vtkHAVSMapperInputs::RendererHasOpaqueGeometry(renderer));
   const bool composite = this->BlendMode == COMPOSITE_BLEND;
 
   // 4. The near and clipping planes, and the mesh's sections with them.
@@ -426,15 +317,7 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 //------------------------------------------------------------------------------
 bool vtkHAVSVolumeMapper::GetFloatResult(vtkFloatArray* rgba, int size[2])
 {
-  const std::vector<float>* result = this->GetKeptResult(size);
-  if (!rgba || !result || result->empty())
-  {
-    return false;
-  }
-  rgba->SetNumberOfComponents(4);
-  rgba->SetNumberOfTuples(static_cast<vtkIdType>(size[0]) * size[1]);
-  std::copy(result->begin(), result->end(), rgba->GetPointer(0));
-  return true;
+  return vtkHAVSMapperInputs::CopyResult(this->GetKeptResult(size), size, rgba);
 }
 
 //------------------------------------------------------------------------------

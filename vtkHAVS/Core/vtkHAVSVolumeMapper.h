@@ -56,6 +56,7 @@
 
 #include <array>   // For std::array
 #include <cstdint> // For uint32_t
+#include <string>  // For std::string
 #include <vector>  // For std::vector
 
 class vtkFloatArray;
@@ -436,7 +437,7 @@ private:
   bool PrepareMesh(vtkVolume* volume);
   bool PrepareTable(vtkVolume* volume);
   FrameRequest MakeRequest(const vtkHAVSViewFrame& view, int path, int k, bool opaque);
-  void WarnOnce(int which, const char* message);
+  void WarnOnce(int which, const std::string& message);
 
   vtkNew<vtkHAVSMesh> Mesh;
   vtkNew<vtkHAVSPreIntegrationTable> Table;
@@ -444,7 +445,7 @@ private:
   vtkNew<vtkHAVSFramePlanes> Planes;
   vtkNew<vtkHAVSFaceOrderPolicy> FaceOrder;
   vtkNew<vtkHAVSFrameStatistics> LastFrame;
-  std::array<bool, 8> Warned{};
+  std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
 };
 
 #endif

@@ -11,6 +11,8 @@
 
 #include "vtkHAVSVolumeMapper.h"
 
+#include "vtkHAVSCellProjectionFS.h"
+#include "vtkHAVSCellProjectionVS.h"
 #include "vtkHAVSClearFS.h"
 #include "vtkHAVSCompositeFS.h"
 #include "vtkHAVSExtremumDrawFS.h"
@@ -221,4 +223,18 @@ std::string vtkHAVSKBufferShaders::TrivialShader()
 std::string vtkHAVSKBufferShaders::CompositeShader()
 {
   return vtkHAVSCompositeFS;
+}
+
+std::string vtkHAVSKBufferShaders::CellProjectionVertexShader()
+{
+  return vtkHAVSCellProjectionVS;
+}
+
+std::string vtkHAVSKBufferShaders::CellProjectionShader(bool opaque)
+{
+  Features features;
+  features.CountViolations = false;
+  features.Tagging = false;
+  features.Opaque = opaque;
+  return Compose(vtkHAVSCellProjectionFS, 1, 1, features);
 }

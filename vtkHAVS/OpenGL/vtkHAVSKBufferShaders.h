@@ -93,6 +93,13 @@ public:
 
   /// Composites the result over VTK's framebuffer.
   static std::string CompositeShader();
+  ///@{
+  /// vtkHAVSCellProjectionMapper: the faces' vertex shader, and the fragment
+  /// shader (the k-buffer library's segment look-up; the opaque cut compiled
+  /// in with `opaque`).
+  static std::string CellProjectionVertexShader();
+  static std::string CellProjectionShader(bool opaque);
+  ///@}
 };
 
 #endif

@@ -1,0 +1,91 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSCellGeometry.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSCellGeometry.h"
+
+#include "vtkMath.h"
+#include "vtkSMPTools.h"
+
+#include <cmath>
+
+//------------------------------------------------------------------------------
+void vtkHAVSCellGeometry::Compute(const std::vector<float>& points,
+  const std::vector<float>& scalars, const std::vector<uint32_t>& tets, std::vector<float>& cells,
+  std::vector<uint32_t>& faces)
+{
+  const size_t count = tets.size() / 4;
+  cells.assign(count * FloatsPerCell, 0.0f);
+  faces.assign(count * 12, 0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const uint32_t* ids = &tets[4 * static_cast<size_t>(t)];
+        double x[4][3], s[4];
+        for (int v = 0; v < 4; ++v)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            x[v][c] = points[3 * static_cast<size_t>(ids[v]) + c];
+          }
+          s[v] = scalars[ids[v]];
+        }
+        float* out = &cells[static_cast<size_t>(t) * FloatsPerCell];
+        uint32_t* face = &faces[12 * static_cast<size_t>(t)];
+        for (int j = 0; j < 4; ++j)
+        {
+          int a = (j + 1) % 4, b = (j + 2) % 4, c = (j + 3) % 4;
+          double e1[3], e2[3], n[3], toOpposite[3];
+          vtkMath::Subtract(x[b], x[a], e1);
+          vtkMath::Subtract(x[c], x[a], e2);
+          vtkMath::Cross(e1, e2, n);
+          vtkMath::Subtract(x[j], x[a], toOpposite);
+          if (vtkMath::Dot(n, toOpposite) > 0.0)
+          {
+            // The opposite vertex is in front: turn the face (and its normal) outward.
+            std::swap(b, c);
+            vtkMath::MultiplyScalar(n, -1.0);
+          }
+          const double length = vtkMath::Norm(n);
+          if (length > 0.0)
+          {
+            vtkMath::MultiplyScalar(n, 1.0 / length);
+          }
+          for (int k = 0; k < 3; ++k)
+          {
+            out[4 * j + k] = static_cast<float>(n[k]);
+          }
+          out[4 * j + 3] = static_cast<float>(-vtkMath::Dot(n, x[a]));
+          face[3 * j] = ids[a];
+          face[3 * j + 1] = ids[b];
+          face[3 * j + 2] = ids[c];
+        }
+        // s(x) = g.(x - x0) + s0: solve [x1-x0; x2-x0; x3-x0] g = [s1-s0; s2-s0; s3-s0].
+        double m[3][3], rhs[3], g[3] = { 0, 0, 0 };
+        for (int r = 0; r < 3; ++r)
+        {
+          vtkMath::Subtract(x[r + 1], x[0], m[r]);
+          rhs[r] = s[r + 1] - s[0];
+        }
+        const double det = vtkMath::Determinant3x3(m);
+        if (std::abs(det) > 0.0)
+        {
+          double inverse[3][3];
+          vtkMath::Invert3x3(m, inverse);
+          vtkMath::Multiply3x3(inverse, rhs, g);
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          out[16 + k] = static_cast<float>(g[k]);
+        }
+        out[19] = static_cast<float>(s[0] - vtkMath::Dot(g, x[0]));
+      }
+    });
+}

@@ -1,0 +1,193 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSCellProjectionMapper.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSCellProjectionMapper
+ * @brief   View-independent cell projection in the exact cell order, pre-integrated.
+ *
+ * The third mapper of vtkHAVS, after Weiler, Kraus and Ertl, "Hardware-Based
+ * View-Independent Cell Projection" (2002, seed 001), with the pre-integrated
+ * segments and the exact order of Röttger, Guthe, Schieber and Ertl (2004,
+ * seed 004): every tetrahedron's faces are drawn in the exact front-to-back
+ * cell order (vtkHAVSVisibilityOrder: MPVO with the boundary layers or the
+ * convexification), back faces culled; per fragment of a front face the
+ * shader finds where the ray leaves the cell (the nearest of the cell's
+ * other face planes, perspective or parallel, in model coordinates), the
+ * scalars at both ends from the cell's linear field, the segment from the
+ * shared pre-integration table, and fixed-function blending composites it
+ * front to back. No k-buffer, no per-pixel storage; per view the CPU makes
+ * the order only (vtkHAVSCellGeometry is built once per mesh).
+ *
+ * Same inputs, scalars and table as vtkHAVSVolumeMapper (vtkHAVSMapperInputs),
+ * the volume's matrix, perspective and parallel cameras, opaque geometry in
+ * the scene, up to 6 clipping planes (each fragment's segment clipped to
+ * them: the ray starts inside a cell where a plane cuts it, no section to
+ * draw). Not yet: the camera inside the mesh (warned: the cells the near plane
+ * cuts are not drawn), blend modes other than composite (an error), early
+ * ray termination (blending has none). A cycle break has no k-buffer to
+ * absorb it: the cells taken out of order are counted
+ * (GetLastCycleBreaks()).
+ *
+ * Abstract: New() gives the graphics layer's override
+ * (vtkOpenGLHAVSCellProjectionMapper), as vtkHAVSVolumeMapper does.
+ */
+#ifndef vtkHAVSCellProjectionMapper_h
+#define vtkHAVSCellProjectionMapper_h
+
+#include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkNew.h"            // For vtkNew
+#include "vtkUnstructuredGridVolumeMapper.h"
+
+#include <array>   // For std::array
+#include <cstdint> // For uint32_t
+#include <string>  // For std::string
+#include <vector>  // For std::vector
+
+class vtkFloatArray;
+class vtkHAVSFramePlanes;
+class vtkHAVSMesh;
+class vtkHAVSPreIntegrationTable;
+class vtkHAVSViewFrame;
+class vtkHAVSVisibilityOrder;
+
+class VTKHAVSCORE_EXPORT vtkHAVSCellProjectionMapper : public vtkUnstructuredGridVolumeMapper
+{
+public:
+  /// The graphics layer's override (vtkOpenGLHAVSCellProjectionMapper); nullptr without one.
+  static vtkHAVSCellProjectionMapper* New();
+  vtkTypeMacro(vtkHAVSCellProjectionMapper, vtkUnstructuredGridVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum CellOrders
+  {
+    CellOrderMPVO = 0,    ///< exact (default)
+    CellOrderCentroid = 1 ///< cells by centroid distance: not exact (for comparison)
+  };
+  ///@{
+  /// The cell order; MPVO by default.
+  vtkSetClampMacro(CellOrder, int, CellOrderMPVO, CellOrderCentroid);
+  vtkGetMacro(CellOrder, int);
+  void SetCellOrderToMPVO() { this->SetCellOrder(CellOrderMPVO); }
+  void SetCellOrderToCentroid() { this->SetCellOrder(CellOrderCentroid); }
+  ///@}
+
+  ///@{
+  /// How MPVO orders across the gaps of a non-convex mesh (vtkHAVSVisibilityOrder's
+  /// NonConvexMethods); default the boundary layers.
+  vtkSetClampMacro(NonConvexMethod, int, 0, 2);
+  vtkGetMacro(NonConvexMethod, int);
+  ///@}
+
+  ///@{
+  /// Resolutions of the pre-integration table (as vtkHAVSVolumeMapper's; default 128).
+  vtkSetClampMacro(TableScalarResolution, int, 4, 1024);
+  vtkGetMacro(TableScalarResolution, int);
+  vtkSetClampMacro(TableLengthResolution, int, 4, 1024);
+  vtkGetMacro(TableLengthResolution, int);
+  ///@}
+
+  ///@{
+  /// Keep the frame's float result (premultiplied RGBA) for GetFloatResult().
+  vtkSetMacro(KeepFloatResult, bool);
+  vtkGetMacro(KeepFloatResult, bool);
+  vtkBooleanMacro(KeepFloatResult, bool);
+  bool GetFloatResult(vtkFloatArray* rgba, int size[2]);
+  ///@}
+
+  ///@{
+  /// Testing aid (a negative control): the ray leaves each cell through the
+  /// farthest forward face plane instead of the nearest. Off by default.
+  vtkSetMacro(WrongExitForTesting, bool);
+  vtkGetMacro(WrongExitForTesting, bool);
+  ///@}
+
+  ///@{
+  /// Testing aid (a negative control): the cells drawn in the reverse of the
+  /// chosen order (back to front under front-to-back blending). Off by default.
+  vtkSetMacro(ReverseOrderForTesting, bool);
+  vtkGetMacro(ReverseOrderForTesting, bool);
+  ///@}
+
+  ///@{
+  /// The last frame: cells drawn, cells taken out of order to break cycles,
+  /// seconds of the order and of the draw (with the GPU finished only when
+  /// MeasureStageTimes is on).
+  vtkGetMacro(LastCellsDrawn, vtkIdType);
+  vtkGetMacro(LastCycleBreaks, vtkIdType);
+  vtkGetMacro(LastOrderSeconds, double);
+  vtkGetMacro(LastDrawSeconds, double);
+  vtkSetMacro(MeasureStageTimes, bool);
+  vtkGetMacro(MeasureStageTimes, bool);
+  vtkBooleanMacro(MeasureStageTimes, bool);
+  ///@}
+
+  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
+
+  /// What the graphics layer draws in one frame.
+  struct CellFrame
+  {
+    const vtkHAVSViewFrame* View = nullptr;
+    vtkHAVSMesh* Mesh = nullptr;
+    vtkHAVSPreIntegrationTable* Table = nullptr;
+    vtkMTimeType TableVersion = 0;
+    const std::vector<float>* Cells = nullptr;    ///< vtkHAVSCellGeometry, per tetrahedron
+    const std::vector<uint32_t>* Faces = nullptr; ///< 12 point ids per tetrahedron
+    vtkMTimeType GeometryVersion = 0;             ///< of Points, Cells, Faces
+    const std::vector<uint32_t>* Order = nullptr; ///< tetrahedra, front to back
+    vtkHAVSFramePlanes* Planes = nullptr;         ///< the clipping planes (no sections)
+    bool Opaque = false;                          ///< opaque geometry may end the rays
+    bool KeepResult = false;
+    bool WrongExit = false;
+    bool MeasureStages = false;
+  };
+
+protected:
+  vtkHAVSCellProjectionMapper();
+  ~vtkHAVSCellProjectionMapper() override;
+
+  /// The graphics layer: draws one frame (false, with an error, when it cannot).
+  virtual bool DrawCells(vtkRenderer* renderer, const CellFrame& frame, double* drawSeconds);
+  /// The last kept float result (nullptr without one).
+  virtual const std::vector<float>* GetKeptResult(int size[2]);
+
+private:
+  vtkHAVSCellProjectionMapper(const vtkHAVSCellProjectionMapper&) = delete;
+  void operator=(const vtkHAVSCellProjectionMapper&) = delete;
+
+  void WarnOnce(int which, const std::string& message);
+  void CentroidOrder(const vtkHAVSViewFrame& view);
+
+  int CellOrder = CellOrderMPVO;
+  int NonConvexMethod = 1; // vtkHAVSVisibilityOrder::NonConvexBoundaryLayers
+  int TableScalarResolution = 128;
+  int TableLengthResolution = 128;
+  bool KeepFloatResult = false;
+  bool WrongExitForTesting = false;
+  bool ReverseOrderForTesting = false;
+  bool MeasureStageTimes = false;
+  vtkIdType LastCellsDrawn = 0;
+  vtkIdType LastCycleBreaks = 0;
+  double LastOrderSeconds = 0.0;
+  double LastDrawSeconds = 0.0;
+
+  vtkNew<vtkHAVSMesh> Mesh;
+  vtkNew<vtkHAVSPreIntegrationTable> Table;
+  vtkTimeStamp TableBuildTime;
+  vtkNew<vtkHAVSVisibilityOrder> Order;
+  vtkNew<vtkHAVSFramePlanes> Planes;
+  bool OrderBuilt = false;
+  std::vector<float> Cells;
+  std::vector<uint32_t> Faces;
+  vtkTimeStamp GeometryTime;
+  std::vector<uint32_t> Centroid; // the centroid cell order
+  std::vector<uint32_t> Reversed; // the order reversed (testing aid)
+  std::array<bool, 9> Warned{};   // vtkHAVSMapperInputs::NumberOfOnceWarnings
+};
+
+#endif

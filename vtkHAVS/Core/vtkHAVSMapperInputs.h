@@ -1,0 +1,92 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSMapperInputs.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSMapperInputs
+ * @brief   What every vtkHAVS mapper prepares from its input and volume the same way.
+ *
+ * Shared by vtkHAVSVolumeMapper and vtkHAVSCellProjectionMapper (one code
+ * path, one set of messages): the mesh of the mapper's input for its scalar
+ * selection, the pre-integration table of the volume's property, and whether
+ * the renderer can have opaque geometry in its depth buffer. Errors go out
+ * through the mapper (vtkErrorWithObjectMacro); warnings that should be given
+ * once go through the caller's `warnOnce` with a OnceWarning key.
+ */
+#ifndef vtkHAVSMapperInputs_h
+#define vtkHAVSMapperInputs_h
+
+#include "vtkHAVSCoreModule.h" // For export macro
+
+#include <functional> // For std::function
+#include <string>     // For std::string
+#include <vector>     // For std::vector
+
+class vtkAbstractVolumeMapper;
+class vtkFloatArray;
+class vtkObject;
+class vtkHAVSMesh;
+class vtkHAVSPreIntegrationTable;
+class vtkRenderer;
+class vtkVolume;
+
+class VTKHAVSCORE_EXPORT vtkHAVSMapperInputs
+{
+public:
+  /// The warnings a mapper gives once (keys for its warnOnce).
+  enum OnceWarning
+  {
+    WarnShading,
+    WarnGradient,
+    WarnComponents,
+    WarnPath,
+    WarnK,
+    WarnPlanes,
+    WarnOrder,
+    WarnBlend,
+    NumberOfOnceWarnings
+  };
+  using WarnOnce = std::function<void(int, const std::string&)>;
+
+  /// What PrepareMesh did.
+  enum MeshState
+  {
+    MeshFailed,
+    MeshUnchanged,
+    MeshRebuilt
+  };
+  /**
+   * Builds `mesh` from the mapper's input and scalar selection when either
+   * changed (progress through the mapper's UpdateProgress), reporting what
+   * vtkHAVSMesh says; `mapperName` names the mapper in the messages.
+   */
+  static MeshState PrepareMesh(vtkAbstractVolumeMapper* mapper, vtkVolume* volume,
+    vtkHAVSMesh* mesh, const char* mapperName, const WarnOnce& warnOnce);
+
+  /**
+   * (Re)builds `table` for the volume's property when it, the scalar range,
+   * the resolutions or the longest segment (the mesh's longest edge times
+   * the volume matrix's largest stretch) changed; `rebuilt` says whether it did.
+   */
+  static bool PrepareTable(vtkAbstractVolumeMapper* mapper, vtkVolume* volume, vtkHAVSMesh* mesh,
+    vtkHAVSPreIntegrationTable* table, int scalarResolution, int lengthResolution,
+    const char* mapperName, const WarnOnce& warnOnce, bool* rebuilt);
+
+  /// Warns through `mapper` unless `warned` (then sets it): a warning given once.
+  static void WarnOnceBy(vtkObject* mapper, bool& warned, const std::string& message);
+
+  /// Copies a kept float result (RGBA, `size`) into `rgba`; false when there is none.
+  static bool CopyResult(const std::vector<float>* result, const int size[2], vtkFloatArray* rgba);
+
+  /// Whether the depth buffer can hold opaque geometry when a volume is drawn:
+  /// the renderer keeps an earlier depth buffer, or a visible prop other than
+  /// a volume has opaque geometry.
+  static bool RendererHasOpaqueGeometry(vtkRenderer* renderer);
+};
+
+#endif
