@@ -483,10 +483,8 @@ struct Timing
   double RMSE = 0, Max = 0;
 };
 
-Timing Run(const Case& c, Path& p, int frames, GLuint vao, GLsizei indexCount)
+Timing Run(const Case& c, Path& p, int frames)
 {
-  (void)vao;
-  (void)indexCount;
   Timing t;
   GLuint query = 0;
   gl.GenQueries(1, &query);
@@ -798,7 +796,7 @@ int main(int argc, char* argv[])
   double rasterDraw = 0;
   for (Path& p : run)
   {
-    timings.push_back(Run(c, p, frames, vao, indexCount));
+    timings.push_back(Run(c, p, frames));
     if (!p.HasResult)
     {
       rasterDraw = timings.back().Draw;

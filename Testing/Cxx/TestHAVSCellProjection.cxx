@@ -89,17 +89,6 @@ std::vector<float> Reference(vtkUnstructuredGrid* grid, vtkVolumeProperty* prope
   return std::vector<float>(image->GetPointer(0), image->GetPointer(0) + 4 * size * size);
 }
 
-std::vector<float> Result(vtkHAVSCellProjectionMapper* mapper)
-{
-  vtkNew<vtkFloatArray> rgba;
-  int size[2] = { 0, 0 };
-  if (!mapper->GetFloatResult(rgba, size))
-  {
-    return {};
-  }
-  return std::vector<float>(rgba->GetPointer(0), rgba->GetPointer(0) + 4 * size[0] * size[1]);
-}
-
 void Print(const std::string& what, const havstest::ImageDifference& d)
 {
   std::printf("  %-58s RMSE %.6f  max %.6f  px > 1/255 %.3f %%\n", what.c_str(), d.RMSE, d.Max,
@@ -138,12 +127,12 @@ int ClipScene(int size)
       havstest::PlaceCamera(s.Renderer, 30.0, 20.0, parallel);
       mapper->SetClippingPlanes(planes);
       s.Window->Render();
-      const auto clipped = Result(mapper);
+      const auto clipped = havstest::FloatResult(mapper);
       const auto exact = Reference(grid, property, s.Renderer->GetActiveCamera(), size, planes);
       // (Not RemoveAllClippingPlanes: that would empty `planes` itself.)
       mapper->SetClippingPlanes(static_cast<vtkPlaneCollection*>(nullptr));
       s.Window->Render();
-      const auto whole = Result(mapper);
+      const auto whole = havstest::FloatResult(mapper);
       const std::string name = std::to_string(n) + (n == 1 ? " plane, " : " planes, ") +
         (parallel ? "parallel" : "perspective");
       const auto d = havstest::Compare(clipped, exact, edgePixels);
@@ -170,7 +159,7 @@ int OpaqueScene(int size)
   havstest::AddOpaqueSphere(s.Renderer);
   havstest::PlaceCamera(s.Renderer, 25.0, 15.0, false);
   s.Window->Render();
-  const auto image = Result(mapper);
+  const auto image = havstest::FloatResult(mapper);
   vtkNew<vtkFloatArray> depth;
   s.Window->GetZbufferData(0, 0, size - 1, size - 1, depth);
   const auto exact = Reference(grid, property, s.Renderer->GetActiveCamera(), size, nullptr, depth);
@@ -267,7 +256,7 @@ int TestHAVSCellProjection(int argc, char* argv[])
       mapper->SetCellOrderToMPVO();
       mapper->SetNonConvexMethod(method);
       s.Window->Render();
-      const auto d = havstest::Compare(Result(mapper), exact, edgePixels);
+      const auto d = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
       cycleBreaks += mapper->GetLastCycleBreaks();
       Print(name +
           (method == vtkHAVSVisibilityOrder::NonConvexBoundaryLayers ? ": MPVO + boundary layers"
@@ -289,18 +278,21 @@ int TestHAVSCellProjection(int argc, char* argv[])
       s.Volume->SetProperty(dense);
       const auto denseExact = Reference(grid, dense, camera, size);
       s.Window->Render();
-      const auto denseMPVO = havstest::Compare(Result(mapper), denseExact, edgePixels);
+      const auto denseMPVO =
+        havstest::Compare(havstest::FloatResult(mapper), denseExact, edgePixels);
       Print(name + ": denser medium, MPVO", denseMPVO);
       havstest::Check(bound.Exact(denseMPVO), name + ": denser medium, MPVO exact");
       mapper->SetCellOrderToCentroid();
       s.Window->Render();
-      const auto centroid = havstest::Compare(Result(mapper), denseExact, edgePixels);
+      const auto centroid =
+        havstest::Compare(havstest::FloatResult(mapper), denseExact, edgePixels);
       Print(name + ": control, denser medium, centroid cell order", centroid);
       centroidFailed += bound.Exact(centroid) ? 0 : 1;
       mapper->SetCellOrderToMPVO();
       mapper->SetReverseOrderForTesting(true);
       s.Window->Render();
-      const auto reversed = havstest::Compare(Result(mapper), denseExact, edgePixels);
+      const auto reversed =
+        havstest::Compare(havstest::FloatResult(mapper), denseExact, edgePixels);
       Print(name + ": control, denser medium, MPVO reversed", reversed);
       reversedFailed += bound.Exact(reversed) ? 0 : 1;
       mapper->SetReverseOrderForTesting(false);
@@ -308,7 +300,7 @@ int TestHAVSCellProjection(int argc, char* argv[])
       mapper->SetCellOrderToMPVO();
       mapper->SetWrongExitForTesting(true);
       s.Window->Render();
-      const auto wrong = havstest::Compare(Result(mapper), exact, edgePixels);
+      const auto wrong = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
       Print(name + ": control, the farthest exit plane", wrong);
       wrongExitFailed += bound.Exact(wrong) ? 0 : 1;
       mapper->SetWrongExitForTesting(false);
@@ -342,8 +334,8 @@ int TestHAVSCellProjection(int argc, char* argv[])
   s.Renderer->ResetCameraClippingRange();
   mapper->SetNonConvexMethod(vtkHAVSVisibilityOrder::NonConvexBoundaryLayers);
   s.Window->Render();
-  const auto d =
-    havstest::Compare(Result(mapper), Reference(movedGrid, property, camera, size), edgePixels);
+  const auto d = havstest::Compare(
+    havstest::FloatResult(mapper), Reference(movedGrid, property, camera, size), edgePixels);
   Print("volume matrix (rotated, stretched) vs the transformed grid", d);
   havstest::Check(bound.Exact(d), "the volume's matrix: exact");
   return havstest::Result();

@@ -54,42 +54,31 @@
 
 namespace
 {
-/// The float result of `grid` through a default mapper of kind `cells`
-/// (cell projection) or HAVS, `size`, camera from (30, 20) degrees.
-std::vector<float> Render(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, bool cells,
-  int width, int height, vtkCamera* cameraOut = nullptr)
+/// A mapper at its defaults, its float result kept: cell projection or HAVS
+/// (every fragment composited: no early ray termination).
+vtkSmartPointer<vtkUnstructuredGridVolumeMapper> MakeMapper(bool cells)
 {
-  vtkSmartPointer<vtkUnstructuredGridVolumeMapper> mapper;
   if (cells)
   {
     auto m = vtkSmartPointer<vtkHAVSCellProjectionMapper>::New();
     m->KeepFloatResultOn();
-    mapper = m;
+    return m;
   }
-  else
-  {
-    auto m = vtkSmartPointer<vtkHAVSVolumeMapper>::New();
-    m->KeepFloatResultOn();
-    m->SetEarlyRayTerminationOpacity(1.0);
-    mapper = m;
-  }
+  auto m = vtkSmartPointer<vtkHAVSVolumeMapper>::New();
+  m->KeepFloatResultOn();
+  m->SetEarlyRayTerminationOpacity(1.0);
+  return m;
+}
+
+/// The float result of `grid` through MakeMapper(cells), camera from (30, 20) degrees.
+std::vector<float> Render(
+  vtkUnstructuredGrid* grid, vtkVolumeProperty* property, bool cells, int width, int height)
+{
+  auto mapper = MakeMapper(cells);
   auto s = havstest::MakeScene(grid, mapper, property, width, height);
   havstest::PlaceCamera(s.Renderer, 30.0, 20.0, false);
   s.Window->Render();
-  if (cameraOut)
-  {
-    cameraOut->DeepCopy(s.Renderer->GetActiveCamera());
-  }
-  vtkNew<vtkFloatArray> rgba;
-  int size[2] = { 0, 0 };
-  const bool kept = cells
-    ? vtkHAVSCellProjectionMapper::SafeDownCast(mapper)->GetFloatResult(rgba, size)
-    : vtkHAVSVolumeMapper::SafeDownCast(mapper)->GetFloatResult(rgba, size);
-  if (!kept)
-  {
-    return {};
-  }
-  return std::vector<float>(rgba->GetPointer(0), rgba->GetPointer(0) + 4 * size[0] * size[1]);
+  return havstest::FloatResult(mapper);
 }
 
 /// `grid` with its points mapped by f, stored as double or float.
@@ -195,24 +184,7 @@ int Resize()
   const int sizes[][2] = { { 1, 1 }, { 2, 3 }, { 17, 5 }, { 64, 64 }, { 200, 120 }, { 96, 96 } };
   for (bool cells : { false, true })
   {
-    vtkSmartPointer<vtkUnstructuredGridVolumeMapper> mapper;
-    vtkHAVSCellProjectionMapper* cellMapper = nullptr;
-    vtkHAVSVolumeMapper* havs = nullptr;
-    if (cells)
-    {
-      auto m = vtkSmartPointer<vtkHAVSCellProjectionMapper>::New();
-      m->KeepFloatResultOn();
-      cellMapper = m;
-      mapper = m;
-    }
-    else
-    {
-      auto m = vtkSmartPointer<vtkHAVSVolumeMapper>::New();
-      m->KeepFloatResultOn();
-      m->SetEarlyRayTerminationOpacity(1.0);
-      havs = m;
-      mapper = m;
-    }
+    auto mapper = MakeMapper(cells);
     auto s = havstest::MakeScene(grid, mapper, property, 8, 8);
     for (const auto& wh : sizes)
     {
@@ -231,18 +203,14 @@ int Resize()
       camera->SetPosition(position[0] + shift[0], position[1] + shift[1], position[2] + shift[2]);
       s.Renderer->ResetCameraClippingRange();
       s.Window->Render();
-      vtkNew<vtkFloatArray> rgba;
-      int size[2] = { 0, 0 };
-      const bool kept =
-        cells ? cellMapper->GetFloatResult(rgba, size) : havs->GetFloatResult(rgba, size);
+      const auto image = havstest::FloatResult(mapper);
       const std::string what =
         std::string(Name(cells)) + ", " + std::to_string(wh[0]) + " x " + std::to_string(wh[1]);
-      if (!havstest::Check(kept && size[0] == wh[0] && size[1] == wh[1], what + ": result kept"))
+      if (!havstest::Check(image.size() == 4 * static_cast<size_t>(wh[0]) * wh[1],
+            what + ": result kept at the window's size"))
       {
         continue;
       }
-      const std::vector<float> image(
-        rgba->GetPointer(0), rgba->GetPointer(0) + 4 * size[0] * size[1]);
       auto reference = [&](double azimuth)
       {
         vtkNew<vtkCamera> camera;

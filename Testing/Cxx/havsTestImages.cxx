@@ -10,6 +10,7 @@
 #include "havsTestImages.h"
 
 #include "vtkFloatArray.h"
+#include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSImageMetrics.h"
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkImageData.h"
@@ -54,11 +55,14 @@ std::vector<float> ReadRGBA(vtkRenderWindow* window)
   return out;
 }
 
-std::vector<float> FloatResult(vtkHAVSVolumeMapper* mapper)
+std::vector<float> FloatResult(vtkAbstractVolumeMapper* mapper)
 {
   vtkNew<vtkFloatArray> result;
   int size[2] = { 0, 0 };
-  if (!mapper->GetFloatResult(result, size))
+  auto* havs = vtkHAVSVolumeMapper::SafeDownCast(mapper);
+  auto* cells = vtkHAVSCellProjectionMapper::SafeDownCast(mapper);
+  if (!(havs ? havs->GetFloatResult(result, size)
+             : (cells ? cells->GetFloatResult(result, size) : false)))
   {
     return {};
   }

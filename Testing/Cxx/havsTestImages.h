@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-class vtkHAVSVolumeMapper;
+class vtkAbstractVolumeMapper;
 class vtkRenderWindow;
 class vtkUnsignedCharArray;
 
@@ -34,8 +34,9 @@ std::string BaselineDir();
 
 /// Reads the window's RGBA (float, [0,1]) after a render.
 std::vector<float> ReadRGBA(vtkRenderWindow* window);
-/// The mapper's kept float result (KeepFloatResultOn before rendering).
-std::vector<float> FloatResult(vtkHAVSVolumeMapper* mapper);
+/// The kept float result (KeepFloatResultOn before rendering) of a
+/// vtkHAVSVolumeMapper or vtkHAVSCellProjectionMapper; empty without one.
+std::vector<float> FloatResult(vtkAbstractVolumeMapper* mapper);
 
 /// vtkHAVSImageMetrics' figures of a comparison.
 struct ImageDifference

@@ -10,6 +10,7 @@
 #include "vtkHAVSGLFrameTargets.h"
 
 #include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSMapperInputs.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -98,7 +99,8 @@ int vtkHAVSGLFrameTargets::ReadFramebufferDepthFormat()
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSGLFrameTargets::CaptureOpaqueDepth(int x, int y, int width, int height)
+void vtkHAVSGLFrameTargets::CaptureOpaqueDepth(
+  int x, int y, int width, int height, vtkObject* reporter)
 {
   GLint sampleBuffers = 0;
   glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
@@ -169,6 +171,9 @@ void vtkHAVSGLFrameTargets::CaptureOpaqueDepth(int x, int y, int width, int heig
     glTexSubImage2D(
       GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, far.data());
     this->OpaqueDepth->Deactivate();
+    vtkHAVSMapperInputs::WarnOnceBy(reporter, this->WarnedUnresolvedDepth,
+      "The depth of this window's multisampled framebuffer could not be resolved: opaque "
+      "geometry does not end the volume's rays (said once).");
   }
 }
 

@@ -55,11 +55,12 @@ public:
    * Copies the depth of VTK's current (read) framebuffer at the viewport. A
    * multisampled framebuffer (an X window's, VTK's default) is resolved by a
    * blit into a single-sample depth texture of the framebuffer's own depth
-   * format; where that fails, the far plane everywhere.
+   * format; where that fails, the far plane everywhere, and `reporter` (the
+   * mapper) warns once.
    */
-  void CaptureOpaqueDepth(int x, int y, int width, int height);
+  void CaptureOpaqueDepth(int x, int y, int width, int height, vtkObject* reporter);
   /// Whether the last capture read a multisampled framebuffer; whether it got
-  /// its depth (false: the far plane, no cut; the mapper warns once).
+  /// its depth (false: the far plane, no cut).
   bool GetLastCaptureMultisampled() const { return this->LastCaptureMultisampled; }
   bool GetLastCaptureResolved() const { return this->LastCaptureResolved; }
   vtkTextureObject* GetOpaqueDepth() { return this->OpaqueDepth; }
@@ -108,6 +109,7 @@ private:
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthResolveFramebuffer;
   bool LastCaptureMultisampled = false;
   bool LastCaptureResolved = false;
+  bool WarnedUnresolvedDepth = false;
   vtkSmartPointer<vtkTextureObject> Result;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResultFramebuffer;
   GLuint ViolationCounter = 0;

@@ -133,16 +133,10 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   const vtkHAVSViewFrame& view = *frame.View;
   const int width = view.Width, height = view.Height;
   this->Targets->Resize(width, height);
-  bool opaque = frame.Opaque;
+  const bool opaque = frame.Opaque;
   if (opaque)
   {
-    this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height);
-    if (!this->Targets->GetLastCaptureResolved() && !this->WarnedUncapturedDepth)
-    {
-      vtkWarningMacro("The depth of this window's multisampled framebuffer could not be resolved: "
-                      "opaque geometry does not end the volume's rays (said once).");
-      this->WarnedUncapturedDepth = true;
-    }
+    this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height, this);
   }
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
     vtkHAVSKBufferShaders::CellProjectionVertexShader().c_str(),

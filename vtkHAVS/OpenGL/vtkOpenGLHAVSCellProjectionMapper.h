@@ -71,7 +71,6 @@ private:
   std::vector<uint32_t> Indices;
   std::vector<float> KeptResult;
   int KeptSize[2] = { 0, 0 };
-  bool WarnedUncapturedDepth = false;
 };
 
 #endif

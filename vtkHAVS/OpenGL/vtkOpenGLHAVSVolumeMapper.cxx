@@ -223,15 +223,9 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   this->Targets->Resize(width, height);
   if (request.Opaque)
   {
-    this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height);
+    this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height, this);
     result.OpaqueDepthMultisampled = this->Targets->GetLastCaptureMultisampled();
     result.OpaqueDepthCaptured = this->Targets->GetLastCaptureResolved();
-    if (!result.OpaqueDepthCaptured && !this->WarnedUncapturedDepth)
-    {
-      vtkWarningMacro("The depth of this window's multisampled framebuffer could not be resolved: "
-                      "opaque geometry does not end the volume's rays (said once).");
-      this->WarnedUncapturedDepth = true;
-    }
   }
   vtkHAVSGLPassContext context(window, this->GLMesh, this->GLTable, this->Targets, request);
   const bool extremum = request.BlendMode != COMPOSITE_BLEND;

@@ -103,7 +103,6 @@ private:
   vtkNew<vtkHAVSFragmentListKBuffer> ListKBuffer;
   vtkNew<vtkHAVSExtremumPass> Extremum;
   vtkNew<vtkHAVSRasterBoundPass> RasterBound;
-  bool WarnedUncapturedDepth = false; ///< the multisampled-depth warning was given
   char* CaptureDirectory = nullptr;
   bool LastCaptureSucceeded = false;
 
