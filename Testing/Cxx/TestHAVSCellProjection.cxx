@@ -43,6 +43,7 @@
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
@@ -56,6 +57,7 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -73,9 +75,11 @@ struct Bound
   }
 };
 
-/// The exact image (clipped by `planes`, cut at the window depth `depth`, when given).
+/// The exact image (clipped by `planes`, cut at the window depth `depth`,
+/// when given; under `blend`, vtkVolumeMapper's numbering).
 std::vector<float> Reference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
-  vtkCamera* camera, int size, vtkPlaneCollection* planes = nullptr, vtkFloatArray* depth = nullptr)
+  vtkCamera* camera, int size, vtkPlaneCollection* planes = nullptr, vtkFloatArray* depth = nullptr,
+  int blend = 0, vtkIdType* startedInside = nullptr)
 {
   vtkNew<vtkHAVSReferenceRenderer> reference;
   reference->SetInputData(grid);
@@ -84,7 +88,12 @@ std::vector<float> Reference(vtkUnstructuredGrid* grid, vtkVolumeProperty* prope
   reference->SetSize(size, size);
   reference->SetClippingPlanes(planes);
   reference->SetOpaqueDepth(depth);
+  reference->SetBlendMode(blend);
   reference->Render();
+  if (startedInside)
+  {
+    *startedInside = reference->GetNumberOfStartedInside();
+  }
   vtkFloatArray* image = reference->GetImage();
   return std::vector<float>(image->GetPointer(0), image->GetPointer(0) + 4 * size * size);
 }
@@ -175,6 +184,269 @@ int OpaqueScene(int size)
 }
 }
 
+/// The views of the blend scenes: the first `views` standard views (turned
+/// off the axes on the test meshes), then a parallel one.
+void PlaceView(vtkRenderer* renderer, vtkUnstructuredGrid* grid, int v, int views, bool turned)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const bool parallel = v == views;
+  vtkHAVSStandardViews::PlaceCamera(camera, grid, parallel ? 3 : v);
+  camera->SetParallelProjection(parallel ? 1 : 0);
+  if (turned || parallel)
+  {
+    camera->Azimuth(parallel ? 11.0 : 7.0);
+    camera->Elevation(parallel ? 7.0 : 5.0);
+    camera->OrthogonalizeViewUp();
+  }
+  if (parallel)
+  {
+    renderer->ResetCamera();
+  }
+  renderer->ResetCameraClippingRange();
+}
+
+/// The order-independent blends (maximum, minimum intensity, additive) drawn
+/// unsorted, in a shuffled cell order, against the reference under the same
+/// blend; controls: the wrong exit face (must fail at each control view).
+/// Also: the shuffled and the mesh's own order give the same image, and no
+/// per-view order is made (the order is reused across views).
+int BlendScene(const std::string& mesh, int size, int views)
+{
+  auto grid = vtkHAVSDataSets::Load(mesh);
+  if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "scene " + mesh + " loads"))
+  {
+    return EXIT_FAILURE;
+  }
+  const bool turned = !(mesh == "bluntfin" || mesh == "combustor");
+  double range[2];
+  grid->GetPointData()->GetScalars()->GetRange(range);
+  // For the additive blend (its sum is clamped to 1), a unit distance of its own (below).
+  auto thin = havstest::MakeRampProperty(range[0], range[1], 0.8, grid->GetLength());
+  auto property = havstest::MakeRampPropertyFor(grid);
+  vtkNew<vtkHAVSCellProjectionMapper> mapper;
+  mapper->KeepFloatResultOn();
+  auto s = havstest::MakeScene(grid, mapper, property, size, size);
+  vtkCamera* camera = s.Renderer->GetActiveCamera();
+  const size_t edgePixels = static_cast<size_t>(size) * size / 2000;
+  const Bound bound;
+  {
+    // The additive sum scales with 1 / unit distance: scaled so that the
+    // brightest pixel of view 0 is 0.5, neither dim nor clamped.
+    PlaceView(s.Renderer, grid, 0, views, turned);
+    const auto probe = Reference(grid, thin, camera, size, nullptr, nullptr, 4);
+    double brightest = 0.0;
+    for (size_t p = 0; p < probe.size(); p += 4)
+    {
+      brightest = std::max(brightest, static_cast<double>(probe[p]));
+    }
+    if (brightest > 0.0)
+    {
+      thin->SetScalarOpacityUnitDistance(grid->GetLength() * brightest / 0.5);
+    }
+  }
+  struct Mode
+  {
+    const char* Name;
+    int Blend;
+  };
+  const Mode modes[] = { { "maximum intensity", 1 }, { "minimum intensity", 2 },
+    { "additive", vtkHAVSCellProjectionMapper::ADDITIVE_BLEND } };
+  std::printf("%s: %lld cells, %d^2, %d views + parallel, blends drawn unsorted\n", mesh.c_str(),
+    static_cast<long long>(grid->GetNumberOfCells()), size, views);
+  for (const Mode& mode : modes)
+  {
+    vtkVolumeProperty* used = mode.Blend == 4 ? thin.Get() : property.Get();
+    s.Volume->SetProperty(used);
+    mapper->SetBlendMode(mode.Blend);
+    int inexact = 0, controls = 0, controlsFailed = 0, reused = 0;
+    double worstOrderDifference = 0.0, saturated = 0.0, covered = 0.0, largest = 0.0;
+    std::vector<std::vector<float>> shuffledImages;
+    mapper->SetShuffleOrderForTesting(true);
+    for (int v = 0; v <= views; ++v)
+    {
+      PlaceView(s.Renderer, grid, v, views, turned);
+      const std::string name =
+        std::string(mode.Name) + ", view " + std::to_string(v) + (v == views ? " (parallel)" : "");
+      const auto exact = Reference(grid, used, camera, size, nullptr, nullptr, mode.Blend);
+      for (size_t p = 0; p < exact.size(); p += 4)
+      {
+        covered += exact[p + 3] > 0.0f ? 1.0 : 0.0;
+        saturated += mode.Blend == 4 && exact[p] >= 1.0f ? 1.0 : 0.0;
+        largest = std::max(largest, static_cast<double>(exact[p]));
+      }
+      s.Window->Render();
+      reused += mapper->GetLastOrderReused() ? 1 : 0;
+      shuffledImages.push_back(havstest::FloatResult(mapper));
+      const auto d = havstest::Compare(shuffledImages.back(), exact, edgePixels);
+      Print(name + ": shuffled cells", d);
+      if (!bound.Exact(d))
+      {
+        ++inexact;
+      }
+      // Control at every view: where the field hardly varies along the rays
+      // (a view across its gradient) a wrong exit cannot show for the
+      // extremum blends; it must fail at half the views or more.
+      ++controls;
+      mapper->SetWrongExitForTesting(true);
+      s.Window->Render();
+      const auto wrong = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
+      Print(name + ": control, the farthest exit plane", wrong);
+      controlsFailed += bound.Exact(wrong) ? 0 : 1;
+      mapper->SetWrongExitForTesting(false);
+    }
+    // The same views in the mesh's own cell order.
+    mapper->SetShuffleOrderForTesting(false);
+    for (int v = 0; v <= views; ++v)
+    {
+      PlaceView(s.Renderer, grid, v, views, turned);
+      s.Window->Render();
+      const auto plain = havstest::Compare(havstest::FloatResult(mapper), shuffledImages[v]);
+      worstOrderDifference = std::max(worstOrderDifference, plain.Max);
+    }
+    std::printf("  %s: shuffled against the mesh's order: max difference %.2g; order reused at %d "
+                "of %d later views; largest red value %.3f, %.1f %% of the covered pixels "
+                "saturated\n",
+      mode.Name, worstOrderDifference, reused, views, largest,
+      covered > 0 ? 100.0 * saturated / covered : 0.0);
+    havstest::Check(inexact == 0, std::string(mode.Name) + ": exact at every view, cells shuffled");
+    havstest::Check(worstOrderDifference < 1e-5,
+      std::string(mode.Name) + ": the cell order does not change the image");
+    // The first frame of a mode makes its (view-independent) order; every later view reuses it.
+    havstest::Check(reused == views, std::string(mode.Name) + ": no per-view order");
+    havstest::Check(
+      covered > 0.0 && (mode.Blend != 4 || (largest > 0.1 && saturated < 0.25 * covered)),
+      std::string(mode.Name) + ": the scene is covered (additive: bright, mostly unsaturated)");
+    std::printf(
+      "  %s: the wrong exit fails at %d of %d views\n", mode.Name, controlsFailed, controls);
+    havstest::Check(2 * controlsFailed >= controls,
+      std::string(mode.Name) +
+        ": negative control, the wrong exit fails at half the views or more");
+  }
+  return havstest::Result();
+}
+
+/// The order is made again only when the view's key changes: not on a
+/// redraw, nor on a transfer-function edit (which still redraws at once);
+/// a camera move makes it again.
+int ReuseScene(int size)
+{
+  auto grid = vtkHAVSDataSets::Load("hollowsphere");
+  auto property = havstest::MakeRampPropertyFor(grid);
+  vtkNew<vtkHAVSCellProjectionMapper> mapper;
+  mapper->KeepFloatResultOn();
+  auto s = havstest::MakeScene(grid, mapper, property, size, size);
+  PlaceView(s.Renderer, grid, 1, 6, true);
+  s.Window->Render();
+  const bool first = mapper->GetLastOrderReused();
+  s.Window->Render();
+  const bool redraw = mapper->GetLastOrderReused();
+  const auto before = havstest::FloatResult(mapper);
+  property->GetScalarOpacity()->AddPoint(0.5 *
+      (property->GetScalarOpacity()->GetRange()[0] + property->GetScalarOpacity()->GetRange()[1]),
+    0.0);
+  s.Window->Render();
+  const bool edit = mapper->GetLastOrderReused();
+  const auto after = havstest::FloatResult(mapper);
+  const auto exact = Reference(grid, property, s.Renderer->GetActiveCamera(), size);
+  const auto d = havstest::Compare(after, exact, static_cast<size_t>(size) * size / 2000);
+  const auto changed = havstest::Compare(before, after);
+  s.Renderer->GetActiveCamera()->Azimuth(2.0);
+  s.Window->Render();
+  const bool moved = mapper->GetLastOrderReused();
+  std::printf(
+    "order reused: first frame %d, redraw %d, transfer-function edit %d, camera moved %d; "
+    "the edit changed the image by max %.3f; after it vs the reference: RMSE %.6f max "
+    "%.6f\n",
+    first, redraw, edit, moved, changed.Max, d.RMSE, d.Max);
+  havstest::Check(!first && redraw && edit && !moved,
+    "the order is made only for a new view (not on a redraw or a transfer-function edit)");
+  havstest::Check(changed.Max > 0.05, "the transfer-function edit redraws at once");
+  havstest::Check(d.RMSE < 5e-4 && d.Max < 0.01, "after the edit: exact");
+  return havstest::Result();
+}
+
+/// The camera inside the mesh (perspective, the near plane in it, as
+/// TestHAVSBoundary's camera-inside scenes): composite (MPVO) and maximum
+/// intensity against the reference, which starts the rays at the near plane;
+/// control: without the near plane's section.
+int InsideScene(const std::string& mesh, int size)
+{
+  auto grid = mesh == "box" ? vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0)
+                            : vtkHAVSDataSets::Load(mesh);
+  if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "scene " + mesh + " loads"))
+  {
+    return EXIT_FAILURE;
+  }
+  double bounds[6];
+  grid->GetBounds(bounds);
+  // (Off the box's face planes: an eye on one sees whole lines of pixel rays
+  // graze faces, where rasterizer and rays disagree whatever the mapper.)
+  double eye[3] = { 0.31, 0.355, 0.405 }, direction[3] = { 1.0, 0.4, 0.3 };
+  if (mesh != "box")
+  {
+    // Inside the flow, in front of the fin, looking downstream and a little up.
+    const double f[3] = { 0.45, 0.6, 0.5 };
+    for (int i = 0; i < 3; ++i)
+    {
+      eye[i] = bounds[2 * i] + f[i] * (bounds[2 * i + 1] - bounds[2 * i]);
+    }
+    direction[1] = 0.3;
+    direction[2] = 0.2;
+  }
+  auto property = havstest::MakeRampPropertyFor(grid);
+  vtkNew<vtkHAVSCellProjectionMapper> mapper;
+  mapper->KeepFloatResultOn();
+  auto s = havstest::MakeScene(grid, mapper, property, size, size);
+  vtkCamera* camera = s.Renderer->GetActiveCamera();
+  camera->SetPosition(eye);
+  camera->SetFocalPoint(eye[0] + direction[0], eye[1] + direction[1], eye[2] + direction[2]);
+  camera->SetViewUp(0, 0, 1);
+  camera->SetViewAngle(60.0);
+  // The near plane a little farther than ParaView leaves it when the user
+  // flies in, so that the slab it cuts off shows in both blends' controls.
+  const double length = grid->GetLength();
+  camera->SetClippingRange(0.05 * length, 2.0 * length);
+  const size_t edgePixels = static_cast<size_t>(size) * size / 2000;
+  for (int blend : { 0, 1, 2, 4 })
+  {
+    const char* const names[] = { "composite (MPVO)", "maximum intensity", "minimum intensity", "",
+      "additive" };
+    const std::string name = mesh + ", " + names[blend];
+    vtkVolumeProperty* used = property;
+    mapper->SetBlendMode(blend);
+    mapper->NearPlaneSectionOn();
+    s.Window->Render();
+    const auto image = havstest::FloatResult(mapper);
+    const vtkIdType triangles = mapper->GetLastSectionTriangles();
+    mapper->NearPlaneSectionOff();
+    s.Window->Render();
+    const auto without = havstest::FloatResult(mapper);
+    mapper->NearPlaneSectionOn();
+    vtkIdType started = 0;
+    const auto exact = Reference(grid, used, camera, size, nullptr, nullptr, blend, &started);
+    const auto d = havstest::Compare(image, exact, edgePixels);
+    const auto control = havstest::Compare(without, exact, edgePixels);
+    std::printf("camera inside %s: %lld of %d rays start in the mesh, section %lld triangles\n",
+      name.c_str(), static_cast<long long>(started), size * size,
+      static_cast<long long>(triangles));
+    Print(name + ": vs the reference", d);
+    Print(name + ": control, without the near section", control);
+    havstest::Check(started > size * size / 2 && triangles > 0,
+      name + ": most rays start in the mesh, the section is drawn");
+    havstest::Check(havstest::AllFinite(image), name + ": finite pixels");
+    havstest::Check(Bound().Exact(d), name + ": exact with the camera inside");
+    // The maximum sees the slab the section stands for only where the ray's
+    // maximum lies in it (in neither scene): its control is reported.
+    const Bound bound;
+    if (blend != 1)
+    {
+      havstest::Check(!bound.Exact(control) && control.RMSE > 10.0 * d.RMSE,
+        name + ": negative control, no section fails");
+    }
+  }
+  return havstest::Result();
+}
+
 int TestHAVSCellProjection(int argc, char* argv[])
 {
   const std::string scene = argc > 1 ? argv[1] : "hollowsphere";
@@ -187,6 +459,18 @@ int TestHAVSCellProjection(int argc, char* argv[])
   if (scene == "clip")
   {
     return ClipScene(size);
+  }
+  if (scene == "reuse")
+  {
+    return ReuseScene(size);
+  }
+  if (scene.rfind("blend-", 0) == 0)
+  {
+    return BlendScene(scene.substr(6), size, argc > 3 ? views : 3);
+  }
+  if (scene.rfind("inside-", 0) == 0)
+  {
+    return InsideScene(scene.substr(7), size);
   }
   auto grid = vtkHAVSDataSets::Load(scene);
   if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "scene " + scene + " loads"))

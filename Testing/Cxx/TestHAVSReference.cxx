@@ -58,7 +58,8 @@ void ParallelAlongZ(vtkCamera* camera, double scale)
 }
 
 /// Largest |alpha - expected| over pixels whose centre is inside [m, 1-m]^2.
-double SlabError(vtkHAVSReferenceRenderer* ref, double scale, double expected, double margin)
+double SlabError(
+  vtkHAVSReferenceRenderer* ref, double scale, double expected, double margin, int component = 3)
 {
   const int* size = ref->GetSize();
   double worst = 0.0;
@@ -70,8 +71,8 @@ double SlabError(vtkHAVSReferenceRenderer* ref, double scale, double expected, d
       const double y = 0.5 + scale * ((j + 0.5) / size[1] * 2 - 1);
       if (x > margin && x < 1 - margin && y > margin && y < 1 - margin)
       {
-        worst =
-          std::max(worst, std::fabs(ref->GetImage()->GetComponent(j * size[0] + i, 3) - expected));
+        worst = std::max(
+          worst, std::fabs(ref->GetImage()->GetComponent(j * size[0] + i, component) - expected));
       }
     }
   }
@@ -184,6 +185,37 @@ int TestHAVSReference(int, char*[])
   err = SlabError(ref, 0.625, 1.0 - std::exp(-0.5), 0.0);
   std::cout << "linear ramp: max error " << err << std::endl;
   havstest::Check(err < 1e-6, "linear ramp to 1e-6");
+
+  // The order-independent blends on the ramp (s = z along the view),
+  // opacity(s) = 0.2 + 0.6 s, colour (0.2, 0.6, 0.9), unit distance 1:
+  // maximum intensity = colour * 0.8 and 0.8 (s = 1); minimum = colour * 0.2
+  // and 0.2 (s = 0); additive = the integral of (0.2 + 0.6 z) z over [0, 1] =
+  // 0.3, grey, opacity 1. Control: the composite image is none of these.
+  rampProperty->GetScalarOpacity()->RemoveAllPoints();
+  rampProperty->GetScalarOpacity()->AddPoint(0.0, 0.2);
+  rampProperty->GetScalarOpacity()->AddPoint(1.0, 0.8);
+  struct BlendCase
+  {
+    const char* Name;
+    int Mode;
+    double Red, Alpha;
+  };
+  for (const BlendCase& c :
+    { BlendCase{ "maximum intensity", 1, 0.2 * 0.8, 0.8 },
+      BlendCase{ "minimum intensity", 2, 0.2 * 0.2, 0.2 }, BlendCase{ "additive", 4, 0.3, 1.0 } })
+  {
+    ref->SetBlendMode(c.Mode);
+    ref->Render();
+    const double red = SlabError(ref, 0.625, c.Red, 0.0, 0);
+    const double alpha = SlabError(ref, 0.625, c.Alpha, 0.0, 3);
+    ref->SetBlendMode(0);
+    ref->Render();
+    const double control = SlabError(ref, 0.625, c.Red, 0.0, 0);
+    std::cout << c.Name << " blend on the ramp: max error red " << red << ", alpha " << alpha
+              << "; control (composite) " << control << std::endl;
+    havstest::Check(red < 1e-6 && alpha < 1e-6, std::string(c.Name) + " blend: the closed form");
+    havstest::Check(control > 1e-2, std::string(c.Name) + " blend: control, composite differs");
+  }
 
   // Oblique views of the block: still one entry and one exit per ray.
   for (double angle : { 17.0, 45.0, 90.0 })

@@ -65,6 +65,11 @@ int TestHAVSShaderSources(int, char*[])
   check(vtkHAVSKBufferShaders::CellProjectionVertexShader(), "cell_projection", "vert");
   check(vtkHAVSKBufferShaders::CellProjectionShader(false), "cell_projection", "frag");
   check(vtkHAVSKBufferShaders::CellProjectionShader(true), "cell_projection_opaque", "frag");
+  for (int blend : { 1, 2, 4 })
+  {
+    check(vtkHAVSKBufferShaders::CellProjectionShader(true, blend),
+      "cell_projection_blend" + std::to_string(blend), "frag");
+  }
   check(
     vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true),
     "list_resolve_vote", "frag");

@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <random>
 
 vtkAbstractObjectFactoryNewMacro(vtkHAVSCellProjectionMapper);
 
@@ -89,16 +90,98 @@ void vtkHAVSCellProjectionMapper::CentroidOrder(const vtkHAVSViewFrame& view)
 }
 
 //------------------------------------------------------------------------------
+const std::vector<uint32_t>* vtkHAVSCellProjectionMapper::MakeOrder(const vtkHAVSViewFrame& view)
+{
+  // The key of the order wanted: the unsorted blends draw the cells in the
+  // mesh's own order (shuffled only as a testing aid), once per mesh; the
+  // sorted ones per view, reused while the view's key holds.
+  const bool unsorted = this->BlendMode != COMPOSITE_BLEND;
+  const int kind = unsorted ? (this->ShuffleOrderForTesting ? 3 : 2) : this->CellOrder;
+  const int method = kind == CellOrderMPVO ? this->NonConvexMethod : -1;
+  if (kind == CellOrderMPVO && !this->OrderBuilt)
+  {
+    auto* grid = vtkUnstructuredGrid::SafeDownCast(this->GetInput());
+    if (!this->Order->Build(this->Mesh->GetFaceSet(), grid))
+    {
+      vtkErrorMacro("The MPVO cell order could not be made for this mesh.");
+      return nullptr;
+    }
+    this->OrderBuilt = true;
+    this->OrderKeyValid = false;
+  }
+  vtkHAVSVisibilityOrder::ViewKey key;
+  if (unsorted)
+  {
+    key.Mesh = this->GeometryTime.GetMTime();
+    key.Method = -2 - kind; // no view in it
+  }
+  else
+  {
+    key = this->Order->MakeViewKey(this->GeometryTime.GetMTime(), view, method);
+  }
+  if (this->OrderKeyValid && key == this->OrderKey &&
+    this->ReverseOrderForTesting == this->OrderReversed)
+  {
+    this->LastOrderReused = true;
+    this->LastCycleBreaks = this->KeptCycleBreaks;
+    return &this->Drawn;
+  }
+  this->KeptCycleBreaks = 0;
+  const size_t count = this->Cells.size() / 20;
+  if (unsorted)
+  {
+    this->Drawn.resize(count);
+    std::iota(this->Drawn.begin(), this->Drawn.end(), 0u);
+    if (this->ShuffleOrderForTesting)
+    {
+      std::mt19937 random(12345u);
+      std::shuffle(this->Drawn.begin(), this->Drawn.end(), random);
+    }
+  }
+  else if (kind == CellOrderCentroid)
+  {
+    this->CentroidOrder(view);
+    this->Drawn.swap(this->Centroid);
+  }
+  else
+  {
+    this->Order->SetNonConvexMethod(this->NonConvexMethod);
+    this->Order->SetViewSampling(view.GridToClip, view.Width, view.Height);
+    this->Order->Sort(view.EyeGrid, view.DirectionGrid, view.Parallel);
+    this->KeptCycleBreaks = this->Order->GetNumberOfCycleBreaks();
+    this->Drawn = this->Order->GetCellOrder();
+  }
+  if (this->ReverseOrderForTesting)
+  {
+    std::reverse(this->Drawn.begin(), this->Drawn.end());
+  }
+  this->OrderReversed = this->ReverseOrderForTesting;
+  this->OrderKey = key;
+  this->OrderKeyValid = true;
+  this->OrderTime.Modified();
+  this->LastCycleBreaks = this->KeptCycleBreaks;
+  return &this->Drawn;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
   this->LastCellsDrawn = 0;
   this->LastCycleBreaks = 0;
-  if (this->BlendMode != COMPOSITE_BLEND)
+  this->LastOrderReused = false;
+  this->LastSectionTriangles = 0;
+  switch (this->BlendMode)
   {
-    vtkErrorMacro("Blend mode " << this->BlendMode
-                                << " is not supported by vtkHAVSCellProjectionMapper yet "
-                                   "(composite is).");
-    return;
+    case COMPOSITE_BLEND:
+    case MAXIMUM_INTENSITY_BLEND:
+    case MINIMUM_INTENSITY_BLEND:
+    case ADDITIVE_BLEND:
+      break;
+    default:
+      vtkErrorMacro("Blend mode " << this->BlendMode
+                                  << " is not supported by vtkHAVSCellProjectionMapper (composite, "
+                                     "maximum, minimum intensity and additive are).");
+      return;
   }
 
   // The mesh, the table, the cells' planes and fields: each only when its inputs changed.
@@ -119,6 +202,7 @@ void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volum
       this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces);
     this->GeometryTime.Modified();
     this->OrderBuilt = false;
+    this->OrderKeyValid = false;
   }
   bool rebuilt = false;
   if (!vtkHAVSMapperInputs::PrepareTable(this, volume, this->Mesh, this->Table,
@@ -138,54 +222,20 @@ void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   {
     return;
   }
-  const double* b = this->Mesh->GetBounds();
-  const double* shift = this->Mesh->GetShift();
-  bool inside = true;
-  for (int i = 0; i < 3; ++i)
-  {
-    const double e = view.EyeGrid[i] - shift[i];
-    inside = inside && e >= b[2 * i] && e <= b[2 * i + 1];
-  }
-  if (inside && !view.Parallel)
-  {
-    this->WarnOnce(vtkHAVSMapperInputs::WarnOrder,
-      "The camera is inside the mesh's bounds: vtkHAVSCellProjectionMapper does not draw the "
-      "cells the near plane cuts yet.");
-  }
-  if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, false))
+  // Where the near plane cuts the mesh (the camera inside it) the rays start
+  // on its section: the GL near clip removes the front faces there.
+  this->Planes->SetNearPlaneSectionsOnly(true);
+  if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, this->NearPlaneSection))
   {
     this->WarnOnce(vtkHAVSMapperInputs::WarnPlanes,
       "More than 6 clipping planes; vtkHAVSCellProjectionMapper uses the first 6.");
   }
+  this->LastSectionTriangles = this->Planes->GetNumberOfSectionTriangles();
   const double t0 = vtkTimerLog::GetUniversalTime();
-  const std::vector<uint32_t>* order = nullptr;
-  if (this->CellOrder == CellOrderCentroid)
+  const std::vector<uint32_t>* order = this->MakeOrder(view);
+  if (!order)
   {
-    this->CentroidOrder(view);
-    order = &this->Centroid;
-  }
-  else
-  {
-    if (!this->OrderBuilt)
-    {
-      auto* grid = vtkUnstructuredGrid::SafeDownCast(this->GetInput());
-      if (!this->Order->Build(this->Mesh->GetFaceSet(), grid))
-      {
-        vtkErrorMacro("The MPVO cell order could not be made for this mesh.");
-        return;
-      }
-      this->OrderBuilt = true;
-    }
-    this->Order->SetNonConvexMethod(this->NonConvexMethod);
-    this->Order->SetViewSampling(view.GridToClip, view.Width, view.Height);
-    this->Order->Sort(view.EyeGrid, view.DirectionGrid, view.Parallel);
-    this->LastCycleBreaks = this->Order->GetNumberOfCycleBreaks();
-    order = &this->Order->GetCellOrder();
-  }
-  if (this->ReverseOrderForTesting)
-  {
-    this->Reversed.assign(order->rbegin(), order->rend());
-    order = &this->Reversed;
+    return;
   }
   this->LastOrderSeconds = vtkTimerLog::GetUniversalTime() - t0;
 
@@ -198,7 +248,9 @@ void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   frame.Faces = &this->Faces;
   frame.GeometryVersion = this->GeometryTime.GetMTime();
   frame.Order = order;
+  frame.OrderVersion = this->OrderTime.GetMTime();
   frame.Planes = this->Planes;
+  frame.Blend = this->BlendMode;
   frame.Opaque = vtkHAVSMapperInputs::RendererHasOpaqueGeometry(renderer);
   frame.KeepResult = this->KeepFloatResult;
   frame.WrongExit = this->WrongExitForTesting;
@@ -223,9 +275,11 @@ void vtkHAVSCellProjectionMapper::PrintSelf(ostream& os, vtkIndent indent)
      << ", NonConvexMethod: " << this->NonConvexMethod << "\n";
   os << indent << "Table: " << this->TableScalarResolution << "^2 x " << this->TableLengthResolution
      << "\n";
+  os << indent << "BlendMode: " << this->BlendMode
+     << ", ShuffleOrderForTesting: " << this->ShuffleOrderForTesting << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult
      << ", WrongExitForTesting: " << this->WrongExitForTesting << "\n";
   os << indent << "Last frame: " << this->LastCellsDrawn << " cells, " << this->LastCycleBreaks
-     << " cycle breaks, order " << this->LastOrderSeconds << " s, draw " << this->LastDrawSeconds
-     << " s\n";
+     << " cycle breaks, order " << (this->LastOrderReused ? "reused, " : "")
+     << this->LastOrderSeconds << " s, draw " << this->LastDrawSeconds << " s\n";
 }

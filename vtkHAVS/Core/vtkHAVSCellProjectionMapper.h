@@ -22,17 +22,21 @@
  * scalars at both ends from the cell's linear field, the segment from the
  * shared pre-integration table, and fixed-function blending composites it
  * front to back. No k-buffer, no per-pixel storage; per view the CPU makes
- * the order only (vtkHAVSCellGeometry is built once per mesh).
+ * the order only (vtkHAVSCellGeometry is built once per mesh), and only when
+ * the view's key changed (GetLastOrderReused()). The order-independent blends
+ * (maximum, minimum intensity, additive) draw the cells unsorted: no per-view
+ * CPU work at all.
  *
  * Same inputs, scalars and table as vtkHAVSVolumeMapper (vtkHAVSMapperInputs),
  * the volume's matrix, perspective and parallel cameras, opaque geometry in
  * the scene, up to 6 clipping planes (each fragment's segment clipped to
  * them: the ray starts inside a cell where a plane cuts it, no section to
- * draw). Not yet: the camera inside the mesh (warned: the cells the near plane
- * cuts are not drawn), blend modes other than composite (an error), early
- * ray termination (blending has none). A cycle break has no k-buffer to
- * absorb it: the cells taken out of order are counted
- * (GetLastCycleBreaks()).
+ * draw). The camera inside the mesh: where the near plane cuts it the GL
+ * clip removes the front faces, so the near plane's section
+ * (vtkHAVSPlaneSection, each triangle with its cell) is drawn first, the rays
+ * starting on it. Not available: early ray termination (blending has none).
+ * A cycle break has no k-buffer to absorb it: the cells taken out of order
+ * are counted (GetLastCycleBreaks()).
  *
  * Abstract: New() gives the graphics layer's override
  * (vtkOpenGLHAVSCellProjectionMapper), as vtkHAVSVolumeMapper does.
@@ -40,8 +44,9 @@
 #ifndef vtkHAVSCellProjectionMapper_h
 #define vtkHAVSCellProjectionMapper_h
 
-#include "vtkHAVSCoreModule.h" // For export macro
-#include "vtkNew.h"            // For vtkNew
+#include "vtkHAVSCoreModule.h"      // For export macro
+#include "vtkHAVSVisibilityOrder.h" // For ViewKey
+#include "vtkNew.h"                 // For vtkNew
 #include "vtkUnstructuredGridVolumeMapper.h"
 
 #include <array>   // For std::array
@@ -54,7 +59,6 @@ class vtkHAVSFramePlanes;
 class vtkHAVSMesh;
 class vtkHAVSPreIntegrationTable;
 class vtkHAVSViewFrame;
-class vtkHAVSVisibilityOrder;
 
 class VTKHAVSCORE_EXPORT vtkHAVSCellProjectionMapper : public vtkUnstructuredGridVolumeMapper
 {
@@ -82,6 +86,24 @@ public:
   /// NonConvexMethods); default the boundary layers.
   vtkSetClampMacro(NonConvexMethod, int, 0, 2);
   vtkGetMacro(NonConvexMethod, int);
+  ///@}
+
+  ///@{
+  /**
+   * Blend modes (vtkVolumeMapper's numbering): composite (default, in the
+   * exact cell order), and the order-independent ones, drawn unsorted with no
+   * per-view work on the CPU at all: maximum and minimum intensity (the
+   * extremal scalar along the ray in the mesh, coloured by the transfer
+   * function's colour and opacity, as vtkHAVSVolumeMapper and VTK's ray
+   * casters), and additive (VTK's ADDITIVE_BLEND in the limit of small
+   * samples: the integral of tau(s) s along the ray, s normalized to the
+   * scalar range, clamped to 1, grey with opacity 1 where the ray crosses the
+   * mesh; a sum of per-sample terms, hence order-independent).
+   */
+  static constexpr int MINIMUM_INTENSITY_BLEND = 2;
+  static constexpr int ADDITIVE_BLEND = 4;
+  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
+  void SetBlendModeToAdditive() { this->SetBlendMode(ADDITIVE_BLEND); }
   ///@}
 
   ///@{
@@ -115,6 +137,29 @@ public:
   ///@}
 
   ///@{
+  /// Testing aid: the unsorted blends draw the cells in a fixed random
+  /// permutation instead of the mesh's order (their image must not change).
+  vtkSetMacro(ShuffleOrderForTesting, bool);
+  vtkGetMacro(ShuffleOrderForTesting, bool);
+  ///@}
+
+  ///@{
+  /// Draw the near plane's section where it cuts the mesh (the camera
+  /// inside it). On by default; off only as a negative control.
+  vtkSetMacro(NearPlaneSection, bool);
+  vtkGetMacro(NearPlaneSection, bool);
+  vtkBooleanMacro(NearPlaneSection, bool);
+  ///@}
+
+  /// Triangles of the near plane's section drawn in the last frame.
+  vtkGetMacro(LastSectionTriangles, vtkIdType);
+
+  /// Whether the last frame reused the previous frame's cell order and its
+  /// upload (the same view key, vtkHAVSVisibilityOrder::ViewKey: a
+  /// transfer-function edit or a redraw does not sort again).
+  vtkGetMacro(LastOrderReused, bool);
+
+  ///@{
   /// The last frame: cells drawn, cells taken out of order to break cycles,
   /// seconds of the order and of the draw (with the GPU finished only when
   /// MeasureStageTimes is on).
@@ -140,7 +185,9 @@ public:
     const std::vector<uint32_t>* Faces = nullptr; ///< 12 point ids per tetrahedron
     vtkMTimeType GeometryVersion = 0;             ///< of Points, Cells, Faces
     const std::vector<uint32_t>* Order = nullptr; ///< tetrahedra, front to back
-    vtkHAVSFramePlanes* Planes = nullptr;         ///< the clipping planes (no sections)
+    vtkMTimeType OrderVersion = 0;                ///< changes whenever Order does
+    int Blend = 0;                                ///< the blend mode
+    vtkHAVSFramePlanes* Planes = nullptr;         ///< the clipping planes, the near plane's section
     bool Opaque = false;                          ///< opaque geometry may end the rays
     bool KeepResult = false;
     bool WrongExit = false;
@@ -162,6 +209,8 @@ private:
 
   void WarnOnce(int which, const std::string& message);
   void CentroidOrder(const vtkHAVSViewFrame& view);
+  /// The frame's cell order (made again only when its key changed); nullptr on failure.
+  const std::vector<uint32_t>* MakeOrder(const vtkHAVSViewFrame& view);
 
   int CellOrder = CellOrderMPVO;
   int NonConvexMethod = 1; // vtkHAVSVisibilityOrder::NonConvexBoundaryLayers
@@ -170,7 +219,11 @@ private:
   bool KeepFloatResult = false;
   bool WrongExitForTesting = false;
   bool ReverseOrderForTesting = false;
+  bool ShuffleOrderForTesting = false;
+  bool NearPlaneSection = true;
+  vtkIdType LastSectionTriangles = 0;
   bool MeasureStageTimes = false;
+  bool LastOrderReused = false;
   vtkIdType LastCellsDrawn = 0;
   vtkIdType LastCycleBreaks = 0;
   double LastOrderSeconds = 0.0;
@@ -186,8 +239,13 @@ private:
   std::vector<uint32_t> Faces;
   vtkTimeStamp GeometryTime;
   std::vector<uint32_t> Centroid; // the centroid cell order
-  std::vector<uint32_t> Reversed; // the order reversed (testing aid)
-  std::array<bool, 9> Warned{};   // vtkHAVSMapperInputs::NumberOfOnceWarnings
+  std::vector<uint32_t> Drawn;    // the frame's cell order
+  vtkHAVSVisibilityOrder::ViewKey OrderKey;
+  bool OrderKeyValid = false;
+  bool OrderReversed = false;
+  vtkIdType KeptCycleBreaks = 0;
+  vtkTimeStamp OrderTime;
+  std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
 };
 
 #endif

@@ -77,20 +77,8 @@ const std::vector<uint32_t>* vtkHAVSFaceOrderPolicy::MakeExactOrder(
     this->ExactMeshTime = mesh->GetBuildTime();
     this->ExactValid = false;
   }
-  ExactKey key;
-  key.Mesh = mesh->GetBuildTime();
-  std::copy(view.EyeGrid, view.EyeGrid + 3, key.Eye.begin());
-  std::copy(view.DirectionGrid, view.DirectionGrid + 3, key.Direction.begin());
-  key.Parallel = view.Parallel;
-  key.Method = this->NonConvexMethod;
-  if (this->NonConvexMethod == vtkHAVSVisibilityOrder::NonConvexBoundaryLayers &&
-    !this->Exact->IsMeshConvex())
-  {
-    // The boundary layers are sampled at this frame's pixels.
-    std::copy(view.GridToClip, view.GridToClip + 16, key.GridToClip.begin());
-    key.Width = view.Width;
-    key.Height = view.Height;
-  }
+  const vtkHAVSVisibilityOrder::ViewKey key =
+    this->Exact->MakeViewKey(mesh->GetBuildTime(), view, this->NonConvexMethod);
   if (!this->ExactValid || !(key == this->LastExactKey))
   {
     this->Exact->SetNonConvexMethod(this->NonConvexMethod);

@@ -34,8 +34,9 @@
 #ifndef vtkHAVSFaceOrderPolicy_h
 #define vtkHAVSFaceOrderPolicy_h
 
-#include "vtkHAVSCoreModule.h" // For export macro
-#include "vtkNew.h"            // For vtkNew
+#include "vtkHAVSCoreModule.h"      // For export macro
+#include "vtkHAVSVisibilityOrder.h" // For ViewKey
+#include "vtkNew.h"                 // For vtkNew
 #include "vtkObject.h"
 
 #include <array>   // For std::array
@@ -132,24 +133,6 @@ private:
   vtkHAVSFaceOrderPolicy(const vtkHAVSFaceOrderPolicy&) = delete;
   void operator=(const vtkHAVSFaceOrderPolicy&) = delete;
 
-  /// What the exact order was made for.
-  struct ExactKey
-  {
-    vtkMTimeType Mesh = 0;
-    std::array<double, 3> Eye{};
-    std::array<double, 3> Direction{};
-    bool Parallel = false;
-    int Method = -1;
-    std::array<double, 16> GridToClip{}; // boundary layers only: the pixels sampled
-    int Width = 0;
-    int Height = 0;
-    bool operator==(const ExactKey& o) const
-    {
-      return this->Mesh == o.Mesh && this->Eye == o.Eye && this->Direction == o.Direction &&
-        this->Parallel == o.Parallel && this->Method == o.Method &&
-        this->GridToClip == o.GridToClip && this->Width == o.Width && this->Height == o.Height;
-    }
-  };
   /// What Automatic's choice holds for.
   struct AutomaticKey
   {
@@ -172,7 +155,7 @@ private:
   vtkNew<vtkHAVSFaceSorter> Centroid;
   vtkNew<vtkHAVSVisibilityOrder> Exact;
   vtkMTimeType ExactMeshTime = 0; // the mesh the exact order's adjacency was built for
-  ExactKey LastExactKey;
+  vtkHAVSVisibilityOrder::ViewKey LastExactKey;
   bool ExactValid = false;
 
   AutomaticKey LastAutomaticKey;

@@ -71,6 +71,7 @@ bool vtkHAVSFramePlanes::Update(
   std::vector<Cut> cuts;
   for (const Candidate& candidate : candidates)
   {
+    const bool nearPlane = &candidate == &candidates.front();
     double planeModel[4];
     for (int c = 0; c < 4; ++c)
     {
@@ -95,7 +96,7 @@ bool vtkHAVSFramePlanes::Update(
     this->Planes.push_back(
       { static_cast<float>(candidate.Equation[0]), static_cast<float>(candidate.Equation[1]),
         static_cast<float>(candidate.Equation[2]), static_cast<float>(candidate.Equation[3]) });
-    if (cutsMesh && sections)
+    if (cutsMesh && sections && (nearPlane || !this->NearPlaneSectionsOnly))
     {
       cuts.push_back({ index, candidate.Entering,
         { planeModel[0], planeModel[1], planeModel[2], planeModel[3] } });
@@ -115,9 +116,9 @@ bool vtkHAVSFramePlanes::Update(
       Section section;
       section.PlaneIndex = cut.Index;
       section.Entering = cut.Entering;
-      this->SectionTriangles +=
-        this->Sectioner->Compute(mesh->GetFaceSet()->GetTetrahedra(), mesh->GetPoints(),
-          mesh->GetScalars(), cut.PlaneModel.data(), section.Points, section.Scalars);
+      this->SectionTriangles += this->Sectioner->Compute(mesh->GetFaceSet()->GetTetrahedra(),
+        mesh->GetPoints(), mesh->GetScalars(), cut.PlaneModel.data(), section.Points,
+        section.Scalars, &section.Cells);
       this->Sections.push_back(std::move(section));
     }
     this->SectionSeconds = vtkTimerLog::GetUniversalTime() - start;

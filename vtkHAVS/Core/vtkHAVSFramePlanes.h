@@ -56,6 +56,7 @@ public:
     bool Entering = true;
     std::vector<float> Points;
     std::vector<float> Scalars;
+    std::vector<uint32_t> Cells; ///< the tetrahedron of each triangle
   };
 
   /**
@@ -65,6 +66,16 @@ public:
    */
   bool Update(
     const vtkHAVSViewFrame& view, vtkPlaneCollection* clipping, vtkHAVSMesh* mesh, bool sections);
+
+  ///@{
+  /**
+   * Sections of the near plane only (for vtkHAVSCellProjectionMapper: a
+   * clipping plane needs none there, the ray starts on it inside the cell
+   * whose front face the rasterizer still draws). Off by default.
+   */
+  vtkSetMacro(NearPlaneSectionsOnly, bool);
+  vtkGetMacro(NearPlaneSectionsOnly, bool);
+  ///@}
 
   /// Planes that cut or discard the mesh (the near plane first when it does).
   int GetNumberOfPlanes() const { return static_cast<int>(this->Planes.size()); }
@@ -99,6 +110,7 @@ private:
     }
   };
 
+  bool NearPlaneSectionsOnly = false;
   std::vector<std::array<float, 4>> Planes;
   std::vector<Section> Sections;
   std::vector<Cut> Cuts; // what the sections were made for

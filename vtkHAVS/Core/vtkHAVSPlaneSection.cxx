@@ -113,7 +113,8 @@ int CutTetrahedron(const uint32_t* ids, const float* points, const float* scalar
 //------------------------------------------------------------------------------
 vtkIdType vtkHAVSPlaneSection::Compute(const std::vector<uint32_t>& tetrahedra,
   const std::vector<float>& points, const std::vector<float>& scalars, const double plane[4],
-  std::vector<float>& sectionPoints, std::vector<float>& sectionScalars)
+  std::vector<float>& sectionPoints, std::vector<float>& sectionScalars,
+  std::vector<uint32_t>* sectionCells)
 {
   const double start = vtkTimerLog::GetUniversalTime();
   const vtkIdType numberOfTetrahedra = static_cast<vtkIdType>(tetrahedra.size() / 4);
@@ -145,6 +146,10 @@ vtkIdType vtkHAVSPlaneSection::Compute(const std::vector<uint32_t>& tetrahedra,
   const vtkIdType triangles = counts[blocks];
   sectionPoints.resize(9 * static_cast<size_t>(triangles));
   sectionScalars.resize(3 * static_cast<size_t>(triangles));
+  if (sectionCells)
+  {
+    sectionCells->resize(static_cast<size_t>(triangles));
+  }
   vtkSMPTools::For(0, blocks,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -154,9 +159,14 @@ vtkIdType vtkHAVSPlaneSection::Compute(const std::vector<uint32_t>& tetrahedra,
         const vtkIdType last = std::min(numberOfTetrahedra, (block + 1) * blockSize);
         for (vtkIdType t = block * blockSize; t < last; ++t)
         {
-          at += CutTetrahedron(&tetrahedra[4 * static_cast<size_t>(t)], points.data(),
+          const int made = CutTetrahedron(&tetrahedra[4 * static_cast<size_t>(t)], points.data(),
             scalars.data(), plane, &sectionPoints[9 * static_cast<size_t>(at)],
             &sectionScalars[3 * static_cast<size_t>(at)]);
+          for (int i = 0; sectionCells && i < made; ++i)
+          {
+            (*sectionCells)[static_cast<size_t>(at) + i] = static_cast<uint32_t>(t);
+          }
+          at += made;
         }
       }
     });

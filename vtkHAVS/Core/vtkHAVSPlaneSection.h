@@ -48,11 +48,12 @@ public:
    * Cuts the tetrahedra (4 point ids each) with the plane. `points` holds 3
    * floats per point, `scalars` one per point. Fills `sectionPoints` (9 floats
    * per triangle) and `sectionScalars` (3 per triangle); returns the number
-   * of triangles.
+   * of triangles. `sectionCells`, when given, gets the tetrahedron (its index
+   * in `tetrahedra`) of each triangle.
    */
   vtkIdType Compute(const std::vector<uint32_t>& tetrahedra, const std::vector<float>& points,
     const std::vector<float>& scalars, const double plane[4], std::vector<float>& sectionPoints,
-    std::vector<float>& sectionScalars);
+    std::vector<float>& sectionScalars, std::vector<uint32_t>* sectionCells = nullptr);
 
   /// Seconds the last Compute() took.
   vtkGetMacro(LastSeconds, double);

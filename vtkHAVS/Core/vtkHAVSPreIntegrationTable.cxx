@@ -118,6 +118,7 @@ void vtkHAVSPreIntegrationTable::Zero()
   const size_t ns = static_cast<size_t>(this->ScalarResolution);
   this->Table.assign(ns * ns * this->LengthResolution * 4, 0.0f);
   this->TransferFunction1D.assign(ns * 4, 0.0f);
+  this->Additive1D.assign(2 * AdditiveResolution, 0.0f);
   this->BuiltScalarResolution = this->ScalarResolution;
   this->BuiltLengthResolution = this->LengthResolution;
 }
@@ -197,6 +198,22 @@ bool vtkHAVSPreIntegrationTable::Build(
       this->TransferFunction1D[4 * i + c] = static_cast<float>(s.Color[c]);
     }
     this->TransferFunction1D[4 * i + 3] = static_cast<float>(s.Tau * unit);
+  }
+
+  // The additive blend's integrand g(s) = tau(s) * s (s normalized) and its
+  // integral G, exact for g linear between the nodes (the trapezoid rule).
+  double integral = 0.0, previous = 0.0;
+  for (int i = 0; i < AdditiveResolution; ++i)
+  {
+    const double sn = static_cast<double>(i) / (AdditiveResolution - 1);
+    const double g = Evaluate(property, component, lo + span * sn).Tau * sn;
+    if (i > 0)
+    {
+      integral += 0.5 * (previous + g) / (AdditiveResolution - 1);
+    }
+    this->Additive1D[2 * i] = static_cast<float>(g);
+    this->Additive1D[2 * i + 1] = static_cast<float>(integral);
+    previous = g;
   }
 
   float* table = this->Table.data();

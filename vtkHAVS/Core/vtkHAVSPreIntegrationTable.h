@@ -95,6 +95,19 @@ public:
    */
   const std::vector<float>& GetTransferFunction1D() const { return this->TransferFunction1D; }
 
+  /// Nodes of GetAdditive1D().
+  static constexpr int AdditiveResolution = 1024;
+
+  /**
+   * For VTK's additive blend (order-independent: the ray's value is the
+   * integral of tau(s) s along it, s normalized to [0, 1], clamped to 1): at
+   * AdditiveResolution evenly spaced normalized scalars, pairs (g, G) of
+   * g(s) = tau(s) s and its integral from 0, exact for g linear between the
+   * nodes. A segment's value is its length times the mean of g over
+   * [sf, sb]: (G(sb) - G(sf)) / (sb - sf).
+   */
+  const std::vector<float>& GetAdditive1D() const { return this->Additive1D; }
+
   /**
    * The table's value for a segment, trilinear between nodes exactly as the
    * GPU samples it (clamped at the edges).
@@ -125,6 +138,7 @@ private:
 
   std::vector<float> Table;
   std::vector<float> TransferFunction1D;
+  std::vector<float> Additive1D;
   double ScalarRange[2] = { 0.0, 1.0 };
   double MaxLength = 0.0;
   int Component = 0;

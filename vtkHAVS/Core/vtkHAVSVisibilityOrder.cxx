@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSVisibilityOrder.h"
 
+#include "vtkHAVSViewFrame.h"
+
 #include "vtkHAVSConvexification.h"
 #include "vtkHAVSFaceRasterizer.h"
 #include "vtkHAVSFaceSet.h"
@@ -665,4 +667,24 @@ void vtkHAVSVisibilityOrder::PrintSelf(ostream& os, vtkIndent indent)
      << this->LastBoundaryLayerSeconds << " s)\n";
   os << indent << "NumberOfCycleBreaks: " << this->NumberOfCycleBreaks << "\n";
   os << indent << "LastSortSeconds: " << this->LastSortSeconds << "\n";
+}
+
+//------------------------------------------------------------------------------
+vtkHAVSVisibilityOrder::ViewKey vtkHAVSVisibilityOrder::MakeViewKey(
+  vtkMTimeType meshTime, const vtkHAVSViewFrame& view, int method) const
+{
+  ViewKey key;
+  key.Mesh = meshTime;
+  std::copy(view.EyeGrid, view.EyeGrid + 3, key.Eye.begin());
+  std::copy(view.DirectionGrid, view.DirectionGrid + 3, key.Direction.begin());
+  key.Parallel = view.Parallel;
+  key.Method = method;
+  if (method == NonConvexBoundaryLayers && !this->MeshConvex)
+  {
+    // The boundary layers are sampled at this frame's pixels.
+    std::copy(view.GridToClip, view.GridToClip + 16, key.GridToClip.begin());
+    key.Width = view.Width;
+    key.Height = view.Height;
+  }
+  return key;
 }

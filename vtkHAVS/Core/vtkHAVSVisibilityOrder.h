@@ -57,6 +57,7 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
+#include <array>   // For std::array
 #include <cstdint> // For uint32_t
 #include <utility> // For std::pair
 #include <vector>  // For std::vector
@@ -64,6 +65,7 @@
 class vtkHAVSConvexification;
 class vtkHAVSFaceRasterizer;
 class vtkHAVSFaceSet;
+class vtkHAVSViewFrame;
 class vtkUnstructuredGrid;
 
 class VTKHAVSCORE_EXPORT vtkHAVSVisibilityOrder : public vtkObject
@@ -101,6 +103,31 @@ public:
 
   /// Whether the mesh given to Build() is convex (no relations needed across gaps).
   bool IsMeshConvex() const { return this->MeshConvex; }
+
+  /**
+   * What an order was made for: equal keys give the same Sort() result. The
+   * view's pixel sampling counts only where the boundary layers sample it
+   * (a non-convex mesh).
+   */
+  struct ViewKey
+  {
+    vtkMTimeType Mesh = 0;
+    std::array<double, 3> Eye{};
+    std::array<double, 3> Direction{};
+    bool Parallel = false;
+    int Method = -1;
+    std::array<double, 16> GridToClip{};
+    int Width = 0;
+    int Height = 0;
+    bool operator==(const ViewKey& o) const
+    {
+      return this->Mesh == o.Mesh && this->Eye == o.Eye && this->Direction == o.Direction &&
+        this->Parallel == o.Parallel && this->Method == o.Method &&
+        this->GridToClip == o.GridToClip && this->Width == o.Width && this->Height == o.Height;
+    }
+  };
+  /// The key of a Sort() for `view` with `method`, of the mesh built at `meshTime`.
+  ViewKey MakeViewKey(vtkMTimeType meshTime, const vtkHAVSViewFrame& view, int method) const;
 
   /**
    * The face order for a view (eye and direction in model coordinates);

@@ -16,6 +16,7 @@
 #include "vtkHAVSOpenGL.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
@@ -48,24 +49,41 @@ bool vtkHAVSExtremumPass::Draw(vtkHAVSGLPassContext& context)
 //------------------------------------------------------------------------------
 bool vtkHAVSExtremumPass::Resolve(vtkHAVSGLPassContext& context)
 {
+  const bool minimum = context.Request.BlendMode == vtkHAVSVolumeMapper::MINIMUM_INTENSITY_BLEND;
+  return ResolveResult(
+    context.Window, context.Targets, context.Table, minimum ? ResolveMinimum : ResolveMaximum);
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSExtremumPass::ResolveResult(vtkOpenGLRenderWindow* window,
+  vtkHAVSGLFrameTargets* targets, vtkHAVSGLTable* table, ResolveKind kind)
+{
   // The draw wrote the result texture; the resolve reads a copy of it.
-  const int w = context.Width(), h = context.Height();
-  auto extremum = vtkHAVSGLFrameTargets::NewFloatTexture(context.Window, w, h);
-  context.Targets->BindResultForReading();
+  const int w = targets->GetSize()[0], h = targets->GetSize()[1];
+  auto extremum = vtkHAVSGLFrameTargets::NewFloatTexture(window, w, h);
+  targets->BindResultForReading();
   extremum->Activate();
   glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, w, h);
-  context.Targets->BindResult();
-  vtkTextureObject* function = context.Table->GetTransferFunction1D();
+  targets->BindResult();
+  vtkTextureObject* function = table->GetTransferFunction1D();
   function->Activate();
-  vtkShaderProgram* program = context.QuadProgram(vtkHAVSKBufferShaders::ExtremumResolveShader());
-  if (program)
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(vtkHAVSKBufferShaders::QuadVertexShader().c_str(),
+      vtkHAVSKBufferShaders::ExtremumResolveShader().c_str(), "");
+  const bool built = program && program->GetCompiled();
+  if (built)
   {
+    // (The program is shared by every mapper in the window: set every mode uniform.)
+    table->SetUniforms(program);
     program->SetUniformi("havsExtremumTexture", extremum->GetTextureUnit());
     program->SetUniformi("havsTransferFunction", function->GetTextureUnit());
-    context.DrawFullViewport();
+    program->SetUniformi("havsMinimum", kind == ResolveMinimum ? 1 : 0);
+    program->SetUniformi("havsAdditiveResolve", kind == ResolveAdditive ? 1 : 0);
+    window->GetState()->vtkglDisable(GL_BLEND);
+    targets->DrawFullViewport();
   }
   function->Deactivate();
   extremum->Deactivate();
-  extremum->ReleaseGraphicsResources(context.Window);
-  return program != nullptr;
+  extremum->ReleaseGraphicsResources(window);
+  return built;
 }

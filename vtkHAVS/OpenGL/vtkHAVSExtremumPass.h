@@ -15,13 +15,18 @@
  * blending (the minimum as the maximum of 1 - s), so the order of the faces
  * does not matter. Resolve(): each pixel's extremal scalar coloured from the
  * 1D transfer function (colour and opacity), as VTK's ray casters do.
+ * ResolveResult() is that resolve for any result target (also the
+ * additive blend's, for vtkOpenGLHAVSCellProjectionMapper).
  */
 #ifndef vtkHAVSExtremumPass_h
 #define vtkHAVSExtremumPass_h
 
 #include "vtkObject.h"
 
+class vtkHAVSGLFrameTargets;
 class vtkHAVSGLPassContext;
+class vtkHAVSGLTable;
+class vtkOpenGLRenderWindow;
 
 class vtkHAVSExtremumPass : public vtkObject
 {
@@ -31,6 +36,19 @@ public:
 
   bool Draw(vtkHAVSGLPassContext& context);
   bool Resolve(vtkHAVSGLPassContext& context);
+
+  enum ResolveKind
+  {
+    ResolveMaximum,  ///< result (s, covered): colour and opacity of s
+    ResolveMinimum,  ///< result (1 - s, covered): colour and opacity of s
+    ResolveAdditive, ///< result (sum, covered): grey clamp(sum), opacity 1
+  };
+  /**
+   * Resolves `targets`' result in place (the table uploaded and active).
+   * False when the program could not be built.
+   */
+  static bool ResolveResult(vtkOpenGLRenderWindow* window, vtkHAVSGLFrameTargets* targets,
+    vtkHAVSGLTable* table, ResolveKind kind);
 
 protected:
   vtkHAVSExtremumPass() = default;

@@ -27,6 +27,8 @@ void vtkHAVSGLTable::Upload(vtkHAVSPreIntegrationTable* table)
     this->Table->SetContext(this->Window);
     this->TransferFunction1D = vtkSmartPointer<vtkTextureObject>::New();
     this->TransferFunction1D->SetContext(this->Window);
+    this->Additive1D = vtkSmartPointer<vtkTextureObject>::New();
+    this->Additive1D->SetContext(this->Window);
   }
   for (vtkTextureObject* t : { this->Table.Get(), this->TransferFunction1D.Get() })
   {
@@ -46,6 +48,16 @@ void vtkHAVSGLTable::Upload(vtkHAVSPreIntegrationTable* table)
   const std::vector<float>& function = table->GetTransferFunction1D();
   this->TransferFunction1D->Create1DFromRaw(static_cast<unsigned int>(function.size() / 4), 4,
     VTK_FLOAT, const_cast<float*>(function.data()));
+  // (g, G) pairs read with texelFetch: no filtering.
+  const std::vector<float>& additive = table->GetAdditive1D();
+  this->Additive1D->SetInternalFormat(GL_RG32F);
+  this->Additive1D->SetFormat(GL_RG);
+  this->Additive1D->SetDataType(GL_FLOAT);
+  this->Additive1D->SetMinificationFilter(vtkTextureObject::Nearest);
+  this->Additive1D->SetMagnificationFilter(vtkTextureObject::Nearest);
+  this->Additive1D->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->Additive1D->Create1DFromRaw(static_cast<unsigned int>(additive.size() / 2), 2, VTK_FLOAT,
+    const_cast<float*>(additive.data()));
   this->MaxLength = table->GetMaxLength() > 0.0 ? table->GetMaxLength() : 1.0;
 }
 
@@ -73,8 +85,13 @@ void vtkHAVSGLTable::ReleaseGraphicsResources(vtkWindow* window)
   {
     this->TransferFunction1D->ReleaseGraphicsResources(window);
   }
+  if (this->Additive1D)
+  {
+    this->Additive1D->ReleaseGraphicsResources(window);
+  }
   this->Table = nullptr;
   this->TransferFunction1D = nullptr;
+  this->Additive1D = nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -37,11 +37,13 @@ public:
 
   void SetContext(vtkOpenGLRenderWindow* window) { this->Window = window; }
 
-  /// Uploads the table and the 1D function.
+  /// Uploads the table, the 1D function and the additive nodes.
   void Upload(vtkHAVSPreIntegrationTable* table);
 
   vtkTextureObject* GetTable() { return this->Table; }
   vtkTextureObject* GetTransferFunction1D() { return this->TransferFunction1D; }
+  /// The additive blend's (g, G) nodes (vtkHAVSPreIntegrationTable::GetAdditive1D).
+  vtkTextureObject* GetAdditive1D() { return this->Additive1D; }
 
   /// havsTable, havsScalarTexel, havsLengthTexel, havsInvMaxLength (table active).
   void SetUniforms(vtkShaderProgram* program);
@@ -59,6 +61,7 @@ private:
   vtkOpenGLRenderWindow* Window = nullptr;
   vtkSmartPointer<vtkTextureObject> Table;
   vtkSmartPointer<vtkTextureObject> TransferFunction1D;
+  vtkSmartPointer<vtkTextureObject> Additive1D;
   int ScalarResolution = 0;
   int LengthResolution = 0;
   double MaxLength = 1.0;

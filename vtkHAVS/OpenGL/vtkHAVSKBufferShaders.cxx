@@ -230,11 +230,13 @@ std::string vtkHAVSKBufferShaders::CellProjectionVertexShader()
   return vtkHAVSCellProjectionVS;
 }
 
-std::string vtkHAVSKBufferShaders::CellProjectionShader(bool opaque)
+std::string vtkHAVSKBufferShaders::CellProjectionShader(bool opaque, int blend)
 {
   Features features;
   features.CountViolations = false;
   features.Tagging = false;
   features.Opaque = opaque;
-  return Compose(vtkHAVSCellProjectionFS, 1, 1, features);
+  std::string source = Compose(vtkHAVSCellProjectionFS, 1, 1, features);
+  Replace(source, "//HAVS::CellBlend", "#define HAVS_CELL_BLEND " + std::to_string(blend));
+  return source;
 }

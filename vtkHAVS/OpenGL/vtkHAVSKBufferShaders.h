@@ -96,9 +96,10 @@ public:
   ///@{
   /// vtkHAVSCellProjectionMapper: the faces' vertex shader, and the fragment
   /// shader (the k-buffer library's segment look-up; the opaque cut compiled
-  /// in with `opaque`).
+  /// in with `opaque`; `blend`: vtkHAVSCellProjectionMapper's blend mode:
+  /// composite, maximum, minimum or additive).
   static std::string CellProjectionVertexShader();
-  static std::string CellProjectionShader(bool opaque);
+  static std::string CellProjectionShader(bool opaque, int blend = 0);
   ///@}
 };
 

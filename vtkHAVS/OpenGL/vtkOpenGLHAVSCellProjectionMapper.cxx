@@ -9,6 +9,7 @@
 =========================================================================*/
 #include "vtkOpenGLHAVSCellProjectionMapper.h"
 
+#include "vtkHAVSExtremumPass.h"
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSGLCapabilities.h"
 #include "vtkHAVSGLFrameTargets.h"
@@ -95,7 +96,15 @@ void vtkOpenGLHAVSCellProjectionMapper::Upload(const CellFrame& frame)
     this->GLTable->Upload(frame.Table);
     this->UploadedTable = frame.TableVersion;
   }
-  // The faces of the cells in the frame's order, and the cell of each position.
+  // The faces of the cells in the frame's order, and the cell of each
+  // position: only when the order changed (not on a redraw or a
+  // transfer-function edit; once per mesh for the unsorted blends).
+  if (this->UploadedOrder == frame.OrderVersion && this->Indices.size() == 12 * frame.Order->size())
+  {
+    glBindVertexArray(0);
+    return;
+  }
+  this->UploadedOrder = frame.OrderVersion;
   const std::vector<uint32_t>& order = *frame.Order;
   const std::vector<uint32_t>& faces = *frame.Faces;
   this->Indices.resize(12 * order.size());
@@ -111,6 +120,45 @@ void vtkOpenGLHAVSCellProjectionMapper::Upload(const CellFrame& frame)
   glBufferData(
     GL_SHADER_STORAGE_BUFFER, order.size() * sizeof(uint32_t), order.data(), GL_STREAM_DRAW);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+//------------------------------------------------------------------------------
+int vtkOpenGLHAVSCellProjectionMapper::UploadSection(const CellFrame& frame)
+{
+  const std::vector<vtkHAVSFramePlanes::Section>& sections = frame.Planes->GetSections();
+  if (sections.empty())
+  {
+    return 0; // (the camera outside the mesh: nothing cut by the near plane)
+  }
+  const vtkMTimeType version = frame.Planes->GetSectionsVersion();
+  if (this->SectionArray && this->UploadedSection == version)
+  {
+    return this->SectionTriangles;
+  }
+  if (!this->SectionArray)
+  {
+    glGenVertexArrays(1, &this->SectionArray);
+    GLuint buffers[2];
+    glGenBuffers(2, buffers);
+    this->SectionPointBuffer = buffers[0];
+    this->SectionCellBuffer = buffers[1];
+  }
+  const vtkHAVSFramePlanes::Section& section = sections.front(); // the near plane's only
+  glBindVertexArray(this->SectionArray);
+  glBindBuffer(GL_ARRAY_BUFFER, this->SectionPointBuffer);
+  glBufferData(
+    GL_ARRAY_BUFFER, section.Points.size() * sizeof(float), section.Points.data(), GL_STREAM_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glBindVertexArray(0);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->SectionCellBuffer);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, section.Cells.size() * sizeof(uint32_t),
+    section.Cells.data(), GL_STREAM_DRAW);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  this->UploadedSection = version;
+  this->SectionTriangles = static_cast<int>(section.Cells.size());
+  return this->SectionTriangles;
 }
 
 //------------------------------------------------------------------------------
@@ -130,6 +178,7 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
     return false;
   }
   this->Upload(frame);
+  const int sectionTriangles = this->UploadSection(frame);
   const vtkHAVSViewFrame& view = *frame.View;
   const int width = view.Width, height = view.Height;
   this->Targets->Resize(width, height);
@@ -140,7 +189,7 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   }
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
     vtkHAVSKBufferShaders::CellProjectionVertexShader().c_str(),
-    vtkHAVSKBufferShaders::CellProjectionShader(opaque).c_str(), "");
+    vtkHAVSKBufferShaders::CellProjectionShader(opaque, frame.Blend).c_str(), "");
   if (!program || !program->GetCompiled())
   {
     vtkErrorMacro("The cell-projection shader could not be built; see the shader log above.");
@@ -151,9 +200,12 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   vtkHAVSGLScopedPassState passState(state);
   vtkTextureObject* table = this->GLTable->GetTable();
   vtkTextureObject* depth = this->Targets->GetOpaqueDepth();
+  vtkTextureObject* additive = this->GLTable->GetAdditive1D();
   table->Activate();
   depth->Activate();
+  additive->Activate();
   this->GLTable->SetUniforms(program);
+  program->SetUniformi("havsAdditive", additive->GetTextureUnit());
   float m[16];
   vtkHAVSViewFrame::ToColumnMajor(view.ModelToEyeRelative, m);
   program->SetUniformMatrix4x4("havsMCRC", m);
@@ -201,19 +253,41 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   const float zero[4] = { 0, 0, 0, 0 };
   glClearBufferfv(GL_COLOR, 0, zero);
-  // Front to back: the segment goes under what is in front (premultiplied).
   state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
-  state->vtkglEnable(GL_CULL_FACE);
-  state->vtkglCullFace(GL_BACK);
-  glFrontFace(view.FlipFacing ? GL_CW : GL_CCW);
+  if (frame.Blend == vtkHAVSCellProjectionMapper::COMPOSITE_BLEND)
+  {
+    // Front to back: the segment goes under what is in front (premultiplied).
+    state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+  }
+  else
+  {
+    // Order-independent: the largest (of s, or of 1 - s), or the sum.
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+    state->vtkglBlendEquation(
+      frame.Blend == vtkHAVSCellProjectionMapper::ADDITIVE_BLEND ? GL_FUNC_ADD : GL_MAX);
+  }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, this->CellBuffer);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->OrderBuffer);
   if (frame.MeasureStages)
   {
     glFinish();
   }
   const double t0 = vtkTimerLog::GetUniversalTime();
+  if (sectionTriangles > 0)
+  {
+    // The near plane's section first: the cells it cuts are the first along
+    // their rays (either facing; one triangle per cell entry).
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->SectionCellBuffer);
+    program->SetUniformi("havsTrianglesPerCell", 1);
+    program->SetUniformi("havsNearSectionDrawn", 1);
+    glBindVertexArray(this->SectionArray);
+    glDrawArrays(GL_TRIANGLES, 0, 3 * sectionTriangles);
+  }
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(GL_BACK);
+  glFrontFace(view.FlipFacing ? GL_CW : GL_CCW);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->OrderBuffer);
+  program->SetUniformi("havsTrianglesPerCell", 4);
+  program->SetUniformi("havsNearSectionDrawn", sectionTriangles > 0 ? 1 : 0);
   glBindVertexArray(this->VertexArray);
   glDrawElements(
     GL_TRIANGLES, static_cast<GLsizei>(this->Indices.size()), GL_UNSIGNED_INT, nullptr);
@@ -225,16 +299,33 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   *drawSeconds = vtkTimerLog::GetUniversalTime() - t0;
   glFrontFace(GL_CCW);
   state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglBlendEquation(GL_FUNC_ADD);
+  bool resolved = true;
+  if (frame.Blend != vtkHAVSCellProjectionMapper::COMPOSITE_BLEND)
+  {
+    const auto kind = frame.Blend == vtkHAVSCellProjectionMapper::ADDITIVE_BLEND
+      ? vtkHAVSExtremumPass::ResolveAdditive
+      : (frame.Blend == vtkHAVSCellProjectionMapper::MINIMUM_INTENSITY_BLEND
+            ? vtkHAVSExtremumPass::ResolveMinimum
+            : vtkHAVSExtremumPass::ResolveMaximum);
+    resolved = vtkHAVSExtremumPass::ResolveResult(window, this->Targets, this->GLTable, kind);
+  }
   if (frame.KeepResult)
   {
     this->Targets->ReadResult(this->KeptResult);
     this->KeptSize[0] = width;
     this->KeptSize[1] = height;
   }
+  additive->Deactivate();
   table->Deactivate();
   depth->Deactivate();
   state->PopFramebufferBindings();
   state->vtkglViewport(view.OriginX, view.OriginY, width, height);
+  if (!resolved)
+  {
+    vtkErrorMacro("The resolve shader could not be built; see the shader log above.");
+    return false;
+  }
   return this->Targets->Composite(view.OriginX, view.OriginY);
 }
 
@@ -266,9 +357,18 @@ void vtkOpenGLHAVSCellProjectionMapper::ReleaseGraphicsResources(vtkWindow* wind
     this->VertexArray = this->PointBuffer = this->IndexBuffer = 0;
     this->CellBuffer = this->OrderBuffer = 0;
   }
+  if (this->SectionArray)
+  {
+    glDeleteVertexArrays(1, &this->SectionArray);
+    const GLuint buffers[2] = { this->SectionPointBuffer, this->SectionCellBuffer };
+    glDeleteBuffers(2, buffers);
+    this->SectionArray = this->SectionPointBuffer = this->SectionCellBuffer = 0;
+    this->SectionTriangles = 0;
+  }
+  this->Indices.clear();
   home->RemoveObserver(this->WindowDeleteObserver);
   this->Window = nullptr;
-  this->UploadedGeometry = this->UploadedTable = 0;
+  this->UploadedGeometry = this->UploadedTable = this->UploadedOrder = this->UploadedSection = 0;
 }
 
 //------------------------------------------------------------------------------

@@ -56,6 +56,8 @@ private:
   void PrepareWindow(vtkOpenGLRenderWindow* window);
   void OnWindowDeleted(vtkObject* window, unsigned long, void*);
   void Upload(const CellFrame& frame);
+  /// The near plane's section (triangles and their cells); returns its triangle count.
+  int UploadSection(const CellFrame& frame);
 
   vtkOpenGLRenderWindow* Window = nullptr;
   unsigned long WindowDeleteObserver = 0;
@@ -66,8 +68,14 @@ private:
   unsigned int IndexBuffer = 0;
   unsigned int CellBuffer = 0;
   unsigned int OrderBuffer = 0;
+  unsigned int SectionArray = 0;
+  unsigned int SectionPointBuffer = 0;
+  unsigned int SectionCellBuffer = 0;
+  int SectionTriangles = 0;
   vtkMTimeType UploadedGeometry = 0;
   vtkMTimeType UploadedTable = 0;
+  vtkMTimeType UploadedOrder = 0;
+  vtkMTimeType UploadedSection = 0;
   std::vector<uint32_t> Indices;
   std::vector<float> KeptResult;
   int KeptSize[2] = { 0, 0 };

@@ -35,6 +35,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <mutex>
 
@@ -466,6 +467,41 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+/// Calls f(front, back) for each segment of the ray (its sorted fragments)
+/// that lies in the mesh, by the parity of the boundary hits before it.
+template <typename F>
+void ForEachSegmentInMesh(const vtkHAVSReferenceRenderer::Fragment* begin,
+  const vtkHAVSReferenceRenderer::Fragment* end, F&& f)
+{
+  bool inside = false;
+  const vtkHAVSReferenceRenderer::Fragment* group = begin;
+  while (group != end)
+  {
+    // Fragments at the same distance: a crossing of a shared edge or vertex
+    // (once, by the tie-break), or a graze (an even number of boundary hits).
+    const vtkHAVSReferenceRenderer::Fragment* next = group;
+    int boundaryHits = 0;
+    while (next != end && next->Distance == group->Distance)
+    {
+      boundaryHits += next->Boundary ? 1 : 0;
+      ++next;
+    }
+    if (boundaryHits % 2 == 1)
+    {
+      inside = !inside;
+    }
+    if (inside && next != end)
+    {
+      f(*group, *next);
+    }
+    group = next;
+  }
+}
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSReferenceRenderer::IntegrateSegmentExact(
   vtkVolumeProperty* property, double sf, double sb, double length, double rgba[4])
 {
@@ -536,40 +572,146 @@ void vtkHAVSReferenceRenderer::IntegrateRay(
   vtkVolumeProperty* property, const Fragment* begin, const Fragment* end, double rgba[4])
 {
   double color[3] = { 0, 0, 0 }, transmittance = 1.0;
-  bool inside = false;
-  const Fragment* group = begin;
-  while (group != end)
-  {
-    // Fragments at the same distance: a crossing of a shared edge or vertex
-    // (once, by the tie-break), or a graze (an even number of boundary hits).
-    const Fragment* next = group;
-    int boundaryHits = 0;
-    while (next != end && next->Distance == group->Distance)
-    {
-      boundaryHits += next->Boundary ? 1 : 0;
-      ++next;
-    }
-    if (boundaryHits % 2 == 1)
-    {
-      inside = !inside;
-    }
-    if (inside && next != end)
+  ForEachSegmentInMesh(begin, end,
+    [&](const Fragment& front, const Fragment& back)
     {
       double segment[4];
       IntegrateSegmentExact(
-        property, group->Scalar, next->Scalar, next->Distance - group->Distance, segment);
+        property, front.Scalar, back.Scalar, back.Distance - front.Distance, segment);
       for (int c = 0; c < 3; ++c)
       {
         color[c] += transmittance * segment[c];
       }
       transmittance *= 1.0 - segment[3];
-    }
-    group = next;
-  }
+    });
   rgba[0] = color[0];
   rgba[1] = color[1];
   rgba[2] = color[2];
   rgba[3] = 1.0 - transmittance;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSReferenceRenderer::IntegrateRayBlend(vtkVolumeProperty* property, const Fragment* begin,
+  const Fragment* end, int blendMode, const double scalarRange[2], double rgba[4])
+{
+  const bool maximum = blendMode == 1, minimum = blendMode == 2, additive = blendMode == 4;
+  if (!maximum && !minimum && !additive)
+  {
+    IntegrateRay(property, begin, end, rgba);
+    return;
+  }
+  bool covered = false;
+  double extremum = 0.0, sum = 0.0;
+  ForEachSegmentInMesh(begin, end,
+    [&](const Fragment& front, const Fragment& back)
+    {
+      if (additive)
+      {
+        sum += IntegrateAdditiveSegment(
+          property, front.Scalar, back.Scalar, back.Distance - front.Distance, scalarRange);
+      }
+      else
+      {
+        for (double s : { front.Scalar, back.Scalar })
+        {
+          extremum = !covered ? s : (maximum ? std::max(extremum, s) : std::min(extremum, s));
+          covered = true;
+        }
+      }
+      covered = true;
+    });
+  rgba[0] = rgba[1] = rgba[2] = rgba[3] = 0.0;
+  if (!covered)
+  {
+    return;
+  }
+  if (additive)
+  {
+    rgba[0] = rgba[1] = rgba[2] = std::min(1.0, std::max(0.0, sum));
+    rgba[3] = 1.0;
+    return;
+  }
+  // The colour of the extremal scalar, as the mappers look it up (clamped to the range).
+  const double s = std::min(std::max(extremum, scalarRange[0]), scalarRange[1]);
+  double color[3];
+  if (property->GetColorChannels(0) == 1)
+  {
+    color[0] = color[1] = color[2] = property->GetGrayTransferFunction(0)->GetValue(s);
+  }
+  else
+  {
+    property->GetRGBTransferFunction(0)->GetColor(s, color);
+  }
+  const double a = std::max(0.0, property->GetScalarOpacity(0)->GetValue(s));
+  for (int c = 0; c < 3; ++c)
+  {
+    rgba[c] = color[c] * a;
+  }
+  rgba[3] = a;
+}
+
+//------------------------------------------------------------------------------
+double vtkHAVSReferenceRenderer::IntegrateAdditiveSegment(
+  vtkVolumeProperty* property, double sf, double sb, double length, const double scalarRange[2])
+{
+  if (!(length > 0.0))
+  {
+    return 0.0;
+  }
+  const double span = scalarRange[1] - scalarRange[0];
+  const double unit = property->GetScalarOpacityUnitDistance(0);
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  // The integrand along the segment's parameter u in [0, 1].
+  auto g = [&](double u)
+  {
+    const double s = sf + (sb - sf) * u;
+    const double normalized = span > 0.0 ? (s - scalarRange[0]) / span : 0.0;
+    return std::max(0.0, opacity->GetValue(s)) / unit * normalized;
+  };
+  std::vector<double> cuts = { 0.0, 1.0 };
+  if (sf != sb)
+  {
+    double node[4];
+    for (int i = 0; i < opacity->GetSize(); ++i)
+    {
+      opacity->GetNodeValue(i, node);
+      const double u = (node[0] - sf) / (sb - sf);
+      if (u > 0.0 && u < 1.0)
+      {
+        cuts.push_back(u);
+      }
+    }
+    std::sort(cuts.begin(), cuts.end());
+  }
+  // Adaptive Simpson on each piece.
+  std::function<double(double, double, double, double, double, double, double, int)> simpson;
+  simpson = [&](double a, double b, double fa, double fm, double fb, double whole, double tolerance,
+              int depth) -> double
+  {
+    const double m = 0.5 * (a + b);
+    const double lm = g(0.5 * (a + m)), rm = g(0.5 * (m + b));
+    const double left = (m - a) / 6.0 * (fa + 4.0 * lm + fm);
+    const double right = (b - m) / 6.0 * (fm + 4.0 * rm + fb);
+    if (depth <= 0 || std::fabs(left + right - whole) <= 15.0 * tolerance)
+    {
+      return left + right + (left + right - whole) / 15.0;
+    }
+    return simpson(a, m, fa, lm, fm, left, 0.5 * tolerance, depth - 1) +
+      simpson(m, b, fm, rm, fb, right, 0.5 * tolerance, depth - 1);
+  };
+  double integral = 0.0;
+  for (size_t i = 0; i + 1 < cuts.size(); ++i)
+  {
+    const double a = cuts[i], b = cuts[i + 1];
+    if (b <= a)
+    {
+      continue;
+    }
+    const double fa = g(a), fm = g(0.5 * (a + b)), fb = g(b);
+    const double whole = (b - a) / 6.0 * (fa + 4.0 * fm + fb);
+    integral += simpson(a, b, fa, fm, fb, whole, 1e-9 * (b - a), 24);
+  }
+  return integral * length;
 }
 
 //------------------------------------------------------------------------------
@@ -616,8 +758,8 @@ bool vtkHAVSReferenceRenderer::Render()
         for (vtkIdType p = begin; p < end; ++p)
         {
           double rgba[4];
-          IntegrateRay(
-            property, this->GetPixelFragmentsBegin(p), this->GetPixelFragmentsEnd(p), rgba);
+          IntegrateRayBlend(property, this->GetPixelFragmentsBegin(p),
+            this->GetPixelFragmentsEnd(p), this->BlendMode, this->ScalarRange, rgba);
           for (int c = 0; c < 4; ++c)
           {
             out[4 * p + c] = static_cast<float>(rgba[c]);
@@ -636,7 +778,8 @@ void vtkHAVSReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
   os << indent << "Fragments: " << this->Fragments.size() << "\n";
-  os << indent << "NearPlaneClipping: " << this->NearPlaneClipping << "\n";
+  os << indent << "NearPlaneClipping: " << this->NearPlaneClipping
+     << ", BlendMode: " << this->BlendMode << "\n";
   os << indent
      << "ClippingPlanes: " << (this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0)
      << "\n";

@@ -7,7 +7,18 @@
 // come from the cell's linear field, the segment from the pre-integration
 // table (havsSegment of the k-buffer library), and blending composites it
 // front to back (the cells arrive in the exact order).
+//
+// The order-independent blends (HAVS_CELL_BLEND 1, 2: maximum and minimum
+// intensity; 4: VTK's additive) need no order: the fragment writes the
+// segment's extremal scalar (1 - s for the minimum) for GL_MAX blending, or
+// its additive integral for GL_FUNC_ADD, with a coverage flag beside it; a
+// resolve pass colours the pixel (vtkHAVSExtremumResolveFS).
+//
+// Near-plane sections (the camera inside the mesh): the same shader draws the
+// triangles where the near plane cuts a cell (1 triangle per entry of the
+// cell buffer instead of the faces' 4), the ray starting on them.
 //HAVS::Defines
+//HAVS::CellBlend
 //HAVS::KBufferLib
 
 in vec3 havsPositionMC;
@@ -29,12 +40,56 @@ uniform vec3 havsEyeMC;        // the eye in model coordinates
 uniform vec3 havsDirectionMC;  // the direction of projection in model coordinates
 uniform mat3 havsModelToWorld; // the volume matrix's linear part (lengths in world units)
 uniform int havsWrongExit;     // testing aid: leave through the farthest plane
+uniform int havsTrianglesPerCell; // 4: the cells' faces; 1: near-plane sections
+uniform int havsNearSectionDrawn; // 1: the near plane's section was drawn this frame
+#if HAVS_CELL_BLEND == 4
+// (g, G) at evenly spaced normalized scalars: g = tau(s) s, G its integral
+// (vtkHAVSPreIntegrationTable::GetAdditive1D).
+uniform sampler1D havsAdditive;
+
+vec2 havsAdditiveNode(int i)
+{
+  return texelFetch(havsAdditive, i, 0).xy;
+}
+
+// G(s), exact for g linear between the nodes.
+float havsAdditiveIntegral(float s, float h, int last)
+{
+  float x = s / h;
+  int i = clamp(int(floor(x)), 0, last - 1);
+  float f = x - float(i);
+  vec2 a = havsAdditiveNode(i);
+  float gb = havsAdditiveNode(i + 1).x;
+  return a.y + h * (a.x * f + 0.5 * (gb - a.x) * f * f);
+}
+
+// The segment's integral of tau(s) s: its length times the mean of g.
+float havsAdditiveSegment(float sFront, float sBack, float len)
+{
+  int last = textureSize(havsAdditive, 0) - 1;
+  float h = 1.0 / float(last);
+  float ds = sBack - sFront;
+  float mean;
+  if (abs(ds) > h)
+  {
+    mean = (havsAdditiveIntegral(sBack, h, last) - havsAdditiveIntegral(sFront, h, last)) / ds;
+  }
+  else
+  {
+    // Within about one node: g at the middle (linear), no cancellation.
+    float x = 0.5 * (sFront + sBack) / h;
+    int i = clamp(int(floor(x)), 0, last - 1);
+    mean = mix(havsAdditiveNode(i).x, havsAdditiveNode(i + 1).x, x - float(i));
+  }
+  return mean * len;
+}
+#endif
 
 layout(location = 0) out vec4 havsSegmentColor;
 
 void main()
 {
-  int base = int(havsCellOrder[gl_PrimitiveID / 4]) * 5;
+  int base = int(havsCellOrder[gl_PrimitiveID / havsTrianglesPerCell]) * 5;
   vec3 p = havsPositionMC;
   vec3 d = havsParallel != 0 ? havsDirectionMC : p - havsEyeMC;
   float tExit = HAVS_EMPTY;
@@ -63,6 +118,14 @@ void main()
   // dot(n, x) + w >= 0): where a plane cuts the cell the ray starts (or
   // stops) on it, with no section to draw.
   vec3 dWorld = havsModelToWorld * d;
+  // Where the near plane's section was drawn (plane 0 is then the near
+  // plane) a face fragment in front of it is the section's: GL's near clip
+  // lies a hair in front of the section, the faces between are left out.
+  if (havsTrianglesPerCell == 4 && havsNearSectionDrawn != 0 &&
+    dot(havsPlanesRC[0].xyz, havsPositionRC) + havsPlanesRC[0].w < 0.0)
+  {
+    discard;
+  }
   float tEnter = 0.0;
   tExit = max(tExit, 0.0);
   for (int i = 0; i < havsPlaneCount; ++i)
@@ -104,5 +167,13 @@ void main()
     len = opaque - front;
   }
 #endif
+#if HAVS_CELL_BLEND == 1
+  havsSegmentColor = vec4(max(sFront, sBack), 1.0, 0.0, 0.0);
+#elif HAVS_CELL_BLEND == 2
+  havsSegmentColor = vec4(1.0 - min(sFront, sBack), 1.0, 0.0, 0.0);
+#elif HAVS_CELL_BLEND == 4
+  havsSegmentColor = vec4(havsAdditiveSegment(sFront, sBack, len), 1.0, 0.0, 0.0);
+#else
   havsSegmentColor = havsSegment(vec2(0.0, sFront), vec2(len, sBack));
+#endif
 }

@@ -1,11 +1,15 @@
 #version 430 core
 // Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 // vtkHAVS: maximum / minimum intensity resolve: colour and opacity of the
-// extremal scalar from the sampled transfer function.
+// extremal scalar from the sampled transfer function. Additive
+// (havsAdditiveResolve, vtkHAVSCellProjectionMapper): the summed integral of
+// tau(s) s, clamped to 1, as grey with opacity 1 where a ray crossed the mesh
+// (VTK's additive blend: vec4(vec3(clamp(sum, 0, 1)), 1)).
 uniform sampler2D havsExtremumTexture;
 uniform sampler1D havsTransferFunction; // rgb colour, opacity
 uniform vec2 havsScalarTexel;
 uniform int havsMinimum;
+uniform int havsAdditiveResolve;
 
 layout(location = 0) out vec4 havsResult;
 
@@ -15,6 +19,11 @@ void main()
   if (e.y < 0.5)
   {
     havsResult = vec4(0.0);
+    return;
+  }
+  if (havsAdditiveResolve != 0)
+  {
+    havsResult = vec4(vec3(clamp(e.x, 0.0, 1.0)), 1.0);
     return;
   }
   vec4 c = texture(havsTransferFunction, (havsMinimum != 0 ? 1.0 - e.x : e.x) * havsScalarTexel.x + havsScalarTexel.y);
