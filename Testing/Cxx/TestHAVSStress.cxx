@@ -28,6 +28,8 @@
 // Usage: TestHAVSStress <case>
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
+#include "havsTestMessages.h"
+#include "havsTestProperties.h"
 #include "havsTestScenes.h"
 
 #include "vtkHAVSCellProjectionMapper.h"
@@ -35,10 +37,14 @@
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSVolumeMapper.h"
 
+#include "vtkAppendFilter.h"
 #include "vtkCamera.h"
+#include "vtkCell.h"
+#include "vtkCellType.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkRenderWindow.h"
@@ -47,9 +53,14 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -177,6 +188,419 @@ int Translate()
   return havstest::Result();
 }
 
+/// The mapper's float result and the exact reference of the same scene
+/// (camera from (30, 20) degrees, 96 x 96), with the mapper's messages.
+struct Pair
+{
+  std::vector<float> Image;
+  std::vector<float> Exact;
+  int Warnings = 0;
+  int Errors = 0;
+};
+
+Pair RenderWithReference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, bool cells,
+  double azimuth = 30.0, double elevation = 20.0)
+{
+  const int size = 96;
+  auto mapper = MakeMapper(cells);
+  havstest::Messages* messages = havstest::CountMessages(mapper);
+  auto s = havstest::MakeScene(grid, mapper, property, size, size);
+  havstest::PlaceCamera(s.Renderer, azimuth, elevation, false);
+  s.Window->Render();
+  Pair out;
+  out.Image = havstest::FloatResult(mapper);
+  out.Warnings = messages->Warnings;
+  out.Errors = messages->Errors;
+  vtkNew<vtkHAVSReferenceRenderer> r;
+  r->SetInputData(grid);
+  r->SetProperty(property);
+  r->SetCamera(s.Renderer->GetActiveCamera());
+  r->SetSize(size, size);
+  r->Render();
+  vtkFloatArray* image = r->GetImage();
+  out.Exact.assign(image->GetPointer(0), image->GetPointer(0) + 4 * size * size);
+  return out;
+}
+
+/// `grid` with the point scalars f(point id, scalar) (a double array).
+vtkSmartPointer<vtkUnstructuredGrid> WithScalars(
+  vtkUnstructuredGrid* grid, const std::function<double(vtkIdType, double)>& f)
+{
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->DeepCopy(grid);
+  vtkDataArray* old = grid->GetPointData()->GetScalars();
+  vtkNew<vtkDoubleArray> values;
+  values->SetName("stress");
+  values->SetNumberOfTuples(grid->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    values->SetValue(i, f(i, old->GetTuple1(i)));
+  }
+  out->GetPointData()->SetScalars(values);
+  return out;
+}
+
+/// A ramp property over [0, 1] with its scalar axis scaled by `scale`.
+vtkSmartPointer<vtkVolumeProperty> RampScaled(double scale, double unit)
+{
+  auto property = havstest::MakeRampProperty(0.0, scale, 0.8, unit);
+  return property;
+}
+
+/// Scalars (issue 20): constant; NaN and +-Inf at a tenth of the points
+/// (intended: replaced by the lowest finite value, with a warning; the
+/// reference does the same); denormal and 1e30 ranges (the image equals the
+/// [0, 1] one with the transfer function scaled alike); a transfer-function
+/// spike narrower than one table bin; fully transparent; fully opaque. Each
+/// against the exact reference, finite, with a control that fails.
+int Scalars()
+{
+  auto base = vtkHAVSDataSets::Load("hollowsphere");
+  double range[2];
+  base->GetPointData()->GetScalars()->GetRange(range);
+  // The scalars mapped to [0, 1].
+  auto grid =
+    WithScalars(base, [&](vtkIdType, double v) { return (v - range[0]) / (range[1] - range[0]); });
+  const double unit = grid->GetLength() / 8.0;
+  const size_t edge = 96 * 96 / 2000;
+  auto ramp = RampScaled(1.0, unit);
+  for (bool cells : { false, true })
+  {
+    const std::string who = Name(cells);
+    auto check = [&](const std::string& what, const Pair& p, const std::vector<float>& controlExact,
+                   bool expectWarning)
+    {
+      const auto d = havstest::Compare(p.Image, p.Exact, edge);
+      const auto c = havstest::Compare(p.Image, controlExact, edge);
+      Print(who + ", " + what + ": vs reference", d);
+      Print(who + ", " + what + ": control", c);
+      havstest::Check(Exact(d), who + ", " + what + ": exact");
+      havstest::Check(havstest::AllFinite(p.Image), who + ", " + what + ": finite");
+      havstest::Check(!Exact(c), who + ", " + what + ": control fails");
+      havstest::Check(p.Errors == 0 && (p.Warnings > 0) == expectWarning,
+        who + ", " + what + (expectWarning ? ": one warning" : ": no warning"));
+    };
+    // Constant: every scalar 0.37 (control: the reference at 0.8).
+    {
+      auto constant = WithScalars(grid, [](vtkIdType, double) { return 0.37; });
+      auto other = WithScalars(grid, [](vtkIdType, double) { return 0.8; });
+      const Pair p = RenderWithReference(constant, ramp, cells);
+      check("constant scalar", p, RenderWithReference(other, ramp, cells).Exact, false);
+    }
+    // NaN, +Inf, -Inf at every tenth point: replaced by the lowest finite
+    // value (control: the reference with them replaced by the highest).
+    for (double bad : { std::nan(""), HUGE_VAL, -HUGE_VAL })
+    {
+      auto broken = WithScalars(grid, [&](vtkIdType i, double v) { return i % 10 == 3 ? bad : v; });
+      auto high = WithScalars(grid, [&](vtkIdType i, double v) { return i % 10 == 3 ? 1.0 : v; });
+      const Pair p = RenderWithReference(broken, ramp, cells);
+      const std::string what =
+        std::isnan(bad) ? "NaN scalars" : (bad > 0 ? "+Inf scalars" : "-Inf scalars");
+      check(what, p, RenderWithReference(high, ramp, cells).Exact, true);
+    }
+    // Denormal and 1e30 ranges: equal to the [0, 1] image with the transfer
+    // function scaled alike (control: the transfer function left at [0, 1]).
+    const Pair plain = RenderWithReference(grid, ramp, cells);
+    for (double scale : { 1e-310, 1e30 })
+    {
+      auto scaled = WithScalars(grid, [&](vtkIdType, double v) { return v * scale; });
+      auto scaledRamp = RampScaled(scale, unit);
+      const Pair p = RenderWithReference(scaled, scaledRamp, cells);
+      const auto same = havstest::Compare(p.Image, plain.Image, edge);
+      char what[64];
+      std::snprintf(what, sizeof(what), "scalars x %.0e", scale);
+      Print(who + ", " + what + ": vs the [0, 1] image", same);
+      havstest::Check(Exact(same), who + ", " + what + ": equals the [0, 1] image");
+      const Pair unscaled = RenderWithReference(scaled, ramp, cells);
+      check(what, p, unscaled.Exact, false);
+    }
+    // A spike of opacity 1 and half-width 1e-3 (a table bin is 1/127), zero
+    // elsewhere (control: the reference without the spike, empty).
+    {
+      auto spike = havstest::MakeRampProperty(0.0, 1.0, 0.8, unit);
+      spike->GetScalarOpacity()->RemoveAllPoints();
+      spike->GetScalarOpacity()->AddPoint(0.0, 0.0);
+      spike->GetScalarOpacity()->AddPoint(0.499, 0.0);
+      spike->GetScalarOpacity()->AddPoint(0.5, 1.0);
+      spike->GetScalarOpacity()->AddPoint(0.501, 0.0);
+      spike->GetScalarOpacity()->AddPoint(1.0, 0.0);
+      auto none = havstest::MakeRampProperty(0.0, 1.0, 0.8, unit);
+      none->GetScalarOpacity()->RemoveAllPoints();
+      none->GetScalarOpacity()->AddPoint(0.0, 0.0);
+      none->GetScalarOpacity()->AddPoint(1.0, 0.0);
+      const Pair p = RenderWithReference(grid, spike, cells);
+      check(
+        "spike narrower than a table bin", p, RenderWithReference(grid, none, cells).Exact, false);
+      // Fully transparent: nothing at all (control: the ramp's reference).
+      const Pair empty = RenderWithReference(grid, none, cells);
+      check("fully transparent", empty, plain.Exact, false);
+      double largest = 0.0;
+      for (float v : empty.Image)
+      {
+        largest = std::max(largest, static_cast<double>(std::fabs(v)));
+      }
+      havstest::Check(largest == 0.0, who + ", fully transparent: every pixel exactly 0");
+    }
+    // Fully opaque: opacity 1 at a unit distance of 1e-3 of the mesh.
+    {
+      auto opaque = havstest::MakeRampProperty(0.0, 1.0, 1.0, grid->GetLength() * 1e-3);
+      opaque->GetScalarOpacity()->RemoveAllPoints();
+      opaque->GetScalarOpacity()->AddPoint(0.0, 1.0);
+      opaque->GetScalarOpacity()->AddPoint(1.0, 1.0);
+      const Pair p = RenderWithReference(grid, opaque, cells);
+      check("fully opaque", p, plain.Exact, false);
+    }
+  }
+  return havstest::Result();
+}
+
+/// A grid of the given points and tetrahedra, point scalar x + 2 y + 0.5 z.
+vtkSmartPointer<vtkUnstructuredGrid> MakeTets(const std::vector<std::array<double, 3>>& points,
+  const std::vector<std::array<vtkIdType, 4>>& tets)
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> p;
+  p->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> scalars;
+  scalars->SetName("s");
+  for (const auto& x : points)
+  {
+    p->InsertNextPoint(x.data());
+    scalars->InsertNextValue(x[0] + 2.0 * x[1] + 0.5 * x[2]);
+  }
+  grid->SetPoints(p);
+  grid->GetPointData()->SetScalars(scalars);
+  for (const auto& t : tets)
+  {
+    grid->InsertNextCell(VTK_TETRA, 4, t.data());
+  }
+  return grid;
+}
+
+/// `grid` with the cells `keep` accepts (by index), the points shared.
+vtkSmartPointer<vtkUnstructuredGrid> Cells(vtkUnstructuredGrid* grid,
+  const std::function<bool(vtkIdType)>& keep,
+  const std::function<void(vtkIdType, vtkIdType*)>& edit)
+{
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->SetPoints(grid->GetPoints());
+  out->GetPointData()->ShallowCopy(grid->GetPointData());
+  out->Allocate(grid->GetNumberOfCells());
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    if (!keep(c))
+    {
+      continue;
+    }
+    vtkIdType ids[4];
+    for (int i = 0; i < 4; ++i)
+    {
+      ids[i] = grid->GetCell(c)->GetPointId(i);
+    }
+    edit(c, ids);
+    out->InsertNextCell(VTK_TETRA, 4, ids);
+  }
+  return out;
+}
+
+/// Badly shaped and bad cells (issue 20), each through both mappers against
+/// the exact reference at three views, finite, with a control that fails:
+///   sliver, needle, cap and wedge tetrahedra (a dense medium, so that the
+///   thin cells show; control: the reference of the cell made twice as thick);
+///   inverted orientation (every other cell's points listed the other way:
+///   the same cells, the same image; control: those cells removed);
+///   duplicate cells (every 7th written twice: intended, one copy drawn, with
+///   a warning; control: those cells removed);
+///   unused points (100 points no cell uses, with a scalar far outside the
+///   used range: the same image; control: half the cells removed);
+///   zero-volume cells (40 flat tetrahedra on existing points: dropped with a
+///   warning, the same image; control: the reference of a half unit distance);
+///   non-manifold meshes (two boxes sharing one edge, and one vertex, point
+///   ids shared: exact; control: one box alone).
+int BadCells()
+{
+  const std::vector<std::pair<double, double>> views = { { 30.0, 20.0 }, { 100.0, -35.0 },
+    { 200.0, 60.0 } };
+  const size_t edge = 96 * 96 / 2000;
+  auto exactEverywhere = [&](const std::string& what, vtkUnstructuredGrid* grid,
+                           vtkVolumeProperty* property, vtkUnstructuredGrid* control,
+                           vtkVolumeProperty* controlProperty, bool expectWarning)
+  {
+    for (bool cells : { false, true })
+    {
+      int controlsFailed = 0;
+      for (const auto& view : views)
+      {
+        const Pair p = RenderWithReference(grid, property, cells, view.first, view.second);
+        size_t covered = 0;
+        for (size_t i = 3; i < p.Exact.size(); i += 4)
+        {
+          covered += p.Exact[i] > 1e-3f ? 1 : 0;
+        }
+        const Pair c =
+          RenderWithReference(control, controlProperty, cells, view.first, view.second);
+        const auto d = havstest::Compare(p.Image, p.Exact, edge);
+        const auto wrong = havstest::Compare(p.Image, c.Exact, edge);
+        char name[160];
+        std::snprintf(name, sizeof(name), "%s, %s, view (%.0f, %.0f)", Name(cells), what.c_str(),
+          view.first, view.second);
+        Print(std::string(name) + ": vs reference", d);
+        Print(std::string(name) + ": control", wrong);
+        havstest::Check(Exact(d), std::string(name) + ": exact");
+        havstest::Check(covered >= 9, std::string(name) + ": the cells show");
+        havstest::Check(havstest::AllFinite(p.Image), std::string(name) + ": finite");
+        havstest::Check(p.Errors == 0 && (p.Warnings > 0) == expectWarning,
+          std::string(name) + (expectWarning ? ": warned" : ": no warning"));
+        controlsFailed += Exact(wrong) ? 0 : 1;
+      }
+      havstest::Check(controlsFailed > 0,
+        std::string(Name(cells)) + ", " + what + ": the control fails at a view at least");
+    }
+  };
+
+  // Badly shaped single tetrahedra in a dense medium.
+  {
+    struct Shape
+    {
+      const char* Name;
+      std::vector<std::array<double, 3>> Points;
+      std::vector<std::array<double, 3>> Thicker;
+    };
+    const std::vector<Shape> shapes = {
+      { "sliver", { { 0, 0, 0 }, { 1, 1, 0 }, { 1, 0, 0.01 }, { 0, 1, 0.01 } },
+        { { 0, 0, 0 }, { 1, 1, 0 }, { 1, 0, 0.02 }, { 0, 1, 0.02 } } },
+      { "needle", { { 0, 0, 0 }, { 0.05, 0, 0 }, { 0, 0.05, 0 }, { 0.3, 0.3, 1 } },
+        { { 0, 0, 0 }, { 0.1, 0, 0 }, { 0, 0.1, 0 }, { 0.3, 0.3, 1 } } },
+      { "cap", { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 0.9, 0 }, { 0.5, 0.3, 0.01 } },
+        { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 0.9, 0 }, { 0.5, 0.3, 0.02 } } },
+      { "wedge", { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 0.8, 0.3 }, { 0.51, 0.8, 0.28 } },
+        { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 0.8, 0.3 }, { 0.52, 0.8, 0.26 } } },
+    };
+    for (const Shape& shape : shapes)
+    {
+      auto grid = MakeTets(shape.Points, { { 0, 1, 2, 3 } });
+      auto thicker = MakeTets(shape.Thicker, { { 0, 1, 2, 3 } });
+      double range[2];
+      grid->GetPointData()->GetScalars()->GetRange(range);
+      // Optical depth about 2 along the cells' longest chords: the thin cells
+      // show, and the table's length axis (its interpolation) is not what is
+      // measured here.
+      auto dense = havstest::MakeRampProperty(range[0] - 0.1, range[1] + 0.1, 0.9, 0.5);
+      exactEverywhere(std::string(shape.Name) + " tetrahedron", grid, dense, thicker, dense, false);
+    }
+  }
+
+  auto box = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
+  auto property = havstest::MakeRampPropertyFor(box);
+  auto all = [](vtkIdType) { return true; };
+  auto asIs = [](vtkIdType, vtkIdType*) {};
+  // Inverted orientation.
+  {
+    auto flipped = Cells(box, all,
+      [](vtkIdType c, vtkIdType* ids)
+      {
+        if (c % 2)
+        {
+          std::swap(ids[0], ids[1]);
+        }
+      });
+    auto without = Cells(
+      box, [](vtkIdType c) { return c % 2 == 0; }, asIs);
+    exactEverywhere("inverted orientation", flipped, property, without, property, false);
+  }
+  // Duplicate cells.
+  {
+    auto doubled = Cells(box, all, asIs);
+    for (vtkIdType c = 0; c < box->GetNumberOfCells(); c += 7)
+    {
+      doubled->InsertNextCell(VTK_TETRA, box->GetCell(c)->GetPointIds());
+    }
+    auto without = Cells(
+      box, [](vtkIdType c) { return c % 7 != 0; }, asIs);
+    exactEverywhere("duplicate cells", doubled, property, without, property, true);
+  }
+  // Unused points: 100 points no cell uses, inside the bounds (which frame
+  // the camera), with a scalar far outside the used range (which would
+  // squeeze the table if it counted).
+  {
+    auto extra = Cells(box, all, asIs);
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->DeepCopy(box->GetPoints());
+    vtkNew<vtkDoubleArray> scalars;
+    scalars->DeepCopy(box->GetPointData()->GetScalars());
+    for (int i = 0; i < 100; ++i)
+    {
+      points->InsertNextPoint(0.01 * i, 0.5, 0.3);
+      scalars->InsertNextValue(1e6);
+    }
+    extra->SetPoints(points);
+    extra->GetPointData()->SetScalars(scalars);
+    auto without = Cells(
+      box, [](vtkIdType c) { return c % 2 == 0; }, asIs);
+    exactEverywhere("unused points", extra, property, without, property, false);
+  }
+  // Zero-volume cells on existing points (four of a cube face's corners).
+  {
+    auto flat = Cells(box, all, asIs);
+    // The lattice point (i, j, k) of the box (spacing 0.25), found by position.
+    std::map<std::array<int, 3>, vtkIdType> lattice;
+    for (vtkIdType i = 0; i < box->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      box->GetPoint(i, x);
+      lattice[{ static_cast<int>(std::lround(4 * x[0])), static_cast<int>(std::lround(4 * x[1])),
+        static_cast<int>(std::lround(4 * x[2])) }] = i;
+    }
+    int added = 0;
+    for (int k = 0; k <= 4 && added < 40; ++k)
+    {
+      for (int j = 0; j < 4 && added < 40; ++j)
+      {
+        for (int i = 0; i < 4 && added < 40; i += 2)
+        {
+          // Four corners of a lattice square in the plane z = k / 4.
+          const vtkIdType ids[4] = { lattice.at({ i, j, k }), lattice.at({ i + 1, j, k }),
+            lattice.at({ i, j + 1, k }), lattice.at({ i + 1, j + 1, k }) };
+          flat->InsertNextCell(VTK_TETRA, 4, ids);
+          ++added;
+        }
+      }
+    }
+    auto halfUnit = havstest::MakeRampPropertyFor(box);
+    halfUnit->SetScalarOpacityUnitDistance(0.5 * property->GetScalarOpacityUnitDistance());
+    exactEverywhere("zero-volume cells", flat, property, box, halfUnit, true);
+  }
+  // Non-manifold: two boxes sharing an edge, and a vertex.
+  for (bool vertex : { false, true })
+  {
+    auto second = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
+    auto moved = Moved(
+      second, [](double x) { return x; }, true);
+    vtkPoints* p = moved->GetPoints();
+    for (vtkIdType i = 0; i < p->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      p->GetPoint(i, x);
+      p->SetPoint(i, x[0] + 1.0, x[1] + 1.0, x[2] + (vertex ? 1.0 : 0.0));
+    }
+    vtkNew<vtkAppendFilter> append;
+    append->MergePointsOn();
+    append->AddInputData(box);
+    append->AddInputData(moved);
+    append->Update();
+    auto both = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    both->DeepCopy(append->GetOutput());
+    const vtkIdType shared = 2 * box->GetNumberOfPoints() - both->GetNumberOfPoints();
+    std::printf("two boxes sharing %s: %lld shared points\n", vertex ? "a vertex" : "an edge",
+      static_cast<long long>(shared));
+    havstest::Check(shared == (vertex ? 1 : 5), "the boxes share their points there");
+    exactEverywhere(vertex ? "boxes sharing a vertex" : "boxes sharing an edge", both, property,
+      box, property, false);
+  }
+  return havstest::Result();
+}
+
 int Resize()
 {
   auto grid = vtkHAVSDataSets::Load("hollowsphere");
@@ -256,6 +680,14 @@ int TestHAVSStress(int argc, char* argv[])
   {
     return Resize();
   }
-  havstest::Check(false, "a known case: scale, translate, resize");
+  if (which == "scalars")
+  {
+    return Scalars();
+  }
+  if (which == "cells")
+  {
+    return BadCells();
+  }
+  havstest::Check(false, "a known case: scale, translate, resize, scalars, cells");
   return havstest::Result();
 }

@@ -21,6 +21,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -40,6 +41,7 @@ enum CellStatus : uint8_t
   NotATetrahedron,
   GhostCell,
   DegenerateTetrahedron,
+  DuplicateTetrahedron,
   UsedTetrahedron
 };
 
@@ -102,6 +104,7 @@ struct FaceCounts
 {
   vtkIdType Boundary = 0;
   vtkIdType NonManifold = 0;
+  vtkIdType RepeatedUses = 0; // two uses with the same opposite point: duplicate cells
 };
 
 /// Face `face` of the tetrahedron `ids`: its ids ascending, then the opposite point.
@@ -298,6 +301,10 @@ FaceCounts SortBuckets(FaceUseBuckets& buckets, std::vector<vtkIdType>& faceStar
           const auto uses = runEnd - run;
           local.Boundary += uses == 1 ? 1 : 0;
           local.NonManifold += uses > 2 ? 1 : 0;
+          for (const FaceUse* u = run + 1; u != runEnd; ++u)
+          {
+            local.RepeatedUses += u->Opposite == (u - 1)->Opposite ? 1 : 0;
+          }
           ++faces;
           run = runEnd;
         }
@@ -313,8 +320,38 @@ FaceCounts SortBuckets(FaceUseBuckets& buckets, std::vector<vtkIdType>& faceStar
   {
     total.Boundary += local.Boundary;
     total.NonManifold += local.NonManifold;
+    total.RepeatedUses += local.RepeatedUses;
   }
   return total;
+}
+
+/// Marks every used tetrahedron with the same four points as an earlier one
+/// (in cell order) a duplicate; returns how many. Only called when a face
+/// had two uses with the same opposite point, which duplicates cause.
+vtkIdType MarkDuplicateCells(CellTable& table)
+{
+  std::vector<std::pair<std::array<uint32_t, 4>, vtkIdType>> keys;
+  for (size_t c = 0; c < table.Status.size(); ++c)
+  {
+    if (table.Status[c] == UsedTetrahedron)
+    {
+      std::array<uint32_t, 4> ids;
+      std::copy_n(&table.PointIds[4 * c], 4, ids.begin());
+      std::sort(ids.begin(), ids.end());
+      keys.emplace_back(ids, static_cast<vtkIdType>(c));
+    }
+  }
+  vtkSMPTools::Sort(keys.begin(), keys.end());
+  vtkIdType duplicates = 0;
+  for (size_t i = 1; i < keys.size(); ++i)
+  {
+    if (keys[i].first == keys[i - 1].first)
+    {
+      table.Status[keys[i].second] = DuplicateTetrahedron; // (the first in cell order is kept)
+      ++duplicates;
+    }
+  }
+  return duplicates;
 }
 
 /// Writes one face per run of the sorted buckets: ids (boundary faces wound
@@ -474,6 +511,7 @@ void vtkHAVSFaceSet::Clear()
   this->NumberOfTetrahedra = 0;
   this->NumberOfSkippedCells = 0;
   this->NumberOfDegenerateTetrahedra = 0;
+  this->NumberOfDuplicateTetrahedra = 0;
   this->LongestEdge = 0.0;
   std::fill(this->CentroidOrigin, this->CentroidOrigin + 3, 0.0);
 }
@@ -536,10 +574,20 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
   this->NumberOfTetrahedra = cells.Used;
   this->LongestEdge = std::sqrt(cells.LongestEdgeSquared);
 
-  // The unique faces: equal runs of the sorted buckets.
+  // The unique faces: equal runs of the sorted buckets. Duplicate cells (the
+  // same four points twice) show as a face used twice from the same side:
+  // they are dropped (one copy kept) and the faces filed again.
   FaceUseBuckets buckets = FileFaceUses(table, numberOfPoints);
   std::vector<vtkIdType> faceStart;
-  const FaceCounts faceCounts = SortBuckets(buckets, faceStart);
+  FaceCounts faceCounts = SortBuckets(buckets, faceStart);
+  if (faceCounts.RepeatedUses > 0)
+  {
+    this->NumberOfDuplicateTetrahedra = MarkDuplicateCells(table);
+    cells.Used -= this->NumberOfDuplicateTetrahedra;
+    this->NumberOfTetrahedra = cells.Used;
+    buckets = FileFaceUses(table, numberOfPoints);
+    faceCounts = SortBuckets(buckets, faceStart);
+  }
   this->NumberOfBoundaryFaces = faceCounts.Boundary;
   this->NumberOfNonManifoldFaces = faceCounts.NonManifold;
   const size_t numberOfFaces = static_cast<size_t>(faceStart.back());
@@ -584,6 +632,7 @@ void vtkHAVSFaceSet::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
   os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";
   os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
+  os << indent << "NumberOfDuplicateTetrahedra: " << this->NumberOfDuplicateTetrahedra << "\n";
   os << indent << "LongestEdge: " << this->LongestEdge << "\n";
   os << indent << "CentroidOrigin: (" << this->CentroidOrigin[0] << ", " << this->CentroidOrigin[1]
      << ", " << this->CentroidOrigin[2] << ")\n";

@@ -15,7 +15,9 @@
  * 2005, section 4.1). Build() takes the VTK_TETRA cells of a vtkUnstructuredGrid (ghost cells
  * marked duplicate or hidden are left out, as another piece draws them; other cells
  * are counted as skipped; degenerate tetrahedra, with repeated points or
- * |volume| <= 1e-12 * (longest edge)^3, are counted and dropped) and stores
+ * |volume| <= 1e-12 * (longest edge)^3, are counted and dropped, and so
+ * are duplicate tetrahedra, the same four points as an earlier cell, one
+ * copy kept: a mesh's cell written twice is one cell) and stores
  * each face once: a face of one tetrahedron is a boundary face, of two an
  * internal one, of more a non-manifold one (counted, kept as internal).
  * Boundary faces are wound so that (p1 - p0) x (p2 - p0) points out of the
@@ -66,6 +68,7 @@ public:
   vtkGetMacro(NumberOfTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfSkippedCells, vtkIdType);
   vtkGetMacro(NumberOfDegenerateTetrahedra, vtkIdType);
+  vtkGetMacro(NumberOfDuplicateTetrahedra, vtkIdType);
   /// Ghost cells (duplicate or hidden, vtkGhostType) left out: another piece draws them.
   vtkGetMacro(NumberOfGhostCells, vtkIdType);
   ///@}
@@ -124,6 +127,7 @@ private:
   vtkIdType NumberOfTetrahedra = 0;
   vtkIdType NumberOfSkippedCells = 0;
   vtkIdType NumberOfDegenerateTetrahedra = 0;
+  vtkIdType NumberOfDuplicateTetrahedra = 0;
   vtkIdType NumberOfGhostCells = 0;
   double LongestEdge = 0.0;
   double CentroidOrigin[3] = { 0.0, 0.0, 0.0 };

@@ -138,6 +138,14 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
       << " degenerate (zero-volume) tetrahedra were dropped.";
     this->Warnings.push_back(w.str());
   }
+  if (this->Faces->GetNumberOfDuplicateTetrahedra() > 0)
+  {
+    std::ostringstream w;
+    w << this->Faces->GetNumberOfDuplicateTetrahedra()
+      << " duplicate tetrahedra (the same four points as another cell) were dropped; one copy "
+         "of each is drawn.";
+    this->Warnings.push_back(w.str());
+  }
 
   // Independent components are rendered from the first one.
   this->NumberOfComponents = scalars->GetNumberOfComponents();
@@ -177,11 +185,21 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
     return this->Fail(why.str());
   }
 
-  // Scalars mapped to [0, 1] over the finite range; NaN/Inf replaced.
+  // Scalars mapped to [0, 1] over the finite range of the points the cells
+  // use (an unused point's value changes nothing); NaN/Inf replaced.
+  std::vector<uint8_t> used(static_cast<size_t>(numPoints), 0);
+  for (uint32_t id : this->Faces->GetTetrahedra())
+  {
+    used[id] = 1;
+  }
   double range[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest() };
   vtkIdType nonFinite = 0;
   for (vtkIdType p = 0; p < numPoints; ++p)
   {
+    if (!used[p])
+    {
+      continue;
+    }
     const double s = scalars->GetComponent(p, this->Component);
     if (std::isfinite(s))
     {

@@ -47,6 +47,36 @@ OpticalSample Evaluate(vtkVolumeProperty* property, int component, double s)
   return out;
 }
 
+/// The scalars of the opacity and colour functions' nodes.
+void NodePositions(vtkVolumeProperty* property, int component, std::vector<double>& nodes)
+{
+  double node[6];
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(component);
+  for (int i = 0; i < opacity->GetSize(); ++i)
+  {
+    opacity->GetNodeValue(i, node);
+    nodes.push_back(node[0]);
+  }
+  if (property->GetColorChannels(component) == 1)
+  {
+    vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(component);
+    for (int i = 0; i < gray->GetSize(); ++i)
+    {
+      gray->GetNodeValue(i, node);
+      nodes.push_back(node[0]);
+    }
+  }
+  else
+  {
+    vtkColorTransferFunction* color = property->GetRGBTransferFunction(component);
+    for (int i = 0; i < color->GetSize(); ++i)
+    {
+      color->GetNodeValue(i, node);
+      nodes.push_back(node[0]);
+    }
+  }
+}
+
 /// Composites one sub-step of length h between samples a and b: extinction
 /// and colour linear inside, attenuation exact for the mean extinction.
 inline void CompositeStep(const OpticalSample& a, const OpticalSample& b, double attenuation,
@@ -183,15 +213,47 @@ bool vtkHAVSPreIntegrationTable::Build(
 
   // The functions, sampled serially (VTK function objects are not promised
   // to be thread-safe) on the fine grid; every node is a fine sample.
-  const int fineCount = (ns - 1) * sub + 1;
+  // The functions' own nodes are fine samples too, so that a feature
+  // narrower than a sub-step (a spike) is integrated, not stepped over:
+  // positions (normalized) of the uniform sub-steps and of the nodes, merged;
+  // tableSample[i] is where table scalar i lies among them.
+  const int uniformCount = (ns - 1) * sub + 1;
+  std::vector<double> positions(uniformCount);
+  for (int i = 0; i < uniformCount; ++i)
+  {
+    positions[i] = static_cast<double>(i) / (uniformCount - 1);
+  }
+  if (span > 0.0)
+  {
+    std::vector<double> nodes;
+    NodePositions(property, component, nodes);
+    for (double x : nodes)
+    {
+      const double t = (x - lo) / span;
+      if (t > 0.0 && t < 1.0)
+      {
+        positions.push_back(t);
+      }
+    }
+    std::sort(positions.begin(), positions.end());
+    positions.erase(std::unique(positions.begin(), positions.end()), positions.end());
+  }
+  const int fineCount = static_cast<int>(positions.size());
   std::vector<OpticalSample> fine(fineCount);
   for (int i = 0; i < fineCount; ++i)
   {
-    fine[i] = Evaluate(property, component, lo + span * i / (fineCount - 1));
+    fine[i] = Evaluate(property, component, lo + span * positions[i]);
+  }
+  std::vector<int> tableSample(ns);
+  for (int i = 0; i < ns; ++i)
+  {
+    const double t = static_cast<double>(i * sub) / (uniformCount - 1);
+    tableSample[i] =
+      static_cast<int>(std::lower_bound(positions.begin(), positions.end(), t) - positions.begin());
   }
   for (int i = 0; i < ns; ++i)
   {
-    const OpticalSample& s = fine[i * sub];
+    const OpticalSample& s = fine[tableSample[i]];
     const double unit = property->GetScalarOpacityUnitDistance(component);
     for (int c = 0; c < 3; ++c)
     {
@@ -252,17 +314,21 @@ bool vtkHAVSPreIntegrationTable::Build(
         for (vtkIdType pair = begin; pair < end; ++pair)
         {
           const int f = static_cast<int>(pair % ns), b = static_cast<int>(pair / ns);
-          const int steps = std::max(1, std::abs(b - f) * sub);
+          const int first = tableSample[f];
+          const int steps = std::max(1, std::abs(tableSample[b] - first));
           const int direction = b >= f ? 1 : -1;
-          const int first = f * sub;
-          auto sample = [&](int j) -> const OpticalSample&
-          { return fine[f == b ? first : first + direction * j]; };
+          auto at = [&](int j) { return f == b ? first : first + direction * j; };
+          auto sample = [&](int j) -> const OpticalSample& { return fine[at(j)]; };
+          const double whole = std::fabs(positions[tableSample[b]] - positions[first]);
           unitAttenuation.resize(steps);
           attenuation.assign(steps, 1.0);
           for (int j = 0; j < steps; ++j)
           {
+            // The sub-step's share of the segment's length (its scalar span's share).
+            const double share =
+              f == b ? 1.0 : std::fabs(positions[at(j + 1)] - positions[at(j)]) / whole;
             const double meanTau = 0.5 * (sample(j).Tau + sample(j + 1).Tau);
-            unitAttenuation[j] = std::exp(-meanTau * lengthStep / steps);
+            unitAttenuation[j] = std::exp(-meanTau * lengthStep * share);
           }
           for (int l = 1; l < nl; ++l)
           {

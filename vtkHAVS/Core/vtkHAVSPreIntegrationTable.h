@@ -23,7 +23,9 @@
  *
  * The functions are evaluated from the property itself (GetValue/GetColor:
  * midpoints, sharpness, colour spaces count), first sampled serially on a fine
- * grid of (NS - 1) * SubdivisionsPerInterval + 1 scalars. Each entry is then
+ * grid of (NS - 1) * SubdivisionsPerInterval + 1 scalars, to which the
+ * functions' own nodes are added (so a spike narrower than a sub-step is
+ * integrated, not stepped over). Each entry is then
  * integrated over the fine samples the segment crosses, tau and colour linear
  * in each sub-step, the sub-step's attenuation exact for its mean extinction:
  * a second-order quadrature whose error shrinks with the square of

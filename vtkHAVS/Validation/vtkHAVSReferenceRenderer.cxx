@@ -131,6 +131,12 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
   const vtkIdType numPoints = this->Input->GetNumberOfPoints();
   std::vector<double> world(3 * numPoints);
   std::vector<double> values(numPoints);
+  // The scalar range over the points the cells use, as the mappers take it.
+  std::vector<uint8_t> used(static_cast<size_t>(numPoints), 0);
+  for (uint32_t id : this->Faces->GetTetrahedra())
+  {
+    used[id] = 1;
+  }
   double range[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest() };
   for (vtkIdType p = 0; p < numPoints; ++p)
   {
@@ -142,7 +148,7 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
       world[3 * p + k] = y[k] / y[3];
     }
     values[p] = scalars->GetComponent(p, 0);
-    if (std::isfinite(values[p]))
+    if (std::isfinite(values[p]) && used[p])
     {
       range[0] = std::min(range[0], values[p]);
       range[1] = std::max(range[1], values[p]);
