@@ -13,7 +13,9 @@
 // - the same with the volume scaled 2x along the view (world-space lengths);
 // - a linear scalar ramp along the view with opacity linear in the scalar:
 //   optical depth tau_max * L / 2, to 1e-3;
-// - negative control: the ramp with a 2x2x2 table must miss the 1e-3 bound.
+// - negative control: the ramp with a 2x2x2 table must miss the 1e-3 bound;
+// - the same through vtkHAVSCellProjectionMapper, and its maximum intensity
+//   (colour c, opacity 1) and additive (1/3 grey) blends on the ramp.
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
 #include "havsTestScenes.h"
@@ -23,6 +25,7 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkFloatArray.h"
+#include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
@@ -46,18 +49,27 @@ struct Expectation
 /// Renders the unit box (scaled by zScale along the view) and returns the
 /// largest error over the pixels well inside its footprint.
 double RenderBox(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, double zScale,
-  int tableResolution, const Expectation& expected, const std::string& name)
+  int tableResolution, const Expectation& expected, const std::string& name, bool cells = false,
+  int blend = 0)
 {
   const int size = 64;
   auto window = havstest::MakeWindow(size, size);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
-  vtkNew<vtkHAVSVolumeMapper> mapper;
+  vtkNew<vtkHAVSVolumeMapper> havs;
+  vtkNew<vtkHAVSCellProjectionMapper> projection;
+  havs->KeepFloatResultOn();
+  havs->SetEarlyRayTerminationOpacity(1.0);
+  havs->SetTableScalarResolution(tableResolution);
+  havs->SetTableLengthResolution(tableResolution);
+  projection->KeepFloatResultOn();
+  projection->SetTableScalarResolution(tableResolution);
+  projection->SetTableLengthResolution(tableResolution);
+  vtkUnstructuredGridVolumeMapper* mapper = cells
+    ? static_cast<vtkUnstructuredGridVolumeMapper*>(projection)
+    : static_cast<vtkUnstructuredGridVolumeMapper*>(havs);
   mapper->SetInputData(grid);
-  mapper->KeepFloatResultOn();
-  mapper->SetEarlyRayTerminationOpacity(1.0);
-  mapper->SetTableScalarResolution(tableResolution);
-  mapper->SetTableLengthResolution(tableResolution);
+  mapper->SetBlendMode(blend);
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);
   volume->SetProperty(property);
@@ -74,7 +86,9 @@ double RenderBox(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, double 
 
   vtkNew<vtkFloatArray> result;
   int dims[2];
-  if (!havstest::Check(mapper->GetFloatResult(result, dims), name + ": float result kept"))
+  const bool kept =
+    cells ? projection->GetFloatResult(result, dims) : havs->GetFloatResult(result, dims);
+  if (!havstest::Check(kept, name + ": float result kept"))
   {
     return 1.0;
   }
@@ -106,9 +120,11 @@ double RenderBox(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, double 
       }
     }
   }
-  std::cout << name << ": path " << mapper->GetActiveKBufferPathName() << ", k "
-            << mapper->GetActiveKBufferSize() << ", " << covered << " covered pixels, max error "
-            << worst << std::endl;
+  std::cout << name << ": "
+            << (cells ? std::string("cell projection")
+                      : std::string("path ") + havs->GetActiveKBufferPathName() + ", k " +
+                     std::to_string(havs->GetActiveKBufferSize()))
+            << ", " << covered << " covered pixels, max error " << worst << std::endl;
   havstest::Check(covered > 300, name + ": the box covers pixels");
   return worst;
 }
@@ -143,6 +159,34 @@ int TestHAVSAnalytic(int, char*[])
   // Negative control: a 2x2x2 table cannot represent the ramp's segments.
   const double coarse = RenderBox(ramp, rampProperty, 1.0, 2, e3, "analytic_ramp_table2");
   havstest::Check(coarse > 1e-3, "negative control: a 2^3 table misses the 1e-3 bound");
+
+  // The same closed forms through vtkHAVSCellProjectionMapper, and its
+  // order-independent blends on the ramp: maximum intensity colour c at
+  // opacity 1 (s = 1); additive the integral of tau(z) z = z^2 over [0, 1] =
+  // 1/3, grey, opacity 1. Controls: the 2^3 table; the additive value taken
+  // for the maximum's.
+  havstest::Check(
+    RenderBox(constant, constantProperty, 1.0, 128, e1, "analytic_constant_cells", true) <= 1e-3,
+    "cell projection: constant slab within 1e-3");
+  havstest::Check(
+    RenderBox(constant, constantProperty, 2.0, 128, e2, "analytic_scaled_cells", true) <= 1e-3,
+    "cell projection: scaled slab within 1e-3");
+  havstest::Check(RenderBox(ramp, rampProperty, 1.0, 128, e3, "analytic_ramp_cells", true) <= 1e-3,
+    "cell projection: linear ramp within 1e-3");
+  havstest::Check(
+    RenderBox(ramp, rampProperty, 1.0, 2, e3, "analytic_ramp_table2_cells", true) > 1e-3,
+    "cell projection: negative control, a 2^3 table misses the 1e-3 bound");
+  Expectation maximum{ 1.0, { c[0], c[1], c[2] } };
+  Expectation additive{ 1.0, { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 } };
+  havstest::Check(
+    RenderBox(ramp, rampProperty, 1.0, 128, maximum, "analytic_maximum_cells", true, 1) <= 1e-3,
+    "cell projection: maximum intensity within 1e-3");
+  havstest::Check(RenderBox(ramp, rampProperty, 1.0, 128, additive, "analytic_additive_cells", true,
+                    vtkHAVSCellProjectionMapper::ADDITIVE_BLEND) <= 1e-3,
+    "cell projection: additive within 1e-3");
+  havstest::Check(RenderBox(ramp, rampProperty, 1.0, 128, maximum, "analytic_additive_control",
+                    true, vtkHAVSCellProjectionMapper::ADDITIVE_BLEND) > 1e-3,
+    "cell projection: negative control, the additive image is not the maximum's");
 
   return havstest::Result();
 }

@@ -189,7 +189,8 @@ int Translate()
 }
 
 /// The mapper's float result and the exact reference of the same scene
-/// (camera from (30, 20) degrees, 96 x 96), with the mapper's messages.
+/// (camera from (30, 20) degrees, kPairSize^2), with the mapper's messages.
+constexpr int kPairSize = 96;
 struct Pair
 {
   std::vector<float> Image;
@@ -201,7 +202,7 @@ struct Pair
 Pair RenderWithReference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, bool cells,
   double azimuth = 30.0, double elevation = 20.0)
 {
-  const int size = 96;
+  const int size = kPairSize;
   auto mapper = MakeMapper(cells);
   havstest::Messages* messages = havstest::CountMessages(mapper);
   auto s = havstest::MakeScene(grid, mapper, property, size, size);
@@ -262,7 +263,7 @@ int Scalars()
   auto grid =
     WithScalars(base, [&](vtkIdType, double v) { return (v - range[0]) / (range[1] - range[0]); });
   const double unit = grid->GetLength() / 8.0;
-  const size_t edge = 96 * 96 / 2000;
+  const size_t edge = kPairSize * kPairSize / 2000;
   auto ramp = RampScaled(1.0, unit);
   for (bool cells : { false, true })
   {
@@ -421,7 +422,7 @@ int BadCells()
 {
   const std::vector<std::pair<double, double>> views = { { 30.0, 20.0 }, { 100.0, -35.0 },
     { 200.0, 60.0 } };
-  const size_t edge = 96 * 96 / 2000;
+  const size_t edge = kPairSize * kPairSize / 2000;
   auto exactEverywhere = [&](const std::string& what, vtkUnstructuredGrid* grid,
                            vtkVolumeProperty* property, vtkUnstructuredGrid* control,
                            vtkVolumeProperty* controlProperty, bool expectWarning)
