@@ -602,6 +602,97 @@ int BadCells()
   return havstest::Result();
 }
 
+/// Degenerate views (issue 20) of an axis-aligned box of 4^3 cubes (5
+/// tetrahedra each, s = z): orthographic views exactly along +z, +x and -y
+/// with pixel centres on the grid lines (every face parallel to the view
+/// direction is seen edge-on, rays run along internal faces); perspective
+/// views with the eye exactly on a face plane, on an edge and on a vertex of
+/// the lattice (outside the box, looking at it). Each through both mappers
+/// against the exact reference, finite; control: the reference of the view
+/// turned by 25 degrees.
+int DegenerateViews()
+{
+  auto box = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
+  auto property = havstest::MakeRampPropertyFor(box);
+  const int size = 65; // odd: with the scale below, pixel centres fall on the grid lines
+  struct View
+  {
+    const char* Name;
+    bool Parallel;
+    double Position[3];
+    double Up[3];
+  };
+  const View views[] = {
+    { "orthographic along -z", true, { 0.5, 0.5, 5.0 }, { 0, 1, 0 } },
+    { "orthographic along -x", true, { 5.0, 0.5, 0.5 }, { 0, 0, 1 } },
+    { "orthographic along +y", true, { 0.5, -5.0, 0.5 }, { 0, 0, 1 } },
+    { "eye on a face plane (x = 0.5)", false, { 0.5, -1.3, 0.37 }, { 0, 0, 1 } },
+    { "eye on an edge (x = 0.5, z = 0.75)", false, { 0.5, -1.3, 0.75 }, { 0, 0, 1 } },
+    { "eye on a vertex line (x = 0.25, y = 0.75, z = 1.5)", false, { 0.25, 0.75, 1.5 },
+      { 0, 1, 0 } },
+  };
+  for (const View& view : views)
+  {
+    for (bool cells : { false, true })
+    {
+      auto mapper = MakeMapper(cells);
+      auto s = havstest::MakeScene(box, mapper, property, size, size);
+      vtkCamera* camera = s.Renderer->GetActiveCamera();
+      camera->SetParallelProjection(view.Parallel ? 1 : 0);
+      camera->SetPosition(view.Position);
+      // Perspective: look at a lattice point so that the eye's plane, edge or
+      // vertex line passes through the view; parallel: at the box's centre.
+      if (view.Parallel)
+      {
+        camera->SetFocalPoint(0.5, 0.5, 0.5);
+      }
+      else
+      {
+        camera->SetFocalPoint(view.Position[0], 0.5, view.Position[1] < 0 ? view.Position[2] : 0.5);
+      }
+      camera->SetViewUp(view.Up);
+      camera->SetViewAngle(50.0);
+      // Half the view = 32 pixels = 0.64: grid lines every 0.25 = 12.5
+      // pixels... so use 0.8 / 32 = 0.025 per pixel: lines every 10 pixels,
+      // and the pixel centres of an odd window on the centre line.
+      camera->SetParallelScale(0.5 * size * 0.025);
+      s.Renderer->ResetCameraClippingRange();
+      s.Window->Render();
+      const auto image = havstest::FloatResult(mapper);
+      auto reference = [&](double azimuth)
+      {
+        vtkNew<vtkCamera> c;
+        c->DeepCopy(camera);
+        c->Azimuth(azimuth);
+        vtkNew<vtkHAVSReferenceRenderer> r;
+        r->SetInputData(box);
+        r->SetProperty(property);
+        r->SetCamera(c);
+        r->SetSize(size, size);
+        r->Render();
+        vtkFloatArray* out = r->GetImage();
+        return std::vector<float>(out->GetPointer(0), out->GetPointer(0) + 4 * size * size);
+      };
+      const auto exact = reference(0.0);
+      size_t covered = 0;
+      for (size_t i = 3; i < exact.size(); i += 4)
+      {
+        covered += exact[i] > 1e-3f ? 1 : 0;
+      }
+      const size_t edge = static_cast<size_t>(size) * size / 2000;
+      const auto d = havstest::Compare(image, exact, edge);
+      const auto c = havstest::Compare(image, reference(25.0), edge);
+      const std::string what = std::string(Name(cells)) + ", " + view.Name;
+      Print(what + ": vs reference", d);
+      Print(what + ": control, the view turned", c);
+      havstest::Check(covered > static_cast<size_t>(size * size / 10), what + ": the box is seen");
+      havstest::Check(Exact(d) && havstest::AllFinite(image), what + ": exact and finite");
+      havstest::Check(!Exact(c), what + ": control, another view fails");
+    }
+  }
+  return havstest::Result();
+}
+
 int Resize()
 {
   auto grid = vtkHAVSDataSets::Load("hollowsphere");
@@ -689,6 +780,10 @@ int TestHAVSStress(int argc, char* argv[])
   {
     return BadCells();
   }
-  havstest::Check(false, "a known case: scale, translate, resize, scalars, cells");
+  if (which == "views")
+  {
+    return DegenerateViews();
+  }
+  havstest::Check(false, "a known case: scale, translate, resize, scalars, cells, views");
   return havstest::Result();
 }

@@ -94,11 +94,15 @@ void main()
   vec3 d = havsParallel != 0 ? havsDirectionMC : p - havsEyeMC;
   float tExit = HAVS_EMPTY;
   float tFarthest = 0.0;
+  // A plane the ray runs along (a face seen edge-on: the eye in its plane,
+  // its rays on the shared face of two cells) is no exit: in float its
+  // 'towards' is rounding noise, and so would be the distance to it.
+  float parallelToRay = 1e-5 * length(d);
   for (int j = 0; j < 4; ++j)
   {
     vec4 plane = havsCells[base + j];
     float towards = dot(plane.xyz, d);
-    if (towards > 0.0)
+    if (towards > parallelToRay)
     {
       float t = -(dot(plane.xyz, p) + plane.w) / towards;
       tExit = min(tExit, t);
