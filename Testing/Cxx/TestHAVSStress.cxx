@@ -190,6 +190,35 @@ int Translate()
 
 /// The mapper's float result and the exact reference of the same scene
 /// (camera from (30, 20) degrees, kPairSize^2), with the mapper's messages.
+/// The exact image of `grid` seen by `camera` turned by `azimuth` degrees.
+std::vector<float> ReferenceImage(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
+  vtkCamera* camera, int width, int height, double azimuth = 0.0)
+{
+  vtkNew<vtkCamera> turned;
+  turned->DeepCopy(camera);
+  turned->Azimuth(azimuth);
+  vtkNew<vtkHAVSReferenceRenderer> r;
+  r->SetInputData(grid);
+  r->SetProperty(property);
+  r->SetCamera(turned);
+  r->SetSize(width, height);
+  r->Render();
+  vtkFloatArray* out = r->GetImage();
+  return std::vector<float>(
+    out->GetPointer(0), out->GetPointer(0) + 4 * static_cast<size_t>(width) * height);
+}
+
+/// Pixels of an image whose opacity exceeds 1e-3 (the scene is seen there).
+size_t CoveredPixels(const std::vector<float>& rgba)
+{
+  size_t covered = 0;
+  for (size_t i = 3; i < rgba.size(); i += 4)
+  {
+    covered += rgba[i] > 1e-3f ? 1 : 0;
+  }
+  return covered;
+}
+
 constexpr int kPairSize = 96;
 struct Pair
 {
@@ -212,14 +241,7 @@ Pair RenderWithReference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
   out.Image = havstest::FloatResult(mapper);
   out.Warnings = messages->Warnings;
   out.Errors = messages->Errors;
-  vtkNew<vtkHAVSReferenceRenderer> r;
-  r->SetInputData(grid);
-  r->SetProperty(property);
-  r->SetCamera(s.Renderer->GetActiveCamera());
-  r->SetSize(size, size);
-  r->Render();
-  vtkFloatArray* image = r->GetImage();
-  out.Exact.assign(image->GetPointer(0), image->GetPointer(0) + 4 * size * size);
+  out.Exact = ReferenceImage(grid, property, s.Renderer->GetActiveCamera(), size, size);
   return out;
 }
 
@@ -433,11 +455,7 @@ int BadCells()
       for (const auto& view : views)
       {
         const Pair p = RenderWithReference(grid, property, cells, view.first, view.second);
-        size_t covered = 0;
-        for (size_t i = 3; i < p.Exact.size(); i += 4)
-        {
-          covered += p.Exact[i] > 1e-3f ? 1 : 0;
-        }
+        const size_t covered = CoveredPixels(p.Exact);
         const Pair c =
           RenderWithReference(control, controlProperty, cells, view.first, view.second);
         const auto d = havstest::Compare(p.Image, p.Exact, edge);
@@ -652,36 +670,18 @@ int DegenerateViews()
       }
       camera->SetViewUp(view.Up);
       camera->SetViewAngle(50.0);
-      // Half the view = 32 pixels = 0.64: grid lines every 0.25 = 12.5
-      // pixels... so use 0.8 / 32 = 0.025 per pixel: lines every 10 pixels,
-      // and the pixel centres of an odd window on the centre line.
+      // 0.025 per pixel: the grid lines (every 0.25) every 10 pixels, and
+      // an odd window's pixel centres on the centre line, so on the lines.
       camera->SetParallelScale(0.5 * size * 0.025);
       s.Renderer->ResetCameraClippingRange();
       s.Window->Render();
       const auto image = havstest::FloatResult(mapper);
-      auto reference = [&](double azimuth)
-      {
-        vtkNew<vtkCamera> c;
-        c->DeepCopy(camera);
-        c->Azimuth(azimuth);
-        vtkNew<vtkHAVSReferenceRenderer> r;
-        r->SetInputData(box);
-        r->SetProperty(property);
-        r->SetCamera(c);
-        r->SetSize(size, size);
-        r->Render();
-        vtkFloatArray* out = r->GetImage();
-        return std::vector<float>(out->GetPointer(0), out->GetPointer(0) + 4 * size * size);
-      };
-      const auto exact = reference(0.0);
-      size_t covered = 0;
-      for (size_t i = 3; i < exact.size(); i += 4)
-      {
-        covered += exact[i] > 1e-3f ? 1 : 0;
-      }
+      const auto exact = ReferenceImage(box, property, camera, size, size);
+      const size_t covered = CoveredPixels(exact);
       const size_t edge = static_cast<size_t>(size) * size / 2000;
       const auto d = havstest::Compare(image, exact, edge);
-      const auto c = havstest::Compare(image, reference(25.0), edge);
+      const auto c =
+        havstest::Compare(image, ReferenceImage(box, property, camera, size, size, 25.0), edge);
       const std::string what = std::string(Name(cells)) + ", " + view.Name;
       Print(what + ": vs reference", d);
       Print(what + ": control, the view turned", c);
@@ -727,19 +727,8 @@ int Resize()
       {
         continue;
       }
-      auto reference = [&](double azimuth)
-      {
-        vtkNew<vtkCamera> camera;
-        camera->DeepCopy(s.Renderer->GetActiveCamera());
-        camera->Azimuth(azimuth);
-        vtkNew<vtkHAVSReferenceRenderer> r;
-        r->SetInputData(grid);
-        r->SetProperty(property);
-        r->SetCamera(camera);
-        r->SetSize(wh[0], wh[1]);
-        r->Render();
-        vtkFloatArray* out = r->GetImage();
-        return std::vector<float>(out->GetPointer(0), out->GetPointer(0) + 4 * wh[0] * wh[1]);
+      auto reference = [&](double azimuth) {
+        return ReferenceImage(grid, property, s.Renderer->GetActiveCamera(), wh[0], wh[1], azimuth);
       };
       const size_t edge = static_cast<size_t>(wh[0]) * wh[1] / 2000;
       const auto d = havstest::Compare(image, reference(0.0), edge);

@@ -33,7 +33,13 @@
 vtkAbstractObjectFactoryNewMacro(vtkHAVSCellProjectionMapper);
 
 //------------------------------------------------------------------------------
-vtkHAVSCellProjectionMapper::vtkHAVSCellProjectionMapper() = default;
+vtkHAVSCellProjectionMapper::vtkHAVSCellProjectionMapper()
+{
+  // Only the near plane needs a section: where a clipping plane cuts a cell
+  // the rasterizer still draws the cell's front face, and the ray starts on
+  // the plane inside it.
+  this->Planes->SetNearPlaneSectionsOnly(true);
+}
 vtkHAVSCellProjectionMapper::~vtkHAVSCellProjectionMapper() = default;
 
 //------------------------------------------------------------------------------
@@ -127,7 +133,7 @@ const std::vector<uint32_t>* vtkHAVSCellProjectionMapper::MakeOrder(const vtkHAV
     return &this->Drawn;
   }
   this->KeptCycleBreaks = 0;
-  const size_t count = this->Cells.size() / 20;
+  const size_t count = this->Mesh->GetFaceSet()->GetTetrahedra().size() / 4;
   if (unsorted)
   {
     this->Drawn.resize(count);
@@ -224,7 +230,6 @@ void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   }
   // Where the near plane cuts the mesh (the camera inside it) the rays start
   // on its section: the GL near clip removes the front faces there.
-  this->Planes->SetNearPlaneSectionsOnly(true);
   if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, this->NearPlaneSection))
   {
     this->WarnOnce(vtkHAVSMapperInputs::WarnPlanes,

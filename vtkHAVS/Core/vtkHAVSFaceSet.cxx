@@ -623,6 +623,17 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
 }
 
 //------------------------------------------------------------------------------
+std::vector<uint8_t> vtkHAVSFaceSet::GetPointUse(vtkIdType numberOfPoints) const
+{
+  std::vector<uint8_t> used(static_cast<size_t>(numberOfPoints), 0);
+  for (uint32_t id : this->Tetrahedra)
+  {
+    used[id] = 1;
+  }
+  return used;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSFaceSet::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -89,6 +89,9 @@ public:
   /// Four point ids per used tetrahedron (skipped and degenerate cells left out).
   const std::vector<uint32_t>& GetTetrahedra() const { return this->Tetrahedra; }
 
+  /// Per point of the grid (numberOfPoints), 1 where a used tetrahedron has it, else 0.
+  std::vector<uint8_t> GetPointUse(vtkIdType numberOfPoints) const;
+
   /**
    * Whether the mesh is one convex body: its boundary is one closed,
    * connected, 2-manifold surface that is locally convex at every edge (the

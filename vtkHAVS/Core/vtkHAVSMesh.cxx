@@ -187,11 +187,7 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
 
   // Scalars mapped to [0, 1] over the finite range of the points the cells
   // use (an unused point's value changes nothing); NaN/Inf replaced.
-  std::vector<uint8_t> used(static_cast<size_t>(numPoints), 0);
-  for (uint32_t id : this->Faces->GetTetrahedra())
-  {
-    used[id] = 1;
-  }
+  const std::vector<uint8_t> used = this->Faces->GetPointUse(numPoints);
   double range[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest() };
   vtkIdType nonFinite = 0;
   for (vtkIdType p = 0; p < numPoints; ++p)

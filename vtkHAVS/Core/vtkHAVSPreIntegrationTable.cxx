@@ -47,36 +47,6 @@ OpticalSample Evaluate(vtkVolumeProperty* property, int component, double s)
   return out;
 }
 
-/// The scalars of the opacity and colour functions' nodes.
-void NodePositions(vtkVolumeProperty* property, int component, std::vector<double>& nodes)
-{
-  double node[6];
-  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(component);
-  for (int i = 0; i < opacity->GetSize(); ++i)
-  {
-    opacity->GetNodeValue(i, node);
-    nodes.push_back(node[0]);
-  }
-  if (property->GetColorChannels(component) == 1)
-  {
-    vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(component);
-    for (int i = 0; i < gray->GetSize(); ++i)
-    {
-      gray->GetNodeValue(i, node);
-      nodes.push_back(node[0]);
-    }
-  }
-  else
-  {
-    vtkColorTransferFunction* color = property->GetRGBTransferFunction(component);
-    for (int i = 0; i < color->GetSize(); ++i)
-    {
-      color->GetNodeValue(i, node);
-      nodes.push_back(node[0]);
-    }
-  }
-}
-
 /// Composites one sub-step of length h between samples a and b: extinction
 /// and colour linear inside, attenuation exact for the mean extinction.
 inline void CompositeStep(const OpticalSample& a, const OpticalSample& b, double attenuation,
@@ -113,6 +83,37 @@ void IntegrateSteps(vtkVolumeProperty* property, int component, double sf, doubl
   rgba[2] = color[2];
   rgba[3] = 1.0 - transmittance;
 }
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSPreIntegrationTable::GetFunctionNodes(
+  vtkVolumeProperty* property, int component, std::vector<double>& nodes)
+{
+  double node[6];
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(component);
+  for (int i = 0; i < opacity->GetSize(); ++i)
+  {
+    opacity->GetNodeValue(i, node);
+    nodes.push_back(node[0]);
+  }
+  if (property->GetColorChannels(component) == 1)
+  {
+    vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(component);
+    for (int i = 0; i < gray->GetSize(); ++i)
+    {
+      gray->GetNodeValue(i, node);
+      nodes.push_back(node[0]);
+    }
+  }
+  else
+  {
+    vtkColorTransferFunction* color = property->GetRGBTransferFunction(component);
+    for (int i = 0; i < color->GetSize(); ++i)
+    {
+      color->GetNodeValue(i, node);
+      nodes.push_back(node[0]);
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -226,7 +227,7 @@ bool vtkHAVSPreIntegrationTable::Build(
   if (span > 0.0)
   {
     std::vector<double> nodes;
-    NodePositions(property, component, nodes);
+    GetFunctionNodes(property, component, nodes);
     for (double x : nodes)
     {
       const double t = (x - lo) / span;

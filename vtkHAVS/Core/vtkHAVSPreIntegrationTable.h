@@ -117,6 +117,13 @@ public:
   void Lookup(double sf, double sb, double length, double rgba[4]) const;
 
   /**
+   * Appends the scalars of the nodes of `property`'s opacity and colour (or
+   * grey) functions for `component`: where their pieces meet.
+   */
+  static void GetFunctionNodes(
+    vtkVolumeProperty* property, int component, std::vector<double>& nodes);
+
+  /**
    * Double-precision reference: the segment integrated adaptively from the
    * property's functions to an absolute error <= 1e-6.
    */

@@ -99,22 +99,23 @@ void vtkOpenGLHAVSCellProjectionMapper::Upload(const CellFrame& frame)
   // The faces of the cells in the frame's order, and the cell of each
   // position: only when the order changed (not on a redraw or a
   // transfer-function edit; once per mesh for the unsorted blends).
-  if (this->UploadedOrder == frame.OrderVersion && this->Indices.size() == 12 * frame.Order->size())
+  if (this->UploadedOrder == frame.OrderVersion && this->UploadedCells == frame.Order->size())
   {
     glBindVertexArray(0);
     return;
   }
   this->UploadedOrder = frame.OrderVersion;
+  this->UploadedCells = frame.Order->size();
   const std::vector<uint32_t>& order = *frame.Order;
   const std::vector<uint32_t>& faces = *frame.Faces;
-  this->Indices.resize(12 * order.size());
+  std::vector<uint32_t> indices(12 * order.size()); // (only until uploaded)
   for (size_t i = 0; i < order.size(); ++i)
   {
-    std::copy_n(&faces[12 * static_cast<size_t>(order[i])], 12, &this->Indices[12 * i]);
+    std::copy_n(&faces[12 * static_cast<size_t>(order[i])], 12, &indices[12 * i]);
   }
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, this->Indices.size() * sizeof(uint32_t),
-    this->Indices.data(), GL_STREAM_DRAW);
+  glBufferData(
+    GL_ELEMENT_ARRAY_BUFFER, indices.size() * sizeof(uint32_t), indices.data(), GL_STREAM_DRAW);
   glBindVertexArray(0);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->OrderBuffer);
   glBufferData(
@@ -290,7 +291,7 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   program->SetUniformi("havsNearSectionDrawn", sectionTriangles > 0 ? 1 : 0);
   glBindVertexArray(this->VertexArray);
   glDrawElements(
-    GL_TRIANGLES, static_cast<GLsizei>(this->Indices.size()), GL_UNSIGNED_INT, nullptr);
+    GL_TRIANGLES, static_cast<GLsizei>(12 * this->UploadedCells), GL_UNSIGNED_INT, nullptr);
   glBindVertexArray(0);
   if (frame.MeasureStages)
   {
@@ -365,7 +366,7 @@ void vtkOpenGLHAVSCellProjectionMapper::ReleaseGraphicsResources(vtkWindow* wind
     this->SectionArray = this->SectionPointBuffer = this->SectionCellBuffer = 0;
     this->SectionTriangles = 0;
   }
-  this->Indices.clear();
+  this->UploadedCells = 0;
   home->RemoveObserver(this->WindowDeleteObserver);
   this->Window = nullptr;
   this->UploadedGeometry = this->UploadedTable = this->UploadedOrder = this->UploadedSection = 0;

@@ -76,7 +76,7 @@ private:
   vtkMTimeType UploadedTable = 0;
   vtkMTimeType UploadedOrder = 0;
   vtkMTimeType UploadedSection = 0;
-  std::vector<uint32_t> Indices;
+  size_t UploadedCells = 0; // tetrahedra in the index buffer (12 indices each)
   std::vector<float> KeptResult;
   int KeptSize[2] = { 0, 0 };
 };

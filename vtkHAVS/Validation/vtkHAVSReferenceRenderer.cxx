@@ -132,11 +132,7 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
   std::vector<double> world(3 * numPoints);
   std::vector<double> values(numPoints);
   // The scalar range over the points the cells use, as the mappers take it.
-  std::vector<uint8_t> used(static_cast<size_t>(numPoints), 0);
-  for (uint32_t id : this->Faces->GetTetrahedra())
-  {
-    used[id] = 1;
-  }
+  const std::vector<uint8_t> used = this->Faces->GetPointUse(numPoints);
   double range[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest() };
   for (vtkIdType p = 0; p < numPoints; ++p)
   {
@@ -516,36 +512,13 @@ void vtkHAVSReferenceRenderer::IntegrateSegmentExact(
   if (sf != sb)
   {
     const double lo = std::min(sf, sb), hi = std::max(sf, sb);
-    auto addNode = [&](double x)
+    std::vector<double> nodes;
+    vtkHAVSPreIntegrationTable::GetFunctionNodes(property, 0, nodes);
+    for (double x : nodes)
     {
       if (x > lo && x < hi)
       {
         cuts.push_back((x - sf) / (sb - sf));
-      }
-    };
-    vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
-    double node[6];
-    for (int i = 0; i < opacity->GetSize(); ++i)
-    {
-      opacity->GetNodeValue(i, node);
-      addNode(node[0]);
-    }
-    if (property->GetColorChannels(0) == 1)
-    {
-      vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(0);
-      for (int i = 0; i < gray->GetSize(); ++i)
-      {
-        gray->GetNodeValue(i, node);
-        addNode(node[0]);
-      }
-    }
-    else
-    {
-      vtkColorTransferFunction* color = property->GetRGBTransferFunction(0);
-      for (int i = 0; i < color->GetSize(); ++i)
-      {
-        color->GetNodeValue(i, node);
-        addNode(node[0]);
       }
     }
     std::sort(cuts.begin(), cuts.end());
@@ -677,11 +650,12 @@ double vtkHAVSReferenceRenderer::IntegrateAdditiveSegment(
   std::vector<double> cuts = { 0.0, 1.0 };
   if (sf != sb)
   {
-    double node[4];
-    for (int i = 0; i < opacity->GetSize(); ++i)
+    // (The colour nodes too: extra cuts where the integrand is smooth cost nothing.)
+    std::vector<double> nodes;
+    vtkHAVSPreIntegrationTable::GetFunctionNodes(property, 0, nodes);
+    for (double x : nodes)
     {
-      opacity->GetNodeValue(i, node);
-      const double u = (node[0] - sf) / (sb - sf);
+      const double u = (x - sf) / (sb - sf);
       if (u > 0.0 && u < 1.0)
       {
         cuts.push_back(u);
