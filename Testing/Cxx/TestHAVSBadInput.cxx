@@ -24,6 +24,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkHAVSVisibilityOrder.h"
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkHexahedron.h"
@@ -180,22 +181,23 @@ int TestHAVSBadInput(int, char*[])
     Outcome o = RenderOnce(grid, "all-NaN scalars");
     havstest::Check(o.Errors == 1, "all-NaN scalars: error");
   }
-  // A hexahedron next to tetrahedra: skipped with a warning; only hexahedra: error.
+  // A polygon next to tetrahedra: skipped with a warning; only polygons: error.
+  // (A hexahedron is split into tetrahedra: TestHAVSCells.)
   {
     auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
-    vtkIdType hex[8] = { 0, 1, 4, 3, 9, 10, 13, 12 };
-    grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
-    Outcome o = RenderOnce(grid, "tets + a hexahedron");
-    havstest::Check(o.Warnings >= 1 && Contains(o.Text, "not tetrahedra"), "hex: warning");
-    havstest::Check(!o.Result.empty(), "hex: the tetrahedra still render");
+    vtkIdType quad[4] = { 0, 1, 4, 3 };
+    grid->InsertNextCell(VTK_QUAD, 4, quad);
+    Outcome o = RenderOnce(grid, "tets + a quadrilateral");
+    havstest::Check(o.Warnings >= 1 && Contains(o.Text, "not 3D"), "quad: warning");
+    havstest::Check(!o.Result.empty(), "quad: the tetrahedra still render");
 
-    vtkNew<vtkUnstructuredGrid> hexOnly;
-    hexOnly->SetPoints(grid->GetPoints());
-    hexOnly->GetPointData()->ShallowCopy(grid->GetPointData());
-    hexOnly->Allocate(1);
-    hexOnly->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
-    Outcome h = RenderOnce(hexOnly, "only a hexahedron");
-    havstest::Check(h.Errors >= 1, "only hexahedra: error");
+    vtkNew<vtkUnstructuredGrid> quadOnly;
+    quadOnly->SetPoints(grid->GetPoints());
+    quadOnly->GetPointData()->ShallowCopy(grid->GetPointData());
+    quadOnly->Allocate(1);
+    quadOnly->InsertNextCell(VTK_QUAD, 4, quad);
+    Outcome h = RenderOnce(quadOnly, "only a quadrilateral");
+    havstest::Check(h.Errors >= 1 && Contains(h.Text, "No 3D cells"), "only polygons: error");
   }
   // Degenerate (flat) tetrahedra among good ones.
   {
@@ -207,7 +209,7 @@ int TestHAVSBadInput(int, char*[])
     Outcome o = RenderOnce(grid, "degenerate tetrahedra");
     havstest::Check(o.Warnings >= 1 && Contains(o.Text, "degenerate"), "degenerate: warning");
   }
-  // Cell scalars: a clear error (not supported yet).
+  // Cell scalars render (their accuracy: TestHAVSCells); field data: a clear error.
   {
     auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
     vtkNew<vtkDoubleArray> cellScalars;
@@ -218,7 +220,24 @@ int TestHAVSBadInput(int, char*[])
     grid->GetPointData()->RemoveArray("s");
     grid->GetCellData()->SetScalars(cellScalars);
     Outcome o = RenderOnce(grid, "cell scalars");
-    havstest::Check(o.Errors == 1 && Contains(o.Text, "Cell scalars"), "cell scalars: clear error");
+    havstest::Check(o.Errors == 0 && !o.Result.empty(), "cell scalars: rendered");
+
+    vtkNew<vtkDoubleArray> field;
+    field->SetName("f");
+    field->SetNumberOfTuples(grid->GetNumberOfCells());
+    field->Fill(0.5);
+    grid->GetCellData()->SetScalars(nullptr);
+    grid->GetCellData()->RemoveArray("c");
+    grid->GetFieldData()->AddArray(field);
+    vtkNew<vtkHAVSVolumeMapper> mapper;
+    mapper->SetScalarMode(VTK_SCALAR_MODE_USE_FIELD_DATA);
+    mapper->SelectScalarArray("f");
+    havstest::Messages* messages = havstest::CountMessages(mapper);
+    auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
+    auto scene = havstest::MakeScene(grid, mapper, property, 48, 48);
+    scene.Window->Render();
+    havstest::Check(messages->Errors >= 1 && Contains(messages->Text, "Field-data"),
+      "field-data scalars: clear error");
   }
   // Unsupported property features: one warning each, not one per frame.
   {

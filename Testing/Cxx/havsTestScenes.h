@@ -18,6 +18,7 @@
 #include "vtkSmartPointer.h"
 
 class vtkAbstractVolumeMapper;
+class vtkDataSet;
 class vtkHAVSVolumeMapper;
 class vtkRenderWindow;
 class vtkRenderer;
@@ -37,7 +38,7 @@ struct VolumeScene
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkVolume> Volume;
 };
-VolumeScene MakeScene(vtkUnstructuredGrid* grid, vtkAbstractVolumeMapper* mapper,
+VolumeScene MakeScene(vtkDataSet* grid, vtkAbstractVolumeMapper* mapper,
   vtkVolumeProperty* property, int width, int height);
 
 /**

@@ -17,7 +17,7 @@
 //------------------------------------------------------------------------------
 void vtkHAVSCellGeometry::Compute(const std::vector<float>& points,
   const std::vector<float>& scalars, const std::vector<uint32_t>& tets, std::vector<float>& cells,
-  std::vector<uint32_t>& faces)
+  std::vector<uint32_t>& faces, const std::vector<float>* cellScalars)
 {
   const size_t count = tets.size() / 4;
   cells.assign(count * FloatsPerCell, 0.0f);
@@ -35,7 +35,7 @@ void vtkHAVSCellGeometry::Compute(const std::vector<float>& points,
           {
             x[v][c] = points[3 * static_cast<size_t>(ids[v]) + c];
           }
-          s[v] = scalars[ids[v]];
+          s[v] = cellScalars ? (*cellScalars)[static_cast<size_t>(t)] : scalars[ids[v]];
         }
         float* out = &cells[static_cast<size_t>(t) * FloatsPerCell];
         uint32_t* face = &faces[12 * static_cast<size_t>(t)];

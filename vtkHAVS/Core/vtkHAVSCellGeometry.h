@@ -37,10 +37,12 @@ public:
   /**
    * `points` (3 floats each), `scalars` (1 per point), `tets` (4 point ids
    * each) in; `cells` (FloatsPerCell per tetrahedron) and `faces` (12 point
-   * ids per tetrahedron) out.
+   * ids per tetrahedron) out. With `cellScalars` (1 per tetrahedron: cell
+   * data), each field is that constant instead (gradient 0).
    */
   static void Compute(const std::vector<float>& points, const std::vector<float>& scalars,
-    const std::vector<uint32_t>& tets, std::vector<float>& cells, std::vector<uint32_t>& faces);
+    const std::vector<uint32_t>& tets, std::vector<float>& cells, std::vector<uint32_t>& faces,
+    const std::vector<float>* cellScalars = nullptr);
 };
 
 #endif

@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSCellProjectionMapper.h"
 
+#include "vtkInformation.h"
+
 #include "vtkHAVSCellGeometry.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFramePlanes.h"
@@ -53,6 +55,12 @@ bool vtkHAVSCellProjectionMapper::DrawCells(vtkRenderer*, const CellFrame&, doub
 const std::vector<float>* vtkHAVSCellProjectionMapper::GetKeptResult(int[2])
 {
   return nullptr;
+}
+
+//------------------------------------------------------------------------------
+int vtkHAVSCellProjectionMapper::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
+{
+  return vtkHAVSMapperInputs::FillInputPortInformation(info);
 }
 
 //------------------------------------------------------------------------------
@@ -106,7 +114,7 @@ const std::vector<uint32_t>* vtkHAVSCellProjectionMapper::MakeOrder(const vtkHAV
   const int method = kind == CellOrderMPVO ? this->NonConvexMethod : -1;
   if (kind == CellOrderMPVO && !this->OrderBuilt)
   {
-    auto* grid = vtkUnstructuredGrid::SafeDownCast(this->GetInput());
+    vtkUnstructuredGrid* grid = this->Mesh->GetGrid();
     if (!this->Order->Build(this->Mesh->GetFaceSet(), grid))
     {
       vtkErrorMacro("The MPVO cell order could not be made for this mesh.");
@@ -196,8 +204,8 @@ void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volum
     this->GetInputAlgorithm()->Update();
   }
   auto warnOnce = [this](int which, const std::string& m) { this->WarnOnce(which, m); };
-  const auto state = vtkHAVSMapperInputs::PrepareMesh(
-    this, volume, this->Mesh, "vtkHAVSCellProjectionMapper", warnOnce);
+  const auto state = vtkHAVSMapperInputs::PrepareMesh(this, volume, this->Mesh,
+    "vtkHAVSCellProjectionMapper", warnOnce, this->VectorMode, this->VectorComponent);
   if (state == vtkHAVSMapperInputs::MeshFailed)
   {
     return;
@@ -205,7 +213,8 @@ void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   if (state == vtkHAVSMapperInputs::MeshRebuilt || this->Cells.empty())
   {
     vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
-      this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces);
+      this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
+      this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronScalars() : nullptr);
     this->GeometryTime.Modified();
     this->OrderBuilt = false;
     this->OrderKeyValid = false;

@@ -115,6 +115,19 @@ public:
   ///@}
 
   ///@{
+  /**
+   * How a multi-component array becomes the scalar rendered, as
+   * vtkSmartVolumeMapper::SetVectorMode: -1 (the default) the first component,
+   * 0 the magnitude, 1 the component VectorComponent. The property's first
+   * component's transfer functions colour it.
+   */
+  vtkSetClampMacro(VectorMode, int, -1, 1);
+  vtkGetMacro(VectorMode, int);
+  vtkSetClampMacro(VectorComponent, int, 0, 3);
+  vtkGetMacro(VectorComponent, int);
+  ///@}
+
+  ///@{
   /// Keep the frame's float result (premultiplied RGBA) for GetFloatResult().
   vtkSetMacro(KeepFloatResult, bool);
   vtkGetMacro(KeepFloatResult, bool);
@@ -198,6 +211,10 @@ protected:
   vtkHAVSCellProjectionMapper();
   ~vtkHAVSCellProjectionMapper() override;
 
+  /// Any vtkDataSet: cells that are not tetrahedra are split (vtkHAVSTetrahedralizer).
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+
   /// The graphics layer: draws one frame (false, with an error, when it cannot).
   virtual bool DrawCells(vtkRenderer* renderer, const CellFrame& frame, double* drawSeconds);
   /// The last kept float result (nullptr without one).
@@ -221,6 +238,8 @@ private:
   bool ReverseOrderForTesting = false;
   bool ShuffleOrderForTesting = false;
   bool NearPlaneSection = true;
+  int VectorMode = -1;
+  int VectorComponent = 0;
   vtkIdType LastSectionTriangles = 0;
   bool MeasureStageTimes = false;
   bool LastOrderReused = false;

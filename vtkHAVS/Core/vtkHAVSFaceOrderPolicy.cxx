@@ -142,7 +142,7 @@ bool vtkHAVSFaceOrderPolicy::Prepare(
 void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_t>* order)
 {
   vtkHAVSFaceSet* faces = mesh->GetFaceSet();
-  const std::vector<uint32_t>& faceVertices = faces->GetFaceVertices();
+  const std::vector<uint32_t>& faceVertices = mesh->GetFaceVertexIds();
   const std::vector<uint8_t>& boundary = faces->GetBoundaryFlags();
   const vtkIdType numFaces = faces->GetNumberOfFaces();
   this->DrawTriangles.resize(3 * numFaces);

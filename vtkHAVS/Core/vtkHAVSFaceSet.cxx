@@ -63,12 +63,14 @@ struct CellCounts
 };
 
 /// One face of a used tetrahedron, filed under its smallest point id: the two
-/// other ids ascending, and the tetrahedron's fourth point (to orient the face).
+/// other ids ascending, the tetrahedron's fourth point (to orient the face)
+/// and the tetrahedron's cell id in the grid.
 struct FaceUse
 {
   uint32_t Middle;
   uint32_t Largest;
   uint32_t Opposite;
+  uint32_t Cell;
 
   bool operator<(const FaceUse& other) const
   {
@@ -251,14 +253,14 @@ FaceUseBuckets FileFaceUses(const CellTable& table, vtkIdType numberOfPoints)
           for (int f = 0; f < 4; ++f)
           {
             SortedFace(&table.PointIds[4 * cell], f, face);
-            visit(face);
+            visit(face, static_cast<uint32_t>(cell));
           }
         }
       });
   };
 
-  forEachFaceUse(
-    [&](const uint32_t* face) { cursor[face[0]].fetch_add(1, std::memory_order_relaxed); });
+  forEachFaceUse([&](const uint32_t* face, uint32_t)
+    { cursor[face[0]].fetch_add(1, std::memory_order_relaxed); });
   FaceUseBuckets buckets;
   buckets.Start.resize(static_cast<size_t>(numberOfPoints) + 1);
   buckets.Start[0] = 0;
@@ -269,10 +271,10 @@ FaceUseBuckets FileFaceUses(const CellTable& table, vtkIdType numberOfPoints)
   }
   buckets.Uses.resize(static_cast<size_t>(buckets.Start[numberOfPoints]));
   forEachFaceUse(
-    [&](const uint32_t* face)
+    [&](const uint32_t* face, uint32_t cell)
     {
       const vtkIdType at = cursor[face[0]].fetch_add(1, std::memory_order_relaxed);
-      buckets.Uses[at] = FaceUse{ face[1], face[2], face[3] };
+      buckets.Uses[at] = FaceUse{ face[1], face[2], face[3], cell };
     });
   return buckets;
 }
@@ -356,10 +358,12 @@ vtkIdType MarkDuplicateCells(CellTable& table)
 
 /// Writes one face per run of the sorted buckets: ids (boundary faces wound
 /// away from their tetrahedron's fourth point, internal ones ascending),
-/// boundary flag and centroid minus `origin`. The arrays are already sized.
+/// boundary flag, centroid minus `origin`, and the cells on either side (the
+/// one the winding's normal points into first). The arrays are already sized.
 void WriteFaces(const FaceUseBuckets& buckets, const std::vector<vtkIdType>& faceStart,
   const std::vector<double>& coordinates, const double origin[3], std::vector<uint32_t>& vertices,
-  std::vector<uint8_t>& boundaryFlags, std::vector<float>& centroids)
+  std::vector<uint8_t>& boundaryFlags, std::vector<float>& centroids,
+  std::vector<uint32_t>& faceCells)
 {
   const vtkIdType numberOfBuckets = static_cast<vtkIdType>(buckets.Start.size()) - 1;
   auto point = [&](uint32_t id) { return &coordinates[3 * static_cast<size_t>(id)]; };
@@ -382,6 +386,21 @@ void WriteFaces(const FaceUseBuckets& buckets, const std::vector<vtkIdType>& fac
             std::swap(ids[1], ids[2]);
           }
           boundaryFlags[face] = boundary ? 1 : 0;
+          // The cells on either side: a use whose fourth point lies on the
+          // normal's side is the cell the normal points into. (A non-manifold
+          // face keeps one use per side.)
+          uint32_t* sides = &faceCells[2 * face];
+          sides[0] = sides[1] = vtkHAVSFaceSet::NoCell;
+          for (const FaceUse* u = run; u != runEnd; ++u)
+          {
+            const bool normalSide =
+              TripleProduct(point(ids[0]), point(ids[1]), point(ids[2]), point(u->Opposite)) > 0.0;
+            uint32_t& side = sides[normalSide ? 0 : 1];
+            if (side == vtkHAVSFaceSet::NoCell)
+            {
+              side = u->Cell;
+            }
+          }
           for (int k = 0; k < 3; ++k)
           {
             vertices[3 * face + k] = ids[k];
@@ -504,6 +523,8 @@ void vtkHAVSFaceSet::Clear()
   this->Convex = false;
   this->NumberOfGhostCells = 0;
   this->FaceVertices.clear();
+  this->FaceCells.clear();
+  this->TetrahedronCells.clear();
   this->BoundaryFlags.clear();
   this->Centroids.clear();
   this->NumberOfBoundaryFaces = 0;
@@ -536,6 +557,11 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
   if (static_cast<uint64_t>(numberOfPoints) > std::numeric_limits<uint32_t>::max())
   {
     vtkErrorMacro("Build: " << numberOfPoints << " points do not fit 32-bit point ids.");
+    return false;
+  }
+  if (static_cast<uint64_t>(grid->GetNumberOfCells()) >= std::numeric_limits<uint32_t>::max())
+  {
+    vtkErrorMacro("Build: " << grid->GetNumberOfCells() << " cells do not fit 32-bit cell ids.");
     return false;
   }
 
@@ -594,6 +620,7 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
   this->FaceVertices.resize(3 * numberOfFaces);
   this->BoundaryFlags.resize(numberOfFaces);
   this->Centroids.resize(3 * numberOfFaces);
+  this->FaceCells.resize(2 * numberOfFaces);
 
   double bounds[6];
   points->GetBounds(bounds);
@@ -603,13 +630,15 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
   }
 
   WriteFaces(buckets, faceStart, coordinates, this->CentroidOrigin, this->FaceVertices,
-    this->BoundaryFlags, this->Centroids);
+    this->BoundaryFlags, this->Centroids, this->FaceCells);
 
   this->Tetrahedra.reserve(4 * static_cast<size_t>(cells.Used));
+  this->TetrahedronCells.reserve(static_cast<size_t>(cells.Used));
   for (size_t c = 0; c < table.Status.size(); ++c)
   {
     if (table.Status[c] == UsedTetrahedron)
     {
+      this->TetrahedronCells.push_back(static_cast<uint32_t>(c));
       this->Tetrahedra.insert(
         this->Tetrahedra.end(), table.PointIds.begin() + 4 * c, table.PointIds.begin() + 4 * c + 4);
     }

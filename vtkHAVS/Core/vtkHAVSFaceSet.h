@@ -88,6 +88,20 @@ public:
 
   /// Four point ids per used tetrahedron (skipped and degenerate cells left out).
   const std::vector<uint32_t>& GetTetrahedra() const { return this->Tetrahedra; }
+  /// The grid's cell id of each used tetrahedron.
+  const std::vector<uint32_t>& GetTetrahedronCells() const { return this->TetrahedronCells; }
+
+  /// No cell on that side of a face (the outside of a boundary face).
+  static constexpr uint32_t NoCell = 0xFFFFFFFFu;
+  /**
+   * Two grid cell ids per face: the cell on the side its winding's normal
+   * (p1 - p0) x (p2 - p0) points to, then the cell on the other side; NoCell
+   * where there is none (a boundary face's first entry: its normal points
+   * out). A fragment of a face seen from the normal's side lies in front of
+   * the second cell; seen from the other side, in front of the first. Cell
+   * scalars are carried by these.
+   */
+  const std::vector<uint32_t>& GetFaceCells() const { return this->FaceCells; }
 
   /// Per point of the grid (numberOfPoints), 1 where a used tetrahedron has it, else 0.
   std::vector<uint8_t> GetPointUse(vtkIdType numberOfPoints) const;
@@ -124,6 +138,8 @@ private:
   std::vector<uint8_t> BoundaryFlags;
   std::vector<float> Centroids;
   std::vector<uint32_t> Tetrahedra;
+  std::vector<uint32_t> TetrahedronCells;
+  std::vector<uint32_t> FaceCells;
   bool Convex = false;
   vtkIdType NumberOfBoundaryFaces = 0;
   vtkIdType NumberOfNonManifoldFaces = 0;

@@ -119,6 +119,15 @@ bool vtkHAVSFramePlanes::Update(
       this->SectionTriangles += this->Sectioner->Compute(mesh->GetFaceSet()->GetTetrahedra(),
         mesh->GetPoints(), mesh->GetScalars(), cut.PlaneModel.data(), section.Points,
         section.Scalars, &section.Cells);
+      if (mesh->HasCellScalars())
+      {
+        // A section triangle lies in one tetrahedron: its cell's value.
+        const std::vector<float>& cellValues = mesh->GetTetrahedronScalars();
+        for (size_t t = 0; t < section.Cells.size(); ++t)
+        {
+          std::fill_n(&section.Scalars[3 * t], 3, cellValues[section.Cells[t]]);
+        }
+      }
       this->Sections.push_back(std::move(section));
     }
     this->SectionSeconds = vtkTimerLog::GetUniversalTime() - start;

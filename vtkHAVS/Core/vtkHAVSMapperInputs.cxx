@@ -17,6 +17,8 @@
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkAlgorithm.h"
+#include "vtkInformation.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
@@ -48,10 +50,20 @@ bool IsConstantOne(vtkPiecewiseFunction* f)
 }
 
 //------------------------------------------------------------------------------
+int vtkHAVSMapperInputs::FillInputPortInformation(vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 vtkHAVSMapperInputs::MeshState vtkHAVSMapperInputs::PrepareMesh(vtkAbstractVolumeMapper* mapper,
-  vtkVolume* volume, vtkHAVSMesh* mesh, const char* mapperName, const WarnOnce& warnOnce)
+  vtkVolume* volume, vtkHAVSMesh* mesh, const char* mapperName, const WarnOnce& warnOnce,
+  int vectorMode, int vectorComponent)
 {
   vtkHAVSMesh::ScalarSelection selection;
+  selection.VectorMode = vectorMode;
+  selection.VectorComponent = vectorComponent;
   selection.Mode = mapper->GetScalarMode();
   selection.AccessMode = mapper->GetArrayAccessMode();
   selection.Id = mapper->GetArrayId();
@@ -78,12 +90,13 @@ vtkHAVSMapperInputs::MeshState vtkHAVSMapperInputs::PrepareMesh(vtkAbstractVolum
     return MeshFailed;
   }
   const int components = mesh->GetNumberOfComponents();
-  if (components > 1)
+  if (components > 1 && vectorMode == vtkHAVSMesh::VectorModeDisabled)
   {
     warnOnce(WarnComponents,
       "The scalars have " + std::to_string(components) + " components" +
         (volume->GetProperty()->GetIndependentComponents() ? " (independent)" : " (dependent)") +
-        "; " + mapperName + " renders the first one only.");
+        "; " + mapperName +
+        " renders the first one only (SetVectorMode: the magnitude or another component).");
   }
   return MeshRebuilt;
 }

@@ -32,6 +32,7 @@ class vtkFloatArray;
 class vtkObject;
 class vtkHAVSMesh;
 class vtkHAVSPreIntegrationTable;
+class vtkInformation;
 class vtkRenderer;
 class vtkVolume;
 
@@ -66,7 +67,11 @@ public:
    * vtkHAVSMesh says; `mapperName` names the mapper in the messages.
    */
   static MeshState PrepareMesh(vtkAbstractVolumeMapper* mapper, vtkVolume* volume,
-    vtkHAVSMesh* mesh, const char* mapperName, const WarnOnce& warnOnce);
+    vtkHAVSMesh* mesh, const char* mapperName, const WarnOnce& warnOnce, int vectorMode = -1,
+    int vectorComponent = 0);
+
+  /// Marks `info` as taking any vtkDataSet (the mappers split what is not tetrahedra).
+  static int FillInputPortInformation(vtkInformation* info);
 
   /**
    * (Re)builds `table` for the volume's property when it, the scalar range,

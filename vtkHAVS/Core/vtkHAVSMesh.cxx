@@ -10,10 +10,14 @@
 #include "vtkHAVSMesh.h"
 
 #include "vtkAbstractMapper.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDataSet.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkSMPTools.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -65,6 +69,82 @@ bool vtkHAVSMesh::Fail(const std::string& why)
 }
 
 //------------------------------------------------------------------------------
+double vtkHAVSMesh::ScalarOf(vtkDataArray* array, vtkIdType i) const
+{
+  const int components = array->GetNumberOfComponents();
+  if (this->VectorMode == VectorModeMagnitude && components > 1)
+  {
+    double sum = 0.0;
+    for (int c = 0; c < components; ++c)
+    {
+      const double v = array->GetComponent(i, c);
+      sum += v * v;
+    }
+    return std::sqrt(sum);
+  }
+  const int c = this->VectorMode == VectorModeComponent
+    ? std::min(std::max(this->VectorComponent, 0), components - 1)
+    : 0;
+  return array->GetComponent(i, c);
+}
+
+//------------------------------------------------------------------------------
+vtkUnstructuredGrid* vtkHAVSMesh::GetGrid()
+{
+  return this->Grid;
+}
+
+//------------------------------------------------------------------------------
+const std::vector<float>& vtkHAVSMesh::GetVertexPoints() const
+{
+  return this->CellScalars ? this->FaceVertexPoints : this->Points;
+}
+
+//------------------------------------------------------------------------------
+const std::vector<float>& vtkHAVSMesh::GetVertexScalars() const
+{
+  return this->CellScalars ? this->FaceVertexScalars : this->Scalars;
+}
+
+//------------------------------------------------------------------------------
+const std::vector<uint32_t>& vtkHAVSMesh::GetFaceVertexIds() const
+{
+  return this->CellScalars ? this->FaceVertexIds : this->Faces->GetFaceVertices();
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSMesh::BuildCellScalarVertices(const std::vector<float>& cellValues)
+{
+  const std::vector<uint32_t>& faces = this->Faces->GetFaceVertices();
+  const std::vector<uint32_t>& sides = this->Faces->GetFaceCells();
+  const vtkIdType numberOfFaces = this->Faces->GetNumberOfFaces();
+  this->FaceVertexPoints.resize(9 * static_cast<size_t>(numberOfFaces));
+  this->FaceVertexScalars.resize(6 * static_cast<size_t>(numberOfFaces));
+  this->FaceVertexIds.resize(3 * static_cast<size_t>(numberOfFaces));
+  vtkSMPTools::For(0, numberOfFaces,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        // A boundary face has one cell: its value on both sides (the side
+        // outside is never composited; the extremum blends see the cell).
+        const uint32_t front = sides[2 * f], back = sides[2 * f + 1];
+        const float normalSide = cellValues[front != vtkHAVSFaceSet::NoCell ? front : back];
+        const float otherSide = cellValues[back != vtkHAVSFaceSet::NoCell ? back : front];
+        for (int v = 0; v < 3; ++v)
+        {
+          const size_t vertex = 3 * static_cast<size_t>(f) + v;
+          std::copy_n(&this->Points[3 * static_cast<size_t>(faces[vertex])], 3,
+            &this->FaceVertexPoints[3 * vertex]);
+          this->FaceVertexScalars[2 * vertex] = normalSide;
+          this->FaceVertexScalars[2 * vertex + 1] = otherSide;
+          this->FaceVertexIds[vertex] = static_cast<uint32_t>(vertex);
+        }
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
 bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   const std::function<void(double)>& progress)
 {
@@ -75,6 +155,14 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   this->Valid = false;
   this->Error.clear();
   this->Warnings.clear();
+  this->Grid = nullptr;
+  this->CellScalars = false;
+  this->TetrahedronScalars.clear();
+  this->FaceVertexPoints.clear();
+  this->FaceVertexScalars.clear();
+  this->FaceVertexIds.clear();
+  this->VectorMode = selection.VectorMode;
+  this->VectorComponent = selection.VectorComponent;
   auto report = [&](double p)
   {
     if (progress)
@@ -87,22 +175,23 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   {
     return this->Fail("No input.");
   }
-  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(input);
-  if (!grid)
+  vtkDataSet* data = vtkDataSet::SafeDownCast(input);
+  if (!data)
   {
     return this->Fail(std::string("The input is a ") + input->GetClassName() +
-      "; vtkHAVSVolumeMapper needs a vtkUnstructuredGrid.");
+      "; the vtkHAVS mappers need a vtkDataSet (an unstructured grid, or a structured, "
+      "rectilinear or image grid).");
   }
-  if (grid->GetNumberOfPoints() == 0 || grid->GetNumberOfCells() == 0)
+  if (data->GetNumberOfPoints() == 0 || data->GetNumberOfCells() == 0)
   {
     std::ostringstream why;
-    why << "The input grid is empty (" << grid->GetNumberOfPoints() << " points, "
-        << grid->GetNumberOfCells() << " cells).";
+    why << "The input grid is empty (" << data->GetNumberOfPoints() << " points, "
+        << data->GetNumberOfCells() << " cells).";
     return this->Fail(why.str());
   }
 
   int cellFlag = -1;
-  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(grid, selection.Mode, selection.AccessMode,
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(data, selection.Mode, selection.AccessMode,
     selection.Id, selection.Name.empty() ? nullptr : selection.Name.c_str(), cellFlag);
   if (!scalars)
   {
@@ -111,14 +200,48 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
         << (selection.Name.empty() ? "" : ", array " + selection.Name) << ").";
     return this->Fail(why.str());
   }
-  if (cellFlag != 0)
+  if (cellFlag == 2)
   {
-    return this->Fail("Cell scalars are not supported by vtkHAVSVolumeMapper yet; use point "
-                      "scalars (e.g. vtkCellDataToPointData).");
+    return this->Fail("Field-data scalars cannot be rendered: use point or cell data.");
   }
+  const bool cellData = cellFlag == 1;
+  const std::string arrayName = scalars->GetName() ? scalars->GetName() : "";
 
+  // The cells as tetrahedra.
   report(0.0);
-  if (!this->Faces->Build(grid))
+  this->Grid = vtkHAVSTetrahedralizer::Tetrahedralize(data, &this->Tessellation);
+  if (!this->Grid || this->Grid->GetNumberOfCells() == 0)
+  {
+    std::ostringstream why;
+    why << "No 3D cells to render in the input (" << this->Tessellation.LowerDimensionCells
+        << " of its " << this->Tessellation.InputCells << " cells are vertices, lines or polygons).";
+    return this->Fail(why.str());
+  }
+  if (this->Tessellation.LowerDimensionCells > 0)
+  {
+    std::ostringstream w;
+    w << this->Tessellation.LowerDimensionCells
+      << " cells that are not 3D (vertices, lines, polygons) were skipped.";
+    this->Warnings.push_back(w.str());
+  }
+  if (this->Tessellation.Tessellated)
+  {
+    // The split grid carries the arrays under the same names and positions.
+    scalars = cellData ? this->Grid->GetCellData()->GetArray(arrayName.c_str())
+                       : this->Grid->GetPointData()->GetArray(arrayName.c_str());
+    if (!scalars)
+    {
+      int flag = -1;
+      scalars = vtkAbstractMapper::GetScalars(this->Grid, selection.Mode, selection.AccessMode,
+        selection.Id, selection.Name.empty() ? nullptr : selection.Name.c_str(), flag);
+      if (!scalars || flag != cellFlag)
+      {
+        return this->Fail("The scalars were lost splitting the cells into tetrahedra.");
+      }
+    }
+  }
+  report(0.2);
+  if (!this->Faces->Build(this->Grid))
   {
     return this->Fail("No tetrahedra to render in the input.");
   }
@@ -126,9 +249,8 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   if (this->Faces->GetNumberOfSkippedCells() > 0)
   {
     std::ostringstream w;
-    w << this->Faces->GetNumberOfSkippedCells()
-      << " cells that are not tetrahedra were skipped (tetrahedralize the input, e.g. with "
-         "vtkDataSetTriangleFilter).";
+    w << this->Faces->GetNumberOfSkippedCells() << " cells could not be split into tetrahedra "
+      << "and were skipped.";
     this->Warnings.push_back(w.str());
   }
   if (this->Faces->GetNumberOfDegenerateTetrahedra() > 0)
@@ -147,11 +269,31 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
     this->Warnings.push_back(w.str());
   }
 
-  // Independent components are rendered from the first one.
+  // The scalar rendered: the property's component 0 colours it.
   this->NumberOfComponents = scalars->GetNumberOfComponents();
   this->Component = 0;
+  {
+    std::ostringstream d;
+    d << (cellData ? "cell" : "point") << " array '" << arrayName << "'";
+    if (this->NumberOfComponents > 1)
+    {
+      if (this->VectorMode == VectorModeMagnitude)
+      {
+        d << ", the magnitude of its " << this->NumberOfComponents << " components";
+      }
+      else
+      {
+        const int c = this->VectorMode == VectorModeComponent
+          ? std::min(std::max(this->VectorComponent, 0), this->NumberOfComponents - 1)
+          : 0;
+        d << ", component " << c << " of " << this->NumberOfComponents;
+      }
+    }
+    this->ScalarDescription = d.str();
+  }
 
   // Points, shifted by the bounds' centre so that floats keep their precision.
+  vtkUnstructuredGrid* grid = this->Grid;
   const vtkIdType numPoints = grid->GetNumberOfPoints();
   double bounds[6];
   grid->GetPoints()->GetBounds(bounds);
@@ -185,22 +327,38 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
     return this->Fail(why.str());
   }
 
-  // Scalars mapped to [0, 1] over the finite range of the points the cells
-  // use (an unused point's value changes nothing); NaN/Inf replaced.
-  const std::vector<uint8_t> used = this->Faces->GetPointUse(numPoints);
+  // Scalars mapped to [0, 1] over the finite range of the values the used
+  // cells see (an unused point's or dropped cell's value changes nothing);
+  // NaN/Inf replaced.
+  const std::vector<uint32_t>& tetCells = this->Faces->GetTetrahedronCells();
+  std::vector<uint8_t> used;
+  const vtkIdType numValues = cellData ? grid->GetNumberOfCells() : numPoints;
+  if (cellData)
+  {
+    used.assign(static_cast<size_t>(numValues), 0);
+    for (uint32_t c : tetCells)
+    {
+      used[c] = 1;
+    }
+  }
+  else
+  {
+    used = this->Faces->GetPointUse(numPoints);
+  }
+  std::vector<double> values(static_cast<size_t>(numValues));
   double range[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest() };
   vtkIdType nonFinite = 0;
-  for (vtkIdType p = 0; p < numPoints; ++p)
+  for (vtkIdType i = 0; i < numValues; ++i)
   {
-    if (!used[p])
+    values[i] = this->ScalarOf(scalars, i);
+    if (!used[i])
     {
       continue;
     }
-    const double s = scalars->GetComponent(p, this->Component);
-    if (std::isfinite(s))
+    if (std::isfinite(values[i]))
     {
-      range[0] = std::min(range[0], s);
-      range[1] = std::max(range[1], s);
+      range[0] = std::min(range[0], values[i]);
+      range[1] = std::max(range[1], values[i]);
     }
     else
     {
@@ -221,15 +379,31 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   this->ScalarRange[0] = range[0];
   this->ScalarRange[1] = range[1];
   const double span = range[1] - range[0];
-  this->Scalars.resize(numPoints);
-  for (vtkIdType p = 0; p < numPoints; ++p)
+  std::vector<float> normalized(static_cast<size_t>(numValues));
+  for (vtkIdType i = 0; i < numValues; ++i)
   {
-    double s = scalars->GetComponent(p, this->Component);
-    if (!std::isfinite(s))
+    const double s = std::isfinite(values[i]) ? values[i] : range[0];
+    normalized[i] = span > 0.0 ? static_cast<float>((s - range[0]) / span) : 0.0f;
+  }
+  if (cellData)
+  {
+    this->CellScalars = true;
+    this->TetrahedronScalars.resize(tetCells.size());
+    this->Scalars.assign(static_cast<size_t>(numPoints), 0.0f);
+    const std::vector<uint32_t>& tets = this->Faces->GetTetrahedra();
+    for (size_t t = 0; t < tetCells.size(); ++t)
     {
-      s = range[0];
+      this->TetrahedronScalars[t] = normalized[tetCells[t]];
+      for (int v = 0; v < 4; ++v)
+      {
+        this->Scalars[tets[4 * t + v]] = this->TetrahedronScalars[t];
+      }
     }
-    this->Scalars[p] = span > 0.0 ? static_cast<float>((s - range[0]) / span) : 0.0f;
+    this->BuildCellScalarVertices(normalized);
+  }
+  else
+  {
+    this->Scalars = std::move(normalized);
   }
   report(1.0);
   this->Valid = true;
@@ -247,6 +421,10 @@ void vtkHAVSMesh::PrintSelf(ostream& os, vtkIndent indent)
      << " boundary)\n";
   os << indent << "Shift: " << this->Shift[0] << " " << this->Shift[1] << " " << this->Shift[2]
      << "\n";
-  os << indent << "ScalarRange: " << this->ScalarRange[0] << " " << this->ScalarRange[1]
-     << " (component " << this->Component << " of " << this->NumberOfComponents << ")\n";
+  os << indent << "ScalarRange: " << this->ScalarRange[0] << " " << this->ScalarRange[1] << " ("
+     << this->ScalarDescription << ")\n";
+  os << indent << "Tessellated: " << this->Tessellation.Tessellated << " ("
+     << this->Tessellation.SplitCells << " cells split into "
+     << this->Tessellation.OutputTetrahedra << " tetrahedra, "
+     << this->Tessellation.LowerDimensionCells << " lower-dimensional cells left out)\n";
 }

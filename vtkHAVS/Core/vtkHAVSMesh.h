@@ -13,28 +13,42 @@
  *
  * Plain C++, no OpenGL. Built from the mapper's input and scalar selection
  * only when they change (not for a new camera, k, table or clipping plane):
+ * - the input as tetrahedra (vtkHAVSTetrahedralizer: any vtkDataSet; cells
+ *   that are not tetrahedra split consistently across shared faces);
  * - the unique triangular faces of the tetrahedra (vtkHAVSFaceSet: boundary
- *   faces wound outward, degenerate cells dropped, other cells skipped);
+ *   faces wound outward, degenerate cells dropped);
  * - the points minus the bounds' centre (the shift), as floats, so that far
  *   from the origin the GPU keeps float precision;
- * - the scalars of the selected component mapped to [0, 1] over their finite
- *   range, NaN and infinite values replaced by the lowest finite one.
+ * - the scalars (point or cell data; one component, or the magnitude, as
+ *   the vector mode says) mapped to [0, 1] over their finite range, NaN and
+ *   infinite values replaced by the lowest finite one.
+ * Point scalars are drawn at the shared points, interpolated across faces.
+ * Cell scalars are constant in each cell: a segment lies in one cell, so a
+ * fragment carries the value of the cell behind it. Each face is then drawn
+ * with vertices of its own carrying two values (the cell on its normal's side,
+ * the cell on the other), and the fragment picks one by its facing
+ * (GetVertexScalarComponents() is 2).
  * Build() says why when nothing can be rendered (GetError()) and what it
  * changed or left out (GetWarnings()); the mapper reports both.
  */
 #ifndef vtkHAVSMesh_h
 #define vtkHAVSMesh_h
 
-#include "vtkHAVSCoreModule.h" // For export macro
-#include "vtkNew.h"            // For vtkNew
+#include "vtkHAVSCoreModule.h"      // For export macro
+#include "vtkHAVSTetrahedralizer.h" // For vtkHAVSTetrahedralizer::Report
+#include "vtkNew.h"                 // For vtkNew
 #include "vtkObject.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
 
+#include <cstdint>    // For uint32_t
 #include <functional> // For std::function
 #include <string>     // For std::string
 #include <vector>     // For std::vector
 
+class vtkDataArray;
 class vtkDataObject;
 class vtkHAVSFaceSet;
+class vtkUnstructuredGrid;
 
 class VTKHAVSCORE_EXPORT vtkHAVSMesh : public vtkObject
 {
@@ -43,17 +57,28 @@ public:
   vtkTypeMacro(vtkHAVSMesh, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Which scalars: vtkAbstractMapper's scalar mode, array access, id, name.
+  /// How a multi-component array becomes one scalar (as vtkSmartVolumeMapper's VectorModeType).
+  enum VectorModes
+  {
+    VectorModeDisabled = -1, ///< the first component
+    VectorModeMagnitude = 0, ///< the Euclidean norm of the components
+    VectorModeComponent = 1  ///< the component VectorComponent
+  };
+
+  /// Which scalars: vtkAbstractMapper's scalar mode, array access, id, name; the vector mode.
   struct ScalarSelection
   {
     int Mode = 0;
     int AccessMode = 0;
     int Id = -1;
     std::string Name;
+    int VectorMode = VectorModeDisabled;
+    int VectorComponent = 0;
     bool operator==(const ScalarSelection& o) const
     {
       return this->Mode == o.Mode && this->AccessMode == o.AccessMode && this->Id == o.Id &&
-        this->Name == o.Name;
+        this->Name == o.Name && this->VectorMode == o.VectorMode &&
+        this->VectorComponent == o.VectorComponent;
     }
   };
 
@@ -78,18 +103,54 @@ public:
   const std::vector<std::string>& GetWarnings() const { return this->Warnings; }
 
   vtkHAVSFaceSet* GetFaceSet() { return this->Faces; }
+  /// The tetrahedral grid the faces were built from (the input when it was one).
+  vtkUnstructuredGrid* GetGrid();
+  /// What the tetrahedralization did (Tessellated false: the input was used).
+  const vtkHAVSTetrahedralizer::Report& GetTessellation() const { return this->Tessellation; }
   /// Three floats per point: grid coordinates minus GetShift().
   const std::vector<float>& GetPoints() const { return this->Points; }
-  /// One per point, in [0, 1] over GetScalarRange().
+  /**
+   * One per point, in [0, 1] over GetScalarRange(). With cell scalars, each
+   * point's value is that of one cell using it: only for what needs a value
+   * per point and cannot see the cell (nothing that draws does).
+   */
   const std::vector<float>& GetScalars() const { return this->Scalars; }
+
+  ///@{
+  /**
+   * Cell scalars: whether the scalars are the cells'; then one value per used
+   * tetrahedron (the faces' GetTetrahedra() order), in [0, 1].
+   */
+  bool HasCellScalars() const { return this->CellScalars; }
+  const std::vector<float>& GetTetrahedronScalars() const { return this->TetrahedronScalars; }
+  ///@}
+
+  ///@{
+  /**
+   * What the face passes draw: vertices (3 floats each, as GetPoints()), their
+   * scalars (GetVertexScalarComponents() floats each) and the faces as 3
+   * vertex ids each, in face order. Point scalars: the points, their scalars,
+   * the faces' point ids (1 component). Cell scalars: 3 vertices of its own
+   * per face, each with (the value of the cell on the face's normal side, that
+   * of the cell on the other side); a boundary face has its one cell's value
+   * on both (2 components).
+   */
+  const std::vector<float>& GetVertexPoints() const;
+  const std::vector<float>& GetVertexScalars() const;
+  const std::vector<uint32_t>& GetFaceVertexIds() const;
+  int GetVertexScalarComponents() const { return this->CellScalars ? 2 : 1; }
+  ///@}
   const double* GetShift() const { return this->Shift; }
   /// The points' bounds in model coordinates (shifted).
   const double* GetBounds() const { return this->Bounds; }
   /// The finite range of the scalars rendered.
   const double* GetScalarRange() const { return this->ScalarRange; }
-  /// The component rendered, and how many the array has.
+  /// The property component whose functions colour the scalars (always 0), and how many
+  /// components the array has.
   int GetComponent() const { return this->Component; }
   int GetNumberOfComponents() const { return this->NumberOfComponents; }
+  /// How the array's components became the scalar rendered: a text for messages.
+  const std::string& GetScalarDescription() const { return this->ScalarDescription; }
 
 protected:
   vtkHAVSMesh();
@@ -100,10 +161,24 @@ private:
   void operator=(const vtkHAVSMesh&) = delete;
 
   bool Fail(const std::string& why);
+  /// The selected scalar of tuple i (component or magnitude).
+  double ScalarOf(vtkDataArray* array, vtkIdType i) const;
+  /// The per-face vertices of cell scalars (GetVertexPoints() and the rest).
+  void BuildCellScalarVertices(const std::vector<float>& cellValues);
 
   vtkNew<vtkHAVSFaceSet> Faces;
+  vtkSmartPointer<vtkUnstructuredGrid> Grid;
+  vtkHAVSTetrahedralizer::Report Tessellation;
   std::vector<float> Points;
   std::vector<float> Scalars;
+  bool CellScalars = false;
+  std::vector<float> TetrahedronScalars;
+  std::vector<float> FaceVertexPoints;  // cell scalars: 9 floats per face
+  std::vector<float> FaceVertexScalars; // cell scalars: 6 floats per face
+  std::vector<uint32_t> FaceVertexIds;  // cell scalars: 3f, 3f + 1, 3f + 2
+  std::string ScalarDescription;
+  int VectorMode = VectorModeDisabled;
+  int VectorComponent = 0;
   double Shift[3] = { 0, 0, 0 };
   double Bounds[6] = { 0, 0, 0, 0, 0, 0 };
   double ScalarRange[2] = { 0, 1 };

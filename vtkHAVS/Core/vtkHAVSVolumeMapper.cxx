@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSVolumeMapper.h"
 
+#include "vtkInformation.h"
+
 #include "vtkHAVSFaceOrderPolicy.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFaceSorter.h"
@@ -124,10 +126,18 @@ void vtkHAVSVolumeMapper::WarnOnce(int which, const std::string& message)
 }
 
 //------------------------------------------------------------------------------
+int vtkHAVSVolumeMapper::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
+{
+  return vtkHAVSMapperInputs::FillInputPortInformation(info);
+}
+
+//------------------------------------------------------------------------------
 bool vtkHAVSVolumeMapper::PrepareMesh(vtkVolume* volume)
 {
-  const auto state = vtkHAVSMapperInputs::PrepareMesh(this, volume, this->Mesh,
-    "vtkHAVSVolumeMapper", [this](int which, const std::string& m) { this->WarnOnce(which, m); });
+  const auto state = vtkHAVSMapperInputs::PrepareMesh(
+    this, volume, this->Mesh, "vtkHAVSVolumeMapper",
+    [this](int which, const std::string& m) { this->WarnOnce(which, m); }, this->VectorMode,
+    this->VectorComponent);
   if (state != vtkHAVSMapperInputs::MeshUnchanged)
   {
     this->FaceOrder->Invalidate();
@@ -164,6 +174,7 @@ vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
   r.K = k;
   r.BlendMode = this->BlendMode;
   r.TerminationOpacity = static_cast<float>(this->EarlyRayTerminationOpacity);
+  r.CellScalars = this->Mesh->HasCellScalars();
   r.Tagging = this->BoundaryMode == BoundaryTagging ||
     (this->BoundaryMode == BoundaryAutomatic && !this->Mesh->GetFaceSet()->IsConvex());
   r.GapLength = this->BoundaryMode == BoundaryGapLength
@@ -252,7 +263,7 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->FaceOrder->SetNonConvexMethod(this->NonConvexMethod);
   vtkHAVSFaceOrderPolicy::Plan plan =
     this->FaceOrder->Begin(this->Mesh, k, path, composite, !this->FaceRasterBoundMode);
-  auto* grid = vtkUnstructuredGrid::SafeDownCast(this->GetInput());
+  vtkUnstructuredGrid* grid = this->Mesh->GetGrid();
   FrameResult result;
   for (;;)
   {
@@ -414,6 +425,8 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
   os << indent << "FaceRasterBoundMode: " << this->FaceRasterBoundMode << "\n";
+  os << indent << "VectorMode: " << this->VectorMode << " (component " << this->VectorComponent
+     << ")\n";
   const char* orders[] = { "Centroid", "MPVO", "Automatic" };
   const char* methods[] = { "Ignore", "BoundaryLayers", "Convexification" };
   os << indent << "VisibilityOrder: " << orders[this->VisibilityOrder] << "\n";

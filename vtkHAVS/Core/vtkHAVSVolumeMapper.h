@@ -286,6 +286,19 @@ public:
 
   ///@{
   /**
+   * How a multi-component array becomes the scalar rendered, as
+   * vtkSmartVolumeMapper::SetVectorMode: -1 (the default) the first component,
+   * 0 the magnitude, 1 the component VectorComponent. The property's first
+   * component's transfer functions colour it.
+   */
+  vtkSetClampMacro(VectorMode, int, -1, 1);
+  vtkGetMacro(VectorMode, int);
+  vtkSetClampMacro(VectorComponent, int, 0, 3);
+  vtkGetMacro(VectorComponent, int);
+  ///@}
+
+  ///@{
+  /**
    * When on, each frame's premultiplied float RGBA result (before it is
    * blended into the window) is kept and can be read with GetFloatResult().
    */
@@ -373,6 +386,7 @@ public:
     int BlendMode = COMPOSITE_BLEND;
     float TerminationOpacity = 1.0f;
     bool Tagging = true;       ///< boundary fragments carry their entry/exit role
+    bool CellScalars = false;  ///< the scalars are the cells' (vtkHAVSMesh::HasCellScalars)
     bool Opaque = true;        ///< opaque geometry may be in the depth buffer (rays end there)
     float GapLength = 3.0e38f; ///< segments longer than this contribute nothing (3e38: off)
     bool Composite = true;     ///< composite the result over the window (else keep it)
@@ -400,6 +414,10 @@ public:
 protected:
   vtkHAVSVolumeMapper();
   ~vtkHAVSVolumeMapper() override;
+
+  /// Any vtkDataSet: cells that are not tetrahedra are split (vtkHAVSTetrahedralizer).
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
 
   ///@{
   /**
@@ -429,6 +447,8 @@ protected:
   int NonConvexMethod = 1; // vtkHAVSVisibilityOrder::NonConvexBoundaryLayers
   bool CountOrderViolations = false;
   bool PlaneSections = true;
+  int VectorMode = -1;
+  int VectorComponent = 0;
 
 private:
   vtkHAVSVolumeMapper(const vtkHAVSVolumeMapper&) = delete;

@@ -136,6 +136,12 @@ bool vtkHAVSGLFrameCapture::Write(
     error = "only composite frames of the framebuffer-fetch or interlock path are captured";
     return false;
   }
+  if (request.CellScalars)
+  {
+    error = "frames of cell scalars are not captured (the stand-alone program reads one scalar "
+            "per vertex)";
+    return false;
+  }
   if (request.Opaque || context.Mesh->HasSections() || request.CountViolations)
   {
     error = "frames with opaque geometry, plane sections or the violation counter are not "

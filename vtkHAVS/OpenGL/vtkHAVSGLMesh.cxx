@@ -22,9 +22,11 @@ vtkStandardNewMacro(vtkHAVSGLMesh);
 namespace
 {
 /// Fills the buffers of the bound vertex array that the face vertex shader
-/// reads: points (location 0, 3 floats each) and normalized scalars (location 1).
+/// reads: points (location 0, 3 floats each) and normalized scalars (location
+/// 1, `components` floats each).
 void UploadVertexAttributes(GLuint pointBuffer, GLuint scalarBuffer,
-  const std::vector<float>& points, const std::vector<float>& scalars, GLenum usage)
+  const std::vector<float>& points, const std::vector<float>& scalars, GLenum usage,
+  int components)
 {
   glBindBuffer(GL_ARRAY_BUFFER, pointBuffer);
   glBufferData(GL_ARRAY_BUFFER, points.size() * sizeof(float), points.data(), usage);
@@ -33,7 +35,7 @@ void UploadVertexAttributes(GLuint pointBuffer, GLuint scalarBuffer,
   glBindBuffer(GL_ARRAY_BUFFER, scalarBuffer);
   glBufferData(GL_ARRAY_BUFFER, scalars.size() * sizeof(float), scalars.data(), usage);
   glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glVertexAttribPointer(1, components, GL_FLOAT, GL_FALSE, 0, nullptr);
 }
 }
 
@@ -49,7 +51,7 @@ vtkHAVSGLMesh::~vtkHAVSGLMesh()
 
 //------------------------------------------------------------------------------
 void vtkHAVSGLMesh::UploadGeometry(
-  const std::vector<float>& points, const std::vector<float>& scalars)
+  const std::vector<float>& points, const std::vector<float>& scalars, int components)
 {
   if (!this->VertexArray)
   {
@@ -60,9 +62,11 @@ void vtkHAVSGLMesh::UploadGeometry(
   }
   this->Points = points;
   this->Scalars = scalars;
-  this->VertexCapacity = scalars.size();
+  this->Components = components;
+  this->VertexCapacity = points.size() / 3;
   glBindVertexArray(this->VertexArray);
-  UploadVertexAttributes(this->PointBuffer, this->ScalarBuffer, points, scalars, GL_STATIC_DRAW);
+  UploadVertexAttributes(
+    this->PointBuffer, this->ScalarBuffer, points, scalars, GL_STATIC_DRAW, components);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
@@ -78,7 +82,8 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
     return false;
   }
   const size_t faces = triangles.size() / 3;
-  const size_t numPoints = this->Scalars.size();
+  const size_t numPoints = this->Points.size() / 3;
+  const int nc = this->Components;
   size_t boundaryFaces = 0;
   if (tagged)
   {
@@ -93,7 +98,7 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
   if (boundaryFaces > 0)
   {
     // The boundary faces' own vertices, in draw order, after the points.
-    std::vector<float> points(9 * boundaryFaces), scalars(3 * boundaryFaces);
+    std::vector<float> points(9 * boundaryFaces), scalars(3 * nc * boundaryFaces);
     rewritten = triangles;
     uint32_t next = static_cast<uint32_t>(numPoints);
     size_t b = 0;
@@ -107,7 +112,10 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
       {
         const uint32_t p = triangles[3 * f + v];
         std::copy_n(&this->Points[3 * p], 3, &points[3 * b]);
-        scalars[b] = this->Scalars[p] + 2.0f;
+        for (int c = 0; c < nc; ++c)
+        {
+          scalars[nc * b + c] = this->Scalars[nc * p + c] + 2.0f;
+        }
         rewritten[3 * f + v] = next++;
       }
     }
@@ -117,17 +125,17 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
       // Grow once: the points again, room for the boundary vertices.
       std::vector<float> allPoints(this->Points), allScalars(this->Scalars);
       allPoints.resize(3 * vertices);
-      allScalars.resize(vertices);
+      allScalars.resize(nc * vertices);
       UploadVertexAttributes(
-        this->PointBuffer, this->ScalarBuffer, allPoints, allScalars, GL_DYNAMIC_DRAW);
+        this->PointBuffer, this->ScalarBuffer, allPoints, allScalars, GL_DYNAMIC_DRAW, nc);
       this->VertexCapacity = vertices;
     }
     glBindBuffer(GL_ARRAY_BUFFER, this->PointBuffer);
     glBufferSubData(
       GL_ARRAY_BUFFER, 3 * numPoints * sizeof(float), points.size() * sizeof(float), points.data());
     glBindBuffer(GL_ARRAY_BUFFER, this->ScalarBuffer);
-    glBufferSubData(
-      GL_ARRAY_BUFFER, numPoints * sizeof(float), scalars.size() * sizeof(float), scalars.data());
+    glBufferSubData(GL_ARRAY_BUFFER, nc * numPoints * sizeof(float), scalars.size() * sizeof(float),
+      scalars.data());
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     indices = &rewritten;
   }
@@ -152,9 +160,12 @@ void vtkHAVSGLMesh::UploadSections(const std::vector<vtkHAVSFramePlanes::Section
       continue;
     }
     this->SectionDraws.push_back(
-      { section.PlaneIndex, section.Entering, static_cast<GLint>(scalars.size()), count });
+      { section.PlaneIndex, section.Entering, static_cast<GLint>(points.size() / 3), count });
     points.insert(points.end(), section.Points.begin(), section.Points.end());
-    scalars.insert(scalars.end(), section.Scalars.begin(), section.Scalars.end());
+    for (float s : section.Scalars)
+    {
+      scalars.insert(scalars.end(), static_cast<size_t>(this->Components), s);
+    }
   }
   if (this->SectionDraws.empty())
   {
@@ -167,8 +178,8 @@ void vtkHAVSGLMesh::UploadSections(const std::vector<vtkHAVSFramePlanes::Section
     glGenBuffers(1, &this->SectionScalars);
   }
   glBindVertexArray(this->SectionArray);
-  UploadVertexAttributes(
-    this->SectionPoints, this->SectionScalars, points, scalars, GL_STREAM_DRAW);
+  UploadVertexAttributes(this->SectionPoints, this->SectionScalars, points, scalars,
+    GL_STREAM_DRAW, this->Components);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
@@ -187,9 +198,9 @@ void vtkHAVSGLMesh::ReadBack(
     }
     glBindBuffer(GL_COPY_READ_BUFFER, 0);
   };
-  const size_t vertices = std::max(this->VertexCapacity, this->Scalars.size());
+  const size_t vertices = std::max(this->VertexCapacity, this->Points.size() / 3);
   read(this->PointBuffer, points, 3 * vertices);
-  read(this->ScalarBuffer, scalars, vertices);
+  read(this->ScalarBuffer, scalars, this->Components * vertices);
   read(this->IndexBuffer, indices, static_cast<size_t>(this->IndexCount));
 }
 

@@ -46,8 +46,11 @@ public:
   void SetContext(vtkOpenGLRenderWindow* window) { this->Window = window; }
 
   /// Points (3 floats each, model coordinates) and normalized scalars (in
-  /// [0, 1]); kept on the host too, for the boundary vertices.
-  void UploadGeometry(const std::vector<float>& points, const std::vector<float>& scalars);
+  /// [0, 1], `components` per vertex: 1 for point scalars, 2 for the two cells
+  /// of a face's own vertices, vtkHAVSMesh::GetVertexScalars); kept on the
+  /// host too, for the boundary vertices. Sections get as many per vertex.
+  void UploadGeometry(
+    const std::vector<float>& points, const std::vector<float>& scalars, int components = 1);
   /**
    * The faces in draw order (3 point ids each) and their boundary flags. With
    * `tagged`, each boundary face is drawn with vertices of its own, appended
@@ -61,6 +64,8 @@ public:
   void UploadSections(const std::vector<vtkHAVSFramePlanes::Section>& sections);
 
   vtkIdType GetNumberOfFaces() const { return this->IndexCount / 3; }
+  /// Scalars per vertex (1 point scalars, 2 cell scalars).
+  int GetComponents() const { return this->Components; }
   /// Whether the next frames draw plane sections.
   bool HasSections() const { return !this->SectionDraws.empty(); }
 
@@ -99,6 +104,7 @@ private:
   std::vector<float> Points; // as uploaded, for the boundary vertices
   std::vector<float> Scalars;
   size_t VertexCapacity = 0; // vertices the point and scalar buffers hold
+  int Components = 1;        // scalars per vertex
 
   GLuint SectionArray = 0;
   GLuint SectionPoints = 0;

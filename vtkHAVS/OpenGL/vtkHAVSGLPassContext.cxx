@@ -59,6 +59,7 @@ vtkHAVSKBufferShaders::Features vtkHAVSGLPassContext::ShaderFeatures() const
   f.CountViolations = this->Request.CountViolations;
   f.Tagging = this->Request.Tagging;
   f.Opaque = this->Request.Opaque;
+  f.CellScalars = this->Request.CellScalars;
   return f;
 }
 
@@ -78,7 +79,8 @@ vtkShaderProgram* vtkHAVSGLPassContext::Program(
 
 vtkShaderProgram* vtkHAVSGLPassContext::FaceProgram(const std::string& fragmentShader)
 {
-  return this->Program(vtkHAVSKBufferShaders::FaceVertexShader(), fragmentShader);
+  return this->Program(
+    vtkHAVSKBufferShaders::FaceVertexShader(this->Request.CellScalars), fragmentShader);
 }
 
 vtkShaderProgram* vtkHAVSGLPassContext::QuadProgram(const std::string& fragmentShader)

@@ -48,7 +48,8 @@ std::string Compose(const char* templ, int k, int pixelStride,
   defines << "#define HAVS_K " << k << "\n#define HAVS_PIXEL_STRIDE " << pixelStride << "\n"
           << "#define HAVS_COUNT_VIOLATIONS " << (features.CountViolations ? 1 : 0) << "\n"
           << "#define HAVS_TAGGING " << (features.Tagging ? 1 : 0) << "\n"
-          << "#define HAVS_OPAQUE " << (features.Opaque ? 1 : 0) << "\n";
+          << "#define HAVS_OPAQUE " << (features.Opaque ? 1 : 0) << "\n"
+          << "#define HAVS_CELL_SCALARS " << (features.CellScalars ? 1 : 0) << "\n";
   Replace(source, "//HAVS::Defines", defines.str());
   Replace(source, "//HAVS::KBufferLib", vtkHAVSKBufferLib);
   return source;
@@ -66,9 +67,12 @@ std::string UnpackEntries(const std::string& pairPrefix, int k)
 }
 }
 
-std::string vtkHAVSKBufferShaders::FaceVertexShader()
+std::string vtkHAVSKBufferShaders::FaceVertexShader(bool cellScalars)
 {
-  return vtkHAVSFaceVS;
+  std::string source = vtkHAVSFaceVS;
+  Replace(source, "//HAVS::Defines",
+    std::string("#define HAVS_CELL_SCALARS ") + (cellScalars ? "1" : "0") + "\n");
+  return source;
 }
 
 std::string vtkHAVSKBufferShaders::QuadVertexShader()

@@ -34,6 +34,7 @@ struct vtkHAVSKBufferShaderFeatures
   bool CountViolations = true; ///< the order-violation counter and its tie tolerance (fwidth)
   bool Tagging = true;         ///< boundary fragments carry their role (a per-fragment fetch)
   bool Opaque = true;          ///< opaque geometry may end the rays (a per-fragment depth fetch)
+  bool CellScalars = false;    ///< a fragment carries the scalar of the cell behind it
 };
 
 class VTKHAVSOPENGL_EXPORT vtkHAVSKBufferShaders
@@ -51,8 +52,8 @@ public:
   /// What a k-buffer shader compiles in (vtkHAVSKBufferShaderFeatures).
   using Features = vtkHAVSKBufferShaderFeatures;
 
-  /// Vertex shader of the passes that rasterize the faces.
-  static std::string FaceVertexShader();
+  /// Vertex shader of the passes that rasterize the faces (point or cell scalars).
+  static std::string FaceVertexShader(bool cellScalars = false);
   /// Vertex shader of the full-viewport passes.
   static std::string QuadVertexShader();
 

@@ -163,7 +163,8 @@ bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request)
   vtkHAVSMesh* mesh = request.Mesh;
   if (this->Uploaded.Geometry != mesh->GetBuildTime())
   {
-    this->GLMesh->UploadGeometry(mesh->GetPoints(), mesh->GetScalars());
+    this->GLMesh->UploadGeometry(
+      mesh->GetVertexPoints(), mesh->GetVertexScalars(), mesh->GetVertexScalarComponents());
     this->Uploaded.Geometry = mesh->GetBuildTime();
     this->Uploaded.Order = 0;
   }

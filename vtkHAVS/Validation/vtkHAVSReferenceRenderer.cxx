@@ -11,10 +11,12 @@
 
 #include "vtkHAVSFaceRasterizer.h"
 #include "vtkHAVSFaceSet.h"
+#include "vtkHAVSTetrahedralizer.h"
 #include "vtkHAVSPlaneSection.h"
 #include "vtkHAVSPreIntegrationTable.h"
 
 #include "vtkCamera.h"
+#include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -49,9 +51,10 @@ vtkHAVSReferenceRenderer::vtkHAVSReferenceRenderer()
 
 vtkHAVSReferenceRenderer::~vtkHAVSReferenceRenderer() = default;
 
-void vtkHAVSReferenceRenderer::SetInputData(vtkUnstructuredGrid* grid)
+void vtkHAVSReferenceRenderer::SetInputData(vtkDataSet* grid)
 {
-  this->Input = grid;
+  this->Source = grid;
+  this->Input = nullptr; // split at the next ComputeFragments
   this->Modified();
 }
 
@@ -110,30 +113,34 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
 {
   this->Fragments.clear();
   this->PixelStart.assign(1, 0);
-  if (!this->Input || !this->Camera || this->Size[0] <= 0 || this->Size[1] <= 0)
+  if (!this->Source || !this->Camera || this->Size[0] <= 0 || this->Size[1] <= 0)
   {
     vtkErrorMacro("Needs an input grid, a camera and a positive size.");
     return false;
   }
-  vtkDataArray* scalars = this->Input->GetPointData()->GetScalars();
+  if (!this->Input || this->Input->GetMTime() < this->Source->GetMTime())
+  {
+    this->Input = vtkHAVSTetrahedralizer::Tetrahedralize(this->Source, nullptr);
+  }
+  vtkDataArray* pointScalars = this->Input->GetPointData()->GetScalars();
+  vtkDataArray* cellScalars = this->Input->GetCellData()->GetScalars();
+  this->CellScalarsUsed = cellScalars && (this->UseCellScalars || !pointScalars);
+  vtkDataArray* scalars = this->CellScalarsUsed ? cellScalars : pointScalars;
   if (!scalars)
   {
-    vtkErrorMacro("The input has no point scalars.");
+    vtkErrorMacro("The input has no point or cell scalars.");
     return false;
   }
   if (!this->Faces->Build(this->Input))
   {
     return false;
   }
+  const bool cellData = this->CellScalarsUsed;
   this->ReportProgress(0.0);
 
   // World-space points and finite scalars (NaN/Inf -> the lowest finite value).
   const vtkIdType numPoints = this->Input->GetNumberOfPoints();
   std::vector<double> world(3 * numPoints);
-  std::vector<double> values(numPoints);
-  // The scalar range over the points the cells use, as the mappers take it.
-  const std::vector<uint8_t> used = this->Faces->GetPointUse(numPoints);
-  double range[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest() };
   for (vtkIdType p = 0; p < numPoints; ++p)
   {
     double x[4] = { 0, 0, 0, 1 }, y[4];
@@ -143,6 +150,26 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
     {
       world[3 * p + k] = y[k] / y[3];
     }
+  }
+  // The scalar range over the points (cells) the used cells have, as the mappers take it.
+  const vtkIdType numValues = cellData ? this->Input->GetNumberOfCells() : numPoints;
+  std::vector<double> values(static_cast<size_t>(numValues));
+  std::vector<uint8_t> used;
+  if (cellData)
+  {
+    used.assign(static_cast<size_t>(numValues), 0);
+    for (uint32_t c : this->Faces->GetTetrahedronCells())
+    {
+      used[c] = 1;
+    }
+  }
+  else
+  {
+    used = this->Faces->GetPointUse(numPoints);
+  }
+  double range[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest() };
+  for (vtkIdType p = 0; p < numValues; ++p)
+  {
     values[p] = scalars->GetComponent(p, 0);
     if (std::isfinite(values[p]) && used[p])
     {
@@ -208,6 +235,7 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
   // Every face at every pixel centre (faces wholly on the discarded side of
   // a plane left out), each pixel's hits sorted by distance.
   const std::vector<uint32_t>& faceVertices = this->Faces->GetFaceVertices();
+  const std::vector<uint32_t>& faceCells = this->Faces->GetFaceCells();
   const std::vector<uint8_t>& boundary = this->Faces->GetBoundaryFlags();
   const int width = this->Size[0], height = this->Size[1];
   rasterizer->Rasterize(world, faceVertices.data(), this->Faces->GetNumberOfFaces(),
@@ -238,11 +266,25 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
         const uint32_t* ids = &faceVertices[3 * hit.Triangle];
         Fragment& f = this->Fragments[h];
         f.Distance = hit.Distance;
-        f.Scalar = hit.Weights[0] * values[ids[0]] + hit.Weights[1] * values[ids[1]] +
-          hit.Weights[2] * values[ids[2]];
         f.Face = hit.Triangle;
         f.Boundary = boundary[hit.Triangle] != 0;
         f.Exit = f.Boundary && (mirrored ? hit.FrontFacing : !hit.FrontFacing);
+        if (cellData)
+        {
+          // The cells on the near and far side (a boundary face's one cell on both).
+          const bool eyeOnNormalSide = mirrored ? !hit.FrontFacing : hit.FrontFacing;
+          uint32_t nearCell = faceCells[2 * hit.Triangle + (eyeOnNormalSide ? 0 : 1)];
+          uint32_t farCell = faceCells[2 * hit.Triangle + (eyeOnNormalSide ? 1 : 0)];
+          nearCell = nearCell != vtkHAVSFaceSet::NoCell ? nearCell : farCell;
+          farCell = farCell != vtkHAVSFaceSet::NoCell ? farCell : nearCell;
+          f.Scalar = values[nearCell];
+          f.Behind = values[farCell];
+        }
+        else
+        {
+          f.Scalar = hit.Weights[0] * values[ids[0]] + hit.Weights[1] * values[ids[1]] +
+            hit.Weights[2] * values[ids[2]];
+        }
       }
     });
   rasterizer->ReleaseHits();
@@ -378,9 +420,16 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
               if (c >= 0 && grid->GetCellType(c) == VTK_TETRA)
               {
                 startInside = true;
-                for (int i = 0; i < 4; ++i)
+                if (cellData)
                 {
-                  startScalar += weights[i] * values[cell->GetPointId(i)];
+                  startScalar = values[c];
+                }
+                else
+                {
+                  for (int i = 0; i < 4; ++i)
+                  {
+                    startScalar += weights[i] * values[cell->GetPointId(i)];
+                  }
                 }
               }
             }
@@ -422,10 +471,12 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
           if (inside && t1 < VTK_DOUBLE_MAX && !out.empty())
           {
             const Fragment& previous = out.back();
-            double scalar = previous.Scalar;
+            // (Cell scalars: both ends have the one cell's value.)
+            const double from = previous.ScalarBehind();
+            double scalar = from;
             if (f != last && f->Distance > previous.Distance)
             {
-              scalar += (f->Scalar - previous.Scalar) * (d1 - previous.Distance) /
+              scalar += (f->Scalar - from) * (d1 - previous.Distance) /
                 (f->Distance - previous.Distance);
             }
             out.push_back({ d1, scalar, EndFace, true, true });
@@ -556,7 +607,7 @@ void vtkHAVSReferenceRenderer::IntegrateRay(
     {
       double segment[4];
       IntegrateSegmentExact(
-        property, front.Scalar, back.Scalar, back.Distance - front.Distance, segment);
+        property, front.ScalarBehind(), back.Scalar, back.Distance - front.Distance, segment);
       for (int c = 0; c < 3; ++c)
       {
         color[c] += transmittance * segment[c];
@@ -586,12 +637,12 @@ void vtkHAVSReferenceRenderer::IntegrateRayBlend(vtkVolumeProperty* property, co
     {
       if (additive)
       {
-        sum += IntegrateAdditiveSegment(
-          property, front.Scalar, back.Scalar, back.Distance - front.Distance, scalarRange);
+        sum += IntegrateAdditiveSegment(property, front.ScalarBehind(), back.Scalar,
+          back.Distance - front.Distance, scalarRange);
       }
       else
       {
-        for (double s : { front.Scalar, back.Scalar })
+        for (double s : { front.ScalarBehind(), back.Scalar })
         {
           extremum = !covered ? s : (maximum ? std::max(extremum, s) : std::min(extremum, s));
           covered = true;

@@ -53,10 +53,13 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
+#include <cmath>   // For std::isnan
 #include <cstdint> // For uint32_t
+#include <limits>  // For std::numeric_limits
 #include <vector>  // For std::vector
 
 class vtkCamera;
+class vtkDataSet;
 class vtkFloatArray;
 class vtkHAVSFaceSet;
 class vtkMatrix4x4;
@@ -72,9 +75,14 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// The scene: grid (active point scalars), property, camera, the volume's
-  /// matrix (identity when none), image size.
-  void SetInputData(vtkUnstructuredGrid* grid);
+  /**
+   * The scene: grid, property, camera, the volume's matrix (identity when
+   * none), image size. The grid: any vtkDataSet, split into tetrahedra as the
+   * mappers split it (vtkHAVSTetrahedralizer); its active point scalars, or
+   * its active cell scalars when it has no point scalars or
+   * SetUseCellScalars(true) (each segment in one cell, integrated constant).
+   */
+  void SetInputData(vtkDataSet* grid);
   void SetProperty(vtkVolumeProperty* property);
   void SetCamera(vtkCamera* camera);
   void SetVolumeMatrix(vtkMatrix4x4* matrix);
@@ -89,6 +97,14 @@ public:
    */
   void SetClippingPlanes(vtkPlaneCollection* planes);
   vtkPlaneCollection* GetClippingPlanes();
+  ///@}
+
+  ///@{
+  /// Render the active cell scalars even where point scalars exist (off by default).
+  vtkSetMacro(UseCellScalars, bool);
+  vtkGetMacro(UseCellScalars, bool);
+  /// Whether the last ComputeFragments() used cell scalars.
+  vtkGetMacro(CellScalarsUsed, bool);
   ///@}
 
   ///@{
@@ -137,10 +153,15 @@ public:
   struct Fragment
   {
     double Distance; ///< along the ray from the eye (parallel: along the view direction)
-    double Scalar;
-    uint32_t Face; ///< index in GetFaceSet()
+    double Scalar;   ///< the scalar on the near side (a segment ending here ends at it)
+    uint32_t Face;   ///< index in GetFaceSet()
     bool Boundary;
     bool Exit; ///< a boundary face seen from inside
+    /// Cell scalars: the value of the cell behind the fragment (a segment
+    /// starting here has it); NaN for point scalars (then Scalar on both sides).
+    double Behind = std::numeric_limits<double>::quiet_NaN();
+    /// The scalar a segment starting at this fragment starts with.
+    double ScalarBehind() const { return std::isnan(this->Behind) ? this->Scalar : this->Behind; }
   };
 
   /**
@@ -217,7 +238,10 @@ private:
   void ReportProgress(double progress);
   double ProgressRange[2] = { 0.0, 1.0 }; // what ReportProgress's 0 … 1 maps to
 
-  vtkSmartPointer<vtkUnstructuredGrid> Input;
+  vtkSmartPointer<vtkDataSet> Source;       // what SetInputData was given
+  vtkSmartPointer<vtkUnstructuredGrid> Input; // it as tetrahedra
+  bool UseCellScalars = false;
+  bool CellScalarsUsed = false;
   vtkSmartPointer<vtkVolumeProperty> Property;
   vtkSmartPointer<vtkCamera> Camera;
   vtkNew<vtkMatrix4x4> VolumeMatrix;

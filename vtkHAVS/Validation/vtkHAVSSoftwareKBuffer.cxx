@@ -31,9 +31,10 @@ using Fragment = vtkHAVSReferenceRenderer::Fragment;
 struct Entry
 {
   double Distance;
-  double Scalar;
+  double Scalar; ///< on the near side (a segment ending here)
   bool Exit;
   bool Entering; ///< a boundary face seen from outside
+  double Behind; ///< on the far side (a segment starting here; cell scalars differ)
 
   /// The GPU's leave order: distance, near-ties internal < exit < entry.
   double Key() const
@@ -111,7 +112,7 @@ private:
       if (length > 0.0)
       {
         double segment[4];
-        this->Table->Lookup(this->Front.Scalar, p.Scalar, length, segment);
+        this->Table->Lookup(this->Front.Behind, p.Scalar, length, segment);
         const double t = 1.0 - this->Color[3];
         for (int c = 0; c < 4; ++c)
         {
@@ -254,7 +255,8 @@ bool vtkHAVSSoftwareKBuffer::Render(vtkHAVSReferenceRenderer* fragments,
         PixelKBuffer buffer(k, table, terminationOpacity);
         for (const Fragment* f : ordered)
         {
-          buffer.Insert({ f->Distance, f->Scalar, f->Exit, f->Boundary && !f->Exit });
+          buffer.Insert(
+            { f->Distance, f->Scalar, f->Exit, f->Boundary && !f->Exit, f->ScalarBehind() });
         }
         buffer.Flush();
         for (int c = 0; c < 4; ++c)

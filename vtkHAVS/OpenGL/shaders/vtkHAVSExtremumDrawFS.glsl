@@ -8,7 +8,7 @@
 //HAVS::KBufferLib
 
 in vec3 havsPositionRC;
-in float havsScalar;
+HAVS_FACE_SCALAR_INPUT
 
 uniform int havsMinimum; // 1: store 1 - s, so that GL_MAX finds the minimum
 
@@ -22,6 +22,7 @@ void main()
     discard;
   }
   // (+ 2 on a boundary face's own vertices, see vtkHAVSGLMesh::UploadFaceOrder)
-  float s = clamp(havsScalar > 1.5 ? havsScalar - 2.0 : havsScalar, 0.0, 1.0);
+  float scalar = havsFaceScalar();
+  float s = clamp(scalar > 1.5 ? scalar - 2.0 : scalar, 0.0, 1.0);
   havsExtremum = vec4(havsMinimum != 0 ? 1.0 - s : s, 1.0, 0.0, 0.0);
 }

@@ -11,7 +11,7 @@
 //HAVS::KBufferLib
 
 in vec3 havsPositionRC;
-in float havsScalar;
+HAVS_FACE_SCALAR_INPUT
 
 //HAVS::FetchDeclarations
 
@@ -29,7 +29,7 @@ void main()
   {
     discard;
   }
-  vec2 f = havsFaceEntry(havsPositionRC, havsScalar);
+  vec2 f = havsFaceEntry(havsPositionRC, havsFaceScalar());
   havsInsert(color, E, f, havsOpaqueDistance(gl_FragCoord.xy), tolerance);
   havsColor = color;
   //HAVS::FetchStore

@@ -11,7 +11,7 @@
 //HAVS::InterlockLayout
 
 in vec3 havsPositionRC;
-in float havsScalar;
+HAVS_FACE_SCALAR_INPUT
 
 
 layout(std430, binding = 0) buffer HAVSPixelEntries
@@ -26,7 +26,7 @@ void main()
   {
     discard;
   }
-  vec2 f = havsFaceEntry(havsPositionRC, havsScalar);
+  vec2 f = havsFaceEntry(havsPositionRC, havsFaceScalar());
   float opaqueDistance = havsOpaqueDistance(gl_FragCoord.xy);
   int base = (int(gl_FragCoord.y) * int(havsViewportSize.x) + int(gl_FragCoord.x)) * HAVS_PIXEL_STRIDE;
 

@@ -39,6 +39,24 @@
 #ifndef HAVS_OPAQUE
 #define HAVS_OPAQUE 1
 #endif
+#ifndef HAVS_CELL_SCALARS
+#define HAVS_CELL_SCALARS 0
+#endif
+
+// The face passes' scalar input (declared with HAVS_FACE_SCALAR_INPUT) and the
+// fragment's scalar, havsFaceScalar(). Point scalars: interpolated across the
+// face. Cell scalars (HAVS_CELL_SCALARS): the face's two cells' values, and the
+// fragment takes the one of the cell behind it (seen from the normal's side,
+// front-facing, that is the other side's cell). A segment then lies in the cell
+// behind its front fragment and its scalar is constant: the table is read at
+// (front, front).
+#if HAVS_CELL_SCALARS
+#define HAVS_FACE_SCALAR_INPUT flat in vec2 havsCellScalars;
+#define havsFaceScalar() (gl_FrontFacing ? havsCellScalars.y : havsCellScalars.x)
+#else
+#define HAVS_FACE_SCALAR_INPUT in float havsScalar;
+#define havsFaceScalar() havsScalar
+#endif
 
 const float HAVS_EMPTY = 3.0e38;     // an empty waiting slot
 const float HAVS_NO_FRONT = -2.0e38; // nothing composited yet
@@ -155,7 +173,11 @@ vec4 havsSegment(vec2 a, vec2 b)
   {
     return vec4(0.0);
   }
+#if HAVS_CELL_SCALARS
+  vec3 t = vec3(havsScalarOf(a.y), havsScalarOf(a.y), min(len * havsInvMaxLength, 1.0));
+#else
   vec3 t = vec3(havsScalarOf(a.y), havsScalarOf(b.y), min(len * havsInvMaxLength, 1.0));
+#endif
   vec3 coord = vec3(t.xy * havsScalarTexel.x + havsScalarTexel.y,
     t.z * havsLengthTexel.x + havsLengthTexel.y);
   return texture(havsTable, coord);

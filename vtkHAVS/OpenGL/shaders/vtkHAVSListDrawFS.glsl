@@ -9,7 +9,7 @@
 //HAVS::KBufferLib
 
 in vec3 havsPositionRC;
-in float havsScalar;
+HAVS_FACE_SCALAR_INPUT
 
 uniform int havsNodeCapacity;
 
@@ -30,7 +30,7 @@ void main()
   {
     discard;
   }
-  vec2 f = havsFaceEntry(havsPositionRC, havsScalar);
+  vec2 f = havsFaceEntry(havsPositionRC, havsFaceScalar());
   uint node = atomicAdd(havsNodeCount, 1u);
   if (node < uint(havsNodeCapacity))
   {

@@ -1,0 +1,61 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSTetrahedralizer.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSTetrahedralizer
+ * @brief   Any vtkDataSet as the tetrahedral grid the vtkHAVS mappers draw.
+ *
+ * A grid of tetrahedra only is used as it is. Anything else (hexahedra,
+ * wedges, pyramids, voxels, polyhedra, quadratic and higher-order cells;
+ * structured, rectilinear and image data) is split into tetrahedra by VTK's
+ * vtkDataSetTriangleFilter (tetrahedra only): linear cells through the
+ * ordered triangulator, which orders each cell's points by id, so two cells
+ * that share a quadrilateral face split it along the same diagonal and the
+ * tetrahedra meet face to face (no cracks); structured grids with the
+ * alternating voxel split that is compatible across neighbours; non-linear
+ * cells by their own Triangulate (their nodes as the linear tetrahedra's
+ * points). Point and cell data travel with the points and cells, so cell
+ * scalars stay exact per cell. Cells of dimension below 3 are left out and
+ * counted.
+ */
+#ifndef vtkHAVSTetrahedralizer_h
+#define vtkHAVSTetrahedralizer_h
+
+#include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkSmartPointer.h"   // For vtkSmartPointer
+#include "vtkType.h"           // For vtkIdType
+
+class vtkDataSet;
+class vtkUnstructuredGrid;
+
+class VTKHAVSCORE_EXPORT vtkHAVSTetrahedralizer
+{
+public:
+  /// What Tetrahedralize() did.
+  struct Report
+  {
+    bool Tessellated = false;        ///< false: the input was used as it is
+    vtkIdType InputCells = 0;        ///< cells of the input
+    vtkIdType SplitCells = 0;        ///< 3D cells that were not tetrahedra, split
+    vtkIdType LowerDimensionCells = 0; ///< vertices, lines, polygons: left out
+    vtkIdType OutputTetrahedra = 0;
+    double Seconds = 0.0;
+  };
+
+  /// Whether `data` is a vtkUnstructuredGrid of VTK_TETRA cells only.
+  static bool IsTetrahedral(vtkDataSet* data);
+
+  /**
+   * The tetrahedral grid of `data` (the input itself when IsTetrahedral()).
+   * nullptr for a null input.
+   */
+  static vtkSmartPointer<vtkUnstructuredGrid> Tetrahedralize(vtkDataSet* data, Report* report);
+};
+
+#endif
