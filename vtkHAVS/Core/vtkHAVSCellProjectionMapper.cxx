@@ -58,7 +58,8 @@ const std::vector<float>* vtkHAVSCellProjectionMapper::GetKeptResult(int[2])
 }
 
 //------------------------------------------------------------------------------
-int vtkHAVSCellProjectionMapper::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
+int vtkHAVSCellProjectionMapper::FillInputPortInformation(
+  int vtkNotUsed(port), vtkInformation* info)
 {
   return vtkHAVSMapperInputs::FillInputPortInformation(info);
 }

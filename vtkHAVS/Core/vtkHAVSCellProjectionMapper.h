@@ -214,7 +214,6 @@ protected:
   /// Any vtkDataSet: cells that are not tetrahedra are split (vtkHAVSTetrahedralizer).
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
-
   /// The graphics layer: draws one frame (false, with an error, when it cannot).
   virtual bool DrawCells(vtkRenderer* renderer, const CellFrame& frame, double* drawSeconds);
   /// The last kept float result (nullptr without one).

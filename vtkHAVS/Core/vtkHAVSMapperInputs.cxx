@@ -14,11 +14,11 @@
 #include "vtkHAVSPreIntegrationTable.h"
 
 #include "vtkAbstractVolumeMapper.h"
+#include "vtkAlgorithm.h"
 #include "vtkFloatArray.h"
+#include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
-#include "vtkAlgorithm.h"
-#include "vtkInformation.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkProp.h"
 #include "vtkPropCollection.h"

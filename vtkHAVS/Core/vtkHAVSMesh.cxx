@@ -214,7 +214,8 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   {
     std::ostringstream why;
     why << "No 3D cells to render in the input (" << this->Tessellation.LowerDimensionCells
-        << " of its " << this->Tessellation.InputCells << " cells are vertices, lines or polygons).";
+        << " of its " << this->Tessellation.InputCells
+        << " cells are vertices, lines or polygons).";
     return this->Fail(why.str());
   }
   if (this->Tessellation.LowerDimensionCells > 0)
@@ -424,7 +425,7 @@ void vtkHAVSMesh::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ScalarRange: " << this->ScalarRange[0] << " " << this->ScalarRange[1] << " ("
      << this->ScalarDescription << ")\n";
   os << indent << "Tessellated: " << this->Tessellation.Tessellated << " ("
-     << this->Tessellation.SplitCells << " cells split into "
-     << this->Tessellation.OutputTetrahedra << " tetrahedra, "
-     << this->Tessellation.LowerDimensionCells << " lower-dimensional cells left out)\n";
+     << this->Tessellation.SplitCells << " cells split into " << this->Tessellation.OutputTetrahedra
+     << " tetrahedra, " << this->Tessellation.LowerDimensionCells
+     << " lower-dimensional cells left out)\n";
 }

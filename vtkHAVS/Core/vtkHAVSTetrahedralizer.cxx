@@ -9,12 +9,111 @@
 =========================================================================*/
 #include "vtkHAVSTetrahedralizer.h"
 
+#include "vtkCellData.h"
 #include "vtkCellTypes.h"
 #include "vtkDataSetTriangleFilter.h"
+#include "vtkIdTypeArray.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
+
+namespace
+{
+vtkIdType CountCells(vtkDataSet* data, int type)
+{
+  vtkIdType count = 0;
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
+  {
+    count += data->GetCellType(c) == type ? 1 : 0;
+  }
+  return count;
+}
+
+const char* const kOriginalCell = "vtkHAVSTetrahedralizerOriginalCell";
+
+/**
+ * VTK's split of every cell but the quadratic tetrahedra, which get the
+ * canonical eight tetrahedra. nullptr when VTK's split renumbered the points
+ * (then its split is used for all).
+ */
+vtkSmartPointer<vtkUnstructuredGrid> SplitWithCanonicalQuadraticTetrahedra(vtkDataSet* data)
+{
+  auto* input = vtkUnstructuredGrid::SafeDownCast(data);
+  if (!input)
+  {
+    return nullptr;
+  }
+  // VTK's split, each tetrahedron knowing the cell it came from.
+  vtkNew<vtkUnstructuredGrid> tagged;
+  tagged->ShallowCopy(input);
+  vtkNew<vtkIdTypeArray> original;
+  original->SetName(kOriginalCell);
+  original->SetNumberOfTuples(input->GetNumberOfCells());
+  for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
+  {
+    original->SetValue(c, c);
+  }
+  tagged->GetCellData()->AddArray(original);
+  vtkNew<vtkDataSetTriangleFilter> split;
+  split->SetInputData(tagged);
+  split->TetrahedraOnlyOn();
+  split->Update();
+  vtkUnstructuredGrid* vtkSplit = split->GetOutput();
+  auto* from = vtkIdTypeArray::SafeDownCast(vtkSplit->GetCellData()->GetArray(kOriginalCell));
+  if (!from || vtkSplit->GetNumberOfPoints() != input->GetNumberOfPoints())
+  {
+    return nullptr;
+  }
+
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->SetPoints(input->GetPoints());
+  out->GetPointData()->PassData(input->GetPointData());
+  vtkCellData* outCD = out->GetCellData();
+  outCD->CopyAllocate(input->GetCellData(), vtkSplit->GetNumberOfCells());
+  out->Allocate(vtkSplit->GetNumberOfCells());
+  auto insert = [&](const vtkIdType ids[4], vtkIdType source)
+  {
+    const vtkIdType cell = out->InsertNextCell(VTK_TETRA, 4, ids);
+    outCD->CopyData(input->GetCellData(), source, cell);
+  };
+  for (vtkIdType t = 0; t < vtkSplit->GetNumberOfCells(); ++t)
+  {
+    const vtkIdType source = from->GetValue(t);
+    if (input->GetCellType(source) == VTK_QUADRATIC_TETRA)
+    {
+      continue;
+    }
+    vtkIdType npts = 0;
+    const vtkIdType* ids = nullptr;
+    vtkSplit->GetCellPoints(t, npts, ids);
+    insert(ids, source);
+  }
+  // vtkQuadraticTetra's nodes: corners 0-3, then the edges 01, 12, 20, 03, 13, 23.
+  for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
+  {
+    if (input->GetCellType(c) != VTK_QUADRATIC_TETRA)
+    {
+      continue;
+    }
+    vtkIdType npts = 0;
+    const vtkIdType* n = nullptr;
+    input->GetCellPoints(c, npts, n);
+    const vtkIdType e01 = n[4], e12 = n[5], e20 = n[6], e03 = n[7], e13 = n[8], e23 = n[9];
+    const vtkIdType tets[8][4] = { { n[0], e01, e20, e03 }, { n[1], e12, e01, e13 },
+      { n[2], e20, e12, e23 }, { n[3], e03, e13, e23 },
+      // the octahedron e01 e12 e20 e03 e13 e23 around its diagonal e01-e23
+      { e01, e23, e12, e13 }, { e01, e23, e13, e03 }, { e01, e23, e03, e20 },
+      { e01, e23, e20, e12 } };
+    for (const auto& t : tets)
+    {
+      insert(t, c);
+    }
+  }
+  return out;
+}
+}
 
 //------------------------------------------------------------------------------
 bool vtkHAVSTetrahedralizer::IsTetrahedral(vtkDataSet* data)
@@ -75,11 +174,20 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
       ++r.SplitCells;
     }
   }
-  vtkNew<vtkDataSetTriangleFilter> split;
-  split->SetInputData(data);
-  split->TetrahedraOnlyOn();
-  split->Update();
-  vtkSmartPointer<vtkUnstructuredGrid> grid = split->GetOutput();
+  r.QuadraticTetrahedra = CountCells(data, VTK_QUADRATIC_TETRA);
+  vtkSmartPointer<vtkUnstructuredGrid> grid;
+  if (r.QuadraticTetrahedra > 0)
+  {
+    grid = SplitWithCanonicalQuadraticTetrahedra(data);
+  }
+  if (!grid)
+  {
+    vtkNew<vtkDataSetTriangleFilter> split;
+    split->SetInputData(data);
+    split->TetrahedraOnlyOn();
+    split->Update();
+    grid = split->GetOutput();
+  }
   r.Tessellated = true;
   r.OutputTetrahedra = grid->GetNumberOfCells();
   r.Seconds = vtkTimerLog::GetUniversalTime() - start;

@@ -19,8 +19,12 @@
  * that share a quadrilateral face split it along the same diagonal and the
  * tetrahedra meet face to face (no cracks); structured grids with the
  * alternating voxel split that is compatible across neighbours; non-linear
- * cells by their own Triangulate (their nodes as the linear tetrahedra's
- * points). Point and cell data travel with the points and cells, so cell
+ * cells by VTK's own split of their nodes, except quadratic tetrahedra:
+ * VTK splits their faces by point order, which neighbours need not share
+ * (measured: cracks between quadratic tetrahedra), so they are cut here
+ * into the canonical eight (the four corners and the inner octahedron along
+ * one diagonal): every face into its four sub-triangles, the same from both
+ * sides. Point and cell data travel with the points and cells, so cell
  * scalars stay exact per cell. Cells of dimension below 3 are left out and
  * counted.
  */
@@ -40,9 +44,10 @@ public:
   /// What Tetrahedralize() did.
   struct Report
   {
-    bool Tessellated = false;        ///< false: the input was used as it is
-    vtkIdType InputCells = 0;        ///< cells of the input
-    vtkIdType SplitCells = 0;        ///< 3D cells that were not tetrahedra, split
+    bool Tessellated = false;          ///< false: the input was used as it is
+    vtkIdType InputCells = 0;          ///< cells of the input
+    vtkIdType SplitCells = 0;          ///< 3D cells that were not tetrahedra, split
+    vtkIdType QuadraticTetrahedra = 0; ///< of which quadratic tetrahedra (the canonical split)
     vtkIdType LowerDimensionCells = 0; ///< vertices, lines, polygons: left out
     vtkIdType OutputTetrahedra = 0;
     double Seconds = 0.0;

@@ -418,7 +418,6 @@ protected:
   /// Any vtkDataSet: cells that are not tetrahedra are split (vtkHAVSTetrahedralizer).
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
-
   ///@{
   /**
    * The graphics layer (vtkOpenGLHAVSVolumeMapper): the path the window can

@@ -25,8 +25,7 @@ namespace
 /// reads: points (location 0, 3 floats each) and normalized scalars (location
 /// 1, `components` floats each).
 void UploadVertexAttributes(GLuint pointBuffer, GLuint scalarBuffer,
-  const std::vector<float>& points, const std::vector<float>& scalars, GLenum usage,
-  int components)
+  const std::vector<float>& points, const std::vector<float>& scalars, GLenum usage, int components)
 {
   glBindBuffer(GL_ARRAY_BUFFER, pointBuffer);
   glBufferData(GL_ARRAY_BUFFER, points.size() * sizeof(float), points.data(), usage);
@@ -178,8 +177,8 @@ void vtkHAVSGLMesh::UploadSections(const std::vector<vtkHAVSFramePlanes::Section
     glGenBuffers(1, &this->SectionScalars);
   }
   glBindVertexArray(this->SectionArray);
-  UploadVertexAttributes(this->SectionPoints, this->SectionScalars, points, scalars,
-    GL_STREAM_DRAW, this->Components);
+  UploadVertexAttributes(
+    this->SectionPoints, this->SectionScalars, points, scalars, GL_STREAM_DRAW, this->Components);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }

@@ -11,9 +11,9 @@
 
 #include "vtkHAVSFaceRasterizer.h"
 #include "vtkHAVSFaceSet.h"
-#include "vtkHAVSTetrahedralizer.h"
 #include "vtkHAVSPlaneSection.h"
 #include "vtkHAVSPreIntegrationTable.h"
+#include "vtkHAVSTetrahedralizer.h"
 
 #include "vtkCamera.h"
 #include "vtkCellData.h"
@@ -476,8 +476,8 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
             double scalar = from;
             if (f != last && f->Distance > previous.Distance)
             {
-              scalar += (f->Scalar - from) * (d1 - previous.Distance) /
-                (f->Distance - previous.Distance);
+              scalar +=
+                (f->Scalar - from) * (d1 - previous.Distance) / (f->Distance - previous.Distance);
             }
             out.push_back({ d1, scalar, EndFace, true, true });
           }
@@ -637,8 +637,8 @@ void vtkHAVSReferenceRenderer::IntegrateRayBlend(vtkVolumeProperty* property, co
     {
       if (additive)
       {
-        sum += IntegrateAdditiveSegment(property, front.ScalarBehind(), back.Scalar,
-          back.Distance - front.Distance, scalarRange);
+        sum += IntegrateAdditiveSegment(
+          property, front.ScalarBehind(), back.Scalar, back.Distance - front.Distance, scalarRange);
       }
       else
       {

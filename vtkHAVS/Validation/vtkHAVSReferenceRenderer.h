@@ -238,7 +238,7 @@ private:
   void ReportProgress(double progress);
   double ProgressRange[2] = { 0.0, 1.0 }; // what ReportProgress's 0 … 1 maps to
 
-  vtkSmartPointer<vtkDataSet> Source;       // what SetInputData was given
+  vtkSmartPointer<vtkDataSet> Source;         // what SetInputData was given
   vtkSmartPointer<vtkUnstructuredGrid> Input; // it as tetrahedra
   bool UseCellScalars = false;
   bool CellScalarsUsed = false;

@@ -111,6 +111,9 @@ void havsCountViolation()
 }
 
 const float HAVS_TIE = 1.0e-4;
+// Relative float rounding of a fragment's distance (below the 4e-6 that ranks
+// internal < exit < entry at one distance).
+const float HAVS_CELL_TIE = 2.0e-6;
 
 
 bool havsIsExit(float code)
@@ -238,7 +241,17 @@ void havsInsert(
       return;
     }
     float key = havsLeaveKey(E[i]);
-    if (key < leavingKey)
+#if HAVS_CELL_SCALARS
+    // Cell scalars: a waiting fragment within float rounding of the arriving
+    // one leaves first. Near a shared edge the two come from faces of one
+    // cell, drawn in the exact order (the cell's entry face first), and the
+    // one that leaves last gives the next segment its cell: rounding must not
+    // swap them. (At k = 2, the default, the waiting one is the earlier.)
+    float margin = nearest == 0 ? HAVS_CELL_TIE * abs(leavingKey) : 0.0;
+#else
+    float margin = 0.0;
+#endif
+    if (key < leavingKey + margin)
     {
       leaving = E[i];
       leavingKey = key;
