@@ -394,15 +394,13 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
           }
           const double d0 = ray.Offset + t0, d1 = ray.Offset + t1;
 
-          // Does the ray start inside the mesh? The tetrahedron at the start point.
-          bool startInside = false;
-          double startScalar = 0.0;
-          if (t0 > -VTK_DOUBLE_MAX)
+          // The mesh's scalar at ray parameter t, when a tetrahedron holds that point.
+          auto scalarAt = [&](double t, double& scalar)
           {
             double x[4] = { 0, 0, 0, 1 }, m[4];
             for (int k = 0; k < 3; ++k)
             {
-              x[k] = ray.Origin[k] + t0 * ray.Direction[k];
+              x[k] = ray.Origin[k] + t * ray.Direction[k];
             }
             bool inBounds = true;
             for (int k = 0; k < 3; ++k)
@@ -410,36 +408,55 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
               inBounds = inBounds && x[k] >= worldBounds[2 * k] - margin &&
                 x[k] <= worldBounds[2 * k + 1] + margin;
             }
-            if (inBounds && needLocator)
+            if (!inBounds || !needLocator)
             {
-              worldToModel->MultiplyPoint(x, m);
-              double model[3] = { m[0] / m[3], m[1] / m[3], m[2] / m[3] };
-              double pcoords[3], weights[8];
-              int subId = 0;
-              const vtkIdType c = locator->FindCell(model, 0.0, cell, subId, pcoords, weights);
-              if (c >= 0 && grid->GetCellType(c) == VTK_TETRA)
+              return false;
+            }
+            worldToModel->MultiplyPoint(x, m);
+            double model[3] = { m[0] / m[3], m[1] / m[3], m[2] / m[3] };
+            double pcoords[3], weights[8];
+            int subId = 0;
+            const vtkIdType c = locator->FindCell(model, 0.0, cell, subId, pcoords, weights);
+            if (c < 0 || grid->GetCellType(c) != VTK_TETRA)
+            {
+              return false;
+            }
+            scalar = 0.0;
+            if (cellData)
+            {
+              scalar = values[c];
+            }
+            else
+            {
+              for (int i = 0; i < 4; ++i)
               {
-                startInside = true;
-                if (cellData)
-                {
-                  startScalar = values[c];
-                }
-                else
-                {
-                  for (int i = 0; i < 4; ++i)
-                  {
-                    startScalar += weights[i] * values[cell->GetPointId(i)];
-                  }
-                }
+                scalar += weights[i] * values[cell->GetPointId(i)];
               }
             }
-          }
+            return true;
+          };
+          // Does the ray start inside the mesh? The tetrahedron at the start point.
+          double startScalar = 0.0;
+          const bool startInside = t0 > -VTK_DOUBLE_MAX && scalarAt(t0, startScalar);
           bool dropsSome = false;
           for (const Fragment* f = first; f != last && !dropsSome; ++f)
           {
             dropsSome = f->Distance <= d0 || f->Distance >= d1;
           }
-          if (!startInside && !dropsSome)
+          // A ray cut at t1 whose fragments end inside the mesh: the faces
+          // beyond the plane were left out (wholly on the discarded side), and
+          // the ray still ends at the plane.
+          bool endsInside = false;
+          if (t1 < VTK_DOUBLE_MAX && !dropsSome)
+          {
+            int boundaryHits = 0;
+            for (const Fragment* f = first; f != last; ++f)
+            {
+              boundaryHits += f->Boundary ? 1 : 0;
+            }
+            endsInside = (boundaryHits % 2 == 1) != startInside;
+          }
+          if (!startInside && !dropsSome && !endsInside)
           {
             continue; // unchanged
           }
@@ -478,6 +495,11 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
             {
               scalar +=
                 (f->Scalar - from) * (d1 - previous.Distance) / (f->Distance - previous.Distance);
+            }
+            else if (f == last)
+            {
+              // No fragment beyond (culled with its face): the mesh's value at the end.
+              scalarAt(t1, scalar);
             }
             out.push_back({ d1, scalar, EndFace, true, true });
           }
