@@ -36,7 +36,12 @@
 //              mode) against the reference of the same scalar stored alone;
 //              control: component 0 against component 2's reference;
 //   bluntfin   the NASA blunt fin's PLOT3D vtkStructuredGrid fed as it is
-//              (point and cell scalars) against the reference of the same grid.
+//              (point and cell scalars) against the reference of the same grid;
+//   multiblock a vtkMultiBlockDataSet of hexahedra and tetrahedra in layers
+//              that interleave in depth, with a cell array, a block without
+//              it (skipped, warned) and an empty slot: one order across the
+//              blocks, against the reference of the blocks appended; control:
+//              the blocks as two volumes (VTK orders whole volumes) fail.
 //
 // Usage: TestHAVSCells <case>
 #include "havsTestChecks.h"
@@ -52,6 +57,7 @@
 #include "vtkHAVSTetrahedralizer.h"
 #include "vtkHAVSVolumeMapper.h"
 
+#include "vtkAppendFilter.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkCellDataToPointData.h"
@@ -74,6 +80,7 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -348,11 +355,13 @@ struct Frame
   std::vector<float> Image;
   std::vector<float> Exact;
   int Errors = 0;
+  int Warnings = 0;
+  std::string Text; ///< the messages
 };
 
 /// `data` through `mapper` from `view`; the exact image of `exactOf` (the
 /// same scene, or another grid standing for it) from the same camera.
-Frame RenderAndReference(vtkDataSet* data, vtkUnstructuredGridVolumeMapper* mapper,
+Frame RenderAndReference(vtkDataObject* data, vtkUnstructuredGridVolumeMapper* mapper,
   vtkVolumeProperty* property, const View& view, vtkDataSet* exactOf,
   const std::function<void(vtkHAVSReferenceRenderer*)>& configure = nullptr)
 {
@@ -363,6 +372,8 @@ Frame RenderAndReference(vtkDataSet* data, vtkUnstructuredGridVolumeMapper* mapp
   Frame f;
   f.Image = havstest::FloatResult(mapper);
   f.Errors = messages->Errors;
+  f.Warnings = messages->Warnings;
+  f.Text = messages->Text;
   vtkNew<vtkHAVSReferenceRenderer> r;
   r->SetInputData(exactOf);
   r->SetProperty(property);
@@ -711,6 +722,104 @@ int VectorModes()
   return havstest::Result();
 }
 
+/// Layers of the unit cube (10 cells high) whose index is in `layers`.
+std::function<bool(const double*)> InLayers(std::vector<int> layers)
+{
+  return [layers](const double* c)
+  {
+    const int layer = static_cast<int>(c[2] * 10.0);
+    return std::find(layers.begin(), layers.end(), layer) != layers.end();
+  };
+}
+
+int MultiBlock()
+{
+  // Two blocks interleaved in depth, apart by one empty layer each time:
+  // hexahedra in layers 0-1 and 6-7, tetrahedra in layers 3-4 and 9, each
+  // with the cell array "c"; a third block without it and an empty slot.
+  auto hexes = WithCellField<vtkUnstructuredGrid>(vtkHAVSDataSets::KeepCells(
+    CubeGrid(10, 0.0, [](int, int, int) { return CubeAs::Hexahedron; }), InLayers({ 0, 1, 6, 7 })));
+  auto tets = WithCellField<vtkUnstructuredGrid>(vtkHAVSDataSets::KeepCells(
+    vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0), InLayers({ 3, 4, 9 })));
+  auto other = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.05, 0.0, 1.0); // point scalars "s" only
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(4);
+  blocks->SetBlock(0, hexes);
+  blocks->SetBlock(1, other);
+  blocks->SetBlock(2, tets);
+  vtkNew<vtkAppendFilter> both;
+  both->AddInputData(hexes);
+  both->AddInputData(tets);
+  both->MergePointsOff();
+  both->Update();
+  vtkUnstructuredGrid* exactOf = both->GetOutput();
+  auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.15);
+
+  havstest::ImageDifference worst;
+  for (bool cells : { false, true })
+  {
+    for (const View& view : kViews)
+    {
+      auto mapper = MakeMapper(cells);
+      mapper->SetScalarModeToUseCellFieldData();
+      mapper->SelectScalarArray("c");
+      const Frame f = RenderAndReference(blocks, mapper, property, view, exactOf);
+      havstest::Check(f.Errors == 0 && !f.Image.empty(), "multiblock: rendered");
+      havstest::Check(
+        f.Warnings >= 1 && f.Text.find("1 of the input's 3 blocks") != std::string::npos,
+        "multiblock: the block without the array is skipped with a warning");
+      const auto d = havstest::Compare(f.Image, f.Exact, cells ? kEdge : kEdgeCellScalars);
+      worst.RMSE = std::max(worst.RMSE, d.RMSE);
+      worst.Max = std::max(worst.Max, d.Max);
+    }
+  }
+  Print("multiblock (hexahedra and tetrahedra interleaved, cell scalars): worst", worst);
+  havstest::Check(Exact(worst), "multiblock: one order across the blocks, exact");
+
+  // Control: each block a volume of its own (VTK orders whole volumes).
+  vtkNew<vtkHAVSVolumeMapper> a, b;
+  havstest::ImageDifference control;
+  for (vtkHAVSVolumeMapper* m : { a.Get(), b.Get() })
+  {
+    m->KeepFloatResultOn();
+    m->SetEarlyRayTerminationOpacity(1.0);
+  }
+  auto s = havstest::MakeScene(hexes, a, property, kSize, kSize);
+  vtkNew<vtkVolume> second;
+  b->SetInputData(tets);
+  second->SetMapper(b);
+  second->SetProperty(property);
+  s.Renderer->AddVolume(second);
+  havstest::PlaceCamera(s.Renderer, kViews[0].Azimuth, kViews[0].Elevation, false);
+  s.Window->Render();
+  const auto window = havstest::ReadRGBA(s.Window);
+  vtkNew<vtkHAVSReferenceRenderer> r;
+  r->SetInputData(exactOf);
+  r->SetProperty(property);
+  r->SetCamera(s.Renderer->GetActiveCamera());
+  r->SetSize(kSize, kSize);
+  r->Render();
+  std::vector<float> exact(
+    r->GetImage()->GetPointer(0), r->GetImage()->GetPointer(0) + 4 * kSize * kSize);
+  // The window holds the two volumes over a black background: compare the
+  // premultiplied colour (8-bit), not the opacity.
+  double sum = 0.0, max = 0.0;
+  for (size_t i = 0; i < exact.size(); i += 4)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double e = std::abs(window[i + c] - exact[i + c]);
+      sum += e * e;
+      max = std::max(max, e);
+    }
+  }
+  control.RMSE = std::sqrt(sum / (3.0 * kSize * kSize));
+  control.Max = max;
+  Print("control: the two blocks as two volumes (window colour, 8-bit)", control);
+  havstest::Check(control.Max > 0.05, "control: blocks sorted as whole volumes fail");
+  return havstest::Result();
+}
+
 int BluntFin()
 {
   const std::string dir = vtkHAVSDataSets::GetDataDirectory();
@@ -772,6 +881,10 @@ int TestHAVSCells(int argc, char* argv[])
   {
     return BluntFin();
   }
-  havstest::Check(false, "a known case: linear, celldata, vector, bluntfin");
+  if (which == "multiblock")
+  {
+    return MultiBlock();
+  }
+  havstest::Check(false, "a known case: linear, celldata, vector, bluntfin, multiblock");
   return havstest::Result();
 }

@@ -42,7 +42,7 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height)
   return window;
 }
 
-VolumeScene MakeScene(vtkDataSet* grid, vtkAbstractVolumeMapper* mapper,
+VolumeScene MakeScene(vtkDataObject* grid, vtkAbstractVolumeMapper* mapper,
   vtkVolumeProperty* property, int width, int height)
 {
   VolumeScene scene;

@@ -18,7 +18,7 @@
 #include "vtkSmartPointer.h"
 
 class vtkAbstractVolumeMapper;
-class vtkDataSet;
+class vtkDataObject;
 class vtkHAVSVolumeMapper;
 class vtkRenderWindow;
 class vtkRenderer;
@@ -38,7 +38,7 @@ struct VolumeScene
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkVolume> Volume;
 };
-VolumeScene MakeScene(vtkDataSet* grid, vtkAbstractVolumeMapper* mapper,
+VolumeScene MakeScene(vtkDataObject* grid, vtkAbstractVolumeMapper* mapper,
   vtkVolumeProperty* property, int width, int height);
 
 /**

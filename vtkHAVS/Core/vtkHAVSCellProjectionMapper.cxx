@@ -58,6 +58,16 @@ const std::vector<float>* vtkHAVSCellProjectionMapper::GetKeptResult(int[2])
 }
 
 //------------------------------------------------------------------------------
+double* vtkHAVSCellProjectionMapper::GetBounds()
+{
+  if (vtkHAVSMapperInputs::GetCompositeInputBounds(this, this->Bounds))
+  {
+    return this->Bounds;
+  }
+  return this->Superclass::GetBounds();
+}
+
+//------------------------------------------------------------------------------
 int vtkHAVSCellProjectionMapper::FillInputPortInformation(
   int vtkNotUsed(port), vtkInformation* info)
 {

@@ -115,6 +115,12 @@ public:
   ///@}
 
   ///@{
+  /// The input's bounds, also for a composite input (all its blocks).
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
+  ///@}
+
+  ///@{
   /**
    * How a multi-component array becomes the scalar rendered, as
    * vtkSmartVolumeMapper::SetVectorMode: -1 (the default) the first component,
@@ -211,7 +217,8 @@ protected:
   vtkHAVSCellProjectionMapper();
   ~vtkHAVSCellProjectionMapper() override;
 
-  /// Any vtkDataSet: cells that are not tetrahedra are split (vtkHAVSTetrahedralizer).
+  /// Any vtkDataSet: cells that are not tetrahedra are split (vtkHAVSTetrahedralizer);
+  /// or a composite data set, its blocks appended into one grid.
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
   /// The graphics layer: draws one frame (false, with an error, when it cannot).

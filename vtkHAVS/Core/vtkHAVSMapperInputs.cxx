@@ -15,6 +15,7 @@
 
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkAlgorithm.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkMath.h"
@@ -53,7 +54,28 @@ bool IsConstantOne(vtkPiecewiseFunction* f)
 int vtkHAVSMapperInputs::FillInputPortInformation(vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSMapperInputs::GetCompositeInputBounds(vtkAbstractVolumeMapper* mapper, double bounds[6])
+{
+  if (!vtkCompositeDataSet::SafeDownCast(mapper->GetDataObjectInput()))
+  {
+    return false;
+  }
+  if (mapper->GetNumberOfInputConnections(0) > 0)
+  {
+    mapper->GetInputAlgorithm()->Update();
+  }
+  auto* blocks = vtkCompositeDataSet::SafeDownCast(mapper->GetDataObjectInput());
+  if (!blocks)
+  {
+    return false;
+  }
+  blocks->GetBounds(bounds);
+  return true;
 }
 
 //------------------------------------------------------------------------------

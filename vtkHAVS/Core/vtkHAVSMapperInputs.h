@@ -70,8 +70,13 @@ public:
     vtkHAVSMesh* mesh, const char* mapperName, const WarnOnce& warnOnce, int vectorMode = -1,
     int vectorComponent = 0);
 
-  /// Marks `info` as taking any vtkDataSet (the mappers split what is not tetrahedra).
+  /// Marks `info` as taking any vtkDataSet (the mappers split what is not
+  /// tetrahedra) or a composite data set of them (appended into one grid).
   static int FillInputPortInformation(vtkInformation* info);
+
+  /// The bounds of a composite input (its pipeline updated first); false
+  /// when the input is not composite.
+  static bool GetCompositeInputBounds(vtkAbstractVolumeMapper* mapper, double bounds[6]);
 
   /**
    * (Re)builds `table` for the volume's property when it, the scalar range,

@@ -11,6 +11,7 @@
 
 #include "vtkAbstractMapper.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkHAVSFaceSet.h"
@@ -176,6 +177,34 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
     return this->Fail("No input.");
   }
   vtkDataSet* data = vtkDataSet::SafeDownCast(input);
+  vtkSmartPointer<vtkUnstructuredGrid> appended;
+  if (auto* blocks = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    // Every block with the scalars, as one grid: one face order across them.
+    vtkIdType skipped = 0, used = 0;
+    appended = vtkHAVSTetrahedralizer::AppendBlocks(
+      blocks,
+      [&](vtkDataSet* leaf)
+      {
+        int flag = -1;
+        return vtkAbstractMapper::GetScalars(leaf, selection.Mode, selection.AccessMode,
+                 selection.Id, selection.Name.empty() ? nullptr : selection.Name.c_str(),
+                 flag) != nullptr;
+      },
+      &skipped, &used);
+    if (!appended)
+    {
+      return this->Fail("No block of the composite input has cells and the scalars to render.");
+    }
+    if (skipped > 0)
+    {
+      std::ostringstream w;
+      w << skipped << " of the input's " << skipped + used
+        << " blocks were skipped (no cells, or not the scalars to render).";
+      this->Warnings.push_back(w.str());
+    }
+    data = appended;
+  }
   if (!data)
   {
     return this->Fail(std::string("The input is a ") + input->GetClassName() +

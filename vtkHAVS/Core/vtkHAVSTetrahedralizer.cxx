@@ -9,8 +9,12 @@
 =========================================================================*/
 #include "vtkHAVSTetrahedralizer.h"
 
+#include "vtkAppendFilter.h"
 #include "vtkCellData.h"
 #include "vtkCellTypes.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
@@ -113,6 +117,59 @@ vtkSmartPointer<vtkUnstructuredGrid> SplitWithCanonicalQuadraticTetrahedra(vtkDa
   }
   return out;
 }
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::AppendBlocks(
+  vtkCompositeDataSet* blocks, const std::function<bool(vtkDataSet*)>& keep, vtkIdType* skipped,
+  vtkIdType* appended)
+{
+  vtkIdType left = 0, used = 0;
+  vtkNew<vtkAppendFilter> append;
+  append->MergePointsOff();
+  vtkDataSet* first = nullptr;
+  if (blocks)
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(blocks->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
+      if (!leaf || leaf->GetNumberOfCells() == 0 || (keep && !keep(leaf)))
+      {
+        ++left;
+        continue;
+      }
+      first = first ? first : leaf;
+      append->AddInputData(leaf);
+      ++used;
+    }
+  }
+  if (skipped)
+  {
+    *skipped = left;
+  }
+  if (appended)
+  {
+    *appended = used;
+  }
+  if (used == 0)
+  {
+    return nullptr;
+  }
+  append->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = append->GetOutput();
+  vtkDataArray* pointScalars = first->GetPointData()->GetScalars();
+  if (pointScalars && pointScalars->GetName())
+  {
+    grid->GetPointData()->SetActiveScalars(pointScalars->GetName());
+  }
+  vtkDataArray* cellScalars = first->GetCellData()->GetScalars();
+  if (cellScalars && cellScalars->GetName())
+  {
+    grid->GetCellData()->SetActiveScalars(cellScalars->GetName());
+  }
+  return grid;
 }
 
 //------------------------------------------------------------------------------

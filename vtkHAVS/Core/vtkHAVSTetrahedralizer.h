@@ -35,6 +35,9 @@
 #include "vtkSmartPointer.h"   // For vtkSmartPointer
 #include "vtkType.h"           // For vtkIdType
 
+#include <functional> // For std::function
+
+class vtkCompositeDataSet;
 class vtkDataSet;
 class vtkUnstructuredGrid;
 
@@ -61,6 +64,19 @@ public:
    * nullptr for a null input.
    */
   static vtkSmartPointer<vtkUnstructuredGrid> Tetrahedralize(vtkDataSet* data, Report* report);
+
+  /**
+   * The leaves of a multiblock or partitioned data set as one unstructured
+   * grid (points not merged: blocks that touch keep their own points), so
+   * that one face order runs across all blocks and blocks that interleave in
+   * depth composite correctly. Leaves without cells or for which `keep`
+   * (when given) says no are left out and counted in `skipped`. The point
+   * and cell arrays kept are those every appended leaf has (vtkAppendFilter);
+   * the active scalars of the first leaf stay active. nullptr when no leaf
+   * is left.
+   */
+  static vtkSmartPointer<vtkUnstructuredGrid> AppendBlocks(vtkCompositeDataSet* blocks,
+    const std::function<bool(vtkDataSet*)>& keep, vtkIdType* skipped, vtkIdType* appended);
 };
 
 #endif

@@ -126,6 +126,16 @@ void vtkHAVSVolumeMapper::WarnOnce(int which, const std::string& message)
 }
 
 //------------------------------------------------------------------------------
+double* vtkHAVSVolumeMapper::GetBounds()
+{
+  if (vtkHAVSMapperInputs::GetCompositeInputBounds(this, this->Bounds))
+  {
+    return this->Bounds;
+  }
+  return this->Superclass::GetBounds();
+}
+
+//------------------------------------------------------------------------------
 int vtkHAVSVolumeMapper::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
 {
   return vtkHAVSMapperInputs::FillInputPortInformation(info);

@@ -285,6 +285,12 @@ public:
   ///@}
 
   ///@{
+  /// The input's bounds, also for a composite input (all its blocks).
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
+  ///@}
+
+  ///@{
   /**
    * How a multi-component array becomes the scalar rendered, as
    * vtkSmartVolumeMapper::SetVectorMode: -1 (the default) the first component,
@@ -415,7 +421,8 @@ protected:
   vtkHAVSVolumeMapper();
   ~vtkHAVSVolumeMapper() override;
 
-  /// Any vtkDataSet: cells that are not tetrahedra are split (vtkHAVSTetrahedralizer).
+  /// Any vtkDataSet: cells that are not tetrahedra are split (vtkHAVSTetrahedralizer);
+  /// or a composite data set, its blocks appended into one grid.
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
   ///@{
