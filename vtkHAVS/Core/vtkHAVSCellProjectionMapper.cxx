@@ -221,12 +221,21 @@ void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   {
     return;
   }
-  if (state == vtkHAVSMapperInputs::MeshRebuilt || this->Cells.empty())
+  if (state == vtkHAVSMapperInputs::MeshScalarsUpdated && !this->Cells.empty())
+  {
+    // A new time step on the same mesh: the cells' fields again, the order kept.
+    vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
+      this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
+      this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronScalars() : nullptr);
+    this->FieldTime.Modified();
+  }
+  else if (state != vtkHAVSMapperInputs::MeshUnchanged || this->Cells.empty())
   {
     vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
       this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
       this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronScalars() : nullptr);
     this->GeometryTime.Modified();
+    this->FieldTime.Modified();
     this->OrderBuilt = false;
     this->OrderKeyValid = false;
   }
@@ -271,7 +280,7 @@ void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   frame.TableVersion = this->TableBuildTime.GetMTime();
   frame.Cells = &this->Cells;
   frame.Faces = &this->Faces;
-  frame.GeometryVersion = this->GeometryTime.GetMTime();
+  frame.GeometryVersion = this->FieldTime.GetMTime();
   frame.Order = order;
   frame.OrderVersion = this->OrderTime.GetMTime();
   frame.Planes = this->Planes;

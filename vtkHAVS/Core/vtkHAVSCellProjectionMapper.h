@@ -262,7 +262,8 @@ private:
   bool OrderBuilt = false;
   std::vector<float> Cells;
   std::vector<uint32_t> Faces;
-  vtkTimeStamp GeometryTime;
+  vtkTimeStamp GeometryTime;      // the cells' geometry (what the order depends on)
+  vtkTimeStamp FieldTime;         // the cells' geometry or fields (what the GPU holds)
   std::vector<uint32_t> Centroid; // the centroid cell order
   std::vector<uint32_t> Drawn;    // the frame's cell order
   vtkHAVSVisibilityOrder::ViewKey OrderKey;

@@ -104,11 +104,13 @@ bool vtkHAVSFramePlanes::Update(
   }
 
   // Sections, only when a cut plane or the mesh changed.
-  if (!(cuts == this->Cuts) || this->CutsMeshTime != mesh->GetBuildTime())
+  // (The scalar time: a new time step's sections carry its scalars.)
+  const vtkMTimeType meshTime = std::max(mesh->GetBuildTime(), mesh->GetScalarTime());
+  if (!(cuts == this->Cuts) || this->CutsMeshTime != meshTime)
   {
     const double start = vtkTimerLog::GetUniversalTime();
     this->Cuts = cuts;
-    this->CutsMeshTime = mesh->GetBuildTime();
+    this->CutsMeshTime = meshTime;
     this->Sections.clear();
     this->SectionTriangles = 0;
     for (const Cut& cut : cuts)

@@ -38,6 +38,8 @@ void vtkHAVSFrameStatistics::Reset()
   this->ViolationPixels.clear();
   this->Fragments = 0;
   this->FacesDrawn = 0;
+  this->MeshUpdate = 0;
+  this->MeshSeconds = 0.0;
   this->SortSeconds = 0.0;
   this->GatherSeconds = 0.0;
   this->UploadSeconds = 0.0;
@@ -91,4 +93,5 @@ void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
      << "), upload " << this->UploadSeconds << ", draw " << this->DrawSeconds << ", flush "
      << this->FlushSeconds << ", read-backs " << this->ReadbackSeconds << ", composite "
      << this->CompositeSeconds << ", table (last build) " << this->TableSeconds << "\n";
+  os << indent << "MeshUpdate: " << this->MeshUpdate << " (" << this->MeshSeconds << " s)\n";
 }

@@ -147,6 +147,17 @@ public:
   vtkGetMacro(TableSeconds, double);
   ///@}
 
+  ///@{
+  /**
+   * What the frame did to the mesh (vtkHAVSMesh::Updates: 0 nothing, 1 made
+   * it again, 2 mapped a new time step's scalars only) and the seconds it took.
+   */
+  vtkSetMacro(MeshUpdate, int);
+  vtkGetMacro(MeshUpdate, int);
+  vtkSetMacro(MeshSeconds, double);
+  vtkGetMacro(MeshSeconds, double);
+  ///@}
+
 protected:
   vtkHAVSFrameStatistics() = default;
   ~vtkHAVSFrameStatistics() override = default;
@@ -181,6 +192,8 @@ private:
   double CompositeSeconds = 0.0;
   double ReadbackSeconds = 0.0;
   double TableSeconds = 0.0;
+  int MeshUpdate = 0;
+  double MeshSeconds = 0.0;
 };
 
 #endif

@@ -120,7 +120,7 @@ vtkHAVSMapperInputs::MeshState vtkHAVSMapperInputs::PrepareMesh(vtkAbstractVolum
         "; " + mapperName +
         " renders the first one only (SetVectorMode: the magnitude or another component).");
   }
-  return MeshRebuilt;
+  return mesh->GetLastUpdate() == vtkHAVSMesh::UpdateScalars ? MeshScalarsUpdated : MeshRebuilt;
 }
 
 //------------------------------------------------------------------------------

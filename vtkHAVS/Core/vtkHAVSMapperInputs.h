@@ -59,7 +59,8 @@ public:
   {
     MeshFailed,
     MeshUnchanged,
-    MeshRebuilt
+    MeshRebuilt,
+    MeshScalarsUpdated ///< a new time step on the same mesh: only the scalars changed
   };
   /**
    * Builds `mesh` from the mapper's input and scalar selection when either

@@ -10,19 +10,27 @@
 #include "vtkHAVSMesh.h"
 
 #include "vtkAbstractMapper.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkHAVSFaceSet.h"
+#include "vtkIdList.h"
+#include "vtkImageData.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPointSet.h"
 #include "vtkPoints.h"
+#include "vtkRectilinearGrid.h"
 #include "vtkSMPTools.h"
+#include "vtkStructuredGrid.h"
+#include "vtkTimerLog.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <sstream>
 
@@ -90,6 +98,88 @@ double vtkHAVSMesh::ScalarOf(vtkDataArray* array, vtkIdType i) const
 }
 
 //------------------------------------------------------------------------------
+uint64_t vtkHAVSMesh::GeometryHashOf(vtkDataSet* data)
+{
+  // FNV-1a over 64-bit words: the type, the counts, every coordinate's bits,
+  // the cells' types and point ids, and the ghost flags.
+  uint64_t h = 1469598103934665603ull;
+  auto mix = [&h](uint64_t v)
+  {
+    h ^= v;
+    h *= 1099511628211ull;
+  };
+  auto mixDouble = [&mix](double v)
+  {
+    uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof(bits));
+    mix(bits);
+  };
+  auto mixArray = [&](vtkDataArray* array)
+  {
+    if (!array)
+    {
+      mix(0);
+      return;
+    }
+    const vtkIdType n = array->GetNumberOfValues();
+    mix(static_cast<uint64_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      mixDouble(array->GetComponent(
+        i / array->GetNumberOfComponents(), static_cast<int>(i % array->GetNumberOfComponents())));
+    }
+  };
+  mix(static_cast<uint64_t>(data->GetDataObjectType()));
+  mix(static_cast<uint64_t>(data->GetNumberOfPoints()));
+  mix(static_cast<uint64_t>(data->GetNumberOfCells()));
+  if (auto* pointSet = vtkPointSet::SafeDownCast(data))
+  {
+    mixArray(pointSet->GetPoints() ? pointSet->GetPoints()->GetData() : nullptr);
+  }
+  else
+  {
+    for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      data->GetPoint(i, x);
+      mixDouble(x[0]);
+      mixDouble(x[1]);
+      mixDouble(x[2]);
+    }
+  }
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
+  {
+    mixArray(grid->GetCells() ? grid->GetCells()->GetConnectivityArray() : nullptr);
+    mixArray(grid->GetCells() ? grid->GetCells()->GetOffsetsArray() : nullptr);
+    mixArray(grid->GetCellTypesArray());
+  }
+  else if (!vtkStructuredGrid::SafeDownCast(data) && !vtkImageData::SafeDownCast(data) &&
+    !vtkRectilinearGrid::SafeDownCast(data))
+  {
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
+    {
+      mix(static_cast<uint64_t>(data->GetCellType(c)));
+      data->GetCellPoints(c, ids);
+      for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+      {
+        mix(static_cast<uint64_t>(ids->GetId(i)));
+      }
+    }
+  }
+  // (A structured grid's cells follow from its counts and dimensions.)
+  if (auto* structured = vtkStructuredGrid::SafeDownCast(data))
+  {
+    int dims[3];
+    structured->GetDimensions(dims);
+    mix(static_cast<uint64_t>(dims[0]) | (static_cast<uint64_t>(dims[1]) << 21) |
+      (static_cast<uint64_t>(dims[2]) << 42));
+  }
+  mixArray(data->GetCellGhostArray());
+  return h;
+}
+
+//------------------------------------------------------------------------------
 vtkUnstructuredGrid* vtkHAVSMesh::GetGrid()
 {
   return this->Grid;
@@ -146,159 +236,8 @@ void vtkHAVSMesh::BuildCellScalarVertices(const std::vector<float>& cellValues)
 }
 
 //------------------------------------------------------------------------------
-bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
-  const std::function<void(double)>& progress)
+bool vtkHAVSMesh::MapScalars(vtkDataArray* scalars, bool cellData, const std::string& arrayName)
 {
-  this->BuiltInput = input;
-  this->BuiltInputTime = input ? input->GetMTime() : 0;
-  this->BuiltSelection = selection;
-  this->BuildTime.Modified();
-  this->Valid = false;
-  this->Error.clear();
-  this->Warnings.clear();
-  this->Grid = nullptr;
-  this->CellScalars = false;
-  this->TetrahedronScalars.clear();
-  this->FaceVertexPoints.clear();
-  this->FaceVertexScalars.clear();
-  this->FaceVertexIds.clear();
-  this->VectorMode = selection.VectorMode;
-  this->VectorComponent = selection.VectorComponent;
-  auto report = [&](double p)
-  {
-    if (progress)
-    {
-      progress(p);
-    }
-  };
-
-  if (!input)
-  {
-    return this->Fail("No input.");
-  }
-  vtkDataSet* data = vtkDataSet::SafeDownCast(input);
-  vtkSmartPointer<vtkUnstructuredGrid> appended;
-  if (auto* blocks = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    // Every block with the scalars, as one grid: one face order across them.
-    vtkIdType skipped = 0, used = 0;
-    appended = vtkHAVSTetrahedralizer::AppendBlocks(
-      blocks,
-      [&](vtkDataSet* leaf)
-      {
-        int flag = -1;
-        return vtkAbstractMapper::GetScalars(leaf, selection.Mode, selection.AccessMode,
-                 selection.Id, selection.Name.empty() ? nullptr : selection.Name.c_str(),
-                 flag) != nullptr;
-      },
-      &skipped, &used);
-    if (!appended)
-    {
-      return this->Fail("No block of the composite input has cells and the scalars to render.");
-    }
-    if (skipped > 0)
-    {
-      std::ostringstream w;
-      w << skipped << " of the input's " << skipped + used
-        << " blocks were skipped (no cells, or not the scalars to render).";
-      this->Warnings.push_back(w.str());
-    }
-    data = appended;
-  }
-  if (!data)
-  {
-    return this->Fail(std::string("The input is a ") + input->GetClassName() +
-      "; the vtkHAVS mappers need a vtkDataSet (an unstructured grid, or a structured, "
-      "rectilinear or image grid).");
-  }
-  if (data->GetNumberOfPoints() == 0 || data->GetNumberOfCells() == 0)
-  {
-    std::ostringstream why;
-    why << "The input grid is empty (" << data->GetNumberOfPoints() << " points, "
-        << data->GetNumberOfCells() << " cells).";
-    return this->Fail(why.str());
-  }
-
-  int cellFlag = -1;
-  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(data, selection.Mode, selection.AccessMode,
-    selection.Id, selection.Name.empty() ? nullptr : selection.Name.c_str(), cellFlag);
-  if (!scalars)
-  {
-    std::ostringstream why;
-    why << "The input has no scalars to render (scalar mode " << ScalarModeName(selection.Mode)
-        << (selection.Name.empty() ? "" : ", array " + selection.Name) << ").";
-    return this->Fail(why.str());
-  }
-  if (cellFlag == 2)
-  {
-    return this->Fail("Field-data scalars cannot be rendered: use point or cell data.");
-  }
-  const bool cellData = cellFlag == 1;
-  const std::string arrayName = scalars->GetName() ? scalars->GetName() : "";
-
-  // The cells as tetrahedra.
-  report(0.0);
-  this->Grid = vtkHAVSTetrahedralizer::Tetrahedralize(data, &this->Tessellation);
-  if (!this->Grid || this->Grid->GetNumberOfCells() == 0)
-  {
-    std::ostringstream why;
-    why << "No 3D cells to render in the input (" << this->Tessellation.LowerDimensionCells
-        << " of its " << this->Tessellation.InputCells
-        << " cells are vertices, lines or polygons).";
-    return this->Fail(why.str());
-  }
-  if (this->Tessellation.LowerDimensionCells > 0)
-  {
-    std::ostringstream w;
-    w << this->Tessellation.LowerDimensionCells
-      << " cells that are not 3D (vertices, lines, polygons) were skipped.";
-    this->Warnings.push_back(w.str());
-  }
-  if (this->Tessellation.Tessellated)
-  {
-    // The split grid carries the arrays under the same names and positions.
-    scalars = cellData ? this->Grid->GetCellData()->GetArray(arrayName.c_str())
-                       : this->Grid->GetPointData()->GetArray(arrayName.c_str());
-    if (!scalars)
-    {
-      int flag = -1;
-      scalars = vtkAbstractMapper::GetScalars(this->Grid, selection.Mode, selection.AccessMode,
-        selection.Id, selection.Name.empty() ? nullptr : selection.Name.c_str(), flag);
-      if (!scalars || flag != cellFlag)
-      {
-        return this->Fail("The scalars were lost splitting the cells into tetrahedra.");
-      }
-    }
-  }
-  report(0.2);
-  if (!this->Faces->Build(this->Grid))
-  {
-    return this->Fail("No tetrahedra to render in the input.");
-  }
-  report(0.6);
-  if (this->Faces->GetNumberOfSkippedCells() > 0)
-  {
-    std::ostringstream w;
-    w << this->Faces->GetNumberOfSkippedCells() << " cells could not be split into tetrahedra "
-      << "and were skipped.";
-    this->Warnings.push_back(w.str());
-  }
-  if (this->Faces->GetNumberOfDegenerateTetrahedra() > 0)
-  {
-    std::ostringstream w;
-    w << this->Faces->GetNumberOfDegenerateTetrahedra()
-      << " degenerate (zero-volume) tetrahedra were dropped.";
-    this->Warnings.push_back(w.str());
-  }
-  if (this->Faces->GetNumberOfDuplicateTetrahedra() > 0)
-  {
-    std::ostringstream w;
-    w << this->Faces->GetNumberOfDuplicateTetrahedra()
-      << " duplicate tetrahedra (the same four points as another cell) were dropped; one copy "
-         "of each is drawn.";
-    this->Warnings.push_back(w.str());
-  }
-
   // The scalar rendered: the property's component 0 colours it.
   this->NumberOfComponents = scalars->GetNumberOfComponents();
   this->Component = 0;
@@ -322,41 +261,8 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
     this->ScalarDescription = d.str();
   }
 
-  // Points, shifted by the bounds' centre so that floats keep their precision.
   vtkUnstructuredGrid* grid = this->Grid;
   const vtkIdType numPoints = grid->GetNumberOfPoints();
-  double bounds[6];
-  grid->GetPoints()->GetBounds(bounds);
-  for (int i = 0; i < 3; ++i)
-  {
-    this->Shift[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
-    this->Bounds[2 * i] = bounds[2 * i] - this->Shift[i];
-    this->Bounds[2 * i + 1] = bounds[2 * i + 1] - this->Shift[i];
-  }
-  this->Points.resize(3 * numPoints);
-  vtkIdType nonFinitePoints = 0;
-  for (vtkIdType p = 0; p < numPoints; ++p)
-  {
-    double x[3];
-    grid->GetPoint(p, x);
-    for (int i = 0; i < 3; ++i)
-    {
-      double v = x[i] - this->Shift[i];
-      if (!std::isfinite(v))
-      {
-        ++nonFinitePoints;
-        v = 0.0;
-      }
-      this->Points[3 * p + i] = static_cast<float>(v);
-    }
-  }
-  if (nonFinitePoints > 0)
-  {
-    std::ostringstream why;
-    why << nonFinitePoints << " non-finite point coordinates; the mesh is not rendered.";
-    return this->Fail(why.str());
-  }
-
   // Scalars mapped to [0, 1] over the finite range of the values the used
   // cells see (an unused point's or dropped cell's value changes nothing);
   // NaN/Inf replaced.
@@ -435,6 +341,244 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   {
     this->Scalars = std::move(normalized);
   }
+  this->ScalarTime.Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
+  const std::function<void(double)>& progress)
+{
+  const double start = vtkTimerLog::GetUniversalTime();
+  // What a new time step on the same mesh may keep (see below).
+  const bool wasValid = this->Valid;
+  const bool hadCellScalars = this->CellScalars;
+  const ScalarSelection previousSelection = this->BuiltSelection;
+  this->BuiltInput = input;
+  this->BuiltInputTime = input ? input->GetMTime() : 0;
+  this->BuiltSelection = selection;
+  this->Valid = false;
+  this->Error.clear();
+  this->Warnings.clear();
+  this->LastUpdate = UpdateNone;
+  this->VectorMode = selection.VectorMode;
+  this->VectorComponent = selection.VectorComponent;
+  auto report = [&](double p)
+  {
+    if (progress)
+    {
+      progress(p);
+    }
+  };
+
+  if (!input)
+  {
+    return this->Fail("No input.");
+  }
+  vtkDataSet* data = vtkDataSet::SafeDownCast(input);
+  vtkSmartPointer<vtkUnstructuredGrid> appended;
+  if (auto* blocks = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    // Every block with the scalars, as one grid: one face order across them.
+    vtkIdType skipped = 0, used = 0;
+    appended = vtkHAVSTetrahedralizer::AppendBlocks(
+      blocks,
+      [&](vtkDataSet* leaf)
+      {
+        int flag = -1;
+        return vtkAbstractMapper::GetScalars(leaf, selection.Mode, selection.AccessMode,
+                 selection.Id, selection.Name.empty() ? nullptr : selection.Name.c_str(),
+                 flag) != nullptr;
+      },
+      &skipped, &used);
+    if (!appended)
+    {
+      return this->Fail("No block of the composite input has cells and the scalars to render.");
+    }
+    if (skipped > 0)
+    {
+      std::ostringstream w;
+      w << skipped << " of the input's " << skipped + used
+        << " blocks were skipped (no cells, or not the scalars to render).";
+      this->Warnings.push_back(w.str());
+    }
+    data = appended;
+  }
+  if (!data)
+  {
+    return this->Fail(std::string("The input is a ") + input->GetClassName() +
+      "; the vtkHAVS mappers need a vtkDataSet (an unstructured grid, or a structured, "
+      "rectilinear or image grid).");
+  }
+  if (data->GetNumberOfPoints() == 0 || data->GetNumberOfCells() == 0)
+  {
+    std::ostringstream why;
+    why << "The input grid is empty (" << data->GetNumberOfPoints() << " points, "
+        << data->GetNumberOfCells() << " cells).";
+    return this->Fail(why.str());
+  }
+
+  int cellFlag = -1;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(data, selection.Mode, selection.AccessMode,
+    selection.Id, selection.Name.empty() ? nullptr : selection.Name.c_str(), cellFlag);
+  if (!scalars)
+  {
+    std::ostringstream why;
+    why << "The input has no scalars to render (scalar mode " << ScalarModeName(selection.Mode)
+        << (selection.Name.empty() ? "" : ", array " + selection.Name) << ").";
+    return this->Fail(why.str());
+  }
+  if (cellFlag == 2)
+  {
+    return this->Fail("Field-data scalars cannot be rendered: use point or cell data.");
+  }
+  const bool cellData = cellFlag == 1;
+  const std::string arrayName = scalars->GetName() ? scalars->GetName() : "";
+
+  // A new time step on the same mesh (the same points and cells, as a
+  // reader gives them for each step: compared by a hash of their contents)
+  // keeps the faces, orders and GPU geometry; only the scalars are mapped
+  // again. Not for cell scalars of split cells (their tetrahedra's cells are
+  // not kept), nor when point and cell scalars trade places.
+  if (wasValid && this->HashedSource && cellData == hadCellScalars &&
+    !(cellData && this->Tessellation.Tessellated) &&
+    selection.VectorMode == previousSelection.VectorMode &&
+    this->Grid->GetNumberOfPoints() == data->GetNumberOfPoints() &&
+    GeometryHashOf(data) == this->GeometryHash)
+  {
+    if (!this->Tessellation.Tessellated)
+    {
+      this->Grid = vtkUnstructuredGrid::SafeDownCast(data); // the same cells and points
+    }
+    // (Split cells keep the input's point ids: point scalars map one to one.)
+    if (!this->MapScalars(scalars, cellData, arrayName))
+    {
+      return false;
+    }
+    this->HashedSource = data;
+    this->LastUpdate = UpdateScalars;
+    this->LastUpdateSeconds = vtkTimerLog::GetUniversalTime() - start;
+    report(1.0);
+    this->Valid = true;
+    return true;
+  }
+
+  // A new mesh: everything again.
+  this->BuildTime.Modified();
+  this->Grid = nullptr;
+  this->HashedSource = nullptr;
+  this->CellScalars = false;
+  this->TetrahedronScalars.clear();
+  this->FaceVertexPoints.clear();
+  this->FaceVertexScalars.clear();
+  this->FaceVertexIds.clear();
+
+  // The cells as tetrahedra.
+  report(0.0);
+  this->Grid = vtkHAVSTetrahedralizer::Tetrahedralize(data, &this->Tessellation);
+  if (!this->Grid || this->Grid->GetNumberOfCells() == 0)
+  {
+    std::ostringstream why;
+    why << "No 3D cells to render in the input (" << this->Tessellation.LowerDimensionCells
+        << " of its " << this->Tessellation.InputCells
+        << " cells are vertices, lines or polygons).";
+    return this->Fail(why.str());
+  }
+  if (this->Tessellation.LowerDimensionCells > 0)
+  {
+    std::ostringstream w;
+    w << this->Tessellation.LowerDimensionCells
+      << " cells that are not 3D (vertices, lines, polygons) were skipped.";
+    this->Warnings.push_back(w.str());
+  }
+  if (this->Tessellation.Tessellated)
+  {
+    // The split grid carries the arrays under the same names and positions.
+    scalars = cellData ? this->Grid->GetCellData()->GetArray(arrayName.c_str())
+                       : this->Grid->GetPointData()->GetArray(arrayName.c_str());
+    if (!scalars)
+    {
+      int flag = -1;
+      scalars = vtkAbstractMapper::GetScalars(this->Grid, selection.Mode, selection.AccessMode,
+        selection.Id, selection.Name.empty() ? nullptr : selection.Name.c_str(), flag);
+      if (!scalars || flag != cellFlag)
+      {
+        return this->Fail("The scalars were lost splitting the cells into tetrahedra.");
+      }
+    }
+  }
+  report(0.2);
+  if (!this->Faces->Build(this->Grid))
+  {
+    return this->Fail("No tetrahedra to render in the input.");
+  }
+  report(0.6);
+  if (this->Faces->GetNumberOfSkippedCells() > 0)
+  {
+    std::ostringstream w;
+    w << this->Faces->GetNumberOfSkippedCells() << " cells could not be split into tetrahedra "
+      << "and were skipped.";
+    this->Warnings.push_back(w.str());
+  }
+  if (this->Faces->GetNumberOfDegenerateTetrahedra() > 0)
+  {
+    std::ostringstream w;
+    w << this->Faces->GetNumberOfDegenerateTetrahedra()
+      << " degenerate (zero-volume) tetrahedra were dropped.";
+    this->Warnings.push_back(w.str());
+  }
+  if (this->Faces->GetNumberOfDuplicateTetrahedra() > 0)
+  {
+    std::ostringstream w;
+    w << this->Faces->GetNumberOfDuplicateTetrahedra()
+      << " duplicate tetrahedra (the same four points as another cell) were dropped; one copy "
+         "of each is drawn.";
+    this->Warnings.push_back(w.str());
+  }
+
+  // Points, shifted by the bounds' centre so that floats keep their precision.
+  vtkUnstructuredGrid* grid = this->Grid;
+  const vtkIdType numPoints = grid->GetNumberOfPoints();
+  double bounds[6];
+  grid->GetPoints()->GetBounds(bounds);
+  for (int i = 0; i < 3; ++i)
+  {
+    this->Shift[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
+    this->Bounds[2 * i] = bounds[2 * i] - this->Shift[i];
+    this->Bounds[2 * i + 1] = bounds[2 * i + 1] - this->Shift[i];
+  }
+  this->Points.resize(3 * numPoints);
+  vtkIdType nonFinitePoints = 0;
+  for (vtkIdType p = 0; p < numPoints; ++p)
+  {
+    double x[3];
+    grid->GetPoint(p, x);
+    for (int i = 0; i < 3; ++i)
+    {
+      double v = x[i] - this->Shift[i];
+      if (!std::isfinite(v))
+      {
+        ++nonFinitePoints;
+        v = 0.0;
+      }
+      this->Points[3 * p + i] = static_cast<float>(v);
+    }
+  }
+  if (nonFinitePoints > 0)
+  {
+    std::ostringstream why;
+    why << nonFinitePoints << " non-finite point coordinates; the mesh is not rendered.";
+    return this->Fail(why.str());
+  }
+
+  if (!this->MapScalars(scalars, cellData, arrayName))
+  {
+    return false;
+  }
+  this->GeometryHash = GeometryHashOf(data);
+  this->HashedSource = data;
+  this->LastUpdate = UpdateFull;
+  this->LastUpdateSeconds = vtkTimerLog::GetUniversalTime() - start;
   report(1.0);
   this->Valid = true;
   return true;

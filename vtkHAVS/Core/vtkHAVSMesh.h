@@ -47,6 +47,7 @@
 
 class vtkDataArray;
 class vtkDataObject;
+class vtkDataSet;
 class vtkHAVSFaceSet;
 class vtkUnstructuredGrid;
 
@@ -94,8 +95,31 @@ public:
 
   /// Whether the last Build() succeeded.
   bool IsValid() const { return this->Valid; }
-  /// Modified at every Build(), successful or not.
+  /**
+   * Modified at every Build() that made the mesh again (successful or not):
+   * not for a new time step on the same mesh, whose Build() only maps the
+   * new scalars (GetScalarTime()).
+   */
   vtkMTimeType GetBuildTime() const { return this->BuildTime.GetMTime(); }
+  /// Modified whenever the scalars were mapped (every successful Build()).
+  vtkMTimeType GetScalarTime() const { return this->ScalarTime.GetMTime(); }
+
+  /// What the last Build() did: nothing (it failed), the whole mesh, or the scalars only.
+  enum Updates
+  {
+    UpdateNone,
+    UpdateFull,
+    UpdateScalars
+  };
+  int GetLastUpdate() const { return this->LastUpdate; }
+  /// Seconds the last Build() took.
+  double GetLastUpdateSeconds() const { return this->LastUpdateSeconds; }
+
+  /**
+   * A hash of a data set's geometry: its type, counts, point coordinates,
+   * cells and ghost flags (what the faces depend on), not its arrays.
+   */
+  static uint64_t GeometryHashOf(vtkDataSet* data);
 
   /// Why the last Build() failed (empty when it did not).
   const std::string& GetError() const { return this->Error; }
@@ -165,6 +189,8 @@ private:
   double ScalarOf(vtkDataArray* array, vtkIdType i) const;
   /// The per-face vertices of cell scalars (GetVertexPoints() and the rest).
   void BuildCellScalarVertices(const std::vector<float>& cellValues);
+  /// Maps `scalars` (of the grid's points or cells) to [0, 1] (the last part of Build()).
+  bool MapScalars(vtkDataArray* scalars, bool cellData, const std::string& arrayName);
 
   vtkNew<vtkHAVSFaceSet> Faces;
   vtkSmartPointer<vtkUnstructuredGrid> Grid;
@@ -193,6 +219,11 @@ private:
   vtkMTimeType BuiltInputTime = 0;
   ScalarSelection BuiltSelection;
   vtkTimeStamp BuildTime;
+  vtkTimeStamp ScalarTime;
+  uint64_t GeometryHash = 0;
+  vtkDataSet* HashedSource = nullptr; // identity only: whether GeometryHash is set
+  int LastUpdate = UpdateNone;
+  double LastUpdateSeconds = 0.0;
 };
 
 #endif

@@ -148,9 +148,14 @@ bool vtkHAVSVolumeMapper::PrepareMesh(vtkVolume* volume)
     this, volume, this->Mesh, "vtkHAVSVolumeMapper",
     [this](int which, const std::string& m) { this->WarnOnce(which, m); }, this->VectorMode,
     this->VectorComponent);
-  if (state != vtkHAVSMapperInputs::MeshUnchanged)
+  if (state == vtkHAVSMapperInputs::MeshRebuilt)
   {
     this->FaceOrder->Invalidate();
+  }
+  if (state == vtkHAVSMapperInputs::MeshRebuilt || state == vtkHAVSMapperInputs::MeshScalarsUpdated)
+  {
+    this->LastFrame->SetMeshUpdate(this->Mesh->GetLastUpdate());
+    this->LastFrame->SetMeshSeconds(this->Mesh->GetLastUpdateSeconds());
   }
   return state != vtkHAVSMapperInputs::MeshFailed;
 }

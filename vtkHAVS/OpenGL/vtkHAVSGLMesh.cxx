@@ -72,6 +72,21 @@ void vtkHAVSGLMesh::UploadGeometry(
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSGLMesh::UploadScalars(const std::vector<float>& scalars)
+{
+  if (!this->VertexArray || scalars.size() != this->Scalars.size())
+  {
+    vtkErrorMacro("UploadScalars: " << scalars.size() << " scalars for " << this->Scalars.size()
+                                    << " uploaded.");
+    return;
+  }
+  this->Scalars = scalars;
+  glBindBuffer(GL_ARRAY_BUFFER, this->ScalarBuffer);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, scalars.size() * sizeof(float), scalars.data());
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+//------------------------------------------------------------------------------
 bool vtkHAVSGLMesh::UploadFaceOrder(
   const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary, bool tagged)
 {

@@ -60,6 +60,10 @@ public:
    */
   bool UploadFaceOrder(
     const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary, bool tagged);
+  /// New scalars for the uploaded points (a new time step on the same mesh),
+  /// as many as UploadGeometry had; the boundary vertices take them at the next
+  /// UploadFaceOrder.
+  void UploadScalars(const std::vector<float>& scalars);
   /// The sections of the next frames (empty: none).
   void UploadSections(const std::vector<vtkHAVSFramePlanes::Section>& sections);
 

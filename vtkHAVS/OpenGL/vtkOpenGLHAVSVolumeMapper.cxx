@@ -166,6 +166,15 @@ bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request)
     this->GLMesh->UploadGeometry(
       mesh->GetVertexPoints(), mesh->GetVertexScalars(), mesh->GetVertexScalarComponents());
     this->Uploaded.Geometry = mesh->GetBuildTime();
+    this->Uploaded.Scalars = mesh->GetScalarTime();
+    this->Uploaded.Order = 0;
+  }
+  else if (this->Uploaded.Scalars != mesh->GetScalarTime())
+  {
+    // A new time step on the same mesh: the scalars only (the boundary
+    // vertices' copies with the next face-order upload).
+    this->GLMesh->UploadScalars(mesh->GetVertexScalars());
+    this->Uploaded.Scalars = mesh->GetScalarTime();
     this->Uploaded.Order = 0;
   }
   if (this->Uploaded.Order != request.DrawOrderVersion || this->Uploaded.Tagged != request.Tagging)

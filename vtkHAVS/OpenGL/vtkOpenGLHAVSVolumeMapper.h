@@ -110,6 +110,7 @@ private:
   struct UploadedVersions
   {
     vtkMTimeType Geometry = 0;
+    vtkMTimeType Scalars = 0;
     vtkMTimeType Order = 0;
     bool Tagged = false; // the order went up with boundary vertices
     vtkMTimeType Sections = 0;
