@@ -14,8 +14,8 @@
 // max < 0.01, leaving out 0.05 % (5) edge pixels as the other exactness tests:
 //   linear     hexahedra (interior points moved: warped cells), wedges,
 //              pyramids, voxels, a block mixing the four, quadratic
-//              tetrahedra, and vtkImageData, vtkRectilinearGrid and
-//              vtkStructuredGrid fed as they are, each carrying the linear
+//              tetrahedra, quadratic and triquadratic hexahedra, and vtkImageData,
+//              vtkRectilinearGrid and vtkStructuredGrid fed as they are, each carrying the linear
 //              field s = x + 2y + 3z on the unit cube. A linear field is
 //              integrated exactly by any tessellation of the cube, so every
 //              image must equal the exact image of the cube cut into the
@@ -335,6 +335,42 @@ vtkSmartPointer<vtkUnstructuredGrid> QuadraticTetrahedra(int n)
   return grid;
 }
 
+/// The unit cube in n^3 quadratic (20-node) or triquadratic (27-node)
+/// hexahedra whose nodes lie on a lattice of 2n + 1 points per axis (shared).
+vtkSmartPointer<vtkUnstructuredGrid> QuadraticHexahedra(int n, bool triquadratic)
+{
+  const int m = 2 * n;
+  auto points = LatticePoints(m, 0.0);
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(points);
+  // Corners, edge middles (vtkQuadraticHexahedron's order), then for the
+  // triquadratic one the face centres and the centre.
+  const int nodes[27][3] = { { 0, 0, 0 }, { 2, 0, 0 }, { 2, 2, 0 }, { 0, 2, 0 }, { 0, 0, 2 },
+    { 2, 0, 2 }, { 2, 2, 2 }, { 0, 2, 2 }, { 1, 0, 0 }, { 2, 1, 0 }, { 1, 2, 0 }, { 0, 1, 0 },
+    { 1, 0, 2 }, { 2, 1, 2 }, { 1, 2, 2 }, { 0, 1, 2 }, { 0, 0, 1 }, { 2, 0, 1 }, { 2, 2, 1 },
+    { 0, 2, 1 }, { 0, 1, 1 }, { 2, 1, 1 }, { 1, 0, 1 }, { 1, 2, 1 }, { 1, 1, 0 }, { 1, 1, 2 },
+    { 1, 1, 1 } };
+  const int count = triquadratic ? 27 : 20;
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        vtkIdType ids[27];
+        for (int v = 0; v < count; ++v)
+        {
+          ids[v] = LatticeId(m, 2 * i + nodes[v][0], 2 * j + nodes[v][1], 2 * k + nodes[v][2]);
+        }
+        grid->InsertNextCell(
+          triquadratic ? VTK_TRIQUADRATIC_HEXAHEDRON : VTK_QUADRATIC_HEXAHEDRON, count, ids);
+      }
+    }
+  }
+  SetLinearField(grid);
+  return grid;
+}
+
 /// A mapper at its defaults, its float result kept (HAVS without early termination).
 vtkSmartPointer<vtkUnstructuredGridVolumeMapper> MakeMapper(bool cells)
 {
@@ -470,6 +506,8 @@ int LinearCells()
                    : (i < 2 ? CubeAs::Hexahedron : (i < 3 ? CubeAs::Wedges : CubeAs::Pyramids));
     });
   auto quadratic = QuadraticTetrahedra(3);
+  auto quadraticHexes = QuadraticHexahedra(3, false);
+  auto triquadraticHexes = QuadraticHexahedra(3, true);
 
   vtkNew<vtkImageData> image;
   image->SetDimensions(n + 1, n + 1, n + 1);
@@ -507,6 +545,9 @@ int LinearCells()
     { "pyramids", pyramids, surface }, { "voxels", voxels, surface },
     { "mixed: voxels, hexahedra, wedges, pyramids", mixed, surface },
     { "quadratic tetrahedra", quadratic, 4 * 6 * 2 * 3 * 3 },
+    // VTK's split: a 20-node face into 6 triangles, a 27-node face into 8.
+    { "quadratic hexahedra (20 nodes)", quadraticHexes, 6 * 3 * 3 * 6 },
+    { "triquadratic hexahedra (27 nodes)", triquadraticHexes, 6 * 3 * 3 * 8 },
     { "vtkImageData as it is", image, surface },
     { "vtkRectilinearGrid as it is", rectilinear, surface },
     { "vtkStructuredGrid (warped) as it is", structured, surface } };
