@@ -10,6 +10,7 @@
 #include "vtkHAVSCellProjectionMapper.h"
 
 #include "vtkInformation.h"
+#include "vtkUnstructuredGridBase.h"
 
 #include "vtkHAVSCellGeometry.h"
 #include "vtkHAVSFaceSet.h"
@@ -55,6 +56,18 @@ bool vtkHAVSCellProjectionMapper::DrawCells(vtkRenderer*, const CellFrame&, doub
 const std::vector<float>* vtkHAVSCellProjectionMapper::GetKeptResult(int[2])
 {
   return nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSCellProjectionMapper::SetInputData(vtkDataSet* input)
+{
+  this->SetInputDataInternal(0, input);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSCellProjectionMapper::SetInputData(vtkUnstructuredGridBase* input)
+{
+  this->SetInputDataInternal(0, input);
 }
 
 //------------------------------------------------------------------------------

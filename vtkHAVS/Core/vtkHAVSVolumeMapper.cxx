@@ -10,6 +10,7 @@
 #include "vtkHAVSVolumeMapper.h"
 
 #include "vtkInformation.h"
+#include "vtkUnstructuredGridBase.h"
 
 #include "vtkHAVSFaceOrderPolicy.h"
 #include "vtkHAVSFaceSet.h"
@@ -123,6 +124,18 @@ const std::vector<float>* vtkHAVSVolumeMapper::GetKeptResult(int[2])
 void vtkHAVSVolumeMapper::WarnOnce(int which, const std::string& message)
 {
   vtkHAVSMapperInputs::WarnOnceBy(this, this->Warned[which], message);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::SetInputData(vtkDataSet* input)
+{
+  this->SetInputDataInternal(0, input);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::SetInputData(vtkUnstructuredGridBase* input)
+{
+  this->SetInputDataInternal(0, input);
 }
 
 //------------------------------------------------------------------------------

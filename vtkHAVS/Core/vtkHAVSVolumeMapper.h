@@ -285,6 +285,16 @@ public:
   ///@}
 
   ///@{
+  /**
+   * The input: any vtkDataSet (vtkUnstructuredGridVolumeMapper's
+   * SetInputData(vtkDataSet*) refuses what is not an unstructured grid), or a
+   * composite data set of them (SetInputDataObject or a pipeline connection).
+   */
+  void SetInputData(vtkDataSet* input) override;
+  void SetInputData(vtkUnstructuredGridBase* input) override;
+  ///@}
+
+  ///@{
   /// The input's bounds, also for a composite input (all its blocks).
   double* GetBounds() override;
   void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
