@@ -15,7 +15,7 @@ import argparse
 import os
 import sys
 
-from paraview.simple import (ColorBy, CreateRenderView, GetColorTransferFunction,
+from paraview.simple import (ColorBy, GetColorTransferFunction,
                              GetOpacityTransferFunction, LoadPlugin, Render, SaveScreenshot,
                              Show, TrivialProducer)
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdList, vtkPoints
@@ -24,7 +24,8 @@ from vtkmodules.vtkCommonDataModel import (VTK_HEXAHEDRON, vtkMultiBlockDataSet,
 from vtkmodules.vtkFiltersCore import vtkAppendFilter, vtkCellDataToPointData, vtkExtractCells
 
 import vtkhavs
-from havs_plugin_scene import SIZE, compare, png_rgb, reference_rgb, require_working_expat
+from havs_plugin_scene import (SIZE, compare, new_view, png_rgb, reference_rgb,
+                               require_working_expat)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -118,11 +119,7 @@ blocks.SetBlock(1, tetrahedra())
 source = TrivialProducer()
 source.GetClientSideObject().SetOutput(blocks)
 source.UpdatePipeline()
-view = CreateRenderView()
-view.ViewSize = [SIZE, SIZE]
-view.OrientationAxesVisibility = 0
-view.Background = [0.0, 0.0, 0.0]
-view.UseColorPaletteForBackground = 0
+view = new_view()
 display = Show(source, view)
 ColorBy(display, ("CELLS", "c"))
 display.Representation = "HAVS Volume"

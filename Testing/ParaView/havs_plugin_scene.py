@@ -87,15 +87,21 @@ def style_havs_volume(display, array, data_range, length):
     return lut, pwf
 
 
-def show_lox_post(grid):
-    """The LOX post as HAVS Volume in a new SIZE x SIZE view on a black background, seen
-    from azimuth 30, elevation 20. Returns (tets source, view, display, lut, pwf)."""
-    tets = Tetrahedralize(Input=LegacyVTKReader(FileNames=[lox_post_path()]))
+def new_view():
+    """A new SIZE x SIZE render view on a black background, without orientation axes."""
     view = CreateRenderView()
     view.ViewSize = [SIZE, SIZE]
     view.OrientationAxesVisibility = 0
     view.Background = [0.0, 0.0, 0.0]
     view.UseColorPaletteForBackground = 0
+    return view
+
+
+def show_lox_post(grid):
+    """The LOX post as HAVS Volume in a new SIZE x SIZE view on a black background, seen
+    from azimuth 30, elevation 20. Returns (tets source, view, display, lut, pwf)."""
+    tets = Tetrahedralize(Input=LegacyVTKReader(FileNames=[lox_post_path()]))
+    view = new_view()
     display = Show(tets, view)
     lut, pwf = style_havs_volume(
         display, "Pressure", grid.GetPointData().GetArray("Pressure").GetRange(),
