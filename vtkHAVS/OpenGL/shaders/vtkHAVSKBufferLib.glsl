@@ -111,9 +111,9 @@ void havsCountViolation()
 }
 
 const float HAVS_TIE = 1.0e-4;
-// Relative float rounding of a fragment's distance (below the 4e-6 that ranks
-// internal < exit < entry at one distance).
-const float HAVS_CELL_TIE = 2.0e-6;
+// Cell scalars: how close (relative) two internal fragments are a near-tie
+// that arrival order decides (havsInsert).
+const float HAVS_CELL_TIE = 3.0e-5;
 
 
 bool havsIsExit(float code)
@@ -242,12 +242,16 @@ void havsInsert(
     }
     float key = havsLeaveKey(E[i]);
 #if HAVS_CELL_SCALARS
-    // Cell scalars: a waiting fragment within float rounding of the arriving
-    // one leaves first. Near a shared edge the two come from faces of one
-    // cell, drawn in the exact order (the cell's entry face first), and the
-    // one that leaves last gives the next segment its cell: rounding must not
-    // swap them. (At k = 2, the default, the waiting one is the earlier.)
-    float margin = nearest == 0 ? HAVS_CELL_TIE * abs(leavingKey) : 0.0;
+    // Cell scalars: of two internal fragments this close, the waiting one
+    // leaves first. Near a shared edge or vertex a ray crosses a chain of
+    // faces at nearly one distance, drawn in the exact order (each cell's
+    // entry face before its exit face), and the one that leaves last gives
+    // the next segment its cell: rounding must not reorder them (measured:
+    // up to 10 pixels a 96^2 view off by up to 0.16 with 2e-6, none with 3e-5).
+    // At k = 2, the default, the waiting one is the earlier. Boundary
+    // fragments keep the rank order below.
+    float margin = (nearest == 0 && f.y < 1.5 && E[i].y < 1.5) ? HAVS_CELL_TIE * abs(leavingKey)
+                                                                : 0.0;
 #else
     float margin = 0.0;
 #endif
