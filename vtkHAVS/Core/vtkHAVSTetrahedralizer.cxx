@@ -25,16 +25,6 @@
 
 namespace
 {
-vtkIdType CountCells(vtkDataSet* data, int type)
-{
-  vtkIdType count = 0;
-  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
-  {
-    count += data->GetCellType(c) == type ? 1 : 0;
-  }
-  return count;
-}
-
 const char* const kOriginalCell = "vtkHAVSTetrahedralizerOriginalCell";
 
 /**
@@ -229,9 +219,9 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
     else if (type != VTK_TETRA)
     {
       ++r.SplitCells;
+      r.QuadraticTetrahedra += type == VTK_QUADRATIC_TETRA ? 1 : 0;
     }
   }
-  r.QuadraticTetrahedra = CountCells(data, VTK_QUADRATIC_TETRA);
   vtkSmartPointer<vtkUnstructuredGrid> grid;
   if (r.QuadraticTetrahedra > 0)
   {
