@@ -60,6 +60,7 @@ vtkHAVSKBufferShaders::Features vtkHAVSGLPassContext::ShaderFeatures() const
   f.Tagging = this->Request.Tagging;
   f.Opaque = this->Request.Opaque;
   f.CellScalars = this->Request.CellScalars;
+  f.Clipping = this->Request.Planes && this->Request.Planes->GetNumberOfPlanes() > 0;
   return f;
 }
 

@@ -35,6 +35,7 @@ struct vtkHAVSKBufferShaderFeatures
   bool Tagging = true;         ///< boundary fragments carry their role (a per-fragment fetch)
   bool Opaque = true;          ///< opaque geometry may end the rays (a per-fragment depth fetch)
   bool CellScalars = false;    ///< a fragment carries the scalar of the cell behind it
+  bool Clipping = true;        ///< clipping or near planes cut the mesh (a loop over them)
 };
 
 class VTKHAVSOPENGL_EXPORT vtkHAVSKBufferShaders

@@ -29,7 +29,8 @@
 // Features compiled in or out per frame (vtkHAVSKBufferShaders::Features):
 // HAVS_COUNT_VIOLATIONS the order-violation counter and its tie tolerance;
 // HAVS_TAGGING the boundary role of a boundary face's fragment (its facing); HAVS_OPAQUE the opaque surface that ends the rays (a per-fragment
-// depth fetch). A feature a frame does not need costs nothing.
+// depth fetch); HAVS_CLIPPING the clipping and near planes (a loop over
+// them). A feature a frame does not need costs nothing.
 #ifndef HAVS_COUNT_VIOLATIONS
 #define HAVS_COUNT_VIOLATIONS 1
 #endif
@@ -41,6 +42,9 @@
 #endif
 #ifndef HAVS_CELL_SCALARS
 #define HAVS_CELL_SCALARS 0
+#endif
+#ifndef HAVS_CLIPPING
+#define HAVS_CLIPPING 1
 #endif
 
 // The face passes' scalar input (declared with HAVS_FACE_SCALAR_INPUT) and the
@@ -183,34 +187,40 @@ vec4 havsSegment(vec2 a, vec2 b)
 #endif
   vec3 coord = vec3(t.xy * havsScalarTexel.x + havsScalarTexel.y,
     t.z * havsLengthTexel.x + havsLengthTexel.y);
-  return texture(havsTable, coord);
+  // Level 0 named: no derivatives, no level selection (the table has one level).
+  return textureLod(havsTable, coord, 0.0);
 }
 
 // Moves the front to p (the next fragment in depth order), compositing the
 // segment between them front to back; ends the ray at the opaque surface,
-// cutting the last segment there with its scalar interpolated.
+// cutting the last segment there with its scalar interpolated. One table
+// look-up either way: a rasterizer that runs both sides of a branch (llvmpipe
+// masks lanes instead of branching) pays for each look-up written.
 void havsAdvance(inout vec4 color, inout vec2 front, vec2 p, float opaqueDistance)
 {
   if (front.x == HAVS_DONE)
   {
     return;
   }
-  if (p.x > opaqueDistance)
+  vec2 back = p;
+#if HAVS_OPAQUE
+  bool reached = p.x > opaqueDistance;
+  if (reached)
   {
-    if (front.x > HAVS_NO_FRONT && !havsIsExit(front.y) && opaqueDistance > front.x)
-    {
-      float t = clamp((opaqueDistance - front.x) / (p.x - front.x), 0.0, 1.0);
-      vec2 cut = vec2(opaqueDistance, mix(havsScalarOf(front.y), havsScalarOf(p.y), t));
-      color += (1.0 - color.a) * havsSegment(front, cut);
-    }
-    front = vec2(HAVS_DONE, 0.0);
-    return;
+    // Empty when the surface lies in front of the front (havsSegment: length <= 0).
+    float t = clamp((opaqueDistance - front.x) / (p.x - front.x), 0.0, 1.0);
+    back = vec2(opaqueDistance, mix(havsScalarOf(front.y), havsScalarOf(p.y), t));
   }
+#endif
   if (front.x > HAVS_NO_FRONT)
   {
-    color += (1.0 - color.a) * havsSegment(front, p);
+    color += (1.0 - color.a) * havsSegment(front, back);
   }
+#if HAVS_OPAQUE
+  front = reached ? vec2(HAVS_DONE, 0.0) : p;
+#else
   front = p;
+#endif
 }
 
 bool havsRayEnded(vec4 color, vec2 front)
@@ -299,6 +309,7 @@ void havsFlush(inout vec4 color, inout vec2 E[HAVS_K], float opaqueDistance)
 // in front of the near plane (a section is not tested against its own plane).
 bool havsClipped(vec3 positionRC)
 {
+#if HAVS_CLIPPING
   for (int i = 0; i < havsPlaneCount; ++i)
   {
     if (i != havsOwnPlane && dot(havsPlanesRC[i].xyz, positionRC) + havsPlanesRC[i].w < 0.0)
@@ -306,6 +317,7 @@ bool havsClipped(vec3 positionRC)
       return true;
     }
   }
+#endif
   return false;
 }
 
