@@ -260,6 +260,7 @@ int RunWorker(const Options& o)
   double sumSquares = 0, maxError = 0;
   double over1 = 0, pixels = 0;
   int viewsDone = 0;
+  std::string tableText = "-";
   if (config == "reference")
   {
     // The exact images of every view, computed once and cached before any
@@ -338,6 +339,11 @@ int RunWorker(const Options& o)
         m->SetEarlyRayTerminationOpacity(
           vtkNew<vtkHAVSVolumeMapper>()->GetEarlyRayTerminationOpacity());
       }
+      else if (config == "havs-default-table128")
+      {
+        // The defaults with the fixed 128^3 table: what the automatic table buys.
+        m->AutomaticTableResolutionOff();
+      }
       else
       {
         m->SetVisibilityOrderToCentroid(); // unless -mpvo or -auto says otherwise
@@ -345,6 +351,7 @@ int RunWorker(const Options& o)
         m->SetKBufferSize(k == std::string::npos ? 6 : std::atoi(config.c_str() + k + 2));
         const size_t t = config.find("-table");
         const int table = t == std::string::npos ? 128 : std::atoi(config.c_str() + t + 6);
+        m->AutomaticTableResolutionOff(); // the configurations name their table
         m->SetTableScalarResolution(table);
         m->SetTableLengthResolution(table);
         if (config.find("-mpvo") != std::string::npos)
@@ -512,6 +519,16 @@ int RunWorker(const Options& o)
         break;
       }
     }
+    if (havs) // the table HAVS drew with: N (fixed) or N:error (chosen automatically)
+    {
+      tableText = std::to_string(havs->GetLastTableScalarResolution());
+      if (havs->GetAutomaticTableResolution())
+      {
+        char e[32];
+        std::snprintf(e, sizeof(e), ":%.2g", havs->GetLastTableError());
+        tableText += e;
+      }
+    }
   }
   const double rmse = pixels > 0 ? std::sqrt(sumSquares / (3 * pixels)) : NAN;
   if (pixels == 0)
@@ -521,13 +538,14 @@ int RunWorker(const Options& o)
   std::printf("RESULT dataset=%s config=%s size=%d tets=%lld views=%d frames=%zu ms_median=%.3f "
               "ms_min=%.3f ms_max=%.3f sort_ms=%.3f gather_ms=%.3f draw_ms=%.3f flush_ms=%.3f "
               "composite_ms=%.3f upload_ms=%.3f readback_ms=%.3f layers_ms=%.3f rmse=%.6f max=%.6f "
-              "over1=%.6f peak_mb=%.1f smp=%s threads=%d\n",
+              "over1=%.6f peak_mb=%.1f smp=%s threads=%d table=%s\n",
     dataset.c_str(), config.c_str(), o.Size, static_cast<long long>(tets), viewsDone, frame.size(),
     Median(frame), frame.empty() ? NAN : *std::min_element(frame.begin(), frame.end()),
     frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort),
     Median(gather), Median(draw), Median(flush), Median(composite), Median(upload),
     Median(readback), Median(layers), rmse, maxError, pixels > 0 ? over1 / pixels : NAN,
-    PeakMegabytes(), vtkSMPTools::GetBackend(), vtkSMPTools::GetEstimatedNumberOfThreads());
+    PeakMegabytes(), vtkSMPTools::GetBackend(), vtkSMPTools::GetEstimatedNumberOfThreads(),
+    tableText.c_str());
   return EXIT_SUCCESS;
 }
 
@@ -552,7 +570,7 @@ using Row = std::map<std::string, std::string>;
 const char* const kColumns[] = { "dataset", "config", "size", "tets", "views", "frames",
   "ms_median", "ms_min", "ms_max", "sort_ms", "gather_ms", "draw_ms", "flush_ms", "composite_ms",
   "upload_ms", "readback_ms", "layers_ms", "mtets_per_s", "rmse", "max", "over1", "peak_mb", "smp",
-  "threads", "command" };
+  "threads", "table", "command" };
 
 /// A CSV field, quoted where it holds a comma or a quote.
 std::string CsvField(const std::string& text)

@@ -12,6 +12,7 @@
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSPreIntegrationTable.h"
+#include "vtkHAVSTableResolution.h"
 
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkAlgorithm.h"
@@ -126,7 +127,8 @@ vtkHAVSMapperInputs::MeshState vtkHAVSMapperInputs::PrepareMesh(vtkAbstractVolum
 //------------------------------------------------------------------------------
 bool vtkHAVSMapperInputs::PrepareTable(vtkAbstractVolumeMapper* mapper, vtkVolume* volume,
   vtkHAVSMesh* mesh, vtkHAVSPreIntegrationTable* table, int scalarResolution, int lengthResolution,
-  const char* mapperName, const WarnOnce& warnOnce, bool* rebuilt)
+  const char* mapperName, const WarnOnce& warnOnce, bool* rebuilt,
+  vtkHAVSTableResolution* automatic)
 {
   *rebuilt = false;
   vtkVolumeProperty* property = volume->GetProperty();
@@ -154,13 +156,20 @@ bool vtkHAVSMapperInputs::PrepareTable(vtkAbstractVolumeMapper* mapper, vtkVolum
   }
   const double maxLength = std::max(mesh->GetFaceSet()->GetLongestEdge() * stretch, 1e-30);
 
-  table->SetScalarResolution(scalarResolution);
-  table->SetLengthResolution(lengthResolution);
   const double* range = mesh->GetScalarRange();
-  if (table->NeedsRebuild(property, component, range, maxLength))
+  if (!automatic)
+  {
+    table->SetScalarResolution(scalarResolution);
+    table->SetLengthResolution(lengthResolution);
+  }
+  if (automatic ? automatic->NeedsRebuild(table, property, component, range, maxLength,
+                    scalarResolution, lengthResolution)
+                : table->NeedsRebuild(property, component, range, maxLength))
   {
     mapper->UpdateProgress(0.0);
-    if (!table->Build(property, component, range, maxLength))
+    if (automatic ? !automatic->Build(table, property, component, range, maxLength,
+                      scalarResolution, lengthResolution)
+                  : !table->Build(property, component, range, maxLength))
     {
       vtkErrorWithObjectMacro(
         mapper, "The pre-integrated transfer-function table could not be built.");

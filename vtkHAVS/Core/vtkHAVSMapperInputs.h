@@ -32,6 +32,7 @@ class vtkFloatArray;
 class vtkObject;
 class vtkHAVSMesh;
 class vtkHAVSPreIntegrationTable;
+class vtkHAVSTableResolution;
 class vtkInformation;
 class vtkRenderer;
 class vtkVolume;
@@ -83,10 +84,13 @@ public:
    * (Re)builds `table` for the volume's property when it, the scalar range,
    * the resolutions or the longest segment (the mesh's longest edge times
    * the volume matrix's largest stretch) changed; `rebuilt` says whether it did.
+   * With `automatic`, the resolutions are the largest allowed and `automatic`
+   * chooses the cheapest table within its error bound.
    */
   static bool PrepareTable(vtkAbstractVolumeMapper* mapper, vtkVolume* volume, vtkHAVSMesh* mesh,
     vtkHAVSPreIntegrationTable* table, int scalarResolution, int lengthResolution,
-    const char* mapperName, const WarnOnce& warnOnce, bool* rebuilt);
+    const char* mapperName, const WarnOnce& warnOnce, bool* rebuilt,
+    vtkHAVSTableResolution* automatic = nullptr);
 
   /// Warns through `mapper` unless `warned` (then sets it): a warning given once.
   static void WarnOnceBy(vtkObject* mapper, bool& warned, const std::string& message);

@@ -20,6 +20,7 @@
 #include "vtkHAVSMapperInputs.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSPreIntegrationTable.h"
+#include "vtkHAVSTableResolution.h"
 #include "vtkHAVSViewFrame.h"
 #include "vtkHAVSVisibilityOrder.h"
 
@@ -180,7 +181,7 @@ bool vtkHAVSVolumeMapper::PrepareTable(vtkVolume* volume)
   const bool ok = vtkHAVSMapperInputs::PrepareTable(
     this, volume, this->Mesh, this->Table, this->TableScalarResolution, this->TableLengthResolution,
     "vtkHAVSVolumeMapper", [this](int which, const std::string& m) { this->WarnOnce(which, m); },
-    &rebuilt);
+    &rebuilt, this->AutomaticTableResolution ? this->TableChooser.Get() : nullptr);
   if (rebuilt)
   {
     this->TableBuildTime.Modified();
@@ -242,7 +243,8 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     return;
   }
-  stats->SetTableSeconds(this->Table->GetLastBuildSeconds());
+  stats->SetTableSeconds(this->AutomaticTableResolution ? this->TableChooser->GetLastSeconds()
+                                                        : this->Table->GetLastBuildSeconds());
 
   // 3. The view: every coordinate frame, once.
   const vtkHAVSViewFrame view = vtkHAVSViewFrame::Make(renderer, volume, this->Mesh->GetShift());
@@ -436,6 +438,36 @@ vtkHAVSFaceSorter* vtkHAVSVolumeMapper::GetFaceSorter()
   return this->FaceOrder->GetCentroidSorter();
 }
 
+void vtkHAVSVolumeMapper::SetTableErrorBound(double bound)
+{
+  if (bound != this->TableChooser->GetErrorBound())
+  {
+    this->TableChooser->SetErrorBound(bound);
+    this->Modified();
+  }
+}
+
+double vtkHAVSVolumeMapper::GetTableErrorBound()
+{
+  return this->TableChooser->GetErrorBound();
+}
+
+int vtkHAVSVolumeMapper::GetLastTableScalarResolution()
+{
+  return this->Table->GetScalarResolution();
+}
+
+int vtkHAVSVolumeMapper::GetLastTableLengthResolution()
+{
+  return this->Table->GetLengthResolution();
+}
+
+double vtkHAVSVolumeMapper::GetLastTableError()
+{
+  return this->AutomaticTableResolution ? this->TableChooser->GetLastError() : -1.0;
+}
+
+//------------------------------------------------------------------------------
 vtkHAVSPreIntegrationTable* vtkHAVSVolumeMapper::GetPreIntegrationTable()
 {
   return this->Table;
@@ -450,6 +482,8 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EarlyRayTerminationOpacity: " << this->EarlyRayTerminationOpacity << "\n";
   os << indent << "Table: " << this->TableScalarResolution << " x " << this->TableScalarResolution
      << " x " << this->TableLengthResolution << "\n";
+  os << indent << "AutomaticTableResolution: " << this->AutomaticTableResolution << " (error bound "
+     << this->TableChooser->GetErrorBound() << ")\n";
   os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
   os << indent << "FaceRasterBoundMode: " << this->FaceRasterBoundMode << "\n";

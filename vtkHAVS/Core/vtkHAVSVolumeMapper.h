@@ -66,6 +66,7 @@ class vtkHAVSFramePlanes;
 class vtkHAVSFrameStatistics;
 class vtkHAVSMesh;
 class vtkHAVSPreIntegrationTable;
+class vtkHAVSTableResolution;
 class vtkHAVSViewFrame;
 class vtkRenderWindow;
 
@@ -147,11 +148,35 @@ public:
   /**
    * Size of the pre-integrated table: entries along the front and back
    * scalar axes (default 128) and along the segment length (default 128).
+   * With AutomaticTableResolution these are the largest allowed.
    */
   vtkSetClampMacro(TableScalarResolution, int, 2, 1024);
   vtkGetMacro(TableScalarResolution, int);
   vtkSetClampMacro(TableLengthResolution, int, 2, 1024);
   vtkGetMacro(TableLengthResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * The cheapest table within an error bound (vtkHAVSTableResolution): on
+   * (default), each table build tries 32, 64, ... up to the resolutions above
+   * and keeps the first whose error per segment, measured against the
+   * adaptive integral, is at most TableErrorBound (default 2e-3); a smaller
+   * table is sampled faster. Off: the resolutions above are used as they are.
+   */
+  vtkSetMacro(AutomaticTableResolution, bool);
+  vtkGetMacro(AutomaticTableResolution, bool);
+  vtkBooleanMacro(AutomaticTableResolution, bool);
+  void SetTableErrorBound(double bound);
+  double GetTableErrorBound();
+  ///@}
+
+  ///@{
+  /// The table in use: its resolutions (after the automatic choice) and, when
+  /// chosen automatically, its measured error per segment (else -1).
+  int GetLastTableScalarResolution();
+  int GetLastTableLengthResolution();
+  double GetLastTableError();
   ///@}
 
   ///@{
@@ -455,6 +480,7 @@ protected:
   double EarlyRayTerminationOpacity = 0.999;
   int TableScalarResolution = 128;
   int TableLengthResolution = 128;
+  bool AutomaticTableResolution = true;
   bool MeasureStageTimes = false;
   bool KeepFloatResult = false;
   bool FaceRasterBoundMode = false;
@@ -477,6 +503,7 @@ private:
 
   vtkNew<vtkHAVSMesh> Mesh;
   vtkNew<vtkHAVSPreIntegrationTable> Table;
+  vtkNew<vtkHAVSTableResolution> TableChooser;
   vtkTimeStamp TableBuildTime;
   vtkNew<vtkHAVSFramePlanes> Planes;
   vtkNew<vtkHAVSFaceOrderPolicy> FaceOrder;
