@@ -171,6 +171,20 @@ if args.mode == "serial":
     display.HAVSKBufferSize = 14
     Render(view)
 
+    # The table: chosen automatically by default (at most the panel's size), fixed when off.
+    check(display.HAVSAutomaticTable == 1 and mapper.GetAutomaticTableResolution()
+          and mapper.GetLastTableScalarResolution() <= 128 and mapper.GetLastTableError() >= 0,
+          "default: the automatic table (%d^3, error %.2g)"
+          % (mapper.GetLastTableScalarResolution(), mapper.GetLastTableError()))
+    display.HAVSAutomaticTable = 0
+    display.HAVSTableResolution = 64
+    Render(view)
+    check(not mapper.GetAutomaticTableResolution() and mapper.GetLastTableScalarResolution() == 64,
+          "automatic table off: the panel's size (%d)" % mapper.GetLastTableScalarResolution())
+    display.HAVSAutomaticTable = 1
+    display.HAVSTableResolution = 128
+    Render(view)
+
     # A structured grid (the blunt fin, PLOT3D) through the same representation type.
     Hide(tets, view)
     xyz = os.path.join(os.environ["HAVS_DATA_DIR"], "bluntfinxyz.bin")

@@ -15,7 +15,6 @@
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -26,132 +25,38 @@ vtkStandardNewMacro(vtkHAVSTableResolution);
 double vtkHAVSTableResolution::MeasureError(
   vtkHAVSPreIntegrationTable* table, vtkVolumeProperty* property, int component) const
 {
-  const int ns = table->GetScalarResolution();
   const int nl = table->GetLengthResolution();
-  const float* values = table->GetTable();
   const double* range = table->GetScalarRange();
   const double span = range[1] - range[0];
   const double maxLength = table->GetMaxLength();
-  if (!values || ns < 2 || nl < 2 || !(maxLength > 0.0))
+  const double unitDistance = property ? property->GetScalarOpacityUnitDistance(component) : 0.0;
+  if (!table->GetTable() || nl < 2 || !(maxLength > 0.0) || !(unitDistance > 0.0))
   {
     return 0.0;
   }
-
-  // Probes, in normalized coordinates (front, back, length), where trilinear
-  // interpolation errs most, a quarter each:
-  // - beside the functions' nodes (their kinks make the table's kinks), on one
-  //   axis or on both;
-  // - near the diagonal (front and back within a cell: short scalar spans,
-  //   where a kink between them bends the entry most);
-  // - in the cells whose corners differ most;
-  // - anywhere.
-  // Positions inside a cell are random: a kink's error peaks where it lies.
-  std::vector<double> nodes;
-  if (span > 0.0)
-  {
-    vtkHAVSPreIntegrationTable::GetFunctionNodes(property, component, nodes);
-    for (double& x : nodes)
-    {
-      x = (x - range[0]) / span;
-    }
-    nodes.erase(
-      std::remove_if(nodes.begin(), nodes.end(), [](double x) { return !(x >= 0.0 && x <= 1.0); }),
-      nodes.end());
-  }
+  // Segments drawn uniformly (fixed seed); each one's error is divided by its
+  // length in unit distances, at least one length step of the table (below
+  // it the entries are nearly linear in the length, and both vanish at 0).
   std::mt19937 random(20261202u);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const double cell = 1.0 / (ns - 1);
-  auto clamp01 = [](double x) { return std::min(std::max(x, 0.0), 1.0); };
-  auto nearNode = [&]()
-  {
-    return nodes.empty()
-      ? unit(random)
-      : clamp01(
-          nodes[std::min(static_cast<size_t>(unit(random) * nodes.size()), nodes.size() - 1)] +
-          (unit(random) - 0.5) * 2.0 * cell);
-  };
-
-  auto entry = [&](int f, int b, int l, int c)
-  { return values[((static_cast<size_t>(l) * ns + b) * ns + f) * 4 + c]; };
-  std::uniform_int_distribution<int> pickScalar(0, ns - 2);
-  std::uniform_int_distribution<int> pickLength(0, nl - 2);
-  using Cell = std::array<int, 3>;
-  const int quarter = std::max(this->ProbeCount / 4, 1);
-  std::vector<std::pair<double, Cell>> spread(std::max(16 * quarter, 1024));
-  for (auto& sp : spread)
-  {
-    const Cell cl = { pickScalar(random), pickScalar(random), pickLength(random) };
-    double largest = 0.0;
-    for (int c = 0; c < 4; ++c)
-    {
-      double lo = 1e30, hi = -1e30;
-      for (int corner = 0; corner < 8; ++corner)
-      {
-        const double v =
-          entry(cl[0] + (corner & 1), cl[1] + ((corner >> 1) & 1), cl[2] + ((corner >> 2) & 1), c);
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-      }
-      largest = std::max(largest, hi - lo);
-    }
-    sp = { largest, cl };
-  }
-  std::partial_sort(spread.begin(), spread.begin() + quarter, spread.end(),
-    [](const auto& x, const auto& y) { return x.first > y.first; });
-
-  std::vector<std::array<double, 3>> probes;
-  probes.reserve(this->ProbeCount);
+  const double shortest = maxLength / (nl - 1);
+  double sum = 0.0;
   for (int p = 0; p < this->ProbeCount; ++p)
   {
-    const int kind = p % 4;
-    std::array<double, 3> t;
-    t[2] = unit(random);
-    if (kind == 0)
-    {
-      t[0] = nearNode();
-      const double which = unit(random);
-      t[1] = which < 0.4
-        ? nearNode()
-        : (which < 0.7 ? clamp01(t[0] + (unit(random) - 0.5) * 2.0 * cell) : unit(random));
-      if (unit(random) < 0.5)
-      {
-        std::swap(t[0], t[1]);
-      }
-    }
-    else if (kind == 1)
-    {
-      t[0] = unit(random);
-      t[1] = clamp01(t[0] + (unit(random) - 0.5) * 2.0 * cell);
-    }
-    else if (kind == 2)
-    {
-      const Cell& cl = spread[(p / 4) % quarter].second;
-      t = { (cl[0] + unit(random)) * cell, (cl[1] + unit(random)) * cell,
-        (cl[2] + unit(random)) / (nl - 1) };
-    }
-    else
-    {
-      t[0] = unit(random);
-      t[1] = unit(random);
-    }
-    probes.push_back(t);
-  }
-
-  double error = 0.0;
-  for (const auto& t : probes)
-  {
-    const double sf = range[0] + span * clamp01(t[0]);
-    const double sb = range[0] + span * clamp01(t[1]);
-    const double length = maxLength * clamp01(t[2]);
+    const double sf = range[0] + span * unit(random);
+    const double sb = range[0] + span * unit(random);
+    const double length = maxLength * unit(random);
     double looked[4], exact[4];
     table->Lookup(sf, sb, length, looked);
     vtkHAVSPreIntegrationTable::IntegrateSegment(property, component, sf, sb, length, exact);
+    double error = 0.0;
     for (int c = 0; c < 4; ++c)
     {
       error = std::max(error, std::abs(looked[c] - exact[c]));
     }
+    sum += error * unitDistance / std::max(length, shortest);
   }
-  return error;
+  return sum / this->ProbeCount;
 }
 
 //------------------------------------------------------------------------------

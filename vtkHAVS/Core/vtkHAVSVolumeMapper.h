@@ -160,9 +160,10 @@ public:
   /**
    * The cheapest table within an error bound (vtkHAVSTableResolution): on
    * (default), each table build tries 32, 64, ... up to the resolutions above
-   * and keeps the first whose error per segment, measured against the
-   * adaptive integral, is at most TableErrorBound (default 2e-3); a smaller
-   * table is sampled faster. Off: the resolutions above are used as they are.
+   * and keeps the first whose mean error per unit distance, measured against
+   * the adaptive integral, is at most TableErrorBound (default 1e-4); a
+   * smaller table is sampled faster. Off: the resolutions above are used as
+   * they are.
    */
   vtkSetMacro(AutomaticTableResolution, bool);
   vtkGetMacro(AutomaticTableResolution, bool);
@@ -173,7 +174,7 @@ public:
 
   ///@{
   /// The table in use: its resolutions (after the automatic choice) and, when
-  /// chosen automatically, its measured error per segment (else -1).
+  /// chosen automatically, its measured error (else -1).
   int GetLastTableScalarResolution();
   int GetLastTableLengthResolution();
   double GetLastTableError();

@@ -99,6 +99,12 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSTableResolution(int res
   this->Modified();
 }
 
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSAutomaticTable(int automatic)
+{
+  this->HAVSMapper->SetAutomaticTableResolution(automatic != 0);
+  this->Modified();
+}
+
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSBoundaryMode(int mode)
 {
   this->HAVSMapper->SetBoundaryMode(mode);

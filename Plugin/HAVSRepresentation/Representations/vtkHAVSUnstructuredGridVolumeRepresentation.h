@@ -49,6 +49,7 @@ public:
   int GetHAVSKBufferSize();
   void SetHAVSEarlyRayTerminationOpacity(double opacity);
   void SetHAVSTableResolution(int resolution);
+  void SetHAVSAutomaticTable(int automatic);
   void SetHAVSBoundaryMode(int mode);
   void SetHAVSVisibilityOrder(int order);
   void SetHAVSNonConvexMethod(int method);
