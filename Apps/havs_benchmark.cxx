@@ -942,6 +942,24 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
       md << "\nDefault settings (havs-default): " << Cell(def, "ms_median", "%.1f") << " ms, RMSE "
          << Cell(def, "rmse", "%.5f") << ", max " << Cell(def, "max", "%.4f") << " ("
          << (exact ? "exact" : "not exact") << ": RMSE < 5e-4 and max < 0.01)";
+      if (def.count("table") && !def.at("table").empty() && def.at("table") != "-")
+      {
+        md << "; table " << def.at("table") << " (resolution:measured error, chosen automatically)";
+      }
+      if (ms.count("havs-default-table128"))
+      {
+        for (const Row& r : rows)
+        {
+          if (r.at("dataset") == dataset && sizeOf(r) == size &&
+            r.at("config") == "havs-default-table128")
+          {
+            md << "; with the fixed 128³ table instead: " << Cell(r, "ms_median", "%.1f")
+               << " ms (draw " << Cell(r, "draw_ms", "%.1f") << ", automatic draw "
+               << Cell(def, "draw_ms", "%.1f") << "), RMSE " << Cell(r, "rmse", "%.5f") << ", max "
+               << Cell(r, "max", "%.4f");
+          }
+        }
+      }
       if (ms.count("raster-bound"))
       {
         md << "; " << std::setprecision(3) << t / ms["raster-bound"] << "× raster-bound";

@@ -117,14 +117,14 @@ void vtkHAVSPreIntegrationTable::GetFunctionNodes(
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSPreIntegrationTable::IntegrateSegment(
-  vtkVolumeProperty* property, int component, double sf, double sb, double length, double rgba[4])
+void vtkHAVSPreIntegrationTable::IntegrateSegment(vtkVolumeProperty* property, int component,
+  double sf, double sb, double length, double rgba[4], int maximumSteps)
 {
   // Second-order sub-steps, doubled and Richardson-extrapolated until two
   // successive estimates agree to 1e-7.
   double coarse[4], fine[4], previous[4] = { 0, 0, 0, 0 };
   IntegrateSteps(property, component, sf, sb, length, 16, coarse);
-  for (int n = 32; n <= (1 << 16); n *= 2)
+  for (int n = 32; n <= std::max(maximumSteps, 32); n *= 2)
   {
     IntegrateSteps(property, component, sf, sb, length, n, fine);
     double estimate[4], change = 0.0;

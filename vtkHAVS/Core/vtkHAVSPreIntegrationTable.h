@@ -125,10 +125,12 @@ public:
 
   /**
    * Double-precision reference: the segment integrated adaptively from the
-   * property's functions to an absolute error <= 1e-6.
+   * property's functions to an absolute error <= 1e-6 (sub-steps doubled up
+   * to maximumSteps; a smaller one bounds the cost where the functions have
+   * many kinks, at some accuracy).
    */
   static void IntegrateSegment(vtkVolumeProperty* property, int component, double sf, double sb,
-    double length, double rgba[4]);
+    double length, double rgba[4], int maximumSteps = 1 << 16);
 
 protected:
   vtkHAVSPreIntegrationTable() = default;
