@@ -131,9 +131,12 @@ int TestHAVSTableResolution(int, char*[])
   std::cout << "peak 64^3: measured " << peak64 << std::endl;
   havstest::Check(peak64 > bound, "control: the peak's 64^3 table misses the bound");
   havstest::Check(chooser->Build(table, peak, 0, range, 0.2, 128, 128), "peak builds");
-  std::cout << "peak: chose " << table->GetScalarResolution() << "^3, measured "
-            << chooser->GetLastError() << std::endl;
+  std::cout << "peak: " << chooser->GetLastCandidates() << " candidates, chose "
+            << table->GetScalarResolution() << "^3, measured " << chooser->GetLastError()
+            << std::endl;
   havstest::Check(table->GetScalarResolution() > 64, "the peak needs more than 64^3");
+  havstest::Check(chooser->GetLastCandidates() == 2,
+    "the peak's 32^3 misses by more than 6 times: 64^3 is skipped");
 
   // A bound no table meets: the largest allowed.
   chooser->SetErrorBound(1e-9);

@@ -20,7 +20,8 @@
  * Build() builds the candidate resolutions in increasing order (32, 64,
  * 128, ... up to the largest allowed; both axes alike, each capped by its
  * largest) and measures each table's error, and keeps the first within
- * ErrorBound (when none is, the largest).
+ * ErrorBound (when none is, the largest). The error falls with the square of
+ * the resolution: a size whose error exceeds 6 ErrorBound skips the next one.
  *
  * The error measured is the one that accumulates along a ray: at ProbeCount
  * segments drawn uniformly over the table's domain (fixed seed), the largest
