@@ -660,6 +660,9 @@ vtkSmartPointer<vtkHAVSVolumeMapper> MakeHAVS(const Options& o)
 {
   auto havs = vtkSmartPointer<vtkHAVSVolumeMapper>::New();
   havs->SetKBufferSize(o.K);
+  // --table names the size (256^3 by default: the demo's sharp transfer
+  // function needs it to be exact), so the automatic choice is off.
+  havs->AutomaticTableResolutionOff();
   havs->SetTableScalarResolution(o.Table);
   havs->SetTableLengthResolution(o.Table);
   havs->MeasureStageTimesOn();
