@@ -172,6 +172,7 @@ if args.mode == "serial":
     Render(view)
 
     # The table: chosen automatically by default (at most the panel's size), fixed when off.
+    default_table = mapper.GetLastTableScalarResolution()
     check(display.HAVSAutomaticTable == 1 and mapper.GetAutomaticTableResolution()
           and mapper.GetLastTableScalarResolution() <= 128 and mapper.GetLastTableError() >= 0,
           "default: the automatic table (%d^3, error %.2g)"
@@ -184,6 +185,9 @@ if args.mode == "serial":
     display.HAVSAutomaticTable = 1
     display.HAVSTableResolution = 128
     Render(view)
+    check(mapper.GetLastTableScalarResolution() == default_table
+          and mapper.GetLastTableError() >= 0,
+          "automatic table on again: chosen again (%d^3)" % mapper.GetLastTableScalarResolution())
 
     # A structured grid (the blunt fin, PLOT3D) through the same representation type.
     Hide(tets, view)

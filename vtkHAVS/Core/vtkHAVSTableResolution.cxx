@@ -17,7 +17,6 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <vector>
 
 vtkStandardNewMacro(vtkHAVSTableResolution);
 

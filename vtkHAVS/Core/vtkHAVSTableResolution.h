@@ -28,7 +28,8 @@
  * difference over the premultiplied colour and opacity between the table's
  * trilinear look-up (vtkHAVSPreIntegrationTable::Lookup, exactly as the GPU
  * samples it) and the segment integrated adaptively from the property's own
- * functions (vtkHAVSPreIntegrationTable::IntegrateSegment, error <= 1e-6),
+ * functions (vtkHAVSPreIntegrationTable::IntegrateSegment, at most 256
+ * sub-steps, Richardson-extrapolated: about 1e-6 on a ramp),
  * per unit distance of the segment's length (ScalarOpacityUnitDistance; at
  * least one length step of the table), averaged. A ray crossing D unit
  * distances of mesh gathers about D times it. The mean, not the largest:

@@ -184,6 +184,12 @@ bool vtkHAVSVolumeMapper::PrepareTable(vtkVolume* volume)
     &rebuilt, this->AutomaticTableResolution ? this->TableChooser.Get() : nullptr);
   if (rebuilt)
   {
+    // A table built at the fixed size is not the chooser's: with the
+    // automatic choice back on, it chooses again.
+    if (!this->AutomaticTableResolution)
+    {
+      this->TableChooser->Modified();
+    }
     this->TableBuildTime.Modified();
   }
   return ok;
