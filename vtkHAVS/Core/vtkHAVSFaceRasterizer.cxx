@@ -115,11 +115,9 @@ bool Intersect(const ShearedRay& ray, const double* v0, const double* v1, const 
   return t > 0.0;
 }
 
-struct PixelHit
-{
-  vtkIdType Pixel;
-  vtkHAVSFaceRasterizer::Hit Hit;
-};
+/// Screen tiles of TileSize x TileSize pixels: each tile computes its pixels'
+/// rays once and tests the triangles binned to it.
+constexpr int TileSize = 32;
 }
 
 //------------------------------------------------------------------------------
@@ -199,6 +197,39 @@ bool vtkHAVSFaceRasterizer::Project(const double p[3], double& px, double& py) c
 }
 
 //------------------------------------------------------------------------------
+bool vtkHAVSFaceRasterizer::ScreenBox(const double* v[3], int box[4]) const
+{
+  const int width = this->Width, height = this->Height;
+  box[0] = 0;
+  box[1] = width - 1;
+  box[2] = 0;
+  box[3] = height - 1;
+  double lo[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max() };
+  double hi[2] = { std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest() };
+  for (int k = 0; k < 3; ++k)
+  {
+    double px, py;
+    if (!this->Project(v[k], px, py))
+    {
+      return true; // a point behind the eye: the whole image
+    }
+    lo[0] = std::min(lo[0], px);
+    lo[1] = std::min(lo[1], py);
+    hi[0] = std::max(hi[0], px);
+    hi[1] = std::max(hi[1], py);
+  }
+  // One pixel of margin: the exact test decides. Clamped before the
+  // conversion (points near the eye project far away).
+  auto clampTo = [](double value, double limit)
+  { return std::min(std::max(value, -2.0), limit + 2.0); };
+  box[0] = std::max(box[0], static_cast<int>(std::floor(clampTo(lo[0], width))) - 1);
+  box[1] = std::min(box[1], static_cast<int>(std::ceil(clampTo(hi[0], width))) + 1);
+  box[2] = std::max(box[2], static_cast<int>(std::floor(clampTo(lo[1], height))) - 1);
+  box[3] = std::min(box[3], static_cast<int>(std::ceil(clampTo(hi[1], height))) + 1);
+  return box[0] <= box[1] && box[2] <= box[3];
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSFaceRasterizer::Rasterize(const std::vector<double>& points, const uint32_t* triangles,
   vtkIdType numberOfTriangles, const std::function<bool(vtkIdType)>& skip)
 {
@@ -210,105 +241,198 @@ void vtkHAVSFaceRasterizer::Rasterize(const std::vector<double>& points, const u
   {
     return;
   }
+  auto vertices = [&](vtkIdType f, const double* v[3])
+  {
+    const uint32_t* ids = &triangles[3 * f];
+    for (int k = 0; k < 3; ++k)
+    {
+      v[k] = &points[3 * static_cast<size_t>(ids[k])];
+    }
+  };
 
-  // Triangle-driven: each triangle tests the pixel centres of its screen box.
-  vtkSMPThreadLocal<std::vector<PixelHit>> localHits;
+  // 1. Bin the triangles to the screen tiles their boxes overlap.
+  const int tilesX = (width + TileSize - 1) / TileSize;
+  const int tilesY = (height + TileSize - 1) / TileSize;
+  const vtkIdType tiles = static_cast<vtkIdType>(tilesX) * tilesY;
+  using Binned = std::pair<uint32_t, uint32_t>; // (tile, triangle)
+  vtkSMPThreadLocal<std::vector<Binned>> localBins;
   vtkSMPTools::For(0, numberOfTriangles,
     [&](vtkIdType begin, vtkIdType end)
     {
-      std::vector<PixelHit>& hits = localHits.Local();
+      std::vector<Binned>& bins = localBins.Local();
       for (vtkIdType f = begin; f < end; ++f)
       {
-        if (skip && skip(f))
+        const double* v[3];
+        vertices(f, v);
+        int box[4];
+        if ((skip && skip(f)) || !this->ScreenBox(v, box))
         {
           continue;
         }
-        const uint32_t* ids = &triangles[3 * f];
-        const double* v[3] = { &points[3 * static_cast<size_t>(ids[0])],
-          &points[3 * static_cast<size_t>(ids[1])], &points[3 * static_cast<size_t>(ids[2])] };
-        int box[4] = { 0, width - 1, 0, height - 1 };
-        double lo[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max() };
-        double hi[2] = { std::numeric_limits<double>::lowest(),
-          std::numeric_limits<double>::lowest() };
-        bool projected = true;
-        for (int k = 0; k < 3 && projected; ++k)
+        for (int ty = box[2] / TileSize; ty <= box[3] / TileSize; ++ty)
         {
-          double px, py;
-          projected = this->Project(v[k], px, py);
-          lo[0] = std::min(lo[0], px);
-          lo[1] = std::min(lo[1], py);
-          hi[0] = std::max(hi[0], px);
-          hi[1] = std::max(hi[1], py);
-        }
-        if (projected)
-        {
-          // One pixel of margin: the exact test decides. Clamped before the
-          // conversion (points near the eye project far away).
-          auto clampTo = [](double value, double limit)
-          { return std::min(std::max(value, -2.0), limit + 2.0); };
-          box[0] = std::max(box[0], static_cast<int>(std::floor(clampTo(lo[0], width))) - 1);
-          box[1] = std::min(box[1], static_cast<int>(std::ceil(clampTo(hi[0], width))) + 1);
-          box[2] = std::max(box[2], static_cast<int>(std::floor(clampTo(lo[1], height))) - 1);
-          box[3] = std::min(box[3], static_cast<int>(std::ceil(clampTo(hi[1], height))) + 1);
-        }
-        double normal[3], e1[3], e2[3];
-        vtkMath::Subtract(v[1], v[0], e1);
-        vtkMath::Subtract(v[2], v[0], e2);
-        vtkMath::Cross(e1, e2, normal);
-        for (int j = box[2]; j <= box[3]; ++j)
-        {
-          for (int i = box[0]; i <= box[1]; ++i)
+          for (int tx = box[0] / TileSize; tx <= box[1] / TileSize; ++tx)
           {
-            const ShearedRay ray = Shear(this->GetPixelRay(i, j));
-            double t, w[3];
-            if (!Intersect(ray, v[0], v[1], v[2], t, w))
-            {
-              continue;
-            }
-            PixelHit hit;
-            hit.Pixel = static_cast<vtkIdType>(j) * width + i;
-            hit.Hit.Distance = ray.Ray.Offset + t;
-            std::copy(w, w + 3, hit.Hit.Weights);
-            hit.Hit.Triangle = static_cast<uint32_t>(f);
-            hit.Hit.FrontFacing = vtkMath::Dot(normal, ray.Ray.Direction) < 0.0;
-            hits.push_back(hit);
+            bins.emplace_back(static_cast<uint32_t>(ty * tilesX + tx), static_cast<uint32_t>(f));
           }
         }
       }
     });
-
-  // Per-pixel lists (counting sort by pixel), each sorted by distance.
-  for (auto& hits : localHits)
+  std::vector<vtkIdType> binStart(static_cast<size_t>(tiles) + 1, 0);
+  for (const std::vector<Binned>& bins : localBins)
   {
-    for (const PixelHit& h : hits)
+    for (const Binned& b : bins)
     {
-      ++this->PixelStart[h.Pixel + 1];
+      ++binStart[b.first + 1];
     }
   }
+  for (vtkIdType t = 0; t < tiles; ++t)
+  {
+    binStart[t + 1] += binStart[t];
+  }
+  std::vector<uint32_t> binned(static_cast<size_t>(binStart[tiles]));
+  {
+    std::vector<vtkIdType> cursor(binStart.begin(), binStart.end() - 1);
+    for (std::vector<Binned>& bins : localBins)
+    {
+      for (const Binned& b : bins)
+      {
+        binned[cursor[b.first]++] = b.second;
+      }
+      std::vector<Binned>().swap(bins);
+    }
+  }
+
+  // 2. Per tile: its pixels' rays once, every binned triangle tested at the
+  // pixel centres of its box, the hits bucketed by pixel and sorted by
+  // distance (ties by triangle index).
+  std::vector<std::vector<Hit>> tileHits(static_cast<size_t>(tiles));
+  vtkSMPThreadLocal<std::vector<ShearedRay>> localRays;
+  vtkSMPThreadLocal<std::vector<std::pair<int, Hit>>> localFound;
+  vtkSMPTools::For(0, tiles,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      std::vector<ShearedRay>& rays = localRays.Local();
+      std::vector<std::pair<int, Hit>>& found = localFound.Local();
+      rays.resize(TileSize * TileSize);
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const int x0 = static_cast<int>(t % tilesX) * TileSize;
+        const int y0 = static_cast<int>(t / tilesX) * TileSize;
+        const int x1 = std::min(x0 + TileSize, width) - 1;
+        const int y1 = std::min(y0 + TileSize, height) - 1;
+        if (binStart[t] == binStart[t + 1])
+        {
+          continue;
+        }
+        for (int j = y0; j <= y1; ++j)
+        {
+          for (int i = x0; i <= x1; ++i)
+          {
+            rays[(j - y0) * TileSize + (i - x0)] = Shear(this->GetPixelRay(i, j));
+          }
+        }
+        found.clear();
+        for (vtkIdType b = binStart[t]; b < binStart[t + 1]; ++b)
+        {
+          const vtkIdType f = binned[b];
+          const double* v[3];
+          vertices(f, v);
+          int box[4];
+          this->ScreenBox(v, box);
+          double normal[3], e1[3], e2[3];
+          vtkMath::Subtract(v[1], v[0], e1);
+          vtkMath::Subtract(v[2], v[0], e2);
+          vtkMath::Cross(e1, e2, normal);
+          for (int j = std::max(box[2], y0); j <= std::min(box[3], y1); ++j)
+          {
+            for (int i = std::max(box[0], x0); i <= std::min(box[1], x1); ++i)
+            {
+              const int local = (j - y0) * TileSize + (i - x0);
+              const ShearedRay& ray = rays[local];
+              double distance, w[3];
+              if (!Intersect(ray, v[0], v[1], v[2], distance, w))
+              {
+                continue;
+              }
+              Hit hit;
+              hit.Distance = ray.Ray.Offset + distance;
+              std::copy(w, w + 3, hit.Weights);
+              hit.Triangle = static_cast<uint32_t>(f);
+              hit.FrontFacing = vtkMath::Dot(normal, ray.Ray.Direction) < 0.0;
+              found.emplace_back(local, hit);
+            }
+          }
+        }
+        // Bucketed by pixel (a counting sort), then each pixel's few hits
+        // sorted by distance.
+        int count[TileSize * TileSize + 1] = {};
+        for (const std::pair<int, Hit>& h : found)
+        {
+          ++count[h.first + 1];
+        }
+        for (int l = 0; l < TileSize * TileSize; ++l)
+        {
+          const vtkIdType p = static_cast<vtkIdType>(y0 + l / TileSize) * width + x0 + l % TileSize;
+          if (count[l + 1] > 0)
+          {
+            this->PixelStart[p + 1] = count[l + 1]; // each pixel is in one tile: no race
+          }
+          count[l + 1] += count[l];
+        }
+        std::vector<Hit>& out = tileHits[t];
+        out.resize(found.size());
+        for (const std::pair<int, Hit>& h : found)
+        {
+          out[count[h.first]++] = h.second;
+        }
+        auto nearer = [](const Hit& a, const Hit& b) {
+          return a.Distance < b.Distance || (a.Distance == b.Distance && a.Triangle < b.Triangle);
+        };
+        for (int l = 0, first = 0; l < TileSize * TileSize; ++l)
+        {
+          // count[l] is now the end of pixel l's hits.
+          std::sort(out.begin() + first, out.begin() + count[l], nearer);
+          first = count[l];
+        }
+      }
+    });
+  std::vector<uint32_t>().swap(binned);
+
+  // 3. Per-pixel lists: the counts' prefix sum, then each tile's hits copied
+  // to its pixels' places (pixel by pixel in the tile's order).
   for (vtkIdType p = 0; p < pixels; ++p)
   {
     this->PixelStart[p + 1] += this->PixelStart[p];
   }
-  this->Hits.resize(this->PixelStart[pixels]);
-  std::vector<vtkIdType> cursor(this->PixelStart.begin(), this->PixelStart.end() - 1);
-  for (auto& hits : localHits)
-  {
-    for (const PixelHit& h : hits)
-    {
-      this->Hits[cursor[h.Pixel]++] = h.Hit;
-    }
-    std::vector<PixelHit>().swap(hits);
-  }
-  vtkSMPTools::For(0, pixels,
+  this->Hits.resize(static_cast<size_t>(this->PixelStart[pixels]));
+  vtkSMPTools::For(0, tiles,
     [&](vtkIdType begin, vtkIdType end)
     {
-      for (vtkIdType p = begin; p < end; ++p)
+      for (vtkIdType t = begin; t < end; ++t)
       {
-        std::sort(this->Hits.begin() + this->PixelStart[p],
-          this->Hits.begin() + this->PixelStart[p + 1],
-          [](const Hit& a, const Hit& b) {
-            return a.Distance < b.Distance || (a.Distance == b.Distance && a.Triangle < b.Triangle);
-          });
+        std::vector<Hit>& in = tileHits[t];
+        if (in.empty())
+        {
+          continue;
+        }
+        const int x0 = static_cast<int>(t % tilesX) * TileSize;
+        const int y0 = static_cast<int>(t / tilesX) * TileSize;
+        const int x1 = std::min(x0 + TileSize, width) - 1;
+        const int y1 = std::min(y0 + TileSize, height) - 1;
+        size_t next = 0;
+        for (int j = y0; j <= y1; ++j)
+        {
+          for (int i = x0; i <= x1; ++i)
+          {
+            const vtkIdType p = static_cast<vtkIdType>(j) * width + i;
+            for (vtkIdType h = this->PixelStart[p]; h < this->PixelStart[p + 1]; ++h)
+            {
+              this->Hits[h] = in[next++];
+            }
+          }
+        }
+        std::vector<Hit>().swap(in);
       }
     });
 }

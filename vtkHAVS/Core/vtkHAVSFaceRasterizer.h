@@ -18,7 +18,9 @@
  * ties on shared edges and vertices broken by a symbolic perturbation, so a
  * ray through an edge or a vertex of a closed surface hits exactly one of the
  * triangles there. The hits of each pixel come out sorted by distance along
- * the ray (ties by triangle index).
+ * the ray (ties by triangle index). The triangles are binned to 32 x 32 pixel
+ * tiles, and each tile computes its pixels' rays once (the rays cost as much
+ * as the tests when recomputed per triangle).
  *
  * Used by the exact reference (vtkHAVSReferenceRenderer: every face of the
  * mesh, world coordinates) and by the exact order's boundary layers
@@ -100,6 +102,10 @@ private:
 
   /// Pixel-centre coordinates (x, y) of a point; false behind the eye.
   bool Project(const double p[3], double& px, double& py) const;
+  /// The pixels a triangle may cover (x0, x1, y0, y1, inclusive, one pixel of
+  /// margin; the whole image when a point lies behind the eye); false when
+  /// none.
+  bool ScreenBox(const double* v[3], int box[4]) const;
 
   double PointsToClip[16];
   double ClipToPoints[16];
