@@ -24,7 +24,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <deque>
 #include <limits>
 
 vtkStandardNewMacro(vtkHAVSVisibilityOrder);
@@ -468,14 +467,15 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
 
   // Each face's back cell: the one the ray enters through it (-1: it leaves
   // the mesh there). cell 1 lies on the positive side of the plane.
-  std::vector<int64_t> back(numberOfFaces);
+  std::vector<int32_t> back(numberOfFaces);
   vtkSMPTools::For(0, static_cast<vtkIdType>(numberOfFaces),
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType f = begin; f < end; ++f)
       {
-        back[f] = side(&this->FacePlanes[4 * f]) > 0.0 ? this->FaceCells[2 * f]
-                                                       : this->FaceCells[2 * f + 1];
+        back[f] = static_cast<int32_t>(side(&this->FacePlanes[4 * f]) > 0.0
+            ? this->FaceCells[2 * f]
+            : this->FaceCells[2 * f + 1]);
       }
     });
 
@@ -566,7 +566,11 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
   {
     ++waiting[e.second];
   }
-  std::deque<uint32_t> ready;
+  // The ready queue: each node enters it once when its last cell in front is
+  // visited, or at a cycle break (a plain vector read from the front).
+  std::vector<uint32_t> ready;
+  ready.reserve(numberOfNodes);
+  size_t readyHead = 0;
   for (size_t n = 0; n < numberOfNodes; ++n)
   {
     if (waiting[n] == 0)
@@ -586,7 +590,7 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
   };
   while (visitedCount < numberOfNodes)
   {
-    if (ready.empty())
+    if (readyHead == ready.size())
     {
       // A cycle: take an unvisited cell with the fewest cells still in front
       // (the first with one only, searching on from the last break: cycles
@@ -608,8 +612,7 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
       ready.push_back(static_cast<uint32_t>(best));
       ++this->NumberOfCycleBreaks;
     }
-    const uint32_t c = ready.front();
-    ready.pop_front();
+    const uint32_t c = ready[readyHead++];
     if (visited[c])
     {
       continue;
@@ -623,7 +626,7 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
       // Entries (the faces behind which c lies), then the mesh's exits from c.
       for (int j = 0; j < 4; ++j)
       {
-        if (back[cellFaces[j]] == static_cast<int64_t>(c))
+        if (back[cellFaces[j]] == static_cast<int32_t>(c))
         {
           this->Order.push_back(cellFaces[j]);
         }
@@ -635,7 +638,7 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
         {
           this->Order.push_back(f);
         }
-        else if (back[f] != static_cast<int64_t>(c))
+        else if (back[f] != static_cast<int32_t>(c))
         {
           release(static_cast<size_t>(back[f])); // c is in front of the cell behind f
         }
