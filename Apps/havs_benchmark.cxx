@@ -21,7 +21,10 @@
 // Data sets: bluntfin, loxpost (PLOT3D), combustor, loxpostvtk (post.vtk) from
 // ../shared/data (HAVS_DATA_DIR), and gen1M, gen4M, gen10M: tetrahedralized
 // blocks of 60^3, 94^3 and 127^3 cubes (5 tets each: 1.08M, 4.15M, 10.2M tets)
-// with the analytic field sin(6x) cos(5y) + z, made here.
+// with the analytic field sin(6x) cos(5y) + z, made here. "<name>-band" (e.g.
+// bluntfin-band): that data set with a transfer function that hides the middle
+// 76 % of the range (opacity only in the lowest and highest 12 %): what
+// skipping invisible cells saves.
 // Configurations: HAVS at k = 1, 2, 4, 6, 8, 14 (128^3 table), HAVS k = 14 with
 // 32^3 and 64^3 tables, HAVS k = 6 without boundary tagging (its cost and
 // what it buys; -gaplength: VTK 5's heuristic), -mpvo (the MPVO face order instead of
@@ -29,7 +32,8 @@
 // convexification), -auto (the Automatic order; without -mpvo or -auto the centroid sort),
 // -count (the order-violation counter on), -noterm (no early ray termination), -opaque (an
 // opaque actor in the scene, so the opaque-depth cut runs), havs-default (the mapper with its
-// default settings: what a user gets), HAVS fragment lists (exact per-pixel sort),
+// default settings: what a user gets; havs-default-noskip: with every cell drawn,
+// SkipInvisibleCells off), HAVS fragment lists (exact per-pixel sort),
 // raster-bound (the same faces in the same order with a trivial shader: the
 // lower bound of any face-based method; sort-bound is the sort alone),
 // reference (the exact images, computed and cached in their own process before
@@ -124,27 +128,53 @@ struct Options
 };
 
 /// Not empty, not opaque; every opacity node is a colour node (so that VTK's
-/// linear ray integrator integrates it exactly).
-vtkSmartPointer<vtkVolumeProperty> MakeProperty(vtkUnstructuredGrid* grid)
+/// linear ray integrator integrates it exactly). `band` (a data set named
+/// "<name>-band"): opacity only in the lowest and highest 12 % of the range,
+/// zero in between, so that most cells are invisible (what skipping them saves).
+vtkSmartPointer<vtkVolumeProperty> MakeProperty(vtkUnstructuredGrid* grid, bool band = false)
 {
   double r[2];
   grid->GetPointData()->GetScalars()->GetRange(r);
   const double span = r[1] - r[0];
   vtkNew<vtkColorTransferFunction> color;
   color->AddRGBPoint(r[0], 0.1, 0.2, 1.0);
-  color->AddRGBPoint(r[0] + 0.3 * span, 0.16, 0.68, 0.58);
-  color->AddRGBPoint(r[0] + 0.5 * span, 0.2, 1.0, 0.3);
-  color->AddRGBPoint(r[1], 1.0, 0.3, 0.1);
   vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(r[0], 0.0);
-  opacity->AddPoint(r[0] + 0.3 * span, 0.1);
-  opacity->AddPoint(r[1], 0.8);
+  if (band)
+  {
+    color->AddRGBPoint(r[0] + 0.12 * span, 0.16, 0.68, 0.58);
+    color->AddRGBPoint(r[0] + 0.88 * span, 0.2, 1.0, 0.3);
+    opacity->AddPoint(r[0], 0.8);
+    opacity->AddPoint(r[0] + 0.12 * span, 0.0);
+    opacity->AddPoint(r[0] + 0.88 * span, 0.0);
+    opacity->AddPoint(r[1], 0.8);
+  }
+  else
+  {
+    color->AddRGBPoint(r[0] + 0.3 * span, 0.16, 0.68, 0.58);
+    color->AddRGBPoint(r[0] + 0.5 * span, 0.2, 1.0, 0.3);
+    opacity->AddPoint(r[0], 0.0);
+    opacity->AddPoint(r[0] + 0.3 * span, 0.1);
+    opacity->AddPoint(r[1], 0.8);
+  }
+  color->AddRGBPoint(r[1], 1.0, 0.3, 0.1);
   auto property = vtkSmartPointer<vtkVolumeProperty>::New();
   property->SetColor(color);
   property->SetScalarOpacity(opacity);
   property->SetScalarOpacityUnitDistance(grid->GetLength() / 8.0);
   property->ShadeOff();
   return property;
+}
+
+/// A data set name with its transfer-function variant: "<name>-band" loads
+/// <name> with the band function.
+bool IsBand(const std::string& dataset)
+{
+  return dataset.size() > 5 && dataset.compare(dataset.size() - 5, 5, "-band") == 0;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> LoadDataSet(const std::string& dataset)
+{
+  return vtkHAVSDataSets::Load(IsBand(dataset) ? dataset.substr(0, dataset.size() - 5) : dataset);
 }
 
 double PeakMegabytes()
@@ -211,7 +241,7 @@ int DumpCases(const Options& o)
   int failures = 0;
   for (const std::string& dataset : o.DataSets)
   {
-    vtkSmartPointer<vtkUnstructuredGrid> grid = vtkHAVSDataSets::Load(dataset);
+    vtkSmartPointer<vtkUnstructuredGrid> grid = LoadDataSet(dataset);
     vtkSmartPointer<vtkRenderWindow> window;
     window.TakeReference(vtkHAVSRenderWindowFactory::CreateRenderWindow());
     if (!grid || grid->GetNumberOfCells() == 0 || !window)
@@ -228,7 +258,7 @@ int DumpCases(const Options& o)
     mapper->SetInputData(grid);
     vtkNew<vtkVolume> volume;
     volume->SetMapper(mapper);
-    volume->SetProperty(MakeProperty(grid));
+    volume->SetProperty(MakeProperty(grid, IsBand(dataset)));
     renderer->AddVolume(volume);
     vtkHAVSStandardViews::PlaceCamera(renderer->GetActiveCamera(), grid, 0);
     window->Render();
@@ -247,13 +277,13 @@ int DumpCases(const Options& o)
 int RunWorker(const Options& o)
 {
   const std::string dataset = o.DataSets.at(0), config = o.Configs.at(0);
-  vtkSmartPointer<vtkUnstructuredGrid> grid = vtkHAVSDataSets::Load(dataset);
+  vtkSmartPointer<vtkUnstructuredGrid> grid = LoadDataSet(dataset);
   if (!grid || grid->GetNumberOfCells() == 0 || !grid->GetPointData()->GetScalars())
   {
     std::cerr << "cannot load " << dataset << std::endl;
     return EXIT_FAILURE;
   }
-  auto property = MakeProperty(grid);
+  auto property = MakeProperty(grid, IsBand(dataset));
   const vtkIdType tets = grid->GetNumberOfCells();
 
   std::vector<double> frame, sort, gather, draw, flush, composite, upload, readback, layers;
@@ -261,6 +291,7 @@ int RunWorker(const Options& o)
   double over1 = 0, pixels = 0;
   int viewsDone = 0;
   std::string tableText = "-";
+  long long skipped = -1; // HAVS: the tetrahedra skipped as invisible
   if (config == "reference")
   {
     // The exact images of every view, computed once and cached before any
@@ -338,6 +369,11 @@ int RunWorker(const Options& o)
         // The mapper as a user gets it: nothing set but the stage timer.
         m->SetEarlyRayTerminationOpacity(
           vtkNew<vtkHAVSVolumeMapper>()->GetEarlyRayTerminationOpacity());
+      }
+      else if (config == "havs-default-noskip")
+      {
+        // The defaults with every cell drawn: what skipping invisible cells buys.
+        m->SkipInvisibleCellsOff();
       }
       else if (config == "havs-default-table128")
       {
@@ -521,6 +557,7 @@ int RunWorker(const Options& o)
     }
     if (havs) // the table HAVS drew with: N (fixed) or N:error (chosen automatically)
     {
+      skipped = static_cast<long long>(havs->GetLastFrameStatistics()->GetInvisibleCells());
       tableText = std::to_string(havs->GetLastTableScalarResolution());
       if (havs->GetAutomaticTableResolution())
       {
@@ -538,14 +575,14 @@ int RunWorker(const Options& o)
   std::printf("RESULT dataset=%s config=%s size=%d tets=%lld views=%d frames=%zu ms_median=%.3f "
               "ms_min=%.3f ms_max=%.3f sort_ms=%.3f gather_ms=%.3f draw_ms=%.3f flush_ms=%.3f "
               "composite_ms=%.3f upload_ms=%.3f readback_ms=%.3f layers_ms=%.3f rmse=%.6f max=%.6f "
-              "over1=%.6f peak_mb=%.1f smp=%s threads=%d table=%s\n",
+              "over1=%.6f peak_mb=%.1f smp=%s threads=%d table=%s skipped=%lld\n",
     dataset.c_str(), config.c_str(), o.Size, static_cast<long long>(tets), viewsDone, frame.size(),
     Median(frame), frame.empty() ? NAN : *std::min_element(frame.begin(), frame.end()),
     frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort),
     Median(gather), Median(draw), Median(flush), Median(composite), Median(upload),
     Median(readback), Median(layers), rmse, maxError, pixels > 0 ? over1 / pixels : NAN,
     PeakMegabytes(), vtkSMPTools::GetBackend(), vtkSMPTools::GetEstimatedNumberOfThreads(),
-    tableText.c_str());
+    tableText.c_str(), skipped);
   return EXIT_SUCCESS;
 }
 
@@ -570,7 +607,7 @@ using Row = std::map<std::string, std::string>;
 const char* const kColumns[] = { "dataset", "config", "size", "tets", "views", "frames",
   "ms_median", "ms_min", "ms_max", "sort_ms", "gather_ms", "draw_ms", "flush_ms", "composite_ms",
   "upload_ms", "readback_ms", "layers_ms", "mtets_per_s", "rmse", "max", "over1", "peak_mb", "smp",
-  "threads", "table", "command" };
+  "threads", "table", "skipped", "command" };
 
 /// A CSV field, quoted where it holds a comma or a quote.
 std::string CsvField(const std::string& text)
@@ -958,6 +995,20 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
                << Cell(def, "draw_ms", "%.1f") << "), RMSE " << Cell(r, "rmse", "%.5f") << ", max "
                << Cell(r, "max", "%.4f");
           }
+        }
+      }
+      if (def.count("skipped") && !def.at("skipped").empty() && def.at("skipped") != "-1")
+      {
+        md << "; " << def.at("skipped") << " invisible tetrahedra skipped";
+      }
+      for (const Row& r : rows)
+      {
+        if (r.at("dataset") == dataset && sizeOf(r) == size &&
+          r.at("config") == "havs-default-noskip")
+        {
+          md << "; with every cell drawn (havs-default-noskip): " << Cell(r, "ms_median", "%.1f")
+             << " ms (draw " << Cell(r, "draw_ms", "%.1f") << "), so skipping takes "
+             << std::setprecision(3) << t / Value(r, "ms_median") << "× its time";
         }
       }
       if (ms.count("raster-bound"))

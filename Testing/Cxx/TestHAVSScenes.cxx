@@ -17,7 +17,12 @@
 // - several renderers (viewports) in one window: each the closed form;
 // - an opaque actor intersecting the volume: rays end at its surface, the
 //   last segment cut there (closed form for a constant slab);
-// - maximum / minimum intensity blend: the extremal scalar's colour.
+// - maximum / minimum intensity blend: the extremal scalar's colour;
+// - unchanged work: a still camera redraws without a sort, a table build or an
+//   upload; a transfer-function edit rebuilds and uploads the table only (and
+//   the image changes at once); a camera move sorts and uploads the order
+//   only; a new time step uploads the scalars only. Each counter is also seen
+//   set where its input changed, so a counter stuck at either value fails.
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
 #include "havsTestScenes.h"
@@ -32,6 +37,7 @@
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlaneSource.h"
+#include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -358,8 +364,63 @@ void TestExtremumBlend()
 }
 }
 
+/// What the last frame did again, as one line: table built, uploads of
+/// geometry, scalars, order and table, order reused (1 or 0 each).
+std::string WorkDone(vtkHAVSVolumeMapper* mapper)
+{
+  vtkHAVSFrameStatistics* s = mapper->GetLastFrameStatistics();
+  std::string line;
+  for (bool b : { s->GetTableRebuilt(), s->GetGeometryUploaded(), s->GetScalarsUploaded(),
+         s->GetOrderUploaded(), s->GetTableUploaded(), s->GetOrderReused() })
+  {
+    line += b ? '1' : '0';
+  }
+  return line;
+}
+
+void TestUnchangedWork()
+{
+  auto grid = vtkHAVSDataSets::MakeBox(5, 5, 5, 0.2, 0.0, 1.0);
+  auto property = havstest::MakeRampProperty(0.0, 1.0, 0.8, 0.3);
+  vtkNew<vtkHAVSVolumeMapper> mapper;
+  mapper->KeepFloatResultOn();
+  auto scene = havstest::MakeScene(grid, mapper, property, 48, 48);
+  havstest::PlaceCamera(scene.Renderer, 30, 20, false);
+  // Each step: what changed, and the expected line (table built, geometry,
+  // scalars, order, table uploaded, order reused).
+  auto step = [&](const std::string& what, const std::string& expected)
+  {
+    scene.Window->Render();
+    const std::string done = WorkDone(mapper);
+    std::cout << "unchanged work, " << what << ": " << done << " (expected " << expected << ")"
+              << std::endl;
+    havstest::Check(done == expected, "unchanged work: " + what);
+  };
+  step("first frame", "110110");
+  step("the same frame again", "000001");
+  const std::vector<float> before = havstest::FloatResult(mapper);
+  property->GetScalarOpacity()->AddPoint(0.5, 0.05);
+  step("a transfer-function edit", "100011");
+  const auto d = havstest::Compare(before, havstest::FloatResult(mapper));
+  havstest::Check(d.Max > 0.01, "a transfer-function edit changes the image at once");
+  step("the same frame after the edit", "000001");
+  scene.Renderer->GetActiveCamera()->Azimuth(25.0);
+  scene.Renderer->ResetCameraClippingRange();
+  step("a camera move", "000100");
+  auto next = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  next->DeepCopy(grid);
+  vtkDataArray* values = next->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+  {
+    values->SetComponent(i, 0, 1.0 - values->GetComponent(i, 0));
+  }
+  mapper->SetInputData(next);
+  step("a new time step on the same mesh", "001101");
+}
+
 int TestHAVSScenes(int, char*[])
 {
+  TestUnchangedWork();
   TestVolumeMatrix();
   TestResizeReleaseAndTwoWindows();
   TestTwoVolumesAndViewports();

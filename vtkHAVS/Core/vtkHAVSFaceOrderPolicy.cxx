@@ -121,9 +121,11 @@ bool vtkHAVSFaceOrderPolicy::Prepare(
       mesh->GetFaceSet(), view.GridToWorld, view.EyeWorld, view.DirectionWorld, view.Parallel);
     order = &this->Centroid->GetOrder();
   }
-  // The draw triangles: gathered for a new order; any order will do without one.
-  const bool gather = changed || this->GatheredMesh != mesh->GetBuildTime() ||
+  // The draw triangles: gathered for a new order or a new set of visible
+  // cells; any order will do without one.
+  const bool newOrder = changed || this->GatheredMesh != mesh->GetBuildTime() ||
     (drawn >= 0 && this->GatheredOrder != drawn);
+  const bool gather = newOrder || this->GatheredVisibility != this->VisibilityVersion;
   this->LastGatherSeconds = 0.0;
   if (gather)
   {
@@ -133,9 +135,17 @@ bool vtkHAVSFaceOrderPolicy::Prepare(
     this->LastGatherSeconds = vtkTimerLog::GetUniversalTime() - gatherStart;
   }
   this->LastOrder = drawn;
-  this->LastReused = !gather;
+  this->LastReused = !newOrder;
   this->LastSeconds = vtkTimerLog::GetUniversalTime() - start;
   return ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSFaceOrderPolicy::SetCellVisibility(
+  const std::vector<uint8_t>* visible, vtkMTimeType version)
+{
+  this->Visible = visible;
+  this->VisibilityVersion = visible ? version : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -147,15 +157,48 @@ void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_
   const vtkIdType numFaces = faces->GetNumberOfFaces();
   this->DrawTriangles.resize(3 * numFaces);
   this->DrawBoundary.resize(numFaces);
-  for (vtkIdType i = 0; i < numFaces; ++i)
+  if (!this->Visible)
   {
-    const uint32_t f = order ? (*order)[i] : static_cast<uint32_t>(i);
-    this->DrawTriangles[3 * i] = faceVertices[3 * f];
-    this->DrawTriangles[3 * i + 1] = faceVertices[3 * f + 1];
-    this->DrawTriangles[3 * i + 2] = faceVertices[3 * f + 2];
-    this->DrawBoundary[i] = boundary[f];
+    for (vtkIdType i = 0; i < numFaces; ++i)
+    {
+      const uint32_t f = order ? (*order)[i] : static_cast<uint32_t>(i);
+      this->DrawTriangles[3 * i] = faceVertices[3 * f];
+      this->DrawTriangles[3 * i + 1] = faceVertices[3 * f + 1];
+      this->DrawTriangles[3 * i + 2] = faceVertices[3 * f + 2];
+      this->DrawBoundary[i] = boundary[f];
+    }
+  }
+  else
+  {
+    // Faces with a visible cell, in the same order; the cells' visibility
+    // decides which are boundary faces (the face set's normal points to the
+    // first cell: flipped where that one is the visible one).
+    const std::vector<uint8_t>& visible = *this->Visible;
+    const std::vector<uint32_t>& faceCells = faces->GetFaceCells();
+    auto isVisible = [&](uint32_t cell)
+    { return cell != vtkHAVSFaceSet::NoCell && cell < visible.size() && visible[cell] != 0; };
+    vtkIdType n = 0;
+    for (vtkIdType i = 0; i < numFaces; ++i)
+    {
+      const uint32_t f = order ? (*order)[i] : static_cast<uint32_t>(i);
+      const bool front = isVisible(faceCells[2 * static_cast<size_t>(f)]);
+      const bool back = isVisible(faceCells[2 * static_cast<size_t>(f) + 1]);
+      if (!front && !back)
+      {
+        continue;
+      }
+      const bool flip = front && !back;
+      this->DrawTriangles[3 * n] = faceVertices[3 * f];
+      this->DrawTriangles[3 * n + 1] = faceVertices[3 * f + (flip ? 2 : 1)];
+      this->DrawTriangles[3 * n + 2] = faceVertices[3 * f + (flip ? 1 : 2)];
+      this->DrawBoundary[n] = front != back ? (flip ? 2 : 1) : 0;
+      ++n;
+    }
+    this->DrawTriangles.resize(3 * n);
+    this->DrawBoundary.resize(n);
   }
   this->GatheredMesh = mesh->GetBuildTime();
+  this->GatheredVisibility = this->VisibilityVersion;
   this->DrawOrderTime.Modified();
 }
 

@@ -97,8 +97,23 @@ public:
   bool Prepare(
     const Plan& plan, vtkHAVSMesh* mesh, vtkUnstructuredGrid* grid, const vtkHAVSViewFrame& view);
 
+  /**
+   * The cells the transfer function leaves visible (vtkHAVSCellVisibility:
+   * per grid cell id; null: all), and when that set last changed. From the
+   * next Prepare(), only faces with a visible cell are gathered; a face
+   * between a visible and an invisible cell is a boundary face, wound out of
+   * the visible one. A new set gathers again without a new sort.
+   */
+  void SetCellVisibility(const std::vector<uint8_t>* visible, vtkMTimeType version);
+
   ///@{
-  /// The faces in draw order: 3 point ids each, and 1 per boundary face.
+  /**
+   * The faces in draw order: 3 point ids each, and per face 0 (internal), 1
+   * (a boundary face as the face set winds it: out of the mesh) or 2 (a face
+   * between a visible and an invisible cell wound the other way than the face
+   * set's, so that it points out of the visible cell: the vertices' cell-scalar
+   * pairs are swapped with it).
+   */
   const std::vector<uint32_t>& GetDrawTriangles() const { return this->DrawTriangles; }
   const std::vector<uint8_t>& GetDrawBoundaryFlags() const { return this->DrawBoundary; }
   /// Changes whenever the draw triangles do.
@@ -106,8 +121,9 @@ public:
   ///@}
 
   ///@{
-  /// The last Prepare(): the order drawn (-1 none), whether it was reused,
-  /// the seconds it took (sort and gather).
+  /// The last Prepare(): the order drawn (-1 none), whether it was reused
+  /// (no new sort; the faces may have been gathered again for a new set of
+  /// visible cells), the seconds it took (sort and gather).
   vtkGetMacro(LastOrder, int);
   vtkGetMacro(LastReused, bool);
   vtkGetMacro(LastSeconds, double);
@@ -167,6 +183,9 @@ private:
   vtkTimeStamp DrawOrderTime;
   int GatheredOrder = -2; // the order the draw triangles hold (-1: identity)
   vtkMTimeType GatheredMesh = 0;
+  const std::vector<uint8_t>* Visible = nullptr;
+  vtkMTimeType VisibilityVersion = 0;
+  vtkMTimeType GatheredVisibility = 0;
 
   int LastOrder = -1;
   bool LastReused = false;

@@ -40,6 +40,13 @@ void vtkHAVSFrameStatistics::Reset()
   this->FacesDrawn = 0;
   this->MeshUpdate = 0;
   this->MeshSeconds = 0.0;
+  this->TableRebuilt = false;
+  this->GeometryUploaded = false;
+  this->ScalarsUploaded = false;
+  this->OrderUploaded = false;
+  this->TableUploaded = false;
+  this->InvisibleCells = 0;
+  this->VisibilitySeconds = 0.0;
   this->SortSeconds = 0.0;
   this->GatherSeconds = 0.0;
   this->UploadSeconds = 0.0;
@@ -94,4 +101,9 @@ void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
      << this->FlushSeconds << ", read-backs " << this->ReadbackSeconds << ", composite "
      << this->CompositeSeconds << ", table (last build) " << this->TableSeconds << "\n";
   os << indent << "MeshUpdate: " << this->MeshUpdate << " (" << this->MeshSeconds << " s)\n";
+  os << indent << "TableRebuilt: " << this->TableRebuilt << ", uploaded: geometry "
+     << this->GeometryUploaded << ", scalars " << this->ScalarsUploaded << ", order "
+     << this->OrderUploaded << ", table " << this->TableUploaded << "\n";
+  os << indent << "InvisibleCells: " << this->InvisibleCells << " (" << this->VisibilitySeconds
+     << " s)\n";
 }

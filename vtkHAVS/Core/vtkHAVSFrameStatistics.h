@@ -25,7 +25,11 @@
  * - the result: order violations (fragments composited out of depth order,
  *   counted on the GPU when asked) and where the first ones were;
  * - stage times in seconds (exact only with MeasureStageTimes on; the GPU is
- *   not waited for otherwise).
+ *   not waited for otherwise);
+ * - the work done again: whether the table was built, and which of the
+ *   mesh's geometry, its scalars, the face order and the table were uploaded
+ *   (each only when its inputs changed: a still camera and a
+ *   transfer-function edit rebuild and upload the table only).
  */
 #ifndef vtkHAVSFrameStatistics_h
 #define vtkHAVSFrameStatistics_h
@@ -158,6 +162,39 @@ public:
   vtkGetMacro(MeshSeconds, double);
   ///@}
 
+  ///@{
+  /**
+   * The work the frame did again, each only when its inputs changed: the
+   * pre-integration table built (the transfer function, the scalar range, the
+   * unit distance or the table size changed), and the uploads to the GPU of
+   * the mesh's geometry (a new mesh), its scalars only (a new time step on the
+   * same mesh), the face order (a new order, i.e. the camera or the mesh
+   * changed) and the table. The order itself: GetOrderReused().
+   */
+  vtkSetMacro(TableRebuilt, bool);
+  vtkGetMacro(TableRebuilt, bool);
+  vtkSetMacro(GeometryUploaded, bool);
+  vtkGetMacro(GeometryUploaded, bool);
+  vtkSetMacro(ScalarsUploaded, bool);
+  vtkGetMacro(ScalarsUploaded, bool);
+  vtkSetMacro(OrderUploaded, bool);
+  vtkGetMacro(OrderUploaded, bool);
+  vtkSetMacro(TableUploaded, bool);
+  vtkGetMacro(TableUploaded, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Tetrahedra not drawn because the transfer function hides them
+   * (vtkHAVSVolumeMapper::SkipInvisibleCells), and the seconds their
+   * visibility took to compute this frame (0 when it was kept).
+   */
+  vtkSetMacro(InvisibleCells, vtkIdType);
+  vtkGetMacro(InvisibleCells, vtkIdType);
+  vtkSetMacro(VisibilitySeconds, double);
+  vtkGetMacro(VisibilitySeconds, double);
+  ///@}
+
 protected:
   vtkHAVSFrameStatistics() = default;
   ~vtkHAVSFrameStatistics() override = default;
@@ -194,6 +231,13 @@ private:
   double TableSeconds = 0.0;
   int MeshUpdate = 0;
   double MeshSeconds = 0.0;
+  bool TableRebuilt = false;
+  bool GeometryUploaded = false;
+  bool ScalarsUploaded = false;
+  bool OrderUploaded = false;
+  bool TableUploaded = false;
+  vtkIdType InvisibleCells = 0;
+  double VisibilitySeconds = 0.0;
 };
 
 #endif

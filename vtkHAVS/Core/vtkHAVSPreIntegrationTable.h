@@ -87,6 +87,10 @@ public:
     double maxLength) const;
 
   const float* GetTable() const { return this->Table.data(); }
+  /// The resolutions the table was last built with (GetTable()'s layout:
+  /// RGBA at ((length * n + back) * n + front), n the scalar resolution).
+  int GetBuiltScalarResolution() const { return this->BuiltScalarResolution; }
+  int GetBuiltLengthResolution() const { return this->BuiltLengthResolution; }
   vtkGetMacro(MaxLength, double);
   const double* GetScalarRange() const { return this->ScalarRange; }
   vtkGetMacro(LastBuildSeconds, double);

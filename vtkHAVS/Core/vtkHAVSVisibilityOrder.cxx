@@ -473,9 +473,9 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
     {
       for (vtkIdType f = begin; f < end; ++f)
       {
-        back[f] = static_cast<int32_t>(side(&this->FacePlanes[4 * f]) > 0.0
-            ? this->FaceCells[2 * f]
-            : this->FaceCells[2 * f + 1]);
+        back[f] =
+          static_cast<int32_t>(side(&this->FacePlanes[4 * f]) > 0.0 ? this->FaceCells[2 * f]
+                                                                    : this->FaceCells[2 * f + 1]);
       }
     });
 

@@ -12,6 +12,7 @@
 #include "vtkInformation.h"
 #include "vtkUnstructuredGridBase.h"
 
+#include "vtkHAVSCellVisibility.h"
 #include "vtkHAVSFaceOrderPolicy.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFaceSorter.h"
@@ -192,7 +193,23 @@ bool vtkHAVSVolumeMapper::PrepareTable(vtkVolume* volume)
     }
     this->TableBuildTime.Modified();
   }
+  this->LastFrame->SetTableRebuilt(rebuilt);
   return ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::SetInvisibleCellOpacity(double opacity)
+{
+  if (opacity != this->Visibility->GetOpacityThreshold())
+  {
+    this->Visibility->SetOpacityThreshold(opacity);
+    this->Modified();
+  }
+}
+
+double vtkHAVSVolumeMapper::GetInvisibleCellOpacity()
+{
+  return this->Visibility->GetOpacityThreshold();
 }
 
 //------------------------------------------------------------------------------
@@ -211,7 +228,8 @@ vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
   r.TerminationOpacity = static_cast<float>(this->EarlyRayTerminationOpacity);
   r.CellScalars = this->Mesh->HasCellScalars();
   r.Tagging = this->BoundaryMode == BoundaryTagging ||
-    (this->BoundaryMode == BoundaryAutomatic && !this->Mesh->GetFaceSet()->IsConvex());
+    (this->BoundaryMode == BoundaryAutomatic &&
+      (!this->Mesh->GetFaceSet()->IsConvex() || this->SkippingCells));
   r.GapLength = this->BoundaryMode == BoundaryGapLength
     ? static_cast<float>(this->Table->GetMaxLength())
     : 3.0e38f;
@@ -251,6 +269,25 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   stats->SetTableSeconds(this->AutomaticTableResolution ? this->TableChooser->GetLastSeconds()
                                                         : this->Table->GetLastBuildSeconds());
+
+  // 2b. The cells the transfer function hides (composite blend: the extremum
+  // modes look at every scalar); recomputed only for a new table or mesh.
+  this->SkippingCells = false;
+  if (this->SkipInvisibleCells && this->BlendMode == COMPOSITE_BLEND && !this->FaceRasterBoundMode)
+  {
+    const double visibilityStart = vtkTimerLog::GetUniversalTime();
+    const vtkMTimeType before = this->Visibility->GetVisibilityVersion();
+    this->Visibility->Update(this->Mesh, this->Table, this->TableBuildTime.GetMTime());
+    if (this->Visibility->GetVisibilityVersion() != before)
+    {
+      stats->SetVisibilitySeconds(vtkTimerLog::GetUniversalTime() - visibilityStart);
+    }
+    this->SkippingCells = this->Visibility->GetNumberOfInvisibleCells() > 0;
+    stats->SetInvisibleCells(this->Visibility->GetNumberOfInvisibleCells());
+  }
+  this->FaceOrder->SetCellVisibility(
+    this->SkippingCells ? &this->Visibility->GetVisible() : nullptr,
+    this->Visibility->GetVisibilityVersion());
 
   // 3. The view: every coordinate frame, once.
   const vtkHAVSViewFrame view = vtkHAVSViewFrame::Make(renderer, volume, this->Mesh->GetShift());
@@ -313,7 +350,13 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     request.Composite = !plan.Probe;
     request.CountViolations = composite && (this->CountOrderViolations || plan.Probe);
     result = FrameResult();
-    if (!this->DrawFrame(renderer, request, result))
+    const bool drawn = this->DrawFrame(renderer, request, result);
+    // Uploads of every draw of the frame (Automatic's probe may draw twice).
+    stats->SetGeometryUploaded(stats->GetGeometryUploaded() || result.GeometryUploaded);
+    stats->SetScalarsUploaded(stats->GetScalarsUploaded() || result.ScalarsUploaded);
+    stats->SetOrderUploaded(stats->GetOrderUploaded() || result.OrderUploaded);
+    stats->SetTableUploaded(stats->GetTableUploaded() || result.TableUploaded);
+    if (!drawn)
     {
       return;
     }
@@ -350,7 +393,7 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   stats->SetOrderViolations(request.CountViolations ? result.Violations : -1);
   stats->SetOrderViolationPixels(result.ViolationPixels);
   stats->SetFragments(result.Fragments);
-  stats->SetFacesDrawn(this->Mesh->GetFaceSet()->GetNumberOfFaces());
+  stats->SetFacesDrawn(static_cast<vtkIdType>(this->FaceOrder->GetDrawTriangles().size() / 3));
   stats->SetOpaqueGeometry(request.Opaque);
   stats->SetOpaqueDepthMultisampled(result.OpaqueDepthMultisampled);
   stats->SetOpaqueDepthCaptured(result.OpaqueDepthCaptured);
@@ -490,6 +533,8 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << " x " << this->TableLengthResolution << "\n";
   os << indent << "AutomaticTableResolution: " << this->AutomaticTableResolution << " (error bound "
      << this->TableChooser->GetErrorBound() << ")\n";
+  os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << " (opacity "
+     << this->Visibility->GetOpacityThreshold() << ")\n";
   os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
   os << indent << "FaceRasterBoundMode: " << this->FaceRasterBoundMode << "\n";

@@ -60,6 +60,7 @@
 #include <vector>  // For std::vector
 
 class vtkFloatArray;
+class vtkHAVSCellVisibility;
 class vtkHAVSFaceOrderPolicy;
 class vtkHAVSFaceSorter;
 class vtkHAVSFramePlanes;
@@ -170,6 +171,30 @@ public:
   vtkBooleanMacro(AutomaticTableResolution, bool);
   void SetTableErrorBound(double bound);
   double GetTableErrorBound();
+  ///@}
+
+  ///@{
+  /**
+   * Skip the cells the transfer function hides (default on;
+   * vtkHAVSCellVisibility): a cell whose scalars span only values of zero
+   * opacity is not drawn, and the faces between it and a visible cell act as
+   * boundary faces, which BoundaryModeAutomatic then tags (the gap behind them
+   * is empty), so the image stays exact. Recomputed in parallel after a
+   * transfer-function edit; the mesh on the GPU is kept, the faces drawn are
+   * gathered again. With BoundaryModeIgnore or GapLength the gaps are not
+   * handled (a control, not a setting to use). Composite blend only; the
+   * frame statistics count the cells skipped.
+   */
+  vtkSetMacro(SkipInvisibleCells, bool);
+  vtkGetMacro(SkipInvisibleCells, bool);
+  vtkBooleanMacro(SkipInvisibleCells, bool);
+  /**
+   * Nearly invisible cells: also skip a cell when the table's opacity for
+   * the longest segment over its scalar range is at most this (default 0:
+   * only fully transparent cells, exact). Above 0 trades exactness for speed.
+   */
+  void SetInvisibleCellOpacity(double opacity);
+  double GetInvisibleCellOpacity();
   ///@}
 
   ///@{
@@ -451,6 +476,10 @@ public:
     double FlushSeconds = 0.0;
     double CompositeSeconds = 0.0;
     double ReadbackSeconds = 0.0;
+    bool GeometryUploaded = false; ///< the mesh's points and scalars went to the GPU
+    bool ScalarsUploaded = false;  ///< its scalars only (a new time step)
+    bool OrderUploaded = false;    ///< the face order
+    bool TableUploaded = false;    ///< the pre-integration table
   };
 
 protected:
@@ -482,6 +511,7 @@ protected:
   int TableScalarResolution = 128;
   int TableLengthResolution = 128;
   bool AutomaticTableResolution = true;
+  bool SkipInvisibleCells = true;
   bool MeasureStageTimes = false;
   bool KeepFloatResult = false;
   bool FaceRasterBoundMode = false;
@@ -508,6 +538,8 @@ private:
   vtkTimeStamp TableBuildTime;
   vtkNew<vtkHAVSFramePlanes> Planes;
   vtkNew<vtkHAVSFaceOrderPolicy> FaceOrder;
+  vtkNew<vtkHAVSCellVisibility> Visibility;
+  bool SkippingCells = false; // this frame skips invisible cells
   vtkNew<vtkHAVSFrameStatistics> LastFrame;
   std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
 };

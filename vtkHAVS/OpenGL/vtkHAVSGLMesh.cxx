@@ -122,13 +122,16 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
       {
         continue;
       }
+      // A face wound the other way than its vertices' cell-scalar pairs
+      // (flag 2: out of a visible cell next to an invisible one) swaps them.
+      const bool swapPair = boundary[f] == 2 && nc == 2;
       for (int v = 0; v < 3; ++v, ++b)
       {
         const uint32_t p = triangles[3 * f + v];
         std::copy_n(&this->Points[3 * p], 3, &points[3 * b]);
         for (int c = 0; c < nc; ++c)
         {
-          scalars[nc * b + c] = this->Scalars[nc * p + c] + 2.0f;
+          scalars[nc * b + c] = this->Scalars[nc * p + (swapPair ? 1 - c : c)] + 2.0f;
         }
         rewritten[3 * f + v] = next++;
       }

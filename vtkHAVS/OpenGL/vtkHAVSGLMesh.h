@@ -56,7 +56,9 @@ public:
    * `tagged`, each boundary face is drawn with vertices of its own, appended
    * after the points, whose scalar is the point's + 2: the fragment shader
    * tells a boundary fragment by its scalar (above 1.5), with no per-fragment
-   * look-up, and only boundary fragments do the tagging work.
+   * look-up, and only boundary fragments do the tagging work. Flag 2 (a face
+   * wound against its cell-scalar pairs, vtkHAVSFaceOrderPolicy) swaps the
+   * pair on those vertices.
    */
   bool UploadFaceOrder(
     const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary, bool tagged);

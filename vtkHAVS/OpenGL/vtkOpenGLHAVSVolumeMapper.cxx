@@ -158,7 +158,7 @@ void vtkOpenGLHAVSVolumeMapper::OnWindowDeleted(vtkObject* window, unsigned long
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request)
+bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request, FrameResult& result)
 {
   vtkHAVSMesh* mesh = request.Mesh;
   if (this->Uploaded.Geometry != mesh->GetBuildTime())
@@ -168,6 +168,7 @@ bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request)
     this->Uploaded.Geometry = mesh->GetBuildTime();
     this->Uploaded.Scalars = mesh->GetScalarTime();
     this->Uploaded.Order = 0;
+    result.GeometryUploaded = true;
   }
   else if (this->Uploaded.Scalars != mesh->GetScalarTime())
   {
@@ -176,6 +177,7 @@ bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request)
     this->GLMesh->UploadScalars(mesh->GetVertexScalars());
     this->Uploaded.Scalars = mesh->GetScalarTime();
     this->Uploaded.Order = 0;
+    result.ScalarsUploaded = true;
   }
   if (this->Uploaded.Order != request.DrawOrderVersion || this->Uploaded.Tagged != request.Tagging)
   {
@@ -186,6 +188,7 @@ bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request)
     }
     this->Uploaded.Order = request.DrawOrderVersion;
     this->Uploaded.Tagged = request.Tagging;
+    result.OrderUploaded = true;
   }
   if (this->Uploaded.Sections != request.Planes->GetSectionsVersion())
   {
@@ -196,6 +199,7 @@ bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request)
   {
     this->GLTable->Upload(request.Table);
     this->Uploaded.Table = request.TableVersion;
+    result.TableUploaded = true;
   }
   return true;
 }
@@ -222,7 +226,7 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
     return vtkTimerLog::GetUniversalTime();
   };
   const double uploadStart = now();
-  if (!this->Upload(request))
+  if (!this->Upload(request, result))
   {
     return false;
   }

@@ -88,8 +88,8 @@ private:
 
   /// Makes `window` the home of every resource (moving them from another).
   void PrepareWindow(vtkOpenGLRenderWindow* window);
-  /// Uploads what changed since the last frame in this window.
-  bool Upload(const FrameRequest& request);
+  /// Uploads what changed since the last frame in this window; `result` says what was.
+  bool Upload(const FrameRequest& request, FrameResult& result);
   vtkHAVSKBuffer* GetKBuffer(int path);
   void OnWindowDeleted(vtkObject* window, unsigned long event, void* data);
 

@@ -1,0 +1,195 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSSkips.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+// Skipping what a scene does not need leaves the image exact (issue 17),
+// against the exact reference (vtkHAVSReferenceRenderer, which draws every
+// cell):
+// - invisible cells: a transfer function with zero opacity over a wide band
+//   between two visible bands hides most cells of the generated block
+//   (sin(6x) cos(5y) + z); with the default settings (MPVO order, k = 2) the
+//   mapper drops them and tags the faces between visible and invisible cells
+//   as boundary faces. Exact (RMSE < 5e-4, max < 0.01), the same with point
+//   and cell scalars, perspective and parallel, and the same image as with
+//   every cell drawn. Control: nearly transparent cells skipped too
+//   (SetInvisibleCellOpacity(0.2)) must not be exact. A transfer-function
+//   edit that shows the band again draws every cell without a new sort or a
+//   new mesh upload. (The suggested control, the cells dropped without their
+//   faces tagged, cannot fail here: with continuous point scalars the gap
+//   behind such a face lies in one zero-opacity interval and integrates to
+//   zero untagged too; the tagging makes it empty by construction.)
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestScenes.h"
+
+#include "vtkHAVSDataSets.h"
+#include "vtkHAVSFrameStatistics.h"
+#include "vtkHAVSReferenceRenderer.h"
+#include "vtkHAVSVolumeMapper.h"
+
+#include "vtkCamera.h"
+#include "vtkCellData.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkFloatArray.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPointDataToCellData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr int kSize = 96;
+
+/// Opacity in a low and a high band of the range, zero in between.
+vtkSmartPointer<vtkVolumeProperty> BandProperty(const double range[2], double unitDistance)
+{
+  const double lo = range[0], span = range[1] - range[0];
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(lo, 0.1, 0.3, 1.0);
+  color->AddRGBPoint(lo + 0.5 * span, 0.2, 1.0, 0.3);
+  color->AddRGBPoint(range[1], 1.0, 0.3, 0.1);
+  vtkNew<vtkPiecewiseFunction> alpha;
+  alpha->AddPoint(lo, 0.9);
+  alpha->AddPoint(lo + 0.12 * span, 0.0);
+  alpha->AddPoint(lo + 0.88 * span, 0.0);
+  alpha->AddPoint(range[1], 0.9);
+  property->SetColor(color);
+  property->SetScalarOpacity(alpha);
+  property->SetScalarOpacityUnitDistance(unitDistance);
+  property->ShadeOff();
+  property->SetInterpolationTypeToLinear();
+  return property;
+}
+
+std::vector<float> Reference(
+  vtkUnstructuredGrid* grid, vtkVolumeProperty* property, vtkCamera* camera, bool cellScalars)
+{
+  vtkNew<vtkHAVSReferenceRenderer> reference;
+  reference->SetInputData(grid);
+  reference->SetProperty(property);
+  reference->SetCamera(camera);
+  reference->SetSize(kSize, kSize);
+  reference->SetUseCellScalars(cellScalars);
+  reference->Render();
+  vtkFloatArray* image = reference->GetImage();
+  return std::vector<float>(image->GetPointer(0), image->GetPointer(0) + 4 * kSize * kSize);
+}
+
+bool Exact(const havstest::ImageDifference& d)
+{
+  return d.RMSE < 5e-4 && d.Max < 0.01;
+}
+
+void TestInvisibleCells(bool cellScalars, bool parallel)
+{
+  const std::string name = std::string(cellScalars ? "cell" : "point") + " scalars, " +
+    (parallel ? "parallel" : "perspective");
+  // Pixels left out, as the other exactness tests do (TestHAVSCells says why
+  // cell scalars need two more).
+  const size_t edge = cellScalars ? 7 : 5;
+  vtkSmartPointer<vtkUnstructuredGrid> grid = vtkHAVSDataSets::MakeGenerated(14);
+  if (cellScalars)
+  {
+    vtkNew<vtkPointDataToCellData> toCells;
+    toCells->SetInputData(grid);
+    toCells->Update();
+    grid = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
+  }
+  double range[2];
+  (cellScalars ? grid->GetCellData()->GetScalars() : grid->GetPointData()->GetScalars())
+    ->GetRange(range);
+  auto property = BandProperty(range, 0.1);
+
+  vtkNew<vtkHAVSVolumeMapper> mapper;
+  mapper->KeepFloatResultOn();
+  auto scene = havstest::MakeScene(grid, mapper, property, kSize, kSize);
+  havstest::PlaceCamera(scene.Renderer, 35.0, 25.0, parallel);
+  const std::vector<float> exact =
+    Reference(grid, property, scene.Renderer->GetActiveCamera(), cellScalars);
+
+  scene.Window->Render();
+  vtkHAVSFrameStatistics* stats = mapper->GetLastFrameStatistics();
+  const vtkIdType cells = grid->GetNumberOfCells();
+  const vtkIdType hidden = stats->GetInvisibleCells();
+  const vtkIdType facesSkipping = stats->GetFacesDrawn();
+  const std::vector<float> skippedImage = havstest::FloatResult(mapper);
+  const auto skipping = havstest::Compare(skippedImage, exact, edge);
+  std::printf("%s: %lld of %lld cells invisible (%.1f %%), %lld faces drawn; RMSE %.6f max %.5f\n",
+    name.c_str(), static_cast<long long>(hidden), static_cast<long long>(cells),
+    100.0 * hidden / cells, static_cast<long long>(facesSkipping), skipping.RMSE, skipping.Max);
+  havstest::Check(hidden >= 0.85 * cells, name + ": most cells are invisible");
+  havstest::Check(stats->GetTagging(), name + ": the faces next to invisible cells are tagged");
+  havstest::Check(Exact(skipping), name + ": exact with the invisible cells skipped");
+
+  // Nothing skipped: every face drawn, the same image.
+  mapper->SkipInvisibleCellsOff();
+  scene.Window->Render();
+  const vtkIdType facesAll = stats->GetFacesDrawn();
+  const std::vector<float> allImage = havstest::FloatResult(mapper);
+  const auto all = havstest::Compare(allImage, exact, edge);
+  const auto same = havstest::Compare(allImage, skippedImage);
+  std::printf("  skip off: %lld faces drawn; RMSE %.6f max %.5f; against the skip: max %.2g\n",
+    static_cast<long long>(facesAll), all.RMSE, all.Max, same.Max);
+  havstest::Check(stats->GetInvisibleCells() == 0 && facesAll > 2 * facesSkipping,
+    name + ": without the skip every face is drawn");
+  havstest::Check(Exact(all), name + ": exact without the skip");
+  havstest::Check(same.Max < 1e-4, name + ": the same image with and without the skip");
+
+  // Control: nearly transparent cells dropped too (their opacity is small,
+  // not zero): more cells skipped, and the image is not exact.
+  mapper->SkipInvisibleCellsOn();
+  mapper->SetInvisibleCellOpacity(0.2);
+  scene.Window->Render();
+  const vtkIdType hiddenControl = stats->GetInvisibleCells();
+  const auto control = havstest::Compare(havstest::FloatResult(mapper), exact, edge);
+  std::printf("  control (cells up to opacity 0.2 skipped): %lld invisible; RMSE %.6f max %.5f\n",
+    static_cast<long long>(hiddenControl), control.RMSE, control.Max);
+  havstest::Check(hiddenControl > hidden, name + ": control: more cells skipped");
+  havstest::Check(!Exact(control), name + ": control: skipping visible cells is not exact");
+  mapper->SetInvisibleCellOpacity(0.0);
+
+  if (cellScalars || parallel)
+  {
+    return;
+  }
+  // A transfer-function edit shows the band: every cell drawn again, without
+  // a new sort or a new upload of the mesh; the image is the new exact one.
+  scene.Window->Render();
+  vtkPiecewiseFunction* alpha = property->GetScalarOpacity();
+  alpha->AddPoint(range[0] + 0.5 * (range[1] - range[0]), 0.3);
+  scene.Window->Render();
+  const auto shown = havstest::Compare(havstest::FloatResult(mapper),
+    Reference(grid, property, scene.Renderer->GetActiveCamera(), false), edge);
+  std::printf("  band shown: %lld invisible, order reused %d, geometry uploaded %d, order "
+              "uploaded %d; RMSE %.6f max %.5f\n",
+    static_cast<long long>(stats->GetInvisibleCells()), stats->GetOrderReused() ? 1 : 0,
+    stats->GetGeometryUploaded() ? 1 : 0, stats->GetOrderUploaded() ? 1 : 0, shown.RMSE, shown.Max);
+  havstest::Check(stats->GetInvisibleCells() < hidden / 2 && stats->GetOrderReused() &&
+      !stats->GetGeometryUploaded() && stats->GetOrderUploaded(),
+    "an edit showing the band: faces gathered again, no sort, no mesh upload");
+  havstest::Check(Exact(shown), "an edit showing the band: exact");
+}
+}
+
+int TestHAVSSkips(int, char*[])
+{
+  TestInvisibleCells(false, false);
+  TestInvisibleCells(false, true);
+  TestInvisibleCells(true, false);
+  return havstest::Result();
+}
