@@ -271,9 +271,10 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
                                                         : this->Table->GetLastBuildSeconds());
 
   // 2b. The cells the transfer function hides (composite blend: the extremum
-  // modes look at every scalar); recomputed only for a new table or mesh.
+  // modes look at every scalar); recomputed only for a new table or mesh. The
+  // raster-bound mode draws the same faces as HAVS would.
   this->SkippingCells = false;
-  if (this->SkipInvisibleCells && this->BlendMode == COMPOSITE_BLEND && !this->FaceRasterBoundMode)
+  if (this->SkipInvisibleCells && this->BlendMode == COMPOSITE_BLEND)
   {
     const double visibilityStart = vtkTimerLog::GetUniversalTime();
     const vtkMTimeType before = this->Visibility->GetVisibilityVersion();

@@ -221,7 +221,8 @@ public:
    * Benchmark aid: draw the ordered faces with a trivial shader and nothing
    * else (no k-buffer, nothing composited into the window): the time of the
    * rasterization alone, the lower bound of any face-based method on this
-   * machine. Off by default.
+   * machine; the faces are those HAVS draws (invisible cells skipped alike).
+   * Off by default.
    */
   vtkSetMacro(FaceRasterBoundMode, bool);
   vtkGetMacro(FaceRasterBoundMode, bool);
