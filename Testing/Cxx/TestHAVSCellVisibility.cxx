@@ -24,6 +24,7 @@
 // Control: opacity 1e-4 instead of 0 in the band hides nothing (the test of
 // zero cannot pass on a near-zero function).
 #include "havsTestChecks.h"
+#include "havsTestViews.h"
 
 #include "vtkHAVSCellVisibility.h"
 #include "vtkHAVSDataSets.h"
@@ -69,30 +70,6 @@ vtkSmartPointer<vtkVolumeProperty> BandProperty(const double range[2], double in
   return property;
 }
 
-vtkHAVSViewFrame View(const double eye[3], const double centre[3])
-{
-  vtkHAVSViewFrame v;
-  vtkMatrix4x4::Identity(v.GridToWorld);
-  vtkMatrix4x4::Identity(v.GridToClip);
-  vtkMatrix4x4::Identity(v.ModelToEyeRelative);
-  vtkMatrix4x4::Identity(v.ModelToClip);
-  vtkMatrix4x4::Identity(v.ClipToEyeRelative);
-  double n = 0.0;
-  for (int k = 0; k < 3; ++k)
-  {
-    v.EyeWorld[k] = v.EyeGrid[k] = eye[k];
-    v.DirectionWorld[k] = v.DirectionGrid[k] = centre[k] - eye[k];
-    n += v.DirectionWorld[k] * v.DirectionWorld[k];
-  }
-  for (int k = 0; k < 3; ++k)
-  {
-    v.DirectionWorld[k] /= std::sqrt(n);
-    v.DirectionGrid[k] /= std::sqrt(n);
-  }
-  v.Parallel = false;
-  v.Width = v.Height = 64;
-  return v;
-}
 }
 
 int TestHAVSCellVisibility(int, char*[])
@@ -172,7 +149,7 @@ int TestHAVSCellVisibility(int, char*[])
   vtkNew<vtkHAVSFaceOrderPolicy> policy;
   policy->SetVisibilityOrder(vtkHAVSVolumeMapper::VisibilityOrderCentroid);
   const double eye[3] = { 3.0, 2.5, 2.0 }, centre[3] = { 0.5, 0.5, 0.5 };
-  const vtkHAVSViewFrame view = View(eye, centre);
+  const vtkHAVSViewFrame view = havstest::PerspectiveView(eye, centre);
   vtkHAVSFaceOrderPolicy::Plan plan = policy->Begin(mesh, 2, 1, true, false);
   policy->Prepare(plan, mesh, grid, view);
   const size_t allDrawn = policy->GetDrawTriangles().size() / 3;

@@ -25,6 +25,7 @@
 // Controls: Invalidate() makes the same view sort again (the reuse check can
 // fail), and the reversed centroid order fails the front-to-back check.
 #include "havsTestChecks.h"
+#include "havsTestViews.h"
 
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSFaceOrderPolicy.h"
@@ -45,29 +46,6 @@
 
 namespace
 {
-/// A perspective view from `eye` towards the mesh's centre, no volume matrix.
-vtkHAVSViewFrame View(const double eye[3], const double centre[3])
-{
-  vtkHAVSViewFrame v;
-  vtkMatrix4x4::Identity(v.GridToWorld);
-  vtkMatrix4x4::Identity(v.GridToClip);
-  vtkMatrix4x4::Identity(v.ModelToEyeRelative);
-  vtkMatrix4x4::Identity(v.ModelToClip);
-  vtkMatrix4x4::Identity(v.ClipToEyeRelative);
-  double d[3], n = 0.0;
-  for (int k = 0; k < 3; ++k)
-  {
-    v.EyeWorld[k] = v.EyeGrid[k] = eye[k];
-    d[k] = centre[k] - eye[k];
-    n += d[k] * d[k];
-  }
-  for (int k = 0; k < 3; ++k)
-  {
-    v.DirectionWorld[k] = v.DirectionGrid[k] = d[k] / std::sqrt(n);
-  }
-  v.Width = v.Height = 64;
-  return v;
-}
 
 /// The faces (as sorted point triples) of the draw triangles.
 std::vector<std::array<uint32_t, 3>> Faces(const std::vector<uint32_t>& triangles)
@@ -110,7 +88,8 @@ int TestHAVSFaceOrderPolicy(int, char*[])
   const auto allFaces = Faces(mesh->GetFaceSet()->GetFaceVertices());
   const double centre[3] = { 0.6, 0.5, 0.4 };
   const double eyeA[3] = { 4.0, 3.0, 2.5 }, eyeB[3] = { -3.0, -2.0, -2.5 };
-  const vtkHAVSViewFrame viewA = View(eyeA, centre), viewB = View(eyeB, centre);
+  const vtkHAVSViewFrame viewA = havstest::PerspectiveView(eyeA, centre),
+                         viewB = havstest::PerspectiveView(eyeB, centre);
   const int centroid = vtkHAVSVolumeMapper::VisibilityOrderCentroid;
   const int mpvo = vtkHAVSVolumeMapper::VisibilityOrderMPVO;
 
