@@ -23,6 +23,9 @@
 //   winding was reversed.
 // Control: opacity 1e-4 instead of 0 in the band hides nothing (the test of
 // zero cannot pass on a near-zero function).
+// vtkHAVSViewCulling: a plane culls exactly the cells wholly beyond it
+// (control: culling by the centroid would differ), and the identity's frustum
+// around the block culls nothing.
 #include "havsTestChecks.h"
 #include "havsTestViews.h"
 
@@ -32,6 +35,7 @@
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSPreIntegrationTable.h"
+#include "vtkHAVSViewCulling.h"
 #include "vtkHAVSViewFrame.h"
 #include "vtkHAVSVolumeMapper.h"
 
@@ -231,5 +235,41 @@ int TestHAVSCellVisibility(int, char*[])
     "the gather keeps the faces with a visible cell");
   havstest::Check(hiddenDrawn == 0 && badFlag == 0 && badNormal == 0 && boundaries > 0,
     "faces next to invisible cells: boundary faces wound out of the visible cell");
+
+  // vtkHAVSViewCulling: the plane x <= 0 (model coordinates: the block's
+  // centre is the origin) culls exactly the cells wholly beyond it.
+  vtkNew<vtkHAVSViewCulling> culling;
+  const std::vector<std::array<double, 4>> half = { { -1.0, 0.0, 0.0, 0.0 } };
+  culling->Update(mesh, half);
+  const std::vector<uint8_t>& culled = culling->GetCulled();
+  size_t wrongCulled = 0, centroidWrong = 0, culledCount = 0;
+  for (size_t t = 0; t < tetCells.size(); ++t)
+  {
+    int beyond = 0;
+    double cx = 0.0;
+    for (int v = 0; v < 4; ++v)
+    {
+      const float x = points[3 * tets[4 * t + v]];
+      beyond += x > 0.0f ? 1 : 0;
+      cx += 0.25 * x;
+    }
+    const bool wholly = beyond == 4;
+    culledCount += culled[tetCells[t]];
+    wrongCulled += (culled[tetCells[t]] != 0) != wholly ? 1 : 0;
+    // Control: culling by the centroid would drop cells reaching the kept side.
+    centroidWrong += (cx > 0.0) != wholly ? 1 : 0;
+  }
+  std::printf("culling by x <= 0: %zu culled (%lld counted), %zu wrong; by the centroid %zu "
+              "would be wrong\n",
+    culledCount, static_cast<long long>(culling->GetNumberOfCulledCells()), wrongCulled,
+    centroidWrong);
+  havstest::Check(culledCount > 0 && wrongCulled == 0 &&
+      culling->GetNumberOfCulledCells() == static_cast<vtkIdType>(culledCount),
+    "culling: exactly the cells wholly beyond the plane");
+  havstest::Check(centroidWrong > 0, "control: the centroid rule differs from the whole-cell one");
+  // The frustum of the identity matrix: -1 <= x, y, z <= 1 holds the block.
+  const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  culling->Update(mesh, vtkHAVSViewCulling::FrustumPlanes(identity));
+  havstest::Check(culling->GetNumberOfCulledCells() == 0, "a frustum holding the block culls none");
   return havstest::Result();
 }

@@ -23,8 +23,13 @@
 //   faces tagged, cannot fail here: with continuous point scalars the gap
 //   behind such a face lies in one zero-opacity interval and integrates to
 //   zero untagged too; the tagging makes it empty by construction.)
+// - off-screen cells: a zoom on a corner culls the cells outside the view
+//   frustum, a clipping plane those on its discarded side; each frame exact
+//   against the reference and the same image as with every cell drawn (their
+//   fragments never reach the image), and nothing culled with the skip off.
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
+#include "havsTestProperties.h"
 #include "havsTestScenes.h"
 
 #include "vtkHAVSDataSets.h"
@@ -38,6 +43,8 @@
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkPointDataToCellData.h"
 #include "vtkRenderWindow.h"
@@ -186,8 +193,70 @@ void TestInvisibleCells(bool cellScalars, bool parallel)
 }
 }
 
+/// Off-screen cells: a zoom on a corner, then a clipping plane; each exact
+/// and the same image as with every cell drawn.
+void TestOffscreenCells()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> grid = vtkHAVSDataSets::MakeGenerated(14);
+  double range[2];
+  grid->GetPointData()->GetScalars()->GetRange(range);
+  auto property = havstest::MakeRampProperty(range[0], range[1], 0.8, 0.15);
+  vtkNew<vtkHAVSVolumeMapper> mapper;
+  mapper->KeepFloatResultOn();
+  auto scene = havstest::MakeScene(grid, mapper, property, kSize, kSize);
+  havstest::PlaceCamera(scene.Renderer, 35.0, 25.0, false);
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.85, 0.8, 0.9);
+  camera->Zoom(3.0);
+  scene.Renderer->ResetCameraClippingRange();
+  vtkNew<vtkPlaneCollection> planes;
+  for (int step = 0; step < 2; ++step)
+  {
+    const std::string name = step == 0 ? "a zoom on a corner" : "a zoom and a clipping plane";
+    if (step == 1)
+    {
+      vtkNew<vtkPlane> plane;
+      plane->SetOrigin(0.8, 0.8, 0.8);
+      plane->SetNormal(1.0, 0.3, 0.2); // keeps the corner's far side
+      planes->AddItem(plane);
+      mapper->SetClippingPlanes(planes);
+    }
+    vtkNew<vtkHAVSReferenceRenderer> reference;
+    reference->SetInputData(grid);
+    reference->SetProperty(property);
+    reference->SetCamera(camera);
+    reference->SetSize(kSize, kSize);
+    reference->SetClippingPlanes(step == 1 ? planes.Get() : nullptr);
+    reference->Render();
+    vtkFloatArray* image = reference->GetImage();
+    const std::vector<float> exact(image->GetPointer(0), image->GetPointer(0) + 4 * kSize * kSize);
+
+    mapper->SkipOffscreenCellsOn();
+    scene.Window->Render();
+    vtkHAVSFrameStatistics* stats = mapper->GetLastFrameStatistics();
+    const vtkIdType culled = stats->GetCulledCells(), faces = stats->GetFacesDrawn();
+    const std::vector<float> skipped = havstest::FloatResult(mapper);
+    const auto d = havstest::Compare(skipped, exact, 5);
+    mapper->SkipOffscreenCellsOff();
+    scene.Window->Render();
+    const vtkIdType allFaces = stats->GetFacesDrawn();
+    const auto same = havstest::Compare(havstest::FloatResult(mapper), skipped);
+    std::printf("%s: %lld of %lld cells culled, %lld of %lld faces drawn; RMSE %.6f max %.5f; "
+                "against every cell drawn: max %.2g\n",
+      name.c_str(), static_cast<long long>(culled),
+      static_cast<long long>(grid->GetNumberOfCells()), static_cast<long long>(faces),
+      static_cast<long long>(allFaces), d.RMSE, d.Max, same.Max);
+    havstest::Check(culled >= 0.3 * grid->GetNumberOfCells() && faces < allFaces,
+      name + ": the cells the frame cannot see are culled");
+    havstest::Check(stats->GetCulledCells() == 0, name + ": nothing culled with the skip off");
+    havstest::Check(Exact(d), name + ": exact with the culled cells skipped");
+    havstest::Check(same.Max < 1e-4, name + ": the same image as with every cell drawn");
+  }
+}
+
 int TestHAVSSkips(int, char*[])
 {
+  TestOffscreenCells();
   TestInvisibleCells(false, false);
   TestInvisibleCells(false, true);
   TestInvisibleCells(true, false);

@@ -125,7 +125,8 @@ bool vtkHAVSFaceOrderPolicy::Prepare(
   // cells; any order will do without one.
   const bool newOrder = changed || this->GatheredMesh != mesh->GetBuildTime() ||
     (drawn >= 0 && this->GatheredOrder != drawn);
-  const bool gather = newOrder || this->GatheredVisibility != this->VisibilityVersion;
+  const bool gather = newOrder || this->GatheredVisibility != this->VisibilityVersion ||
+    this->GatheredCulling != this->CullingVersion;
   this->LastGatherSeconds = 0.0;
   if (gather)
   {
@@ -149,6 +150,14 @@ void vtkHAVSFaceOrderPolicy::SetCellVisibility(
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSFaceOrderPolicy::SetCellCulling(
+  const std::vector<uint8_t>* culled, vtkMTimeType version)
+{
+  this->Culled = culled;
+  this->CullingVersion = culled ? version : 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_t>* order)
 {
   vtkHAVSFaceSet* faces = mesh->GetFaceSet();
@@ -157,7 +166,7 @@ void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_
   const vtkIdType numFaces = faces->GetNumberOfFaces();
   this->DrawTriangles.resize(3 * numFaces);
   this->DrawBoundary.resize(numFaces);
-  if (!this->Visible)
+  if (!this->Visible && !this->Culled)
   {
     for (vtkIdType i = 0; i < numFaces; ++i)
     {
@@ -170,28 +179,36 @@ void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_
   }
   else
   {
-    // Faces with a visible cell, in the same order; the cells' visibility
-    // decides which are boundary faces (the face set's normal points to the
-    // first cell: flipped where that one is the visible one).
-    const std::vector<uint8_t>& visible = *this->Visible;
+    // Faces with a kept cell (visible, not culled), in the same order; the
+    // cells' visibility decides which are boundary faces (the face set's
+    // normal points to the first cell: flipped where that one is the visible
+    // one). Without a visibility set, the face set's boundary stays.
+    const std::vector<uint8_t>* visible = this->Visible;
+    const std::vector<uint8_t>* culled = this->Culled;
     const std::vector<uint32_t>& faceCells = faces->GetFaceCells();
     auto isVisible = [&](uint32_t cell)
-    { return cell != vtkHAVSFaceSet::NoCell && cell < visible.size() && visible[cell] != 0; };
+    {
+      return cell != vtkHAVSFaceSet::NoCell &&
+        (!visible || (cell < visible->size() && (*visible)[cell] != 0));
+    };
+    auto isKept = [&](uint32_t cell)
+    { return isVisible(cell) && (!culled || cell >= culled->size() || (*culled)[cell] == 0); };
     vtkIdType n = 0;
     for (vtkIdType i = 0; i < numFaces; ++i)
     {
       const uint32_t f = order ? (*order)[i] : static_cast<uint32_t>(i);
-      const bool front = isVisible(faceCells[2 * static_cast<size_t>(f)]);
-      const bool back = isVisible(faceCells[2 * static_cast<size_t>(f) + 1]);
-      if (!front && !back)
+      const uint32_t c0 = faceCells[2 * static_cast<size_t>(f)];
+      const uint32_t c1 = faceCells[2 * static_cast<size_t>(f) + 1];
+      if (!isKept(c0) && !isKept(c1))
       {
         continue;
       }
-      const bool flip = front && !back;
+      const bool front = isVisible(c0), back = isVisible(c1);
+      const bool flip = visible && front && !back;
       this->DrawTriangles[3 * n] = faceVertices[3 * f];
       this->DrawTriangles[3 * n + 1] = faceVertices[3 * f + (flip ? 2 : 1)];
       this->DrawTriangles[3 * n + 2] = faceVertices[3 * f + (flip ? 1 : 2)];
-      this->DrawBoundary[n] = front != back ? (flip ? 2 : 1) : 0;
+      this->DrawBoundary[n] = visible ? (front != back ? (flip ? 2 : 1) : 0) : boundary[f];
       ++n;
     }
     this->DrawTriangles.resize(3 * n);
@@ -199,6 +216,7 @@ void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_
   }
   this->GatheredMesh = mesh->GetBuildTime();
   this->GatheredVisibility = this->VisibilityVersion;
+  this->GatheredCulling = this->CullingVersion;
   this->DrawOrderTime.Modified();
 }
 

@@ -106,6 +106,14 @@ public:
    */
   void SetCellVisibility(const std::vector<uint8_t>* visible, vtkMTimeType version);
 
+  /**
+   * The cells the frame cannot see (vtkHAVSViewCulling: per grid cell id, 1
+   * culled; null: none), and when that set last changed. A face both of whose
+   * cells are culled (or hidden) is not gathered; culling makes no boundary
+   * face (a culled cell's faces lie outside the image or the clipped volume).
+   */
+  void SetCellCulling(const std::vector<uint8_t>* culled, vtkMTimeType version);
+
   ///@{
   /**
    * The faces in draw order: 3 point ids each, and per face 0 (internal), 1
@@ -186,6 +194,9 @@ private:
   const std::vector<uint8_t>* Visible = nullptr;
   vtkMTimeType VisibilityVersion = 0;
   vtkMTimeType GatheredVisibility = 0;
+  const std::vector<uint8_t>* Culled = nullptr;
+  vtkMTimeType CullingVersion = 0;
+  vtkMTimeType GatheredCulling = 0;
 
   int LastOrder = -1;
   bool LastReused = false;

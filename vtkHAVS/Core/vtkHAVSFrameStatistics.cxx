@@ -47,6 +47,8 @@ void vtkHAVSFrameStatistics::Reset()
   this->TableUploaded = false;
   this->InvisibleCells = 0;
   this->VisibilitySeconds = 0.0;
+  this->CulledCells = 0;
+  this->CullingSeconds = 0.0;
   this->SortSeconds = 0.0;
   this->GatherSeconds = 0.0;
   this->UploadSeconds = 0.0;
@@ -105,5 +107,5 @@ void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
      << this->GeometryUploaded << ", scalars " << this->ScalarsUploaded << ", order "
      << this->OrderUploaded << ", table " << this->TableUploaded << "\n";
   os << indent << "InvisibleCells: " << this->InvisibleCells << " (" << this->VisibilitySeconds
-     << " s)\n";
+     << " s), culled cells " << this->CulledCells << " (" << this->CullingSeconds << " s)\n";
 }

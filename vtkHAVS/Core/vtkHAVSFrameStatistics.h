@@ -195,6 +195,18 @@ public:
   vtkGetMacro(VisibilitySeconds, double);
   ///@}
 
+  ///@{
+  /**
+   * Tetrahedra not drawn because the frame cannot see them: outside the view
+   * frustum or cut away by a clipping plane
+   * (vtkHAVSVolumeMapper::SkipOffscreenCells), and the seconds that took.
+   */
+  vtkSetMacro(CulledCells, vtkIdType);
+  vtkGetMacro(CulledCells, vtkIdType);
+  vtkSetMacro(CullingSeconds, double);
+  vtkGetMacro(CullingSeconds, double);
+  ///@}
+
 protected:
   vtkHAVSFrameStatistics() = default;
   ~vtkHAVSFrameStatistics() override = default;
@@ -238,6 +250,8 @@ private:
   bool TableUploaded = false;
   vtkIdType InvisibleCells = 0;
   double VisibilitySeconds = 0.0;
+  vtkIdType CulledCells = 0;
+  double CullingSeconds = 0.0;
 };
 
 #endif

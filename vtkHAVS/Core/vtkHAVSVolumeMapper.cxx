@@ -22,6 +22,7 @@
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSPreIntegrationTable.h"
 #include "vtkHAVSTableResolution.h"
+#include "vtkHAVSViewCulling.h"
 #include "vtkHAVSViewFrame.h"
 #include "vtkHAVSVisibilityOrder.h"
 
@@ -331,6 +332,36 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       WarnPlanes, "More than 6 clipping planes; vtkHAVSVolumeMapper uses the first 6.");
   }
 
+  // 4b. The cells outside the view frustum or cut away by a clipping plane.
+  this->FaceOrder->SetCellCulling(nullptr, 0);
+  if (this->SkipOffscreenCells)
+  {
+    std::vector<std::array<double, 4>> planes = vtkHAVSViewCulling::FrustumPlanes(view.ModelToClip);
+    for (int i = 0; i < this->Planes->GetNumberOfPlanes(); ++i)
+    {
+      // Eye-relative world -> model: the plane as a row vector times the matrix.
+      const std::array<float, 4>& q = this->Planes->GetPlane(i);
+      std::array<double, 4> plane;
+      for (int j = 0; j < 4; ++j)
+      {
+        plane[j] = 0.0;
+        for (int r = 0; r < 4; ++r)
+        {
+          plane[j] += q[r] * view.ModelToEyeRelative[4 * r + j];
+        }
+      }
+      planes.push_back(plane);
+    }
+    this->Culling->Update(this->Mesh, planes);
+    stats->SetCulledCells(this->Culling->GetNumberOfCulledCells());
+    stats->SetCullingSeconds(this->Culling->GetLastSeconds());
+    if (this->Culling->GetNumberOfCulledCells() > 0)
+    {
+      this->FaceOrder->SetCellCulling(
+        &this->Culling->GetCulled(), this->Culling->GetCullingVersion());
+    }
+  }
+
   // 5. The face order, and 6. the draw: Automatic's probe may ask for a
   // second draw in the exact order.
   this->FaceOrder->SetVisibilityOrder(this->VisibilityOrder);
@@ -534,6 +565,7 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << " x " << this->TableLengthResolution << "\n";
   os << indent << "AutomaticTableResolution: " << this->AutomaticTableResolution << " (error bound "
      << this->TableChooser->GetErrorBound() << ")\n";
+  os << indent << "SkipOffscreenCells: " << this->SkipOffscreenCells << "\n";
   os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << " (opacity "
      << this->Visibility->GetOpacityThreshold() << ")\n";
   os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";

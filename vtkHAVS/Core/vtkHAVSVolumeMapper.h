@@ -68,6 +68,7 @@ class vtkHAVSFrameStatistics;
 class vtkHAVSMesh;
 class vtkHAVSPreIntegrationTable;
 class vtkHAVSTableResolution;
+class vtkHAVSViewCulling;
 class vtkHAVSViewFrame;
 class vtkRenderWindow;
 
@@ -188,6 +189,16 @@ public:
   vtkSetMacro(SkipInvisibleCells, bool);
   vtkGetMacro(SkipInvisibleCells, bool);
   vtkBooleanMacro(SkipInvisibleCells, bool);
+  /**
+   * Skip the cells the frame cannot see (default on; vtkHAVSViewCulling): a
+   * cell whose points all lie outside one plane of the view frustum (a
+   * zoomed-in view) or on the discarded side of a clipping plane is not
+   * drawn. None of its fragments would reach the image, so it stays the same.
+   * The frame statistics count them (GetCulledCells()).
+   */
+  vtkSetMacro(SkipOffscreenCells, bool);
+  vtkGetMacro(SkipOffscreenCells, bool);
+  vtkBooleanMacro(SkipOffscreenCells, bool);
   /**
    * Nearly invisible cells: also skip a cell when the table's opacity for
    * the longest segment over its scalar range is at most this (default 0:
@@ -513,6 +524,7 @@ protected:
   int TableLengthResolution = 128;
   bool AutomaticTableResolution = true;
   bool SkipInvisibleCells = true;
+  bool SkipOffscreenCells = true;
   bool MeasureStageTimes = false;
   bool KeepFloatResult = false;
   bool FaceRasterBoundMode = false;
@@ -540,6 +552,7 @@ private:
   vtkNew<vtkHAVSFramePlanes> Planes;
   vtkNew<vtkHAVSFaceOrderPolicy> FaceOrder;
   vtkNew<vtkHAVSCellVisibility> Visibility;
+  vtkNew<vtkHAVSViewCulling> Culling;
   bool SkippingCells = false; // this frame skips invisible cells
   vtkNew<vtkHAVSFrameStatistics> LastFrame;
   std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings

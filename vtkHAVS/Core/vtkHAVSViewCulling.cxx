@@ -1,0 +1,134 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSViewCulling.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSViewCulling.h"
+
+#include "vtkHAVSFaceSet.h"
+#include "vtkHAVSMesh.h"
+#include "vtkObjectFactory.h"
+#include "vtkSMPTools.h"
+#include "vtkTimerLog.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkHAVSViewCulling);
+
+//------------------------------------------------------------------------------
+std::vector<std::array<double, 4>> vtkHAVSViewCulling::FrustumPlanes(const double m[16])
+{
+  // Clip coordinates c = M p; inside: -w <= x, y, z <= w, i.e. the rows
+  // w + x, w - x, w + y, w - y, w + z, w - z are >= 0.
+  std::vector<std::array<double, 4>> planes;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (double sign : { 1.0, -1.0 })
+    {
+      std::array<double, 4> p;
+      for (int j = 0; j < 4; ++j)
+      {
+        p[j] = m[12 + j] + sign * m[4 * axis + j];
+      }
+      planes.push_back(p);
+    }
+  }
+  return planes;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSViewCulling::Outside(const float* const points[4], const double plane[4])
+{
+  for (int v = 0; v < 4; ++v)
+  {
+    const float* p = points[v];
+    if (plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3] >= 0.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSViewCulling::Update(vtkHAVSMesh* mesh, const std::vector<std::array<double, 4>>& planes)
+{
+  const double start = vtkTimerLog::GetUniversalTime();
+  vtkHAVSFaceSet* faces = mesh->GetFaceSet();
+  const std::vector<uint32_t>& tets = faces->GetTetrahedra();
+  const std::vector<uint32_t>& tetCells = faces->GetTetrahedronCells();
+  const std::vector<float>& points = mesh->GetPoints();
+  uint32_t cells = 0;
+  for (uint32_t c : tetCells)
+  {
+    cells = std::max(cells, c + 1);
+  }
+
+  // The planes that cut into the bounding box (a box inside every plane
+  // culls nothing).
+  const double* b = mesh->GetBounds();
+  std::vector<std::array<double, 4>> cutting;
+  for (const std::array<double, 4>& plane : planes)
+  {
+    bool allInside = true;
+    for (int corner = 0; corner < 8 && allInside; ++corner)
+    {
+      const double x = b[corner & 1], y = b[2 + ((corner >> 1) & 1)], z = b[4 + (corner >> 2)];
+      allInside = plane[0] * x + plane[1] * y + plane[2] * z + plane[3] >= 0.0;
+    }
+    if (!allInside)
+    {
+      cutting.push_back(plane);
+    }
+  }
+
+  std::vector<uint8_t> culled(cells, 0);
+  if (!cutting.empty())
+  {
+    vtkSMPTools::For(0, static_cast<vtkIdType>(tetCells.size()),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType t = begin; t < end; ++t)
+        {
+          const uint32_t* ids = &tets[4 * t];
+          const float* p[4] = { &points[3 * static_cast<size_t>(ids[0])],
+            &points[3 * static_cast<size_t>(ids[1])], &points[3 * static_cast<size_t>(ids[2])],
+            &points[3 * static_cast<size_t>(ids[3])] };
+          for (const std::array<double, 4>& plane : cutting)
+          {
+            if (Outside(p, plane.data()))
+            {
+              culled[tetCells[t]] = 1;
+              break;
+            }
+          }
+        }
+      });
+  }
+  vtkIdType count = 0;
+  for (uint32_t c : tetCells)
+  {
+    count += culled[c];
+  }
+  const bool changed = culled != this->Culled;
+  this->Culled.swap(culled);
+  this->NumberOfCulledCells = count;
+  if (changed)
+  {
+    this->CullingTime.Modified();
+  }
+  this->LastSeconds = vtkTimerLog::GetUniversalTime() - start;
+  return changed;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSViewCulling::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Culled cells: " << this->NumberOfCulledCells << " (" << this->LastSeconds
+     << " s)\n";
+}
