@@ -189,6 +189,20 @@ if args.mode == "serial":
           and mapper.GetLastTableError() >= 0,
           "automatic table on again: chosen again (%d^3)" % mapper.GetLastTableScalarResolution())
 
+    # Skipping hidden cells (transparent, off-screen, clipped away): on by default.
+    check(display.HAVSSkipHiddenCells == 1 and mapper.GetSkipInvisibleCells()
+          and mapper.GetSkipOffscreenCells(), "default: hidden cells skipped")
+    display.HAVSSkipHiddenCells = 0
+    Render(view)
+    stats = mapper.GetLastFrameStatistics()
+    check(not mapper.GetSkipInvisibleCells() and not mapper.GetSkipOffscreenCells()
+          and stats.GetInvisibleCells() == 0 and stats.GetCulledCells() == 0,
+          "skip hidden cells off: nothing skipped")
+    display.HAVSSkipHiddenCells = 1
+    Render(view)
+    check(mapper.GetSkipInvisibleCells() and mapper.GetSkipOffscreenCells(),
+          "skip hidden cells on again")
+
     # A structured grid (the blunt fin, PLOT3D) through the same representation type.
     Hide(tets, view)
     xyz = os.path.join(os.environ["HAVS_DATA_DIR"], "bluntfinxyz.bin")

@@ -105,6 +105,13 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSAutomaticTable(int auto
   this->Modified();
 }
 
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSSkipHiddenCells(int skip)
+{
+  this->HAVSMapper->SetSkipInvisibleCells(skip != 0);
+  this->HAVSMapper->SetSkipOffscreenCells(skip != 0);
+  this->Modified();
+}
+
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSBoundaryMode(int mode)
 {
   this->HAVSMapper->SetBoundaryMode(mode);

@@ -50,6 +50,7 @@ public:
   void SetHAVSEarlyRayTerminationOpacity(double opacity);
   void SetHAVSTableResolution(int resolution);
   void SetHAVSAutomaticTable(int automatic);
+  void SetHAVSSkipHiddenCells(int skip);
   void SetHAVSBoundaryMode(int mode);
   void SetHAVSVisibilityOrder(int order);
   void SetHAVSNonConvexMethod(int method);
