@@ -15,6 +15,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkSMPTools.h"
 #include "vtkTimerLog.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,12 +67,7 @@ bool vtkHAVSCellVisibility::Update(
   const std::vector<float>& tetScalars = mesh->GetTetrahedronScalars();
   const bool cellScalars = mesh->HasCellScalars();
   const vtkIdType numberOfTets = static_cast<vtkIdType>(tetCells.size());
-  uint32_t cells = 0;
-  for (uint32_t c : tetCells)
-  {
-    cells = std::max(cells, c + 1);
-  }
-  std::vector<uint8_t> visible(cells, 0);
+  std::vector<uint8_t> visible(mesh->GetGrid()->GetNumberOfCells(), 0);
 
   // The table's transparent node pairs at the longest length: nodes a <= b
   // with nothing over [a, b] (a zero-opacity run of the transfer function).

@@ -68,6 +68,7 @@ bool vtkHAVSFramePlanes::Update(
   const double* bounds = mesh->GetBounds();
   const double* m = view.ModelToEyeRelative;
   this->Planes.clear();
+  this->ModelPlanes.clear();
   std::vector<Cut> cuts;
   for (const Candidate& candidate : candidates)
   {
@@ -96,6 +97,7 @@ bool vtkHAVSFramePlanes::Update(
     this->Planes.push_back(
       { static_cast<float>(candidate.Equation[0]), static_cast<float>(candidate.Equation[1]),
         static_cast<float>(candidate.Equation[2]), static_cast<float>(candidate.Equation[3]) });
+    this->ModelPlanes.push_back({ planeModel[0], planeModel[1], planeModel[2], planeModel[3] });
     if (cutsMesh && sections && (nearPlane || !this->NearPlaneSectionsOnly))
     {
       cuts.push_back({ index, candidate.Entering,

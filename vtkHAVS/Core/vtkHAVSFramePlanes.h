@@ -81,6 +81,8 @@ public:
   int GetNumberOfPlanes() const { return static_cast<int>(this->Planes.size()); }
   /// Plane i in eye-relative world coordinates: kept where dot(xyz, x) + w >= 0.
   const std::array<float, 4>& GetPlane(int i) const { return this->Planes[i]; }
+  /// Plane i in the mesh's model coordinates (double), kept where >= 0.
+  const std::array<double, 4>& GetModelPlane(int i) const { return this->ModelPlanes[i]; }
   const std::vector<Section>& GetSections() const { return this->Sections; }
   /// Changes whenever the sections do.
   vtkMTimeType GetSectionsVersion() const { return this->SectionsTime.GetMTime(); }
@@ -112,6 +114,7 @@ private:
 
   bool NearPlaneSectionsOnly = false;
   std::vector<std::array<float, 4>> Planes;
+  std::vector<std::array<double, 4>> ModelPlanes;
   std::vector<Section> Sections;
   std::vector<Cut> Cuts; // what the sections were made for
   vtkMTimeType CutsMeshTime = 0;

@@ -11,9 +11,11 @@
 
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSMesh.h"
+#include "vtkHAVSPlaneSection.h"
 #include "vtkObjectFactory.h"
 #include "vtkSMPTools.h"
 #include "vtkTimerLog.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 
@@ -57,58 +59,66 @@ bool vtkHAVSViewCulling::Outside(const float* const points[4], const double plan
 //------------------------------------------------------------------------------
 bool vtkHAVSViewCulling::Update(vtkHAVSMesh* mesh, const std::vector<std::array<double, 4>>& planes)
 {
-  const double start = vtkTimerLog::GetUniversalTime();
-  vtkHAVSFaceSet* faces = mesh->GetFaceSet();
-  const std::vector<uint32_t>& tets = faces->GetTetrahedra();
-  const std::vector<uint32_t>& tetCells = faces->GetTetrahedronCells();
-  const std::vector<float>& points = mesh->GetPoints();
-  uint32_t cells = 0;
-  for (uint32_t c : tetCells)
+  // The same planes on the same mesh: the same cells (a still camera).
+  if (mesh->GetBuildTime() == this->MeshVersion && planes == this->LastPlanes)
   {
-    cells = std::max(cells, c + 1);
+    this->LastSeconds = 0.0;
+    return false;
   }
+  const double start = vtkTimerLog::GetUniversalTime();
+  this->MeshVersion = mesh->GetBuildTime();
+  this->LastPlanes = planes;
 
-  // The planes that cut into the bounding box (a box inside every plane
-  // culls nothing).
+  // The planes with part of the mesh's bounding box outside (a box inside
+  // every plane culls nothing): those that cut it, or have it all outside.
   const double* b = mesh->GetBounds();
   std::vector<std::array<double, 4>> cutting;
   for (const std::array<double, 4>& plane : planes)
   {
-    bool allInside = true;
-    for (int corner = 0; corner < 8 && allInside; ++corner)
-    {
-      const double x = b[corner & 1], y = b[2 + ((corner >> 1) & 1)], z = b[4 + (corner >> 2)];
-      allInside = plane[0] * x + plane[1] * y + plane[2] * z + plane[3] >= 0.0;
-    }
-    if (!allInside)
+    if (vtkHAVSPlaneSection::CutsBox(plane.data(), b) ||
+      plane[0] * b[0] + plane[1] * b[2] + plane[2] * b[4] + plane[3] < 0.0)
     {
       cutting.push_back(plane);
     }
   }
-
-  std::vector<uint8_t> culled(cells, 0);
-  if (!cutting.empty())
+  if (cutting.empty())
   {
-    vtkSMPTools::For(0, static_cast<vtkIdType>(tetCells.size()),
-      [&](vtkIdType begin, vtkIdType end)
+    const bool changed = this->NumberOfCulledCells != 0;
+    this->Culled.clear();
+    this->NumberOfCulledCells = 0;
+    if (changed)
+    {
+      this->CullingTime.Modified();
+    }
+    this->LastSeconds = vtkTimerLog::GetUniversalTime() - start;
+    return changed;
+  }
+
+  vtkHAVSFaceSet* faces = mesh->GetFaceSet();
+  const std::vector<uint32_t>& tets = faces->GetTetrahedra();
+  const std::vector<uint32_t>& tetCells = faces->GetTetrahedronCells();
+  const std::vector<float>& points = mesh->GetPoints();
+  const vtkIdType cells = mesh->GetGrid()->GetNumberOfCells();
+  std::vector<uint8_t> culled(cells, 0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(tetCells.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType t = begin; t < end; ++t)
       {
-        for (vtkIdType t = begin; t < end; ++t)
+        const uint32_t* ids = &tets[4 * t];
+        const float* p[4] = { &points[3 * static_cast<size_t>(ids[0])],
+          &points[3 * static_cast<size_t>(ids[1])], &points[3 * static_cast<size_t>(ids[2])],
+          &points[3 * static_cast<size_t>(ids[3])] };
+        for (const std::array<double, 4>& plane : cutting)
         {
-          const uint32_t* ids = &tets[4 * t];
-          const float* p[4] = { &points[3 * static_cast<size_t>(ids[0])],
-            &points[3 * static_cast<size_t>(ids[1])], &points[3 * static_cast<size_t>(ids[2])],
-            &points[3 * static_cast<size_t>(ids[3])] };
-          for (const std::array<double, 4>& plane : cutting)
+          if (Outside(p, plane.data()))
           {
-            if (Outside(p, plane.data()))
-            {
-              culled[tetCells[t]] = 1;
-              break;
-            }
+            culled[tetCells[t]] = 1;
+            break;
           }
         }
-      });
-  }
+      }
+    });
   vtkIdType count = 0;
   for (uint32_t c : tetCells)
   {

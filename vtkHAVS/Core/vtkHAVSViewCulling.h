@@ -20,9 +20,9 @@
  * needs to become a boundary face. A face shared with a kept cell lies
  * outside too and is drawn with it (harmless).
  *
- * Update() runs in parallel (vtkSMPTools) once per new view; when the mesh's
- * bounding box lies inside every plane it does nothing (no cell can be
- * culled).
+ * Update() runs in parallel (vtkSMPTools) only for new planes or a new
+ * mesh; when the mesh's bounding box lies inside every plane it touches no
+ * cell (none can be culled).
  */
 #ifndef vtkHAVSViewCulling_h
 #define vtkHAVSViewCulling_h
@@ -77,6 +77,8 @@ private:
   std::vector<uint8_t> Culled;
   vtkIdType NumberOfCulledCells = 0;
   double LastSeconds = 0.0;
+  vtkMTimeType MeshVersion = 0;
+  std::vector<std::array<double, 4>> LastPlanes;
   vtkTimeStamp CullingTime;
 };
 

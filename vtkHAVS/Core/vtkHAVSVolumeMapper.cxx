@@ -339,18 +339,7 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     std::vector<std::array<double, 4>> planes = vtkHAVSViewCulling::FrustumPlanes(view.ModelToClip);
     for (int i = 0; i < this->Planes->GetNumberOfPlanes(); ++i)
     {
-      // Eye-relative world -> model: the plane as a row vector times the matrix.
-      const std::array<float, 4>& q = this->Planes->GetPlane(i);
-      std::array<double, 4> plane;
-      for (int j = 0; j < 4; ++j)
-      {
-        plane[j] = 0.0;
-        for (int r = 0; r < 4; ++r)
-        {
-          plane[j] += q[r] * view.ModelToEyeRelative[4 * r + j];
-        }
-      }
-      planes.push_back(plane);
+      planes.push_back(this->Planes->GetModelPlane(i));
     }
     this->Culling->Update(this->Mesh, planes);
     stats->SetCulledCells(this->Culling->GetNumberOfCulledCells());
