@@ -861,6 +861,17 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
   {
     const std::string& dataset = group.first;
     const std::string& size = group.second;
+    // The rows of one configuration in this group (data set and size).
+    auto rowsOf = [&](const std::string& config)
+    {
+      std::vector<const Row*> found;
+      for (const Row& r : rows)
+      {
+        if (r.at("dataset") == dataset && sizeOf(r) == size && r.at("config") == config)
+          found.push_back(&r);
+      }
+      return found;
+    };
     double bound = NAN, havs6 = NAN;
     std::map<std::string, double> ms;
     std::string tets = "?";
@@ -969,10 +980,9 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
     if (ms.count("havs-default"))
     {
       Row def;
-      for (const Row& r : rows)
+      for (const Row* r : rowsOf("havs-default"))
       {
-        if (r.at("dataset") == dataset && sizeOf(r) == size && r.at("config") == "havs-default")
-          def = r;
+        def = *r;
       }
       const double t = ms["havs-default"];
       const bool exact = Value(def, "rmse") < 5e-4 && Value(def, "max") < 0.01;
@@ -985,31 +995,23 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
       }
       if (ms.count("havs-default-table128"))
       {
-        for (const Row& r : rows)
+        for (const Row* r : rowsOf("havs-default-table128"))
         {
-          if (r.at("dataset") == dataset && sizeOf(r) == size &&
-            r.at("config") == "havs-default-table128")
-          {
-            md << "; with the fixed 128³ table instead: " << Cell(r, "ms_median", "%.1f")
-               << " ms (draw " << Cell(r, "draw_ms", "%.1f") << ", automatic draw "
-               << Cell(def, "draw_ms", "%.1f") << "), RMSE " << Cell(r, "rmse", "%.5f") << ", max "
-               << Cell(r, "max", "%.4f");
-          }
+          md << "; with the fixed 128³ table instead: " << Cell(*r, "ms_median", "%.1f")
+             << " ms (draw " << Cell(*r, "draw_ms", "%.1f") << ", automatic draw "
+             << Cell(def, "draw_ms", "%.1f") << "), RMSE " << Cell(*r, "rmse", "%.5f") << ", max "
+             << Cell(*r, "max", "%.4f");
         }
       }
       if (def.count("skipped") && !def.at("skipped").empty() && def.at("skipped") != "-1")
       {
         md << "; " << def.at("skipped") << " invisible tetrahedra skipped";
       }
-      for (const Row& r : rows)
+      for (const Row* r : rowsOf("havs-default-noskip"))
       {
-        if (r.at("dataset") == dataset && sizeOf(r) == size &&
-          r.at("config") == "havs-default-noskip")
-        {
-          md << "; with every cell drawn (havs-default-noskip): " << Cell(r, "ms_median", "%.1f")
-             << " ms (draw " << Cell(r, "draw_ms", "%.1f") << "), so skipping takes "
-             << std::setprecision(3) << t / Value(r, "ms_median") << "× its time";
-        }
+        md << "; with every cell drawn (havs-default-noskip): " << Cell(*r, "ms_median", "%.1f")
+           << " ms (draw " << Cell(*r, "draw_ms", "%.1f") << "), so skipping takes "
+           << std::setprecision(3) << t / Value(*r, "ms_median") << "× its time";
       }
       if (ms.count("raster-bound"))
       {
@@ -1017,13 +1019,10 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
       }
       if (ms.count("pt"))
       {
-        for (const Row& r : rows)
+        for (const Row* r : rowsOf("pt"))
         {
-          if (r.at("dataset") == dataset && sizeOf(r) == size && r.at("config") == "pt")
-          {
-            md << "; " << std::setprecision(3) << t / ms["pt"] << "× the time of PT (RMSE "
-               << Cell(r, "rmse", "%.5f") << ")";
-          }
+          md << "; " << std::setprecision(3) << t / ms["pt"] << "× the time of PT (RMSE "
+             << Cell(*r, "rmse", "%.5f") << ")";
         }
       }
       md << ".\n";
@@ -1031,23 +1030,21 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
     if (ms.count("cellproj"))
     {
       // vtkHAVSCellProjectionMapper against HAVS's defaults and PT (issue 22).
-      for (const Row& r : rows)
+      for (const Row* row : rowsOf("cellproj"))
       {
-        if (r.at("dataset") == dataset && sizeOf(r) == size && r.at("config") == "cellproj")
+        const Row& r = *row;
+        md << "\nCell projection (cellproj, the exact MPVO cell order): "
+           << Cell(r, "ms_median", "%.1f") << " ms (order " << Cell(r, "sort_ms", "%.1f")
+           << ", draw " << Cell(r, "draw_ms", "%.1f") << "), RMSE " << Cell(r, "rmse", "%.5f")
+           << ", max " << Cell(r, "max", "%.4f");
+        for (const char* other : { "havs-default", "pt", "raster-bound" })
         {
-          md << "\nCell projection (cellproj, the exact MPVO cell order): "
-             << Cell(r, "ms_median", "%.1f") << " ms (order " << Cell(r, "sort_ms", "%.1f")
-             << ", draw " << Cell(r, "draw_ms", "%.1f") << "), RMSE " << Cell(r, "rmse", "%.5f")
-             << ", max " << Cell(r, "max", "%.4f");
-          for (const char* other : { "havs-default", "pt", "raster-bound" })
+          if (ms.count(other))
           {
-            if (ms.count(other))
-            {
-              md << "; " << std::setprecision(3) << ms["cellproj"] / ms[other] << "× " << other;
-            }
+            md << "; " << std::setprecision(3) << ms["cellproj"] / ms[other] << "× " << other;
           }
-          md << ".\n";
         }
+        md << ".\n";
       }
     }
     if (std::isfinite(havs6) &&
