@@ -126,7 +126,7 @@ bool vtkHAVSFaceOrderPolicy::Prepare(
   const bool newOrder = changed || this->GatheredMesh != mesh->GetBuildTime() ||
     (drawn >= 0 && this->GatheredOrder != drawn);
   const bool gather = newOrder || this->GatheredVisibility != this->VisibilityVersion ||
-    this->GatheredCulling != this->CullingVersion;
+    this->GatheredCulling != this->CullingVersion || !(this->GatheredSubset == this->Subset);
   this->LastGatherSeconds = 0.0;
   if (gather)
   {
@@ -158,6 +158,15 @@ void vtkHAVSFaceOrderPolicy::SetCellCulling(
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSFaceOrderPolicy::SetFaceSubset(
+  const std::vector<uint32_t>* ranks, uint32_t limit, vtkMTimeType version)
+{
+  this->Subset.Ranks = ranks;
+  this->Subset.Limit = ranks ? limit : 0;
+  this->Subset.Version = ranks ? version : 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_t>* order)
 {
   vtkHAVSFaceSet* faces = mesh->GetFaceSet();
@@ -166,7 +175,13 @@ void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_
   const vtkIdType numFaces = faces->GetNumberOfFaces();
   this->DrawTriangles.resize(3 * numFaces);
   this->DrawBoundary.resize(numFaces);
-  if (!this->Visible && !this->Culled)
+  const std::vector<uint32_t>* ranks = this->Subset.Ranks;
+  if (ranks && ranks->size() != static_cast<size_t>(numFaces))
+  {
+    ranks = nullptr; // not this mesh's ranking: every face
+  }
+  const uint32_t limit = this->Subset.Limit;
+  if (!this->Visible && !this->Culled && !ranks)
   {
     for (vtkIdType i = 0; i < numFaces; ++i)
     {
@@ -182,7 +197,8 @@ void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_
     // Faces with a kept cell (visible, not culled), in the same order; the
     // cells' visibility decides which are boundary faces (the face set's
     // normal points to the first cell: flipped where that one is the visible
-    // one). Without a visibility set, the face set's boundary stays.
+    // one). Without a visibility set, the face set's boundary stays. The
+    // level of detail drops the internal faces ranked at or after the limit.
     const std::vector<uint8_t>* visible = this->Visible;
     const std::vector<uint8_t>* culled = this->Culled;
     const std::vector<uint32_t>& faceCells = faces->GetFaceCells();
@@ -204,6 +220,11 @@ void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_
         continue;
       }
       const bool front = isVisible(c0), back = isVisible(c1);
+      const bool internal = visible ? front == back : boundary[f] == 0;
+      if (ranks && internal && (*ranks)[f] >= limit)
+      {
+        continue;
+      }
       const bool flip = visible && front && !back;
       this->DrawTriangles[3 * n] = faceVertices[3 * f];
       this->DrawTriangles[3 * n + 1] = faceVertices[3 * f + (flip ? 2 : 1)];
@@ -217,6 +238,7 @@ void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_
   this->GatheredMesh = mesh->GetBuildTime();
   this->GatheredVisibility = this->VisibilityVersion;
   this->GatheredCulling = this->CullingVersion;
+  this->GatheredSubset = this->Subset;
   this->DrawOrderTime.Modified();
 }
 

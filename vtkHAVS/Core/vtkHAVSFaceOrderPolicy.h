@@ -114,6 +114,16 @@ public:
    */
   void SetCellCulling(const std::vector<uint8_t>* culled, vtkMTimeType version);
 
+  /**
+   * The level of detail: per face of the face set its rank among the internal
+   * faces (vtkHAVSInternalFaceRanking; null: every face), and how many of them
+   * are drawn (those ranked below `limit`); `version` changes with the ranks.
+   * Boundary faces, and the faces that become boundary faces between visible
+   * and invisible cells, are always gathered. A new limit gathers again
+   * without a new sort.
+   */
+  void SetFaceSubset(const std::vector<uint32_t>* ranks, uint32_t limit, vtkMTimeType version);
+
   ///@{
   /**
    * The faces in draw order: 3 point ids each, and per face 0 (internal), 1
@@ -197,6 +207,18 @@ private:
   const std::vector<uint8_t>* Culled = nullptr;
   vtkMTimeType CullingVersion = 0;
   vtkMTimeType GatheredCulling = 0;
+  struct SubsetKey
+  {
+    const std::vector<uint32_t>* Ranks = nullptr;
+    uint32_t Limit = 0;
+    vtkMTimeType Version = 0;
+    bool operator==(const SubsetKey& o) const
+    {
+      return this->Ranks == o.Ranks && this->Limit == o.Limit && this->Version == o.Version;
+    }
+  };
+  SubsetKey Subset;
+  SubsetKey GatheredSubset;
 
   int LastOrder = -1;
   bool LastReused = false;

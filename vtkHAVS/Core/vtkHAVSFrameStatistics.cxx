@@ -49,6 +49,10 @@ void vtkHAVSFrameStatistics::Reset()
   this->VisibilitySeconds = 0.0;
   this->CulledCells = 0;
   this->CullingSeconds = 0.0;
+  this->LevelOfDetailFraction = 1.0;
+  this->LongSegmentTable = false;
+  this->RankingSeconds = 0.0;
+  this->FrameSeconds = 0.0;
   this->SortSeconds = 0.0;
   this->GatherSeconds = 0.0;
   this->UploadSeconds = 0.0;
@@ -108,4 +112,7 @@ void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
      << this->OrderUploaded << ", table " << this->TableUploaded << "\n";
   os << indent << "InvisibleCells: " << this->InvisibleCells << " (" << this->VisibilitySeconds
      << " s), culled cells " << this->CulledCells << " (" << this->CullingSeconds << " s)\n";
+  os << indent << "Level of detail: " << this->LevelOfDetailFraction
+     << (this->LongSegmentTable ? " (long-segment table)" : "") << ", ranking "
+     << this->RankingSeconds << " s; frame " << this->FrameSeconds << " s\n";
 }

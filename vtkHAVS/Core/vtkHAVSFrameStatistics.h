@@ -207,6 +207,24 @@ public:
   vtkGetMacro(CullingSeconds, double);
   ///@}
 
+  ///@{
+  /**
+   * The level of detail (vtkHAVSVolumeMapper::SetLevelOfDetail): the fraction
+   * of the internal faces the frame drew (1: all), whether its segments came
+   * from the long-segment table, the seconds the ranking of the internal
+   * faces took this frame (0 when reused), and the mapper's whole frame time
+   * (wall clock, the draw finished), which the controller reads.
+   */
+  vtkSetMacro(LevelOfDetailFraction, double);
+  vtkGetMacro(LevelOfDetailFraction, double);
+  vtkSetMacro(LongSegmentTable, bool);
+  vtkGetMacro(LongSegmentTable, bool);
+  vtkSetMacro(RankingSeconds, double);
+  vtkGetMacro(RankingSeconds, double);
+  vtkSetMacro(FrameSeconds, double);
+  vtkGetMacro(FrameSeconds, double);
+  ///@}
+
 protected:
   vtkHAVSFrameStatistics() = default;
   ~vtkHAVSFrameStatistics() override = default;
@@ -233,6 +251,10 @@ private:
   std::vector<int> ViolationPixels;
   vtkIdType Fragments = 0;
   vtkIdType FacesDrawn = 0;
+  double LevelOfDetailFraction = 1.0;
+  bool LongSegmentTable = false;
+  double RankingSeconds = 0.0;
+  double FrameSeconds = 0.0;
   double SortSeconds = 0.0;
   double GatherSeconds = 0.0;
   double UploadSeconds = 0.0;

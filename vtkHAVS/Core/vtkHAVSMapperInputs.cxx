@@ -128,7 +128,7 @@ vtkHAVSMapperInputs::MeshState vtkHAVSMapperInputs::PrepareMesh(vtkAbstractVolum
 bool vtkHAVSMapperInputs::PrepareTable(vtkAbstractVolumeMapper* mapper, vtkVolume* volume,
   vtkHAVSMesh* mesh, vtkHAVSPreIntegrationTable* table, int scalarResolution, int lengthResolution,
   const char* mapperName, const WarnOnce& warnOnce, bool* rebuilt,
-  vtkHAVSTableResolution* automatic)
+  vtkHAVSTableResolution* automatic, double longestSegment)
 {
   *rebuilt = false;
   vtkVolumeProperty* property = volume->GetProperty();
@@ -154,7 +154,9 @@ bool vtkHAVSMapperInputs::PrepareTable(vtkAbstractVolumeMapper* mapper, vtkVolum
     const double column[3] = { m->GetElement(0, c), m->GetElement(1, c), m->GetElement(2, c) };
     stretch = std::max(stretch, vtkMath::Norm(column));
   }
-  const double maxLength = std::max(mesh->GetFaceSet()->GetLongestEdge() * stretch, 1e-30);
+  const double longest =
+    longestSegment > 0.0 ? longestSegment : mesh->GetFaceSet()->GetLongestEdge();
+  const double maxLength = std::max(longest * stretch, 1e-30);
 
   const double* range = mesh->GetScalarRange();
   if (!automatic)

@@ -85,12 +85,14 @@ public:
    * the resolutions or the longest segment (the mesh's longest edge times
    * the volume matrix's largest stretch) changed; `rebuilt` says whether it did.
    * With `automatic`, the resolutions are the largest allowed and `automatic`
-   * chooses the cheapest table within its error bound.
+   * chooses the cheapest table within its error bound. `longestSegment`
+   * (model units, > 0) replaces the longest edge: the level of detail's
+   * long-segment table, over the bounding-box diagonal.
    */
   static bool PrepareTable(vtkAbstractVolumeMapper* mapper, vtkVolume* volume, vtkHAVSMesh* mesh,
     vtkHAVSPreIntegrationTable* table, int scalarResolution, int lengthResolution,
     const char* mapperName, const WarnOnce& warnOnce, bool* rebuilt,
-    vtkHAVSTableResolution* automatic = nullptr);
+    vtkHAVSTableResolution* automatic = nullptr, double longestSegment = 0.0);
 
   /// Warns through `mapper` unless `warned` (then sets it): a warning given once.
   static void WarnOnceBy(vtkObject* mapper, bool& warned, const std::string& message);

@@ -18,6 +18,8 @@
 #include "vtkHAVSFaceSorter.h"
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSFrameStatistics.h"
+#include "vtkHAVSInternalFaceRanking.h"
+#include "vtkHAVSLevelOfDetailController.h"
 #include "vtkHAVSMapperInputs.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSPreIntegrationTable.h"
@@ -41,6 +43,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
+#include <cmath>
 
 vtkAbstractObjectFactoryNewMacro(vtkHAVSVolumeMapper);
 
@@ -166,6 +169,7 @@ bool vtkHAVSVolumeMapper::PrepareMesh(vtkVolume* volume)
     this->VectorComponent);
   if (state == vtkHAVSMapperInputs::MeshRebuilt)
   {
+    this->LevelOfDetailControl->Reset();
     this->FaceOrder->Invalidate();
   }
   if (state == vtkHAVSMapperInputs::MeshRebuilt || state == vtkHAVSMapperInputs::MeshScalarsUpdated)
@@ -196,6 +200,80 @@ bool vtkHAVSVolumeMapper::PrepareTable(vtkVolume* volume)
   }
   this->LastFrame->SetTableRebuilt(rebuilt);
   return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSVolumeMapper::PrepareLongSegmentTable(vtkVolume* volume)
+{
+  // The main table's resolutions, lengths up to the bounding-box diagonal.
+  const double* b = this->Mesh->GetBounds();
+  const double diagonal = std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  bool rebuilt = false;
+  const bool ok = vtkHAVSMapperInputs::PrepareTable(
+    this, volume, this->Mesh, this->LongSegmentTable, this->Table->GetBuiltScalarResolution(),
+    this->Table->GetBuiltLengthResolution(), "vtkHAVSVolumeMapper",
+    [this](int which, const std::string& m) { this->WarnOnce(which, m); }, &rebuilt, nullptr,
+    std::max(diagonal, this->Mesh->GetFaceSet()->GetLongestEdge()));
+  if (rebuilt)
+  {
+    this->LongSegmentTableBuildTime.Modified();
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+double vtkHAVSVolumeMapper::ChooseLevelOfDetail(
+  vtkVolume* volume, const vtkHAVSViewFrame& view, FrameRequest& request)
+{
+  vtkHAVSFrameStatistics* stats = this->LastFrame;
+  double fraction = 1.0;
+  if (this->BlendMode == COMPOSITE_BLEND)
+  {
+    fraction = this->LevelOfDetailFraction;
+    if (this->LevelOfDetail)
+    {
+      fraction =
+        std::min(fraction, this->LevelOfDetailControl->Choose(volume->GetAllocatedRenderTime()));
+    }
+  }
+  vtkHAVSFaceSet* faces = this->Mesh->GetFaceSet();
+  const vtkIdType internal = faces->GetNumberOfFaces() - faces->GetNumberOfBoundaryFaces();
+  const vtkIdType limit = static_cast<vtkIdType>(std::floor(fraction * internal + 0.5));
+  if (limit >= internal)
+  {
+    this->FaceOrder->SetFaceSubset(nullptr, 0, 0);
+    return 1.0;
+  }
+  const double rankStart = vtkTimerLog::GetUniversalTime();
+  this->Ranking->SetStrategy(this->LevelOfDetailStrategy);
+  bool ranked = this->Ranking->Update(this->Mesh, [this](double p) { this->UpdateProgress(p); });
+  ranked = this->Ranking->UpdateView(view.DirectionGrid) || ranked;
+  if (ranked)
+  {
+    stats->SetRankingSeconds(vtkTimerLog::GetUniversalTime() - rankStart);
+  }
+  if (!this->PrepareLongSegmentTable(volume))
+  {
+    this->FaceOrder->SetFaceSubset(nullptr, 0, 0);
+    return 1.0;
+  }
+  this->FaceOrder->SetFaceSubset(
+    &this->Ranking->GetRanks(), static_cast<uint32_t>(limit), this->Ranking->GetRankVersion());
+  request.Table = this->LongSegmentTable;
+  request.TableVersion = this->LongSegmentTableBuildTime.GetMTime();
+  stats->SetLongSegmentTable(true);
+  return internal > 0 ? static_cast<double>(limit) / internal : 1.0;
+}
+
+vtkHAVSInternalFaceRanking* vtkHAVSVolumeMapper::GetLevelOfDetailRanking()
+{
+  return this->Ranking;
+}
+
+vtkHAVSLevelOfDetailController* vtkHAVSVolumeMapper::GetLevelOfDetailController()
+{
+  return this->LevelOfDetailControl;
 }
 
 //------------------------------------------------------------------------------
@@ -244,6 +322,7 @@ vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
 //------------------------------------------------------------------------------
 void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
+  const double frameStart = vtkTimerLog::GetUniversalTime();
   vtkHAVSFrameStatistics* stats = this->LastFrame;
   stats->Reset();
   switch (this->BlendMode)
@@ -351,6 +430,12 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     }
   }
 
+  // 4c. The level of detail: every boundary face and the most important
+  // internal faces, as many as the time allocated allows.
+  const double fraction = this->ChooseLevelOfDetail(volume, view, request);
+  stats->SetLevelOfDetailFraction(fraction);
+  request.Finish = this->LevelOfDetail;
+
   // 5. The face order, and 6. the draw: Automatic's probe may ask for a
   // second draw in the exact order.
   this->FaceOrder->SetVisibilityOrder(this->VisibilityOrder);
@@ -423,6 +508,14 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   stats->SetDrawSeconds(result.DrawSeconds);
   stats->SetFlushSeconds(result.FlushSeconds);
   stats->SetCompositeSeconds(result.CompositeSeconds);
+
+  // 8. The frame's time: VTK's (TimeToDraw) and the level of detail's.
+  this->TimeToDraw = vtkTimerLog::GetUniversalTime() - frameStart;
+  stats->SetFrameSeconds(this->TimeToDraw);
+  if (this->LevelOfDetail)
+  {
+    this->LevelOfDetailControl->FrameDrawn(fraction, this->TimeToDraw);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -64,6 +64,8 @@ class vtkHAVSCellVisibility;
 class vtkHAVSFaceOrderPolicy;
 class vtkHAVSFaceSorter;
 class vtkHAVSFramePlanes;
+class vtkHAVSInternalFaceRanking;
+class vtkHAVSLevelOfDetailController;
 class vtkHAVSFrameStatistics;
 class vtkHAVSMesh;
 class vtkHAVSPreIntegrationTable;
@@ -206,6 +208,48 @@ public:
    */
   void SetInvisibleCellOpacity(double opacity);
   double GetInvisibleCellOpacity();
+  ///@}
+
+  ///@{
+  /**
+   * Dynamic level of detail (default on; composite blend): when the renderer
+   * allocates the volume less time than its last full frame took (VTK's
+   * interactor lowers the window's desired update rate's budget while the
+   * user interacts and gives it back when they stop), a frame draws every
+   * boundary face (and every face between a visible and an invisible cell)
+   * and only the most important internal faces, as many as the last frames'
+   * times say fit (vtkHAVSLevelOfDetailController). The skipped faces make
+   * segments longer than any cell: those frames read a second table built
+   * over the mesh's bounding-box diagonal (the thesis' method). A still frame
+   * (the full budget) draws every face with the exact table: the exact image.
+   * Off: every frame draws every face.
+   */
+  vtkSetMacro(LevelOfDetail, bool);
+  vtkGetMacro(LevelOfDetail, bool);
+  vtkBooleanMacro(LevelOfDetail, bool);
+  /**
+   * The most internal faces any frame draws, as a fraction (default 1).
+   * Below 1 every frame draws at most that many, whatever the time: for
+   * tests, benchmarks and a fixed interactive quality. 0: the boundary only.
+   */
+  vtkSetClampMacro(LevelOfDetailFraction, double, 0.0, 1.0);
+  vtkGetMacro(LevelOfDetailFraction, double);
+  /**
+   * How the internal faces are ranked (vtkHAVSInternalFaceRanking::Strategies:
+   * 0 Topology, 1 ViewAligned, 2 Field, 3 Area (the default), 4 Random).
+   * The ranking is made once per mesh (ViewAligned: its clusters once, their
+   * order per view), when a frame first draws a subset.
+   */
+  vtkSetClampMacro(LevelOfDetailStrategy, int, 0, 4);
+  vtkGetMacro(LevelOfDetailStrategy, int);
+  void SetLevelOfDetailStrategyToTopology() { this->SetLevelOfDetailStrategy(0); }
+  void SetLevelOfDetailStrategyToViewAligned() { this->SetLevelOfDetailStrategy(1); }
+  void SetLevelOfDetailStrategyToField() { this->SetLevelOfDetailStrategy(2); }
+  void SetLevelOfDetailStrategyToArea() { this->SetLevelOfDetailStrategy(3); }
+  void SetLevelOfDetailStrategyToRandom() { this->SetLevelOfDetailStrategy(4); }
+  /// The ranking (its preprocessing time and memory) and the controller.
+  vtkHAVSInternalFaceRanking* GetLevelOfDetailRanking();
+  vtkHAVSLevelOfDetailController* GetLevelOfDetailController();
   ///@}
 
   ///@{
@@ -473,6 +517,7 @@ public:
     bool RasterBoundOnly = false;
     bool MeasureStages = false;
     bool KeepResult = false;
+    bool Finish = false; ///< wait for the draw to finish (the frame time is measured)
   };
 
   /// What the graphics layer reports of a drawn frame.
@@ -525,6 +570,9 @@ protected:
   bool AutomaticTableResolution = true;
   bool SkipInvisibleCells = true;
   bool SkipOffscreenCells = true;
+  bool LevelOfDetail = true;
+  double LevelOfDetailFraction = 1.0;
+  int LevelOfDetailStrategy = 3; // vtkHAVSInternalFaceRanking::Area
   bool MeasureStageTimes = false;
   bool KeepFloatResult = false;
   bool FaceRasterBoundMode = false;
@@ -542,6 +590,9 @@ private:
 
   bool PrepareMesh(vtkVolume* volume);
   bool PrepareTable(vtkVolume* volume);
+  bool PrepareLongSegmentTable(vtkVolume* volume);
+  double ChooseLevelOfDetail(
+    vtkVolume* volume, const vtkHAVSViewFrame& view, FrameRequest& request);
   FrameRequest MakeRequest(const vtkHAVSViewFrame& view, int path, int k, bool opaque);
   void WarnOnce(int which, const std::string& message);
 
@@ -553,6 +604,10 @@ private:
   vtkNew<vtkHAVSFaceOrderPolicy> FaceOrder;
   vtkNew<vtkHAVSCellVisibility> Visibility;
   vtkNew<vtkHAVSViewCulling> Culling;
+  vtkNew<vtkHAVSInternalFaceRanking> Ranking;
+  vtkNew<vtkHAVSLevelOfDetailController> LevelOfDetailControl;
+  vtkNew<vtkHAVSPreIntegrationTable> LongSegmentTable;
+  vtkTimeStamp LongSegmentTableBuildTime;
   bool SkippingCells = false; // this frame skips invisible cells
   vtkNew<vtkHAVSFrameStatistics> LastFrame;
   std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
