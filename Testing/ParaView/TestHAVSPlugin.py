@@ -203,6 +203,31 @@ if args.mode == "serial":
     check(mapper.GetSkipInvisibleCells() and mapper.GetSkipOffscreenCells(),
           "skip hidden cells on again")
 
+    # HAVS's level of detail while interacting: a subset of the internal faces that fits
+    # the interactive frame time, every face when still.
+    check(display.HAVSInteractiveLOD == 1 and display.HAVSLODStrategy == "Area"
+          and mapper.GetLevelOfDetailStrategy() == 3
+          and abs(float(display.HAVSInteractiveTargetTime) - 0.1) < 1e-9,
+          "default: HAVS's level of detail while interacting (%s, %s s)"
+          % (display.HAVSLODStrategy, display.HAVSInteractiveTargetTime))
+    view.LODThreshold = 0.0  # interactive renders use the LOD for any data size
+    display.HAVSInteractiveTargetTime = 0.001
+    display.HAVSLODStrategy = "View-aligned"
+    Render(view)
+    stats = mapper.GetLastFrameStatistics()
+    check(stats.GetLevelOfDetailFraction() == 1.0, "still render: every face")
+    fractions = []
+    for _ in range(4):
+        view.SMProxy.InteractiveRender()
+        fractions.append(stats.GetLevelOfDetailFraction())
+    check(min(fractions) < 1.0 and mapper.GetLevelOfDetailStrategy() == 1,
+          "interactive renders, 1 ms target: a subset of the internal faces (fractions %s)"
+          % ", ".join("%.3f" % f for f in fractions))
+    Render(view)
+    check(stats.GetLevelOfDetailFraction() == 1.0, "still again: every face")
+    display.HAVSInteractiveTargetTime = 0.1
+    display.HAVSLODStrategy = "Area"
+
     # A structured grid (the blunt fin, PLOT3D) through the same representation type.
     Hide(tets, view)
     xyz = os.path.join(os.environ["HAVS_DATA_DIR"], "bluntfinxyz.bin")

@@ -233,8 +233,10 @@ double vtkHAVSVolumeMapper::ChooseLevelOfDetail(
     fraction = this->LevelOfDetailFraction;
     if (this->LevelOfDetail)
     {
-      fraction =
-        std::min(fraction, this->LevelOfDetailControl->Choose(volume->GetAllocatedRenderTime()));
+      const double target = this->LevelOfDetailTargetSeconds > 0.0
+        ? this->LevelOfDetailTargetSeconds
+        : volume->GetAllocatedRenderTime();
+      fraction = std::min(fraction, this->LevelOfDetailControl->Choose(target));
     }
   }
   vtkHAVSFaceSet* faces = this->Mesh->GetFaceSet();

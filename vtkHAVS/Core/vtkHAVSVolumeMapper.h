@@ -247,6 +247,15 @@ public:
   void SetLevelOfDetailStrategyToField() { this->SetLevelOfDetailStrategy(2); }
   void SetLevelOfDetailStrategyToArea() { this->SetLevelOfDetailStrategy(3); }
   void SetLevelOfDetailStrategyToRandom() { this->SetLevelOfDetailStrategy(4); }
+  /**
+   * The frame budget the level of detail aims at, in seconds: 0 (the
+   * default) takes VTK's allocated render time (vtkProp::GetAllocatedRenderTime,
+   * from the render window's desired update rate); above 0 this budget
+   * instead (ParaView's representation sets its interactive target here while
+   * the user interacts, and an unlimited budget when still).
+   */
+  vtkSetClampMacro(LevelOfDetailTargetSeconds, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(LevelOfDetailTargetSeconds, double);
   /// The ranking (its preprocessing time and memory) and the controller.
   vtkHAVSInternalFaceRanking* GetLevelOfDetailRanking();
   vtkHAVSLevelOfDetailController* GetLevelOfDetailController();
@@ -573,6 +582,7 @@ protected:
   bool LevelOfDetail = true;
   double LevelOfDetailFraction = 1.0;
   int LevelOfDetailStrategy = 3; // vtkHAVSInternalFaceRanking::Area
+  double LevelOfDetailTargetSeconds = 0.0;
   bool MeasureStageTimes = false;
   bool KeepFloatResult = false;
   bool FaceRasterBoundMode = false;

@@ -12,6 +12,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkDataSet.h"
+#include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
@@ -136,6 +137,17 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSCountOrderViolations(in
   this->Modified();
 }
 
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSLODStrategy(int strategy)
+{
+  this->HAVSMapper->SetLevelOfDetailStrategy(strategy);
+  this->Modified();
+}
+
+double vtkHAVSUnstructuredGridVolumeRepresentation::GetHAVSLastLODFraction()
+{
+  return this->HAVSMapper->GetLastFrameStatistics()->GetLevelOfDetailFraction();
+}
+
 int vtkHAVSUnstructuredGridVolumeRepresentation::GetHAVSLastOrderViolations()
 {
   return static_cast<int>(this->HAVSMapper->GetLastOrderViolations());
@@ -153,7 +165,9 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
     this->GetActiveVolumeMapper() == this->HAVSMapper)
   {
     // HAVS's own level of detail instead of ParaView's LOD geometry: keep the
-    // volume while interacting, with fewer k-buffer entries.
+    // volume while interacting, with a subset of the internal faces that fits
+    // the interactive target time and fewer k-buffer entries; every face when
+    // still (an unlimited budget).
     vtkAlgorithmOutput* producer = vtkPVRenderView::GetPieceProducer(inInfo, this);
     vtkDataSet* piece = producer
       ? vtkDataSet::SafeDownCast(producer->GetProducer()->GetOutputDataObject(0))
@@ -167,9 +181,12 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
     if (!this->InteractiveLOD)
     {
       this->HAVSMapper->SetKBufferSize(this->KBufferSize);
+      this->HAVSMapper->SetLevelOfDetailTargetSeconds(VTK_DOUBLE_MAX);
       return 1; // ParaView's LOD geometry while interacting
     }
     this->Actor->SetEnableLOD(0);
+    this->HAVSMapper->SetLevelOfDetailTargetSeconds(
+      interactive ? this->InteractiveTargetSeconds : VTK_DOUBLE_MAX);
     this->HAVSMapper->SetKBufferSize(
       interactive ? std::min(this->InteractiveKBufferSize, this->KBufferSize) : this->KBufferSize);
   }
@@ -183,5 +200,6 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::PrintSelf(ostream& os, vtkInde
   os << indent << "KBufferSize: " << this->KBufferSize << "\n";
   os << indent << "InteractiveLOD: " << this->InteractiveLOD << "\n";
   os << indent << "InteractiveKBufferSize: " << this->InteractiveKBufferSize << "\n";
+  os << indent << "InteractiveTargetSeconds: " << this->InteractiveTargetSeconds << "\n";
   this->HAVSMapper->PrintSelf(os, indent.GetNextIndent());
 }

@@ -55,6 +55,7 @@ public:
   void SetHAVSVisibilityOrder(int order);
   void SetHAVSNonConvexMethod(int method);
   void SetHAVSCountOrderViolations(int count);
+  void SetHAVSLODStrategy(int strategy);
   ///@}
 
   /// The order violations of the last frame this rank rendered (counted when
@@ -65,12 +66,24 @@ public:
   ///@{
   /**
    * HAVS's level of detail while the user interacts (on by default): keep
-   * the volume, rendered with InteractiveKBufferSize entries. Off: ParaView's
-   * own LOD (its outline or surface geometry) as for the stock mappers.
+   * the volume, drawn with the boundary faces and as many of the most
+   * important internal faces (vtkHAVSVolumeMapper::SetLevelOfDetail) as fit
+   * in InteractiveTargetSeconds, with InteractiveKBufferSize entries; every
+   * face when still. Off: ParaView's own LOD (its outline or surface
+   * geometry) as for the stock mappers.
    */
   vtkSetMacro(InteractiveLOD, bool);
   vtkGetMacro(InteractiveLOD, bool);
   ///@}
+
+  ///@{
+  /// The frame time HAVS aims at while the user interacts (seconds; 0.1 by default).
+  vtkSetClampMacro(InteractiveTargetSeconds, double, 0.001, 10.0);
+  vtkGetMacro(InteractiveTargetSeconds, double);
+  ///@}
+
+  /// The fraction of the internal faces the last frame drew (1: all).
+  double GetHAVSLastLODFraction();
 
   ///@{
   /// k while the user interacts (ParaView's LOD renders); default 2.
@@ -103,6 +116,7 @@ private:
   int KBufferSize = 2;
   int InteractiveKBufferSize = 2;
   bool InteractiveLOD = true;
+  double InteractiveTargetSeconds = 0.1;
 };
 
 #endif
