@@ -58,6 +58,7 @@
 #include "vtkHAVSFaceSorter.h"
 #include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSImageMetrics.h"
+#include "vtkHAVSInternalFaceRanking.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSRenderWindowFactory.h"
 #include "vtkHAVSStandardViews.h"
@@ -274,6 +275,19 @@ int DumpCases(const Options& o)
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+/// Frame times joined by ';' ("-" for none).
+std::string TraceText(const std::vector<double>& ms)
+{
+  std::string text;
+  for (double t : ms)
+  {
+    char value[32];
+    std::snprintf(value, sizeof(value), "%s%.0f", text.empty() ? "" : ";", t);
+    text += value;
+  }
+  return text.empty() ? "-" : text;
+}
+
 int RunWorker(const Options& o)
 {
   const std::string dataset = o.DataSets.at(0), config = o.Configs.at(0);
@@ -292,6 +306,12 @@ int RunWorker(const Options& o)
   int viewsDone = 0;
   std::string tableText = "-";
   long long skipped = -1; // HAVS: the tetrahedra skipped as invisible
+  // The level of detail: the share of internal faces drawn per frame, the
+  // ranking's preprocessing time and memory; the rotation's frame times, the
+  // share of its settled frames within 25 % of the budget, the still frame's share.
+  std::vector<double> lodFractions, lodTrace;
+  double rankingSeconds = 0.0, rankingMB = 0.0, lodWithin = 0.0, lodStill = -1.0;
+  double lodTarget = 0.0; // havs-lod-rotate-<ms>: the frame budget (s)
   if (config == "reference")
   {
     // The exact images of every view, computed once and cached before any
@@ -374,6 +394,34 @@ int RunWorker(const Options& o)
       {
         // The defaults with every cell drawn: what skipping invisible cells buys.
         m->SkipInvisibleCellsOff();
+      }
+      else if (config.rfind("havs-lod-", 0) == 0)
+      {
+        // havs-lod-<strategy>-<percent>: the defaults drawing that share of the
+        // internal faces (strategy: topology, view, field, area, random);
+        // havs-lod-rotate-<ms>: the defaults with that frame budget while the
+        // camera turns, then one still frame.
+        const std::string rest = config.substr(9);
+        const size_t dash = rest.rfind('-');
+        const std::string what = rest.substr(0, dash);
+        const double value = dash == std::string::npos ? 0.0 : std::atof(rest.c_str() + dash + 1);
+        const char* const strategies[] = { "topology", "view", "field", "area", "random" };
+        if (what == "rotate")
+        {
+          lodTarget = value / 1000.0;
+          m->MeasureStageTimesOff(); // as a user's interactive frames
+        }
+        else
+        {
+          const auto it = std::find(std::begin(strategies), std::end(strategies), what);
+          if (it == std::end(strategies) || !(value > 0.0))
+          {
+            std::cerr << "unknown configuration " << config << std::endl;
+            return EXIT_FAILURE;
+          }
+          m->SetLevelOfDetailStrategy(static_cast<int>(it - std::begin(strategies)));
+          m->SetLevelOfDetailFraction(value / 100.0);
+        }
       }
       else if (config == "havs-default-table128")
       {
@@ -483,13 +531,48 @@ int RunWorker(const Options& o)
     vtkCamera* camera = renderer->GetActiveCamera();
     vtkHAVSStandardViews::PlaceCamera(camera, grid, 0);
     window->Render(); // warm-up: faces, tables, shaders (twice: drivers compile lazily)
+    if (havs)
+    {
+      // The level of detail ranks its faces in the first frame that draws a subset.
+      rankingSeconds = havs->GetLastFrameStatistics()->GetRankingSeconds();
+    }
     if (config != "zsweep" && config != "raycast")
     {
       window->Render(); // (the CPU mappers' second frame would only cost time)
     }
     double rendering = 0.0; // the budget counts rendering only, not the reference
+    if (havs && lodTarget > 0.0)
+    {
+      // The camera turns 3 degrees a frame with a frame budget: the level of
+      // detail's controller sets the share of internal faces drawn. Then the
+      // still frame (the budget back to VTK's still rate) at view 0.
+      vtkHAVSStandardViews::PlaceCamera(camera, grid, 0);
+      havs->SetLevelOfDetailTargetSeconds(lodTarget);
+      const int frames = 60, settled = 30;
+      for (int i = 0; i < frames; ++i)
+      {
+        camera->Azimuth(3.0);
+        const double t0 = vtkTimerLog::GetUniversalTime();
+        window->Render();
+        window->WaitForCompletion();
+        const double ms = 1000.0 * (vtkTimerLog::GetUniversalTime() - t0);
+        lodTrace.push_back(ms);
+        if (i >= frames - settled)
+        {
+          frame.push_back(ms);
+          lodFractions.push_back(havs->GetLastFrameStatistics()->GetLevelOfDetailFraction());
+          lodWithin += std::abs(ms - 1000.0 * lodTarget) <= 0.25 * 1000.0 * lodTarget ? 1 : 0;
+        }
+      }
+      lodWithin /= settled;
+      havs->SetLevelOfDetailTargetSeconds(0.0);
+    }
     for (int view = 0; view < o.Views; ++view)
     {
+      if (lodTarget > 0.0 && view > 0)
+      {
+        break; // the rotation: only the still frame at view 0 is measured against the reference
+      }
       vtkHAVSStandardViews::PlaceCamera(camera, grid, view);
       if (opaqueActor)
       {
@@ -512,9 +595,17 @@ int RunWorker(const Options& o)
         window->WaitForCompletion();
         const double seconds = vtkTimerLog::GetUniversalTime() - t0;
         rendering += seconds;
+        if (lodTarget > 0.0)
+        {
+          lodStill = havs->GetLastFrameStatistics()->GetLevelOfDetailFraction();
+          break; // one still frame
+        }
         frame.push_back(1000.0 * seconds);
         if (havs)
         {
+          lodFractions.push_back(havs->GetLastFrameStatistics()->GetLevelOfDetailFraction());
+          rankingSeconds =
+            std::max(rankingSeconds, havs->GetLastFrameStatistics()->GetRankingSeconds());
           sort.push_back(1000.0 * havs->GetLastFrameStatistics()->GetSortSeconds());
           gather.push_back(1000.0 * havs->GetLastFrameStatistics()->GetGatherSeconds());
           draw.push_back(1000.0 * havs->GetLastFrameStatistics()->GetDrawSeconds());
@@ -558,6 +649,7 @@ int RunWorker(const Options& o)
     if (havs) // the table HAVS drew with: N (fixed) or N:error (chosen automatically)
     {
       skipped = static_cast<long long>(havs->GetLastFrameStatistics()->GetInvisibleCells());
+      rankingMB = havs->GetLevelOfDetailRanking()->GetMemoryBytes() / 1048576.0;
       tableText = std::to_string(havs->GetLastTableScalarResolution());
       if (havs->GetAutomaticTableResolution())
       {
@@ -575,14 +667,17 @@ int RunWorker(const Options& o)
   std::printf("RESULT dataset=%s config=%s size=%d tets=%lld views=%d frames=%zu ms_median=%.3f "
               "ms_min=%.3f ms_max=%.3f sort_ms=%.3f gather_ms=%.3f draw_ms=%.3f flush_ms=%.3f "
               "composite_ms=%.3f upload_ms=%.3f readback_ms=%.3f layers_ms=%.3f rmse=%.6f max=%.6f "
-              "over1=%.6f peak_mb=%.1f smp=%s threads=%d table=%s skipped=%lld\n",
+              "over1=%.6f peak_mb=%.1f smp=%s threads=%d table=%s skipped=%lld lod_fraction=%.4f "
+              "ranking_s=%.3f ranking_mb=%.1f lod_target_ms=%.0f lod_within25=%.3f lod_still=%.3f "
+              "lod_trace=%s\n",
     dataset.c_str(), config.c_str(), o.Size, static_cast<long long>(tets), viewsDone, frame.size(),
     Median(frame), frame.empty() ? NAN : *std::min_element(frame.begin(), frame.end()),
     frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort),
     Median(gather), Median(draw), Median(flush), Median(composite), Median(upload),
     Median(readback), Median(layers), rmse, maxError, pixels > 0 ? over1 / pixels : NAN,
     PeakMegabytes(), vtkSMPTools::GetBackend(), vtkSMPTools::GetEstimatedNumberOfThreads(),
-    tableText.c_str(), skipped);
+    tableText.c_str(), skipped, Median(lodFractions), rankingSeconds, rankingMB,
+    1000.0 * lodTarget, lodWithin, lodStill, TraceText(lodTrace).c_str());
   return EXIT_SUCCESS;
 }
 
@@ -607,7 +702,8 @@ using Row = std::map<std::string, std::string>;
 const char* const kColumns[] = { "dataset", "config", "size", "tets", "views", "frames",
   "ms_median", "ms_min", "ms_max", "sort_ms", "gather_ms", "draw_ms", "flush_ms", "composite_ms",
   "upload_ms", "readback_ms", "layers_ms", "mtets_per_s", "rmse", "max", "over1", "peak_mb", "smp",
-  "threads", "table", "skipped", "command" };
+  "threads", "table", "skipped", "lod_fraction", "ranking_s", "ranking_mb", "lod_target_ms",
+  "lod_within25", "lod_still", "lod_trace", "command" };
 
 /// A CSV field, quoted where it holds a comma or a quote.
 std::string CsvField(const std::string& text)
@@ -796,8 +892,143 @@ std::string MeasuredBy(const std::vector<Row>& rows, const std::string& command)
   return text;
 }
 
-std::string Report(const std::vector<Row>& rows, const Options& o, const std::string& command)
+bool IsLevelOfDetail(const Row& r)
 {
+  return r.count("config") && r.at("config").rfind("havs-lod-", 0) == 0;
+}
+
+/// The level of detail's section (issue 18): per data set and size, each
+/// strategy's time and error at each fixed share of internal faces beside the
+/// full frame (havs-default), and the rotations with a frame budget.
+std::string LevelOfDetailReport(const std::vector<Row>& rows)
+{
+  auto sizeOf = [](const Row& r) { return r.count("size") ? r.at("size") : std::string(); };
+  std::vector<std::pair<std::string, std::string>> groups;
+  for (const Row& r : rows)
+  {
+    const auto group = std::make_pair(r.at("dataset"), sizeOf(r));
+    if (IsLevelOfDetail(r) && std::find(groups.begin(), groups.end(), group) == groups.end())
+    {
+      groups.push_back(group);
+    }
+  }
+  if (groups.empty())
+  {
+    return std::string();
+  }
+  std::ostringstream md;
+  md << "\n## Dynamic level of detail\n\n"
+     << "havs-lod-<strategy>-<percent>: the default settings drawing every boundary face and that "
+        "share of the internal faces, ranked by the strategy (vtkHAVSInternalFaceRanking; "
+        "topology: layers peeled from the boundary, view: normal clusters facing the view, field: "
+        "stratified on the scalar histogram, area: area times a random number, random: the "
+        "control), segments from the long-segment table (over the bounding-box diagonal). 100 % "
+        "is havs-default. Error against the exact reference as above; ranking: the "
+        "preprocessing time and memory of the strategy. havs-lod-rotate-<ms>: the defaults with "
+        "that frame budget (vtkHAVSVolumeMapper::SetLevelOfDetailTargetSeconds) while the camera "
+        "turns 3° a frame for 60 frames, then one still frame.\n";
+  const char* const strategies[] = { "topology", "view", "field", "area", "random" };
+  for (const auto& group : groups)
+  {
+    const std::string& dataset = group.first;
+    auto find = [&](const std::string& config) -> const Row*
+    {
+      for (const Row& r : rows)
+      {
+        if (r.at("dataset") == dataset && sizeOf(r) == group.second && r.at("config") == config)
+          return &r;
+      }
+      return nullptr;
+    };
+    std::vector<int> percents;
+    for (const Row& r : rows)
+    {
+      if (r.at("dataset") != dataset || sizeOf(r) != group.second || !IsLevelOfDetail(r) ||
+        r.at("config").find("rotate") != std::string::npos)
+        continue;
+      const int p = std::atoi(r.at("config").c_str() + r.at("config").rfind('-') + 1);
+      if (std::find(percents.begin(), percents.end(), p) == percents.end())
+        percents.push_back(p);
+    }
+    std::sort(percents.begin(), percents.end());
+    const Row* full = find("havs-default");
+    md << "\n### " << dataset << " (" << group.second << "²)\n\n";
+    if (!percents.empty())
+    {
+      md << "| strategy |";
+      for (int p : percents)
+        md << " " << p << " % ms | RMSE |";
+      md << " ranking s | ranking MB |\n|---|";
+      for (size_t i = 0; i < percents.size(); ++i)
+        md << "---|---|";
+      md << "---|---|\n";
+      std::map<int, std::pair<double, std::string>> best; // percent -> (RMSE, strategy)
+      for (const char* strategy : strategies)
+      {
+        const Row* any = nullptr;
+        std::ostringstream line;
+        line << "| " << strategy << " |";
+        for (int p : percents)
+        {
+          const Row* r = find(std::string("havs-lod-") + strategy + "-" + std::to_string(p));
+          line << " " << (r ? Cell(*r, "ms_median", "%.1f") : "-") << " | "
+               << (r ? Cell(*r, "rmse", "%.5f") : "-") << " |";
+          if (r)
+          {
+            any = r;
+            const double e = Value(*r, "rmse");
+            if (!best.count(p) || e < best[p].first)
+              best[p] = std::make_pair(e, std::string(strategy));
+          }
+        }
+        if (!any)
+          continue;
+        md << line.str() << " " << Cell(*any, "ranking_s", "%.3f") << " | "
+           << Cell(*any, "ranking_mb", "%.1f") << " |\n";
+      }
+      if (full)
+      {
+        md << "\nEvery face (havs-default): " << Cell(*full, "ms_median", "%.1f") << " ms, RMSE "
+           << Cell(*full, "rmse", "%.5f") << ". Lowest error:";
+        for (const auto& b : best)
+        {
+          const Row* r = find("havs-lod-" + b.second.second + "-" + std::to_string(b.first));
+          md << " at " << b.first << " % " << b.second.second << " (" << std::setprecision(3)
+             << (r ? Value(*r, "ms_median") / Value(*full, "ms_median") : NAN)
+             << "× the full frame's time);";
+        }
+        md << "\n";
+      }
+    }
+    for (const Row& r : rows)
+    {
+      if (r.at("dataset") != dataset || sizeOf(r) != group.second ||
+        r.at("config").rfind("havs-lod-rotate-", 0) != 0)
+        continue;
+      const double target = Value(r, "lod_target_ms");
+      md << "\n" << r.at("config") << ": a " << Cell(r, "lod_target_ms", "%.0f")
+         << " ms budget while turning; the last 30 of 60 frames took " << Cell(r, "ms_median", "%.1f")
+         << " ms (median; min " << Cell(r, "ms_min", "%.1f") << ", max " << Cell(r, "ms_max", "%.1f")
+         << "), " << std::setprecision(3) << 100.0 * Value(r, "lod_within25")
+         << " % of them within 25 % of the budget ("
+         << (std::abs(Value(r, "ms_median") - target) <= 0.25 * target ? "converged" : "not converged")
+         << "), drawing a median " << std::setprecision(3) << 100.0 * Value(r, "lod_fraction")
+         << " % of the internal faces. The still frame after it drew " << std::setprecision(3)
+         << 100.0 * Value(r, "lod_still") << " % of them: RMSE " << Cell(r, "rmse", "%.5f")
+         << ", max " << Cell(r, "max", "%.4f") << " ("
+         << (Value(r, "rmse") < 5e-4 && Value(r, "max") < 0.01 ? "exact" : "not exact")
+         << "). Frame times (ms): " << (r.count("lod_trace") ? r.at("lod_trace") : "-") << ".\n";
+    }
+  }
+  return md.str();
+}
+
+std::string Report(const std::vector<Row>& allRows, const Options& o, const std::string& command)
+{
+  // The level of detail's rows have their own section.
+  std::vector<Row> rows;
+  std::copy_if(allRows.begin(), allRows.end(), std::back_inserter(rows),
+    [](const Row& r) { return !IsLevelOfDetail(r); });
   std::string renderer = "(unknown)";
   {
     vtkSmartPointer<vtkRenderWindow> window;
@@ -1062,6 +1293,7 @@ std::string Report(const std::vector<Row>& rows, const Options& o, const std::st
       md << "\n";
     }
   }
+  md << LevelOfDetailReport(allRows);
   md << "\nCSV: `benchmark.csv`. Plots: `benchmark_time_error.png` (time against RMSE, one "
         "panel per data set, Pareto front dashed, the face-raster bound as a line), "
         "`benchmark_stages.png` (HAVS's stages, stacked), `benchmark_time_tets.png` (time "
