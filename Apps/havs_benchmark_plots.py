@@ -5,7 +5,10 @@
   512 where measured, else the largest), one marker and colour per mapper family, the Pareto
   front, the face-raster bound as a vertical line;
 - benchmark_stages.png: HAVS's frame stages as stacked bars, one panel per data set;
-- benchmark_time_tets.png, benchmark_time_pixels.png: time against tets and pixels.
+- benchmark_time_tets.png, benchmark_time_pixels.png: time against tets and pixels;
+- benchmark_lod.png (when the CSV has havs-lod-* rows): the level of detail, time and RMSE
+  against the share of internal faces drawn, one line per strategy, one column per data set
+  (100 % is havs-default).
 
 Needs matplotlib (Debian python3-matplotlib); without it, says so and does nothing."""
 import csv
@@ -20,10 +23,10 @@ except ImportError:
     print("havs_benchmark_plots: matplotlib is not installed (python3-matplotlib); no plots")
     sys.exit(0)
 
-rows = list(csv.DictReader(open(sys.argv[1])))
+all_rows = list(csv.DictReader(open(sys.argv[1])))
 # The level of detail's rows (havs-lod-*) are approximations by design: the report gives
-# them their own section; the plots compare the full-quality mappers.
-rows = [r for r in rows if not r["config"].startswith("havs-lod-")]
+# them their own section and plot; the other plots compare the full-quality mappers.
+rows = [r for r in all_rows if not r["config"].startswith("havs-lod-")]
 out = sys.argv[2]
 
 
@@ -199,5 +202,39 @@ ax.set_xlabel("pixels")
 ax.set_ylabel("ms per frame (median)")
 ax.legend(fontsize=6, ncol=2)
 fig.savefig(f"{out}/benchmark_time_pixels.png", dpi=110)
+
+# The level of detail: time and error against the share of internal faces drawn.
+lod = [r for r in all_rows if r["config"].startswith("havs-lod-") and "rotate" not in r["config"]]
+lod_groups = sorted({(r["dataset"], r.get("size")) for r in lod})
+if lod_groups:
+    fig, axes = plt.subplots(2, len(lod_groups), figsize=(4.5 * len(lod_groups), 7), squeeze=False)
+    for column, (dataset, size) in enumerate(lod_groups):
+        full = [r for r in all_rows if r["config"] == "havs-default" and r["dataset"] == dataset
+                and r.get("size") == size and number(r["ms_median"])]
+        for strategy in ["topology", "view", "field", "area", "random"]:
+            points = sorted((float(r["config"].rsplit("-", 1)[1]), number(r["ms_median"]),
+                             number(r["rmse"])) for r in lod
+                            if r["dataset"] == dataset and r.get("size") == size
+                            and r["config"].startswith(f"havs-lod-{strategy}-")
+                            and number(r["ms_median"]))
+            if full:
+                points.append((100.0, number(full[0]["ms_median"]), number(full[0]["rmse"])))
+            if not points:
+                continue
+            style = "--" if strategy == "random" else "-"
+            axes[0][column].plot([p[0] for p in points], [p[1] for p in points], style,
+                                 marker="o", label=strategy)
+            axes[1][column].plot([p[0] for p in points], [p[2] for p in points], style,
+                                 marker="o", label=strategy)
+        axes[0][column].set_title(f"{dataset} ({size}²)")
+        axes[0][column].set_ylabel("ms per frame (median)")
+        axes[1][column].set_ylabel("RMSE against the exact reference")
+        axes[1][column].set_yscale("log")
+        for row in (0, 1):
+            axes[row][column].set_xlabel("internal faces drawn (%)")
+            axes[row][column].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(f"{out}/benchmark_lod.png", dpi=110)
 print("havs_benchmark_plots: wrote benchmark_time_error.png, benchmark_stages.png, "
-      "benchmark_time_tets.png, benchmark_time_pixels.png")
+      "benchmark_time_tets.png, benchmark_time_pixels.png"
+      + (", benchmark_lod.png" if lod_groups else ""))
