@@ -676,8 +676,8 @@ int RunWorker(const Options& o)
     Median(gather), Median(draw), Median(flush), Median(composite), Median(upload),
     Median(readback), Median(layers), rmse, maxError, pixels > 0 ? over1 / pixels : NAN,
     PeakMegabytes(), vtkSMPTools::GetBackend(), vtkSMPTools::GetEstimatedNumberOfThreads(),
-    tableText.c_str(), skipped, Median(lodFractions), rankingSeconds, rankingMB,
-    1000.0 * lodTarget, lodWithin, lodStill, TraceText(lodTrace).c_str());
+    tableText.c_str(), skipped, Median(lodFractions), rankingSeconds, rankingMB, 1000.0 * lodTarget,
+    lodWithin, lodStill, TraceText(lodTrace).c_str());
   return EXIT_SUCCESS;
 }
 
@@ -1008,12 +1008,14 @@ std::string LevelOfDetailReport(const std::vector<Row>& rows)
         r.at("config").rfind("havs-lod-rotate-", 0) != 0)
         continue;
       const double target = Value(r, "lod_target_ms");
-      md << "\n" << r.at("config") << ": a " << Cell(r, "lod_target_ms", "%.0f")
-         << " ms budget while turning; the last 30 of 60 frames took " << Cell(r, "ms_median", "%.1f")
-         << " ms (median; min " << Cell(r, "ms_min", "%.1f") << ", max " << Cell(r, "ms_max", "%.1f")
-         << "), " << std::setprecision(3) << 100.0 * Value(r, "lod_within25")
-         << " % of them within 25 % of the budget ("
-         << (std::abs(Value(r, "ms_median") - target) <= 0.25 * target ? "converged" : "not converged")
+      md << "\n"
+         << r.at("config") << ": a " << Cell(r, "lod_target_ms", "%.0f")
+         << " ms budget while turning; the last 30 of 60 frames took "
+         << Cell(r, "ms_median", "%.1f") << " ms (median; min " << Cell(r, "ms_min", "%.1f")
+         << ", max " << Cell(r, "ms_max", "%.1f") << "), " << std::setprecision(3)
+         << 100.0 * Value(r, "lod_within25") << " % of them within 25 % of the budget ("
+         << (std::abs(Value(r, "ms_median") - target) <= 0.25 * target ? "converged"
+                                                                       : "not converged")
          << "), drawing a median " << std::setprecision(3) << 100.0 * Value(r, "lod_fraction")
          << " % of the internal faces. The still frame after it drew " << std::setprecision(3)
          << 100.0 * Value(r, "lod_still") << " % of them: RMSE " << Cell(r, "rmse", "%.5f")

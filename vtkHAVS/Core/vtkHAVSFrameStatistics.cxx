@@ -53,6 +53,7 @@ void vtkHAVSFrameStatistics::Reset()
   this->LongSegmentTable = false;
   this->RankingSeconds = 0.0;
   this->FrameSeconds = 0.0;
+  this->AutomaticKDraws = 0;
   this->SortSeconds = 0.0;
   this->GatherSeconds = 0.0;
   this->UploadSeconds = 0.0;
@@ -115,4 +116,5 @@ void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Level of detail: " << this->LevelOfDetailFraction
      << (this->LongSegmentTable ? " (long-segment table)" : "") << ", ranking "
      << this->RankingSeconds << " s; frame " << this->FrameSeconds << " s\n";
+  os << indent << "Automatic k draws: " << this->AutomaticKDraws << "\n";
 }

@@ -225,6 +225,11 @@ public:
   vtkGetMacro(FrameSeconds, double);
   ///@}
 
+  /// Automatic k (vtkHAVSVolumeMapper::SetAutomaticKBufferSize): the counted
+  /// draws this frame's search made (0: the last view's k was kept).
+  vtkSetMacro(AutomaticKDraws, int);
+  vtkGetMacro(AutomaticKDraws, int);
+
 protected:
   vtkHAVSFrameStatistics() = default;
   ~vtkHAVSFrameStatistics() override = default;
@@ -255,6 +260,7 @@ private:
   bool LongSegmentTable = false;
   double RankingSeconds = 0.0;
   double FrameSeconds = 0.0;
+  int AutomaticKDraws = 0;
   double SortSeconds = 0.0;
   double GatherSeconds = 0.0;
   double UploadSeconds = 0.0;

@@ -51,6 +51,7 @@ public:
     WarnPlanes,
     WarnOrder,
     WarnBlend,
+    WarnAutomaticK,
     NumberOfOnceWarnings
   };
   using WarnOnce = std::function<void(int, const std::string&)>;

@@ -268,6 +268,92 @@ double vtkHAVSVolumeMapper::ChooseLevelOfDetail(
   return internal > 0 ? static_cast<double>(limit) / internal : 1.0;
 }
 
+bool vtkHAVSVolumeMapper::NeedsKSearch(const vtkHAVSViewFrame& view, int order, int path)
+{
+  const KSearchKey& last = this->LastKSearch;
+  if (this->FoundK == 0 || last.Mesh != this->Mesh->GetBuildTime() || last.Order != order ||
+    last.Path != path)
+  {
+    return true;
+  }
+  const double* d = view.DirectionGrid;
+  const double* e = last.Direction;
+  const double dot = d[0] * e[0] + d[1] * e[1] + d[2] * e[2];
+  const double norms = std::sqrt(
+    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]));
+  const double cosLimit = std::cos(vtkMath::RadiansFromDegrees(5.0));
+  if (!(norms > 0.0) || dot < cosLimit * norms)
+  {
+    return true;
+  }
+  const double* b = this->Mesh->GetBounds();
+  const double diagonal = std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  return std::sqrt(vtkMath::Distance2BetweenPoints(view.EyeGrid, last.Eye)) > 0.05 * diagonal;
+}
+
+int vtkHAVSVolumeMapper::SearchK(
+  vtkRenderer* renderer, FrameRequest request, int maxK, bool& kept, FrameResult& last)
+{
+  // Counted draws, not composited (each keeps its result).
+  request.Composite = false;
+  request.CountViolations = true;
+  this->KSearchDraws = 0;
+  int lastK = 0;
+  bool failed = false;
+  auto clean = [&](int k)
+  {
+    request.K = k;
+    FrameResult r;
+    if (!this->DrawFrame(renderer, request, r))
+    {
+      failed = true;
+      return false;
+    }
+    ++this->KSearchDraws;
+    lastK = k;
+    last = r;
+    return r.Violations == 0;
+  };
+  const int start =
+    std::max(1, std::min(this->FoundK > 0 ? this->FoundK : this->KBufferSize, maxK));
+  int bad = 0, good = 0; // the largest k with violations, the smallest without
+  (clean(start) ? good : bad) = start;
+  while (good == 0 && bad < maxK && !failed)
+  {
+    const int k = std::min(2 * bad, maxK);
+    (clean(k) ? good : bad) = k;
+  }
+  while (good - bad > 1 && !failed)
+  {
+    const int k = (good + bad) / 2;
+    (clean(k) ? good : bad) = k;
+  }
+  if (failed)
+  {
+    kept = false;
+    return std::min(this->KBufferSize, maxK);
+  }
+  if (good == 0)
+  {
+    this->WarnOnce(vtkHAVSMapperInputs::WarnAutomaticK,
+      "Automatic k: no k up to " + std::to_string(maxK) +
+        " draws this view without order violations; using k = " + std::to_string(maxK) +
+        " (the MPVO order needs k = 2).");
+    good = maxK;
+  }
+  kept = lastK == good;
+  KSearchKey& key = this->LastKSearch;
+  const vtkHAVSViewFrame& view = *request.View;
+  std::copy(view.EyeGrid, view.EyeGrid + 3, key.Eye);
+  std::copy(view.DirectionGrid, view.DirectionGrid + 3, key.Direction);
+  key.Mesh = this->Mesh->GetBuildTime();
+  key.Order = this->FaceOrder->GetLastOrder();
+  key.Path = request.Path;
+  return good;
+}
+
+//------------------------------------------------------------------------------
 vtkHAVSInternalFaceRanking* vtkHAVSVolumeMapper::GetLevelOfDetailRanking()
 {
   return this->Ranking;
@@ -395,8 +481,9 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     this->WarnOnce(WarnPath, message.c_str());
   }
   const int maxK = this->GetMaximumK(path);
-  const int k = std::min(this->KBufferSize, maxK);
-  if (this->KBufferSize > maxK)
+  const int k = std::min(
+    this->AutomaticKBufferSize && this->FoundK > 0 ? this->FoundK : this->KBufferSize, maxK);
+  if (this->KBufferSize > maxK && !this->AutomaticKBufferSize)
   {
     const std::string message = "k = " + std::to_string(this->KBufferSize) + " exceeds the " +
       GetKBufferPathName(path) + " path's maximum; using k = " + std::to_string(maxK) + ".";
@@ -457,6 +544,36 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     request.DrawOrderVersion = this->FaceOrder->GetDrawOrderVersion();
     request.Composite = !plan.Probe;
     request.CountViolations = composite && (this->CountOrderViolations || plan.Probe);
+    if (!plan.Probe && composite && this->AutomaticKBufferSize && !this->FaceRasterBoundMode)
+    {
+      // Automatic k: searched again when the view moved far enough.
+      if (this->NeedsKSearch(view, this->FaceOrder->GetLastOrder(), path))
+      {
+        bool kept = false;
+        FrameResult last;
+        this->FoundK = this->SearchK(renderer, request, maxK, kept, last);
+        stats->SetAutomaticKDraws(this->KSearchDraws);
+        stats->SetGeometryUploaded(stats->GetGeometryUploaded() || last.GeometryUploaded);
+        stats->SetTableUploaded(stats->GetTableUploaded() || last.TableUploaded);
+        stats->SetOrderUploaded(stats->GetOrderUploaded() || last.OrderUploaded);
+        if (kept)
+        {
+          // The search's last draw was at the k found: it is the frame.
+          request.K = this->FoundK;
+          result = last;
+          if (!this->CountOrderViolations)
+          {
+            request.CountViolations = false;
+          }
+          if (!this->CompositeKeptResult(renderer))
+          {
+            return;
+          }
+          break;
+        }
+      }
+      request.K = this->FoundK;
+    }
     result = FrameResult();
     const bool drawn = this->DrawFrame(renderer, request, result);
     // Uploads of every draw of the frame (Automatic's probe may draw twice).
@@ -486,7 +603,7 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 
   // 7. The frame's statistics.
   stats->SetKBufferPath(path);
-  stats->SetKBufferSize(composite ? k : 0);
+  stats->SetKBufferSize(composite ? request.K : 0);
   stats->SetVisibilityOrder(this->FaceOrder->GetLastOrder());
   stats->SetOrderReused(this->FaceOrder->GetLastReused());
   stats->SetCycleBreaks(this->FaceOrder->GetLastCycleBreaks());

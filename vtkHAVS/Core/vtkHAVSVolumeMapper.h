@@ -113,6 +113,22 @@ public:
    */
   vtkSetClampMacro(KBufferSize, int, 1, 64);
   vtkGetMacro(KBufferSize, int);
+  /**
+   * Automatic k per view (default off: KBufferSize): the smallest k at which
+   * the view has no order violation (the k-buffer sorted every pixel: the
+   * image is exact), found by counted draws that are not composited (a
+   * search: the last view's k, doubled until clean, then halved between the
+   * last k with violations and the first without), for the face order in use.
+   * Searched again when the view direction turns by more than 5 degrees, the
+   * eye moves by more than 5 % of the mesh's diagonal, or the mesh, order or
+   * path changes; between, the found k is used. When no k up to the path's
+   * maximum is clean, the maximum is used. Composite blend only; the
+   * statistics say the k drawn (GetKBufferSize()) and the search's draws
+   * (GetAutomaticKDraws()).
+   */
+  vtkSetMacro(AutomaticKBufferSize, bool);
+  vtkGetMacro(AutomaticKBufferSize, bool);
+  vtkBooleanMacro(AutomaticKBufferSize, bool);
   ///@}
 
   ///@{
@@ -572,6 +588,7 @@ protected:
   ///@}
 
   int KBufferSize = 2;
+  bool AutomaticKBufferSize = false;
   int KBufferPath = KBufferPathAutomatic;
   double EarlyRayTerminationOpacity = 0.999;
   int TableScalarResolution = 128;
@@ -601,6 +618,11 @@ private:
   bool PrepareMesh(vtkVolume* volume);
   bool PrepareTable(vtkVolume* volume);
   bool PrepareLongSegmentTable(vtkVolume* volume);
+  /// Automatic k: whether the view moved far enough from the last search's.
+  bool NeedsKSearch(const vtkHAVSViewFrame& view, int order, int path);
+  /// Automatic k: the search's counted draws; returns the k found, and in
+  /// `kept` whether the last draw was at that k (its result kept, not composited).
+  int SearchK(vtkRenderer* renderer, FrameRequest request, int maxK, bool& kept, FrameResult& last);
   double ChooseLevelOfDetail(
     vtkVolume* volume, const vtkHAVSViewFrame& view, FrameRequest& request);
   FrameRequest MakeRequest(const vtkHAVSViewFrame& view, int path, int k, bool opaque);
@@ -618,6 +640,18 @@ private:
   vtkNew<vtkHAVSLevelOfDetailController> LevelOfDetailControl;
   vtkNew<vtkHAVSPreIntegrationTable> LongSegmentTable;
   vtkTimeStamp LongSegmentTableBuildTime;
+  // Automatic k: the k found and the view, mesh, order and path it was found for.
+  struct KSearchKey
+  {
+    double Eye[3] = { 0, 0, 0 };
+    double Direction[3] = { 0, 0, 0 };
+    vtkMTimeType Mesh = 0;
+    int Order = -2;
+    int Path = 0;
+  };
+  KSearchKey LastKSearch;
+  int FoundK = 0; // 0: none yet
+  int KSearchDraws = 0;
   bool SkippingCells = false; // this frame skips invisible cells
   vtkNew<vtkHAVSFrameStatistics> LastFrame;
   std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
