@@ -26,7 +26,13 @@ except ImportError:
 all_rows = list(csv.DictReader(open(sys.argv[1])))
 # The level of detail's rows (havs-lod-*) are approximations by design: the report gives
 # them their own section and plot; the other plots compare the full-quality mappers.
-rows = [r for r in all_rows if not r["config"].startswith("havs-lod-")]
+def level_of_detail(r):
+    # A havs-lod-* row, or any row a level-of-detail run measured (its havs-default is
+    # the 100 % of that run).
+    return r["config"].startswith("havs-lod-") or "havs-lod-" in r.get("command", "")
+
+
+rows = [r for r in all_rows if not level_of_detail(r)]
 out = sys.argv[2]
 
 
@@ -209,7 +215,8 @@ lod_groups = sorted({(r["dataset"], r.get("size")) for r in lod})
 if lod_groups:
     fig, axes = plt.subplots(2, len(lod_groups), figsize=(4.5 * len(lod_groups), 7), squeeze=False)
     for column, (dataset, size) in enumerate(lod_groups):
-        full = [r for r in all_rows if r["config"] == "havs-default" and r["dataset"] == dataset
+        full = [r for r in all_rows if r["config"] == "havs-default" and level_of_detail(r)
+                and r["dataset"] == dataset
                 and r.get("size") == size and number(r["ms_median"])]
         for strategy in ["topology", "view", "field", "area", "random"]:
             points = sorted((float(r["config"].rsplit("-", 1)[1]), number(r["ms_median"]),
