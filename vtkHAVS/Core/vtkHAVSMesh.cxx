@@ -180,6 +180,14 @@ uint64_t vtkHAVSMesh::GeometryHashOf(vtkDataSet* data)
 }
 
 //------------------------------------------------------------------------------
+double vtkHAVSMesh::GetDiagonal() const
+{
+  const double* b = this->Bounds;
+  return std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+}
+
+//------------------------------------------------------------------------------
 vtkUnstructuredGrid* vtkHAVSMesh::GetGrid()
 {
   return this->Grid;

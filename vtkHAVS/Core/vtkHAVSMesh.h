@@ -167,6 +167,8 @@ public:
   const double* GetShift() const { return this->Shift; }
   /// The points' bounds in model coordinates (shifted).
   const double* GetBounds() const { return this->Bounds; }
+  /// The length of the bounds' diagonal.
+  double GetDiagonal() const;
   /// The finite range of the scalars rendered.
   const double* GetScalarRange() const { return this->ScalarRange; }
   /// The property component whose functions colour the scalars (always 0), and how many

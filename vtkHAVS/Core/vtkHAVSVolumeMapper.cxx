@@ -206,9 +206,7 @@ bool vtkHAVSVolumeMapper::PrepareTable(vtkVolume* volume)
 bool vtkHAVSVolumeMapper::PrepareLongSegmentTable(vtkVolume* volume)
 {
   // The main table's resolutions, lengths up to the bounding-box diagonal.
-  const double* b = this->Mesh->GetBounds();
-  const double diagonal = std::sqrt(
-    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  const double diagonal = this->Mesh->GetDiagonal();
   bool rebuilt = false;
   const bool ok = vtkHAVSMapperInputs::PrepareTable(
     this, volume, this->Mesh, this->LongSegmentTable, this->Table->GetBuiltScalarResolution(),
@@ -286,10 +284,8 @@ bool vtkHAVSVolumeMapper::NeedsKSearch(const vtkHAVSViewFrame& view, int order, 
   {
     return true;
   }
-  const double* b = this->Mesh->GetBounds();
-  const double diagonal = std::sqrt(
-    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
-  return std::sqrt(vtkMath::Distance2BetweenPoints(view.EyeGrid, last.Eye)) > 0.05 * diagonal;
+  return std::sqrt(vtkMath::Distance2BetweenPoints(view.EyeGrid, last.Eye)) >
+    0.05 * this->Mesh->GetDiagonal();
 }
 
 int vtkHAVSVolumeMapper::SearchK(
@@ -299,6 +295,7 @@ int vtkHAVSVolumeMapper::SearchK(
   request.Composite = false;
   request.CountViolations = true;
   this->KSearchDraws = 0;
+  this->KSearchUploads = FrameResult();
   int lastK = 0;
   bool failed = false;
   auto clean = [&](int k)
@@ -313,6 +310,10 @@ int vtkHAVSVolumeMapper::SearchK(
     ++this->KSearchDraws;
     lastK = k;
     last = r;
+    this->KSearchUploads.GeometryUploaded |= r.GeometryUploaded;
+    this->KSearchUploads.ScalarsUploaded |= r.ScalarsUploaded;
+    this->KSearchUploads.TableUploaded |= r.TableUploaded;
+    this->KSearchUploads.OrderUploaded |= r.OrderUploaded;
     return r.Violations == 0;
   };
   const int start =
@@ -553,9 +554,13 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
         FrameResult last;
         this->FoundK = this->SearchK(renderer, request, maxK, kept, last);
         stats->SetAutomaticKDraws(this->KSearchDraws);
-        stats->SetGeometryUploaded(stats->GetGeometryUploaded() || last.GeometryUploaded);
-        stats->SetTableUploaded(stats->GetTableUploaded() || last.TableUploaded);
-        stats->SetOrderUploaded(stats->GetOrderUploaded() || last.OrderUploaded);
+        // (The first draw of the search uploads what changed; later ones nothing.)
+        stats->SetGeometryUploaded(
+          stats->GetGeometryUploaded() || this->KSearchUploads.GeometryUploaded);
+        stats->SetScalarsUploaded(
+          stats->GetScalarsUploaded() || this->KSearchUploads.ScalarsUploaded);
+        stats->SetTableUploaded(stats->GetTableUploaded() || this->KSearchUploads.TableUploaded);
+        stats->SetOrderUploaded(stats->GetOrderUploaded() || this->KSearchUploads.OrderUploaded);
         if (kept)
         {
           // The search's last draw was at the k found: it is the frame.

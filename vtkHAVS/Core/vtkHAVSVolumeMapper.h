@@ -652,6 +652,7 @@ private:
   KSearchKey LastKSearch;
   int FoundK = 0; // 0: none yet
   int KSearchDraws = 0;
+  FrameResult KSearchUploads; // what the search's draws uploaded
   bool SkippingCells = false; // this frame skips invisible cells
   vtkNew<vtkHAVSFrameStatistics> LastFrame;
   std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
