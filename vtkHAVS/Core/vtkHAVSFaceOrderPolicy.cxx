@@ -220,16 +220,16 @@ void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_
         continue;
       }
       const bool front = isVisible(c0), back = isVisible(c1);
-      const bool internal = visible ? front == back : boundary[f] == 0;
-      if (ranks && internal && (*ranks)[f] >= limit)
-      {
-        continue;
-      }
       const bool flip = visible && front && !back;
+      const uint8_t flag = visible ? (front != back ? (flip ? 2 : 1) : 0) : boundary[f];
+      if (ranks && flag == 0 && (*ranks)[f] >= limit)
+      {
+        continue; // an internal face the level of detail leaves out
+      }
       this->DrawTriangles[3 * n] = faceVertices[3 * f];
       this->DrawTriangles[3 * n + 1] = faceVertices[3 * f + (flip ? 2 : 1)];
       this->DrawTriangles[3 * n + 2] = faceVertices[3 * f + (flip ? 1 : 2)];
-      this->DrawBoundary[n] = visible ? (front != back ? (flip ? 2 : 1) : 0) : boundary[f];
+      this->DrawBoundary[n] = flag;
       ++n;
     }
     this->DrawTriangles.resize(3 * n);

@@ -41,8 +41,8 @@ double RadicalInverse(uint32_t i)
   return r;
 }
 
-/// The unit normal of face f (zero for a degenerate face).
-void FaceNormal(const float* p, const uint32_t* v, double n[3])
+/// The cross product (p1 - p0) x (p2 - p0) of a face: its normal times twice its area.
+void FaceCross(const float* p, const uint32_t* v, double n[3])
 {
   const float* a = p + 3 * static_cast<size_t>(v[0]);
   const float* b = p + 3 * static_cast<size_t>(v[1]);
@@ -52,11 +52,6 @@ void FaceNormal(const float* p, const uint32_t* v, double n[3])
   n[0] = e1[1] * e2[2] - e1[2] * e2[1];
   n[1] = e1[2] * e2[0] - e1[0] * e2[2];
   n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-  const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  for (int i = 0; i < 3; ++i)
-  {
-    n[i] = l > 0.0 ? n[i] / l : 0.0;
-  }
 }
 }
 
@@ -438,14 +433,8 @@ void vtkHAVSInternalFaceRanking::RankArea(vtkHAVSMesh* mesh, const std::vector<u
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        const uint32_t* v = faceVertices.data() + 3 * static_cast<size_t>(internal[i]);
-        const float* a = p + 3 * static_cast<size_t>(v[0]);
-        const float* b = p + 3 * static_cast<size_t>(v[1]);
-        const float* c = p + 3 * static_cast<size_t>(v[2]);
-        const double e1[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-        const double e2[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-        const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-          e1[0] * e2[1] - e1[1] * e2[0] };
+        double n[3];
+        FaceCross(p, faceVertices.data() + 3 * static_cast<size_t>(internal[i]), n);
         key[i] *= 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
       }
     });
@@ -473,8 +462,8 @@ void vtkHAVSInternalFaceRanking::ClusterNormals(
       for (vtkIdType i = begin; i < end; ++i)
       {
         double n[3];
-        FaceNormal(p, faceVertices.data() + 3 * static_cast<size_t>(internal[i]), n);
-        cluster[i] = static_cast<uint8_t>(NormalCluster(n));
+        FaceCross(p, faceVertices.data() + 3 * static_cast<size_t>(internal[i]), n);
+        cluster[i] = static_cast<uint8_t>(NormalCluster(n)); // needs no unit length
       }
     });
   this->ClusterStart.assign(NumberOfClusters + 1, 0);
