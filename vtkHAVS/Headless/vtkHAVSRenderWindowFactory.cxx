@@ -10,6 +10,10 @@
 #include "vtkHAVSRenderWindowFactory.h"
 
 #include "vtkHAVSEGLRenderWindow.h"
+#include "vtkHAVSWindowConfigure.h"
+#if VTKHAVS_HAS_GLFW
+#include "vtkHAVSGLFWRenderWindow.h"
+#endif
 #include "vtkObjectFactory.h"
 #include "vtkRenderWindow.h"
 
@@ -46,10 +50,14 @@ const char* vtkHAVSRenderWindowFactory::GetSelectedBackend()
   {
     return "display";
   }
+  if (requested == "glfw")
+  {
+    return "glfw";
+  }
   if (requested != "auto")
   {
     vtkGenericWarningMacro(
-      "HAVS_RENDER_WINDOW=" << requested << " is not one of egl, display, auto; using auto.");
+      "HAVS_RENDER_WINDOW=" << requested << " is not one of egl, display, glfw, auto; using auto.");
   }
   if (vtkHAVSEGLRenderWindow::IsAvailable())
   {
@@ -82,6 +90,25 @@ vtkRenderWindow* vtkHAVSRenderWindowFactory::CreateRenderWindow()
     window->SetMultiSamples(0);
     return window;
   }
+  if (backend == "glfw")
+  {
+#if VTKHAVS_HAS_GLFW
+    if (!vtkHAVSGLFWRenderWindow::IsAvailable())
+    {
+      vtkGenericWarningMacro("HAVS_RENDER_WINDOW=glfw but no GLFW window can be made here: "
+        << vtkHAVSGLFWRenderWindow::GetUnavailableReason());
+      return nullptr;
+    }
+    // A hidden GLFW window: the factory's windows render off screen.
+    vtkHAVSGLFWRenderWindow* window = vtkHAVSGLFWRenderWindow::New();
+    window->SetShowWindow(false);
+    return window;
+#else
+    vtkGenericWarningMacro("HAVS_RENDER_WINDOW=glfw but this build has no GLFW (libglfw3-dev "
+                           "was not found when vtkHAVS was configured).");
+    return nullptr;
+#endif
+  }
   vtkGenericWarningMacro("No render window can be made: no EGL context and no DISPLAY.");
   return nullptr;
 }
@@ -93,7 +120,17 @@ const char* vtkHAVSRenderWindowFactory::GetBackendName(vtkRenderWindow* window)
   {
     return "";
   }
-  return vtkHAVSEGLRenderWindow::SafeDownCast(window) ? "egl" : "display";
+  if (vtkHAVSEGLRenderWindow::SafeDownCast(window))
+  {
+    return "egl";
+  }
+#if VTKHAVS_HAS_GLFW
+  if (vtkHAVSGLFWRenderWindow::SafeDownCast(window))
+  {
+    return "glfw";
+  }
+#endif
+  return "display";
 }
 
 //------------------------------------------------------------------------------

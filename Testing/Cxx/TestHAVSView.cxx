@@ -1,0 +1,267 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSView.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+// havs_view, the interactive viewer (issue 23), driven by scripted input
+// under Xvfb: Testing/View/havs_view_session.txt turns the mesh with the
+// trackball, edits the opacity function with the mouse on the editor,
+// switches the mapper (HAVS cell projection, then round to HAVS) and k, and
+// takes screenshots (overlay hidden). Each screenshot is checked against the
+// exact reference rendered from the state file the viewer writes beside it
+// (camera, transfer functions, size): the 8-bit window colour within
+// quantization.
+//
+// Negative controls, each of which must fail the same bound: the last
+// screenshot against the reference with the first screenshot's transfer
+// function (the mouse edit reached the image), and with the first
+// screenshot's camera (the rotation did); the state says which mapper drew.
+//
+// Arguments: the havs_view executable, the session script, the data set.
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+
+#include "vtkHAVSDataSets.h"
+#include "vtkHAVSReferenceRenderer.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkFloatArray.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkTimerLog.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolumeProperty.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+/// The viewer's state file: a keyword, then numbers (or a name) per line.
+struct ViewState
+{
+  std::map<std::string, std::vector<double>> Numbers;
+  std::string DataSet;
+  std::string Mapper;
+  bool Read(const std::string& path)
+  {
+    std::ifstream in(path);
+    std::string line;
+    while (std::getline(in, line))
+    {
+      std::istringstream words(line);
+      std::string key;
+      words >> key;
+      if (key == "dataset")
+      {
+        words >> this->DataSet;
+        continue;
+      }
+      if (key == "mapper")
+      {
+        double kind;
+        words >> kind;
+        std::getline(words, this->Mapper);
+        this->Numbers[key] = { kind };
+        continue;
+      }
+      std::vector<double> values;
+      for (double v; words >> v;)
+      {
+        values.push_back(v);
+      }
+      this->Numbers[key] = values;
+    }
+    return !this->DataSet.empty() && this->Numbers.count("size") &&
+      this->Numbers.count("opacity") && this->Numbers.count("color") &&
+      this->Numbers.count("camera_position");
+  }
+  const std::vector<double>& Get(const std::string& key) const
+  {
+    static const std::vector<double> none(16, 0.0);
+    auto it = this->Numbers.find(key);
+    return it == this->Numbers.end() ? none : it->second;
+  }
+};
+
+vtkSmartPointer<vtkVolumeProperty> PropertyOf(const ViewState& state)
+{
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  vtkNew<vtkPiecewiseFunction> opacity;
+  const auto& o = state.Get("opacity");
+  for (size_t i = 0; i < static_cast<size_t>(o[0]); ++i)
+  {
+    opacity->AddPoint(o[1 + 4 * i], o[2 + 4 * i], o[3 + 4 * i], o[4 + 4 * i]);
+  }
+  vtkNew<vtkColorTransferFunction> color;
+  const auto& c = state.Get("color");
+  for (size_t i = 0; i < static_cast<size_t>(c[0]); ++i)
+  {
+    color->AddRGBPoint(
+      c[1 + 6 * i], c[2 + 6 * i], c[3 + 6 * i], c[4 + 6 * i], c[5 + 6 * i], c[6 + 6 * i]);
+  }
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetScalarOpacityUnitDistance(state.Get("unit_distance")[0]);
+  property->ShadeOff();
+  property->SetInterpolationTypeToLinear();
+  return property;
+}
+
+void PlaceCamera(vtkCamera* camera, const ViewState& state)
+{
+  const auto& p = state.Get("camera_position");
+  const auto& f = state.Get("camera_focal_point");
+  const auto& u = state.Get("camera_view_up");
+  const auto& parallel = state.Get("camera_parallel");
+  const auto& range = state.Get("camera_clipping_range");
+  camera->SetPosition(p[0], p[1], p[2]);
+  camera->SetFocalPoint(f[0], f[1], f[2]);
+  camera->SetViewUp(u[0], u[1], u[2]);
+  camera->SetViewAngle(state.Get("camera_view_angle")[0]);
+  camera->SetParallelProjection(parallel[0] != 0.0);
+  camera->SetParallelScale(parallel[1]);
+  camera->SetClippingRange(range[0], range[1]);
+}
+
+/// The exact reference's RGB (alpha zeroed: the screenshot is RGB over black).
+std::vector<float> Reference(vtkUnstructuredGrid* grid, const ViewState& cameraState,
+  const ViewState& functionState, int width, int height)
+{
+  vtkNew<vtkCamera> camera;
+  PlaceCamera(camera, cameraState);
+  auto property = PropertyOf(functionState);
+  vtkNew<vtkHAVSReferenceRenderer> reference;
+  reference->SetInputData(grid);
+  reference->SetProperty(property);
+  reference->SetCamera(camera);
+  reference->SetSize(width, height);
+  const double start = vtkTimerLog::GetUniversalTime();
+  if (!reference->Render())
+  {
+    return {};
+  }
+  std::printf("exact reference: %.1f s\n", vtkTimerLog::GetUniversalTime() - start);
+  const float* rgba = reference->GetImage()->GetPointer(0);
+  std::vector<float> image(rgba, rgba + 4 * width * height);
+  for (size_t p = 0; p < image.size() / 4; ++p)
+  {
+    image[4 * p + 3] = 0.0f;
+  }
+  return image;
+}
+
+std::vector<float> Screenshot(const std::string& path, int& width, int& height)
+{
+  std::vector<float> image = havstest::ReadPNG(path, &width, &height);
+  for (size_t p = 0; p < image.size() / 4; ++p)
+  {
+    image[4 * p + 3] = 0.0f;
+  }
+  return image;
+}
+
+void Print(const std::string& what, const havstest::ImageDifference& d)
+{
+  std::printf("%-58s RMSE %.6f  max %.4f  pixels > 1/255 %.2f %%\n", what.c_str(), d.RMSE, d.Max,
+    100.0 * d.FractionOver1);
+}
+}
+
+int TestHAVSView(int argc, char* argv[])
+{
+  if (!havstest::Check(argc >= 4, "arguments: havs_view, the session script, the data set"))
+  {
+    return EXIT_FAILURE;
+  }
+  const std::string viewer = argv[1];
+  const std::string script = argv[2];
+  const std::string dataSet = argv[3];
+  const std::string dir = havstest::OutputDir() + "/havs_view";
+  std::remove((dir + "/view0.png").c_str());
+  std::remove((dir + "/view1.png").c_str());
+  std::remove((dir + "/view2.png").c_str());
+  const std::string command = "mkdir -p '" + dir + "' && cd '" + dir + "' && '" + viewer +
+    "' --size 192x144 --play '" + script + "' " + dataSet;
+  std::printf("running: %s\n", command.c_str());
+  std::fflush(stdout);
+  const double start = vtkTimerLog::GetUniversalTime();
+  const int status = std::system(command.c_str());
+  std::printf("havs_view session: %.1f s\n", vtkTimerLog::GetUniversalTime() - start);
+  if (!havstest::Check(status == 0, "havs_view ran the session and exited with 0"))
+  {
+    return EXIT_FAILURE;
+  }
+
+  ViewState states[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    const std::string state = dir + "/view" + std::to_string(i) + ".png.txt";
+    if (!havstest::Check(states[i].Read(state), "state file " + state))
+    {
+      return EXIT_FAILURE;
+    }
+  }
+  havstest::Check(
+    states[0].Mapper.find("HAVS") != std::string::npos && states[0].Get("mapper")[0] == 0.0,
+    "view0 drawn by HAVS (state: " + states[0].Mapper + ")");
+  havstest::Check(states[1].Get("mapper")[0] == 1.0,
+    "view1 drawn by the HAVS cell projection after one `m` (state:" + states[1].Mapper + ")");
+  havstest::Check(states[2].Get("mapper")[0] == 0.0,
+    "view2 drawn by HAVS again after four more `m` (state:" + states[2].Mapper + ")");
+  havstest::Check(states[2].Get("opacity")[0] == states[0].Get("opacity")[0] + 1,
+    "the editor added one opacity node");
+
+  auto grid = vtkHAVSDataSets::Load(states[0].DataSet);
+  if (!havstest::Check(grid != nullptr, "data set " + states[0].DataSet))
+  {
+    return EXIT_FAILURE;
+  }
+  // 8-bit colour: quantization alone gives RMSE about 0.001 on covered pixels;
+  // the worst 0.05 % of pixels (silhouette edges) are left out of the max.
+  const double rmseBound = 0.004;
+  const double maxBound = 0.03;
+  int width = 0, height = 0;
+  std::vector<float> shots[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    const std::string name = "view" + std::to_string(i);
+    shots[i] = Screenshot(dir + "/" + name + ".png", width, height);
+    const auto& size = states[i].Get("size");
+    if (!havstest::Check(!shots[i].empty() && width == size[0] && height == size[1],
+          name + ".png read, of the state's size"))
+    {
+      return EXIT_FAILURE;
+    }
+    const auto exact = Reference(grid, states[i], states[i], width, height);
+    const size_t edge = static_cast<size_t>(0.0005 * width * height);
+    const auto d = havstest::Compare(shots[i], exact, edge);
+    Print(name + " (" + states[i].Mapper + " ) vs the exact reference", d);
+    havstest::Check(d.RMSE < rmseBound && d.Max < maxBound,
+      name + ": the screenshot is the exact image (overlay hidden)");
+  }
+
+  // Controls: the edit and the rotation each changed the image.
+  const size_t edge = static_cast<size_t>(0.0005 * width * height);
+  const auto oldFunctions = Reference(grid, states[2], states[0], width, height);
+  const auto oldCamera = Reference(grid, states[0], states[2], width, height);
+  const auto c1 = havstest::Compare(shots[2], oldFunctions, edge);
+  const auto c2 = havstest::Compare(shots[2], oldCamera, edge);
+  Print("control: view2 vs the reference with view0's functions", c1);
+  Print("control: view2 vs the reference with view0's camera", c2);
+  havstest::Check(!(c1.RMSE < rmseBound && c1.Max < maxBound),
+    "control: the transfer-function edit changed the image (fails the bound)");
+  havstest::Check(!(c2.RMSE < rmseBound && c2.Max < maxBound),
+    "control: the rotation changed the image (fails the bound)");
+  return havstest::Result();
+}
