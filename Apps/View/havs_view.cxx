@@ -276,8 +276,7 @@ int main(int argc, char* argv[])
   }
   if (o.Contexts)
   {
-    std::cout << "selected: " << vtkHAVSRenderWindowFactory::GetSelectedBackend()
-              << std::endl; // MERGE: DescribeBackends
+    std::cout << vtkHAVSRenderWindowFactory::DescribeBackends();
     return EXIT_SUCCESS;
   }
   const int mapperKind = MapperKind(o.Mapper);

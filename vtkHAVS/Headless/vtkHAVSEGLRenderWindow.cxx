@@ -9,6 +9,7 @@
 =========================================================================*/
 #include "vtkHAVSEGLRenderWindow.h"
 
+#include "vtkHAVSHeadlessDispatch.h"
 #include "vtkHAVSOpenGL.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLState.h"
@@ -130,19 +131,58 @@ vtkHAVSEGLRenderWindow::~vtkHAVSEGLRenderWindow()
 }
 
 //------------------------------------------------------------------------------
-bool vtkHAVSEGLRenderWindow::IsAvailable()
+struct vtkHAVSEGLRenderWindow::ProbeResult
+{
+  bool Available = false;
+  std::string Report;
+};
+
+//------------------------------------------------------------------------------
+const vtkHAVSEGLRenderWindow::ProbeResult& vtkHAVSEGLRenderWindow::Probe()
 {
   static std::once_flag once;
-  static bool available = false;
+  static ProbeResult probe;
   std::call_once(once,
     []
     {
-      vtkHAVSEGLRenderWindow* probe = vtkHAVSEGLRenderWindow::New();
-      available = probe->CreateContext();
-      probe->DestroyContext();
-      probe->Delete();
+      vtkHAVSEGLRenderWindow* window = vtkHAVSEGLRenderWindow::New();
+      probe.Available = window->CreateContext();
+      if (!probe.Available)
+      {
+        probe.Report = "no EGL display gives an OpenGL >= 3.2 core context";
+      }
+      else
+      {
+        probe.Report = "EGL " + window->GetPlatformName() + " display";
+        // The renderer, where no context is current on this thread (under
+        // GLVND a current GLX context makes eglMakeCurrent fail: then unsaid).
+        const Internals& internal = *window->Internal;
+        if (eglGetCurrentContext() == EGL_NO_CONTEXT &&
+          eglMakeCurrent(internal.Display, EGL_NO_SURFACE, EGL_NO_SURFACE, internal.Context))
+        {
+          if (const GLubyte* renderer = glGetString(GL_RENDERER))
+          {
+            probe.Report += std::string(", ") + reinterpret_cast<const char*>(renderer);
+          }
+          eglMakeCurrent(internal.Display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        }
+      }
+      window->DestroyContext();
+      window->Delete();
     });
-  return available;
+  return probe;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSEGLRenderWindow::IsAvailable()
+{
+  return vtkHAVSEGLRenderWindow::Probe().Available;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkHAVSEGLRenderWindow::GetProbeReport()
+{
+  return vtkHAVSEGLRenderWindow::Probe().Report;
 }
 
 //------------------------------------------------------------------------------
@@ -285,6 +325,8 @@ void vtkHAVSEGLRenderWindow::MakeCurrent()
   }
   if (eglGetCurrentContext() != this->Internal->Context)
   {
+    // Under GLVND a GLX context or an OSMesa window may hold the thread.
+    havs_dispatch::TakeThread(havs_dispatch::kTagEGL);
     eglMakeCurrent(
       this->Internal->Display, EGL_NO_SURFACE, EGL_NO_SURFACE, this->Internal->Context);
   }

@@ -27,8 +27,13 @@
  * - There is no default framebuffer, so the frame blit mode is NoBlit; images
  *   are read back from VTK's own framebuffers as usual.
  *
+ * Under GLVND one context is current per thread for GLX, EGL and
+ * vtkHAVSOSMesaRenderWindow together, and libEGL refuses while another holds
+ * the thread: MakeCurrent() releases a current GLX context or OSMesa window
+ * first.
+ *
  * Use vtkHAVSRenderWindowFactory rather than this class directly: it picks
- * this window, or a display window where asked.
+ * this window, or another backend where asked.
  */
 #ifndef vtkHAVSEGLRenderWindow_h
 #define vtkHAVSEGLRenderWindow_h
@@ -51,6 +56,12 @@ public:
    * this machine (tried once per process, then remembered).
    */
   static bool IsAvailable();
+
+  /**
+   * What the probe of IsAvailable() found, in a sentence: the EGL platform and
+   * the renderer, or that no context can be made.
+   */
+  static std::string GetProbeReport();
 
   /**
    * Creates the EGL context if needed, makes it current and initializes VTK's
@@ -103,6 +114,9 @@ private:
 
   bool CreateContext();
   void DestroyContext();
+
+  struct ProbeResult;
+  static const ProbeResult& Probe();
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -9,6 +9,7 @@
 =========================================================================*/
 #include "vtkHAVSGLFWRenderWindow.h"
 
+#include "vtkHAVSHeadlessDispatch.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLState.h"
 
@@ -73,6 +74,14 @@ GLFWwindow* CreateCoreWindow(int width, int height, const char* title, bool visi
     }
   }
   return nullptr;
+}
+
+/// Whether this thread's GLVND state (where there is GLVND) is GLX's: an EGL
+/// or OSMesa window may have taken the thread since GLFW made ours current.
+bool ThreadIsGLX()
+{
+  const bool glvnd = havs_dispatch::Dispatch().GetCurrentThreadState != nullptr;
+  return !glvnd || havs_dispatch::CurrentTag() == havs_dispatch::kTagGLX;
 }
 
 struct Availability
@@ -153,6 +162,9 @@ bool vtkHAVSGLFWRenderWindow::CreateWindow()
   }
   this->Size[0] = width;
   this->Size[1] = height;
+  // Under GLVND one context is current per thread: an EGL or OSMesa window of
+  // this process may hold it (see vtkHAVSHeadlessDispatch.h).
+  havs_dispatch::TakeThread(havs_dispatch::kTagGLX);
   glfwMakeContextCurrent(this->Window);
   // VTK paces nothing; swapping without waiting for the display keeps frame
   // times what the mapper costs.
@@ -196,8 +208,9 @@ void vtkHAVSGLFWRenderWindow::MakeCurrent()
   {
     return;
   }
-  if (glfwGetCurrentContext() != this->Window)
+  if (glfwGetCurrentContext() != this->Window || !ThreadIsGLX())
   {
+    havs_dispatch::TakeThread(havs_dispatch::kTagGLX);
     glfwMakeContextCurrent(this->Window);
   }
 }
@@ -205,7 +218,7 @@ void vtkHAVSGLFWRenderWindow::MakeCurrent()
 //------------------------------------------------------------------------------
 bool vtkHAVSGLFWRenderWindow::IsCurrent()
 {
-  return this->Window && glfwGetCurrentContext() == this->Window;
+  return this->Window && glfwGetCurrentContext() == this->Window && ThreadIsGLX();
 }
 
 //------------------------------------------------------------------------------

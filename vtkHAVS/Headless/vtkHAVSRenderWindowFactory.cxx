@@ -9,108 +9,340 @@
 =========================================================================*/
 #include "vtkHAVSRenderWindowFactory.h"
 
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkHAVSEGLRenderWindow.h"
-#include "vtkHAVSWindowConfigure.h"
+#include "vtkHAVSHeadlessDispatch.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderingOpenGLConfigure.h" // For VTK_OPENGL_HAS_OSMESA
+
+#if defined(VTK_OPENGL_HAS_OSMESA)
+#include "vtkOSOpenGLRenderWindow.h" // VTK's own OSMesa window
+#endif
+#if defined(HAVS_HAS_OSMESA)
+#include "vtkHAVSOSMesaRenderWindow.h"
+#endif
+#include "vtkHAVSWindowConfigure.h" // For VTKHAVS_HAS_GLFW
 #if VTKHAVS_HAS_GLFW
 #include "vtkHAVSGLFWRenderWindow.h"
 #endif
-#include "vtkObjectFactory.h"
-#include "vtkRenderWindow.h"
+
+#include <dlfcn.h>
 
 #include <cstdlib>
 #include <cstring>
-#include <string>
+#include <iterator>
+#include <map>
+#include <mutex>
+#include <sstream>
 
 vtkStandardNewMacro(vtkHAVSRenderWindowFactory);
 
 namespace
 {
+// Every backend this version knows, in the order of the table; `auto` tries
+// kAutoOrder's.
+const char* const kBackends[] = { "egl", "display", "glfw", "osmesa" };
+const char* const kAutoOrder[] = { "egl", "display", "osmesa" };
+
 std::string RequestedBackend()
 {
   const char* value = std::getenv("HAVS_RENDER_WINDOW");
   return (value && *value) ? std::string(value) : std::string("auto");
 }
 
-bool HaveDisplay()
+bool IsKnown(const std::string& backend)
+{
+  for (const char* name : kBackends)
+  {
+    if (backend == name)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Whether an X display opens: "" when it does, else why not. libX11 is
+/// VTK's (vtkXOpenGLRenderWindow), looked up in the process, not linked. The
+/// connection is kept for the process (one per DISPLAY value): an X server
+/// without -noreset (xvfb-run's Xvfb) resets when its last client leaves, and
+/// a window connecting during the reset fails.
+std::string DisplayProblem()
 {
   const char* display = std::getenv("DISPLAY");
-  return display && *display;
+  if (!display || !*display)
+  {
+    return "DISPLAY is not set";
+  }
+  static void* x11 = dlopen("libX11.so.6", RTLD_NOW | RTLD_NOLOAD);
+  if (!x11)
+  {
+    return ""; // no Xlib in this process: VTK's window is not an X window
+  }
+  static auto openDisplay = reinterpret_cast<void* (*)(const char*)>(dlsym(x11, "XOpenDisplay"));
+  if (!openDisplay)
+  {
+    return "";
+  }
+  static std::mutex mutex;
+  static std::map<std::string, void*> connections;
+  std::lock_guard<std::mutex> lock(mutex);
+  if (connections.count(display))
+  {
+    return "";
+  }
+  if (void* connection = openDisplay(display))
+  {
+    connections[display] = connection;
+    return "";
+  }
+  return std::string("the X display '") + display + "' cannot be opened";
 }
+
+/// The class of VTK's own window for this build (vtkXOpenGLRenderWindow on Debian).
+std::string DisplayWindowClass()
+{
+  vtkNew<vtkRenderWindow> window; // no connection is made before it renders
+  return window->GetClassName();
+}
+
+const char* const kOSMesaNotBuilt =
+  "OSMesa (GL/osmesa.h and libOSMesa, Debian: libosmesa6-dev) was not found at configure "
+  "time, and this VTK has no OSMesa window (VTK_OPENGL_HAS_OSMESA is not defined)";
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::string> vtkHAVSRenderWindowFactory::GetBackendNames()
+{
+  return std::vector<std::string>(std::begin(kBackends), std::end(kBackends));
+}
+
+//------------------------------------------------------------------------------
+int vtkHAVSRenderWindowFactory::GetNumberOfBackends()
+{
+  return static_cast<int>(std::size(kBackends));
+}
+
+//------------------------------------------------------------------------------
+std::string vtkHAVSRenderWindowFactory::GetBackendNameByIndex(int index)
+{
+  return (index >= 0 && index < vtkHAVSRenderWindowFactory::GetNumberOfBackends())
+    ? kBackends[index]
+    : "";
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSRenderWindowFactory::IsBackendBuilt(const std::string& backend)
+{
+  if (backend == "egl" || backend == "display")
+  {
+    return true;
+  }
+  if (backend == "osmesa")
+  {
+#if defined(VTK_OPENGL_HAS_OSMESA) || defined(HAVS_HAS_OSMESA)
+    return true;
+#else
+    return false;
+#endif
+  }
+  if (backend == "glfw")
+  {
+    return VTKHAVS_HAS_GLFW != 0;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSRenderWindowFactory::IsBackendAvailable(const std::string& backend)
+{
+  if (!vtkHAVSRenderWindowFactory::IsBackendBuilt(backend))
+  {
+    return false;
+  }
+  if (backend == "egl")
+  {
+    return vtkHAVSEGLRenderWindow::IsAvailable();
+  }
+  if (backend == "display")
+  {
+    return DisplayProblem().empty();
+  }
+  if (backend == "osmesa")
+  {
+#if defined(VTK_OPENGL_HAS_OSMESA)
+    return true; // VTK's own window: VTK reports its own failures
+#elif defined(HAVS_HAS_OSMESA)
+    return vtkHAVSOSMesaRenderWindow::IsAvailable();
+#endif
+  }
+#if VTKHAVS_HAS_GLFW
+  if (backend == "glfw")
+  {
+    return vtkHAVSGLFWRenderWindow::IsAvailable();
+  }
+#endif
+  return false;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkHAVSRenderWindowFactory::GetBackendStatus(const std::string& backend)
+{
+  if (!IsKnown(backend))
+  {
+    return "unknown backend '" + backend + "' (known: egl, display, glfw, osmesa)";
+  }
+  if (backend == "egl")
+  {
+    return (vtkHAVSEGLRenderWindow::IsAvailable() ? "available: " : "unavailable: ") +
+      vtkHAVSEGLRenderWindow::GetProbeReport();
+  }
+  if (backend == "display")
+  {
+    const std::string problem = DisplayProblem();
+    return problem.empty()
+      ? "available: " + DisplayWindowClass() + " on DISPLAY=" + std::getenv("DISPLAY")
+      : "unavailable: " + problem;
+  }
+  if (backend == "osmesa")
+  {
+#if defined(VTK_OPENGL_HAS_OSMESA)
+    return "available: VTK's own vtkOSOpenGLRenderWindow (VTK_OPENGL_HAS_OSMESA)";
+#elif defined(HAVS_HAS_OSMESA)
+    return (vtkHAVSOSMesaRenderWindow::IsAvailable() ? "available: " : "unavailable: ") +
+      vtkHAVSOSMesaRenderWindow::GetProbeReport();
+#else
+    return std::string("not built: ") + kOSMesaNotBuilt;
+#endif
+  }
+  // glfw
+#if VTKHAVS_HAS_GLFW
+  return vtkHAVSGLFWRenderWindow::IsAvailable()
+    ? std::string("available: a hidden GLFW 3.3 window, its GLX context")
+    : "unavailable: " + vtkHAVSGLFWRenderWindow::GetUnavailableReason();
+#else
+  return "not built: GLFW 3.3 (libglfw3-dev) was not found when vtkHAVS was configured";
+#endif
+}
+
+//------------------------------------------------------------------------------
+std::string vtkHAVSRenderWindowFactory::DescribeBackends()
+{
+  std::ostringstream os;
+  os << "| backend | built | usable now | note |\n";
+  os << "|---|---|---|---|\n";
+  for (const char* name : kBackends)
+  {
+    const bool built = vtkHAVSRenderWindowFactory::IsBackendBuilt(name);
+    const bool available = vtkHAVSRenderWindowFactory::IsBackendAvailable(name);
+    os << "| " << name << " | " << (built ? "yes" : "no") << " | " << (available ? "yes" : "no")
+       << " | " << vtkHAVSRenderWindowFactory::GetBackendStatus(name) << " |\n";
+  }
+  const std::string selected = vtkHAVSRenderWindowFactory::GetSelectedBackend();
+  os << "\nHAVS_RENDER_WINDOW=" << RequestedBackend()
+     << " selects: " << (selected.empty() ? std::string("(none)") : selected) << "\n";
+  return os.str();
 }
 
 //------------------------------------------------------------------------------
 const char* vtkHAVSRenderWindowFactory::GetSelectedBackend()
 {
   const std::string requested = RequestedBackend();
-  if (requested == "egl")
+  for (const char* name : kBackends)
   {
-    return "egl";
-  }
-  if (requested == "display")
-  {
-    return "display";
-  }
-  if (requested == "glfw")
-  {
-    return "glfw";
+    if (requested == name)
+    {
+      return name;
+    }
   }
   if (requested != "auto")
   {
-    vtkGenericWarningMacro(
-      "HAVS_RENDER_WINDOW=" << requested << " is not one of egl, display, glfw, auto; using auto.");
+    vtkGenericWarningMacro("HAVS_RENDER_WINDOW=" << requested
+                                                 << " is not one of egl, display, glfw, osmesa, "
+                                                    "auto; using auto.");
   }
-  if (vtkHAVSEGLRenderWindow::IsAvailable())
+  for (const char* name : kAutoOrder)
   {
-    return "egl";
+    if (vtkHAVSRenderWindowFactory::IsBackendAvailable(name))
+    {
+      return name;
+    }
   }
-  return HaveDisplay() ? "display" : "";
+  return "";
 }
 
 //------------------------------------------------------------------------------
 vtkRenderWindow* vtkHAVSRenderWindowFactory::CreateRenderWindow()
 {
   const std::string backend = vtkHAVSRenderWindowFactory::GetSelectedBackend();
+  if (backend.empty())
+  {
+    vtkGenericWarningMacro("No render window can be made:\n"
+      << vtkHAVSRenderWindowFactory::DescribeBackends());
+    return nullptr;
+  }
+  return vtkHAVSRenderWindowFactory::CreateRenderWindow(backend);
+}
+
+//------------------------------------------------------------------------------
+vtkRenderWindow* vtkHAVSRenderWindowFactory::CreateRenderWindow(const std::string& backend)
+{
+  if (backend == "auto")
+  {
+    return vtkHAVSRenderWindowFactory::CreateRenderWindow();
+  }
+  if (!vtkHAVSRenderWindowFactory::IsBackendAvailable(backend))
+  {
+    vtkGenericWarningMacro("The '" << backend << "' render window cannot be made here ("
+                                   << vtkHAVSRenderWindowFactory::GetBackendStatus(backend)
+                                   << ").");
+    return nullptr;
+  }
   if (backend == "egl")
   {
-    if (!vtkHAVSEGLRenderWindow::IsAvailable())
-    {
-      vtkGenericWarningMacro("HAVS_RENDER_WINDOW=egl but no EGL OpenGL context can be made here.");
-      return nullptr;
-    }
     return vtkHAVSEGLRenderWindow::New();
   }
   if (backend == "display")
   {
-    if (!HaveDisplay())
-    {
-      vtkGenericWarningMacro("HAVS_RENDER_WINDOW=display but DISPLAY is not set.");
-      return nullptr;
-    }
     vtkRenderWindow* window = vtkRenderWindow::New();
     window->SetMultiSamples(0);
+    // Under GLVND libGLX cannot make its context current while an EGL or
+    // OSMesa window of this process holds the thread: release it first.
+    vtkNew<vtkCallbackCommand> takeThread;
+    takeThread->SetCallback([](vtkObject*, unsigned long, void*, void*)
+      { havs_dispatch::TakeThread(havs_dispatch::kTagGLX); });
+    window->AddObserver(vtkCommand::StartEvent, takeThread);
     return window;
   }
+  if (backend == "osmesa")
+  {
+#if defined(VTK_OPENGL_HAS_OSMESA)
+    vtkRenderWindow* window = vtkOSOpenGLRenderWindow::New();
+    window->SetMultiSamples(0);
+    return window;
+#elif defined(HAVS_HAS_OSMESA)
+    return vtkHAVSOSMesaRenderWindow::New();
+#endif
+  }
+#if VTKHAVS_HAS_GLFW
   if (backend == "glfw")
   {
-#if VTKHAVS_HAS_GLFW
-    if (!vtkHAVSGLFWRenderWindow::IsAvailable())
-    {
-      vtkGenericWarningMacro("HAVS_RENDER_WINDOW=glfw but no GLFW window can be made here: "
-        << vtkHAVSGLFWRenderWindow::GetUnavailableReason());
-      return nullptr;
-    }
     // A hidden GLFW window: the factory's windows render off screen.
     vtkHAVSGLFWRenderWindow* window = vtkHAVSGLFWRenderWindow::New();
     window->SetShowWindow(false);
     return window;
-#else
-    vtkGenericWarningMacro("HAVS_RENDER_WINDOW=glfw but this build has no GLFW (libglfw3-dev "
-                           "was not found when vtkHAVS was configured).");
-    return nullptr;
-#endif
   }
-  vtkGenericWarningMacro("No render window can be made: no EGL context and no DISPLAY.");
+#endif
   return nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSRenderWindowFactory::ReleaseCurrentContext()
+{
+  havs_dispatch::TakeThread(havs_dispatch::kTagNone);
 }
 
 //------------------------------------------------------------------------------
@@ -130,6 +362,11 @@ const char* vtkHAVSRenderWindowFactory::GetBackendName(vtkRenderWindow* window)
     return "glfw";
   }
 #endif
+  // VTK's own OSMesa window or ours.
+  if (window->IsA("vtkOSOpenGLRenderWindow") || window->IsA("vtkHAVSOSMesaRenderWindow"))
+  {
+    return "osmesa";
+  }
   return "display";
 }
 
