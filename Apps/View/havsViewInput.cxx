@@ -12,9 +12,12 @@
 #include "havsViewScene.h"
 
 #include "vtkCommand.h"
+#include "vtkHAVSFrameStatistics.h"
+#include "vtkHAVSVolumeMapper.h"
 #include "vtkRenderer.h"
 #include "vtkTimerLog.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -49,6 +52,16 @@ void Input::OnRenderStart()
 void Input::OnRenderEnd()
 {
   this->LastFrameSeconds = vtkTimerLog::GetUniversalTime() - this->FrameStart;
+  ++this->Frames;
+  if (auto* havs = vtkHAVSVolumeMapper::SafeDownCast(this->TheScene.GetMapper()))
+  {
+    const double fraction = havs->GetLastFrameStatistics()->GetLevelOfDetailFraction();
+    if (fraction < 1.0)
+    {
+      ++this->LevelOfDetailFrames;
+      this->SmallestLevelOfDetail = std::min(this->SmallestLevelOfDetail, fraction);
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -109,6 +122,10 @@ void Input::Key(const std::string& key)
   else if (key == "l")
   {
     action = this->TheScene.ToggleLevelOfDetail();
+  }
+  else if (key == "v")
+  {
+    action = this->TheScene.ToggleViolationCount();
   }
   else if (key == "c")
   {

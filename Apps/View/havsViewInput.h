@@ -79,6 +79,12 @@ public:
   /// Whether q or Esc was pressed.
   bool GetQuit() const { return this->Quit; }
 
+  /// Frames rendered, and those where HAVS drew a level of detail (a subset of
+  /// its faces, while the camera moved), and the smallest share it drew.
+  int GetFrames() const { return this->Frames; }
+  int GetLevelOfDetailFrames() const { return this->LevelOfDetailFrames; }
+  double GetSmallestLevelOfDetail() const { return this->SmallestLevelOfDetail; }
+
   /// Seconds the last frame took (wall clock around the window's Render()).
   double GetLastFrameSeconds() const { return this->LastFrameSeconds; }
 
@@ -101,6 +107,9 @@ private:
   std::string ScreenshotDirectory = ".";
   double FrameStart = 0.0;
   double LastFrameSeconds = 0.0;
+  int Frames = 0;
+  int LevelOfDetailFrames = 0;
+  double SmallestLevelOfDetail = 1.0;
   unsigned long StartObserver = 0;
   unsigned long EndObserver = 0;
 };

@@ -317,6 +317,19 @@ std::string Scene::ToggleLevelOfDetail()
 }
 
 //------------------------------------------------------------------------------
+std::string Scene::ToggleViolationCount()
+{
+  auto* havs = vtkHAVSVolumeMapper::SafeDownCast(this->Mappers[MapperHAVS]);
+  if (!havs)
+  {
+    havs = vtkHAVSVolumeMapper::SafeDownCast(this->MakeMapper(MapperHAVS));
+  }
+  havs->SetCountOrderViolations(!havs->GetCountOrderViolations());
+  return std::string("order violations: ") +
+    (havs->GetCountOrderViolations() ? "counted" : "not counted");
+}
+
+//------------------------------------------------------------------------------
 std::string Scene::NextColorPreset()
 {
   this->Editor.NextColorPreset();
@@ -476,6 +489,7 @@ std::string Scene::KeyHelp()
          "m  next mapper (HAVS, HAVS cell projection, PT, ZSweep, RayCast)\n"
          "b  next blend mode (composite, maximum, minimum, additive)\n"
          "l  level of detail on/off       c  next colour map\n"
+         "v  count order violations on/off\n"
          "t  overlay (status, editor) on/off\n"
          "s  screenshot (overlay hidden)  r  reset camera\n"
          "h  this help                    q, Esc  quit";

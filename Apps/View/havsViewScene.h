@@ -74,6 +74,7 @@ public:
   std::string NextOrder();
   std::string NextBlendMode();
   std::string ToggleLevelOfDetail();
+  std::string ToggleViolationCount();
   std::string NextColorPreset();
   std::string ToggleOverlay();
   std::string ToggleHelp();

@@ -32,6 +32,7 @@
 
 #include <GLFW/glfw3.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -366,6 +367,9 @@ int main(int argc, char* argv[])
         glfwWaitEventsTimeout(0.25);
       }
     }
+    std::printf("havs_view: %d frames, %d with a level of detail (HAVS drew %.1f %% of its "
+                "internal faces at the least)\n",
+      input.GetFrames(), input.GetLevelOfDetailFrames(), 100.0 * input.GetSmallestLevelOfDetail());
     glfwSetWindowUserPointer(window->GetGLFWWindow(), nullptr);
   }
   window->Finalize();

@@ -31,7 +31,8 @@ else
 fi
 for f in lib/cmake/vtkHAVS/vtkHAVSConfig.cmake lib/cmake/vtkHAVS/vtkHAVSConfigVersion.cmake \
     lib/cmake/vtkHAVS/vtkHAVS-targets.cmake include/vtkHAVS/vtkHAVSVolumeMapper.h \
-    bin/havs_demo bin/havs_reference bin/havs_benchmark bin/havs_gpu_bench lib/libvtkHAVSExpatFix.so \
+    bin/havs_demo bin/havs_reference bin/havs_benchmark bin/havs_gpu_bench bin/havs_view \
+    lib/libvtkHAVSExpatFix.so \
     lib/paraview-plugins/HAVSRepresentation/HAVSRepresentation.so \
     "$pydest/vtkhavs/__init__.py" share/doc/vtkHAVS/LICENSE; do
   [ -e "$prefix/$f" ] && ok "installed $f" || fail "not installed: $f"
@@ -69,8 +70,9 @@ else
 fi
 
 echo "== installed apps"
-if "$prefix/bin/havs_reference" --help > /dev/null 2>&1 && "$prefix/bin/havs_demo" --help > /dev/null 2>&1; then
-  ok "havs_reference --help, havs_demo --help"
+if "$prefix/bin/havs_reference" --help > /dev/null 2>&1 && "$prefix/bin/havs_demo" --help > /dev/null 2>&1 \
+    && "$prefix/bin/havs_view" --help > /dev/null 2>&1; then
+  ok "havs_reference --help, havs_demo --help, havs_view --help"
 else
   fail "an installed app does not start"
 fi
