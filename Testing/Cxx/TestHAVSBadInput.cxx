@@ -209,6 +209,33 @@ int TestHAVSBadInput(int, char*[])
     Outcome o = RenderOnce(grid, "degenerate tetrahedra");
     havstest::Check(o.Warnings >= 1 && Contains(o.Text, "degenerate"), "degenerate: warning");
   }
+  // Point ids out of range (a corrupt file's cells): skipped with a warning,
+  // their points never read; the rest renders. Tetrahedra go to the face set
+  // directly, other cells through the split (VTK's would read past the points).
+  {
+    auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    const vtkIdType n = grid->GetNumberOfPoints();
+    vtkIdType past[4] = { 0, 1, 2, n + 1000000 };
+    grid->InsertNextCell(VTK_TETRA, 4, past);
+    vtkIdType negative[4] = { 0, 1, -5, 3 };
+    grid->InsertNextCell(VTK_TETRA, 4, negative);
+    Outcome o = RenderOnce(grid, "tetrahedra with point ids out of range");
+    havstest::Check(
+      o.Warnings >= 1 && Contains(o.Text, "2 cells refer to points that do not exist"),
+      "point ids out of range (tetrahedra): a warning that counts them");
+  }
+  {
+    auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
+    const vtkIdType n = grid->GetNumberOfPoints();
+    vtkIdType hexahedron[8] = { 0, 1, 4, 3, 9, 10, 13, -7 };
+    grid->InsertNextCell(VTK_HEXAHEDRON, 8, hexahedron);
+    vtkIdType wedge[6] = { 0, 1, 3, 9, 10, n };
+    grid->InsertNextCell(VTK_WEDGE, 6, wedge);
+    Outcome o = RenderOnce(grid, "other cells with point ids out of range");
+    havstest::Check(
+      o.Warnings >= 1 && Contains(o.Text, "2 cells refer to points that do not exist"),
+      "point ids out of range (cells to split): a warning that counts them");
+  }
   // Cell scalars render (their accuracy: TestHAVSCells); field data: a clear error.
   {
     auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);

@@ -41,6 +41,7 @@ enum CellStatus : uint8_t
   NotATetrahedron,
   GhostCell,
   DegenerateTetrahedron,
+  InvalidPointIndex, ///< a point id < 0 or >= the number of points
   DuplicateTetrahedron,
   UsedTetrahedron
 };
@@ -58,6 +59,7 @@ struct CellCounts
   vtkIdType Used = 0;
   vtkIdType Skipped = 0;
   vtkIdType Degenerate = 0;
+  vtkIdType Invalid = 0;
   vtkIdType Ghost = 0;
   double LongestEdgeSquared = 0.0;
 };
@@ -171,7 +173,8 @@ struct ReadCells
 {
   template <typename CellStateT>
   void operator()(CellStateT& state, const unsigned char* types, const unsigned char* ghosts,
-    const double* coordinates, CellTable& table, vtkSMPThreadLocal<CellCounts>& counts) const
+    const double* coordinates, vtkIdType numberOfPoints, CellTable& table,
+    vtkSMPThreadLocal<CellCounts>& counts) const
   {
     using ValueType = typename CellStateT::ValueType;
     const ValueType* offsets = state.GetOffsets()->GetPointer(0);
@@ -199,10 +202,20 @@ struct ReadCells
           }
           uint32_t* ids = &table.PointIds[4 * cell];
           const double* x[4];
+          bool valid = true;
           for (int i = 0; i < 4; ++i)
           {
-            ids[i] = static_cast<uint32_t>(connectivity[first + i]);
+            const ValueType id = connectivity[first + i];
+            valid = valid && id >= 0 && static_cast<vtkIdType>(id) < numberOfPoints;
+            ids[i] = valid ? static_cast<uint32_t>(id) : 0u;
             x[i] = coordinates + 3 * static_cast<size_t>(ids[i]);
+          }
+          if (!valid)
+          {
+            // A corrupt file's cell: never read past the points.
+            table.Status[cell] = InvalidPointIndex;
+            ++local.Invalid;
+            continue;
           }
           double longestSquared = 0.0;
           for (int i = 0; i < 4; ++i)
@@ -532,6 +545,7 @@ void vtkHAVSFaceSet::Clear()
   this->NumberOfTetrahedra = 0;
   this->NumberOfSkippedCells = 0;
   this->NumberOfDegenerateTetrahedra = 0;
+  this->NumberOfInvalidCells = 0;
   this->NumberOfDuplicateTetrahedra = 0;
   this->LongestEdge = 0.0;
   std::fill(this->CentroidOrigin, this->CentroidOrigin + 3, 0.0);
@@ -577,24 +591,27 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
     vtkSMPThreadLocal<CellCounts> counts;
     vtkUnsignedCharArray* ghostArray = grid->GetCellGhostArray();
     grid->GetCells()->Visit(ReadCells{}, grid->GetCellTypesArray()->GetPointer(0),
-      ghostArray ? ghostArray->GetPointer(0) : nullptr, coordinates.data(), table, counts);
+      ghostArray ? ghostArray->GetPointer(0) : nullptr, coordinates.data(), numberOfPoints, table,
+      counts);
     for (const CellCounts& local : counts)
     {
       cells.Used += local.Used;
       cells.Skipped += local.Skipped;
       cells.Degenerate += local.Degenerate;
+      cells.Invalid += local.Invalid;
       cells.Ghost += local.Ghost;
       cells.LongestEdgeSquared = std::max(cells.LongestEdgeSquared, local.LongestEdgeSquared);
     }
   }
   this->NumberOfSkippedCells = cells.Skipped;
   this->NumberOfDegenerateTetrahedra = cells.Degenerate;
+  this->NumberOfInvalidCells = cells.Invalid;
   this->NumberOfGhostCells = cells.Ghost;
   if (cells.Used == 0)
   {
-    vtkErrorMacro("Build: no usable tetrahedra (" << numberOfCells << " cells, " << cells.Skipped
-                                                  << " not tetrahedra, " << cells.Degenerate
-                                                  << " degenerate).");
+    vtkErrorMacro("Build: no usable tetrahedra ("
+      << numberOfCells << " cells, " << cells.Skipped << " not tetrahedra, " << cells.Degenerate
+      << " degenerate, " << cells.Invalid << " with point ids out of range).");
     return false;
   }
   this->NumberOfTetrahedra = cells.Used;
@@ -672,6 +689,7 @@ void vtkHAVSFaceSet::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
   os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";
   os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
+  os << indent << "NumberOfInvalidCells: " << this->NumberOfInvalidCells << "\n";
   os << indent << "NumberOfDuplicateTetrahedra: " << this->NumberOfDuplicateTetrahedra << "\n";
   os << indent << "LongestEdge: " << this->LongestEdge << "\n";
   os << indent << "CentroidOrigin: (" << this->CentroidOrigin[0] << ", " << this->CentroidOrigin[1]

@@ -69,6 +69,9 @@ public:
   vtkGetMacro(NumberOfSkippedCells, vtkIdType);
   vtkGetMacro(NumberOfDegenerateTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfDuplicateTetrahedra, vtkIdType);
+  /// Cells with a point id out of range (< 0 or >= the number of points, as a
+  /// corrupt file gives): skipped, their points never read.
+  vtkGetMacro(NumberOfInvalidCells, vtkIdType);
   /// Ghost cells (duplicate or hidden, vtkGhostType) left out: another piece draws them.
   vtkGetMacro(NumberOfGhostCells, vtkIdType);
   ///@}
@@ -146,6 +149,7 @@ private:
   vtkIdType NumberOfTetrahedra = 0;
   vtkIdType NumberOfSkippedCells = 0;
   vtkIdType NumberOfDegenerateTetrahedra = 0;
+  vtkIdType NumberOfInvalidCells = 0;
   vtkIdType NumberOfDuplicateTetrahedra = 0;
   vtkIdType NumberOfGhostCells = 0;
   double LongestEdge = 0.0;

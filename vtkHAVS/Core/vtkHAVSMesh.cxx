@@ -488,9 +488,17 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   {
     std::ostringstream why;
     why << "No 3D cells to render in the input (" << this->Tessellation.LowerDimensionCells
-        << " of its " << this->Tessellation.InputCells
-        << " cells are vertices, lines or polygons).";
+        << " of its " << this->Tessellation.InputCells << " cells are vertices, lines or polygons; "
+        << this->Tessellation.InvalidCells << " refer to points that do not exist).";
     return this->Fail(why.str());
+  }
+  if (this->Tessellation.InvalidCells > 0)
+  {
+    std::ostringstream w;
+    w << this->Tessellation.InvalidCells
+      << " cells refer to points that do not exist (a point id below 0 or past the last "
+         "point) and were skipped.";
+    this->Warnings.push_back(w.str());
   }
   if (this->Tessellation.LowerDimensionCells > 0)
   {
@@ -526,6 +534,14 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
     std::ostringstream w;
     w << this->Faces->GetNumberOfSkippedCells() << " cells could not be split into tetrahedra "
       << "and were skipped.";
+    this->Warnings.push_back(w.str());
+  }
+  if (this->Faces->GetNumberOfInvalidCells() > 0)
+  {
+    std::ostringstream w;
+    w << this->Faces->GetNumberOfInvalidCells()
+      << " cells refer to points that do not exist (a point id below 0 or past the last "
+         "point) and were skipped.";
     this->Warnings.push_back(w.str());
   }
   if (this->Faces->GetNumberOfDegenerateTetrahedra() > 0)

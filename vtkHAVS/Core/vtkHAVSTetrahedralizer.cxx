@@ -10,18 +10,22 @@
 #include "vtkHAVSTetrahedralizer.h"
 
 #include "vtkAppendFilter.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellTypes.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetTriangleFilter.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
+
+#include <vector>
 
 namespace
 {
@@ -162,6 +166,60 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::AppendBlocks(
   return grid;
 }
 
+namespace
+{
+/// An unstructured grid's cells whose point ids are all in range; nullptr
+/// when every cell is (then the input is used as it is). VTK's split reads a
+/// cell's points by id: a corrupt file's id must never reach it.
+vtkSmartPointer<vtkUnstructuredGrid> WithoutInvalidCells(vtkDataSet* data, vtkIdType& invalid)
+{
+  invalid = 0;
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
+  if (!grid || !grid->GetCells())
+  {
+    return nullptr;
+  }
+  const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
+  const vtkIdType numberOfCells = grid->GetNumberOfCells();
+  std::vector<char> valid(static_cast<size_t>(numberOfCells), 1);
+  vtkCellArray* cells = grid->GetCells();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  {
+    cells->GetCellAtId(c, ids);
+    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+    {
+      const vtkIdType id = ids->GetId(i);
+      if (id < 0 || id >= numberOfPoints)
+      {
+        valid[c] = 0;
+        ++invalid;
+        break;
+      }
+    }
+  }
+  if (invalid == 0)
+  {
+    return nullptr;
+  }
+  auto kept = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  kept->SetPoints(grid->GetPoints());
+  kept->GetPointData()->ShallowCopy(grid->GetPointData());
+  kept->GetCellData()->CopyAllocate(grid->GetCellData(), numberOfCells - invalid);
+  kept->Allocate(numberOfCells - invalid);
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  {
+    if (valid[c])
+    {
+      cells->GetCellAtId(c, ids);
+      const vtkIdType id = kept->InsertNextCell(grid->GetCellType(c), ids);
+      kept->GetCellData()->CopyData(grid->GetCellData(), c, id);
+    }
+  }
+  return kept;
+}
+}
+
 //------------------------------------------------------------------------------
 bool vtkHAVSTetrahedralizer::IsTetrahedral(vtkDataSet* data)
 {
@@ -208,7 +266,12 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
     return vtkUnstructuredGrid::SafeDownCast(data);
   }
   const double start = vtkTimerLog::GetUniversalTime();
-  for (vtkIdType c = 0; c < r.InputCells; ++c)
+  vtkSmartPointer<vtkUnstructuredGrid> valid = WithoutInvalidCells(data, r.InvalidCells);
+  if (valid)
+  {
+    data = valid;
+  }
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
   {
     const int type = data->GetCellType(c);
     const int dimension = vtkCellTypes::GetDimension(type);

@@ -52,6 +52,7 @@ public:
     vtkIdType SplitCells = 0;          ///< 3D cells that were not tetrahedra, split
     vtkIdType QuadraticTetrahedra = 0; ///< of which quadratic tetrahedra (the canonical split)
     vtkIdType LowerDimensionCells = 0; ///< vertices, lines, polygons: left out
+    vtkIdType InvalidCells = 0; ///< cells with a point id out of range: left out before the split
     vtkIdType OutputTetrahedra = 0;
     double Seconds = 0.0;
   };

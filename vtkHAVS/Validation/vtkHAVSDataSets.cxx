@@ -12,10 +12,13 @@
 #include "vtkAppendFilter.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCell.h"
+#include "vtkCellData.h"
 #include "vtkCellType.h"
+#include "vtkCellTypes.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
 #include "vtkExtractCells.h"
+#include "vtkHAVSTetrahedralizer.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkMultiBlockDataSet.h"
@@ -31,9 +34,15 @@
 #include "vtkUnstructuredGridReader.h"
 #include "vtkXMLUnstructuredGridReader.h"
 
+#include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <sstream>
+#include <unistd.h>
 
 vtkStandardNewMacro(vtkHAVSDataSets);
 
@@ -58,6 +67,129 @@ struct ReaderErrors
     reader->AddObserver(vtkCommand::ErrorEvent, this->Callback);
   }
 };
+
+/**
+ * While a VTK reader runs: a crash inside it (SIGSEGV, SIGBUS, SIGFPE, SIGILL,
+ * or SIGABRT from a corrupted heap, on a corrupt file) is reported as such, naming the file, and
+ * the process exits with status 3 instead of dying without a word. The previous handlers come back
+ * afterwards. (A reader's crash cannot be recovered from: its state is unknown.)
+ */
+class ReaderCrashGuard
+{
+public:
+  explicit ReaderCrashGuard(const std::string& path)
+  {
+    std::snprintf(Message(), kMessageSize,
+      "vtkHAVSDataSets: VTK's reader crashed reading %s (a corrupt or truncated file?); "
+      "exiting.\n",
+      path.c_str());
+    struct sigaction action;
+    std::memset(&action, 0, sizeof(action));
+    action.sa_handler = &ReaderCrashGuard::OnCrash;
+    sigemptyset(&action.sa_mask);
+    for (int i = 0; i < kSignals; ++i)
+    {
+      sigaction(Signals()[i], &action, &this->Previous[i]);
+    }
+  }
+  ~ReaderCrashGuard()
+  {
+    for (int i = 0; i < kSignals; ++i)
+    {
+      sigaction(Signals()[i], &this->Previous[i], nullptr);
+    }
+  }
+  ReaderCrashGuard(const ReaderCrashGuard&) = delete;
+  void operator=(const ReaderCrashGuard&) = delete;
+
+private:
+  static constexpr int kSignals = 5;
+  static constexpr size_t kMessageSize = 4096;
+  static const int* Signals()
+  {
+    static const int signals[kSignals] = { SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT };
+    return signals;
+  }
+  static char* Message()
+  {
+    static char message[kMessageSize];
+    return message;
+  }
+  static void OnCrash(int)
+  {
+    // Only async-signal-safe calls here.
+    const char* message = Message();
+    ssize_t unused = write(2, message, std::strlen(message));
+    (void)unused;
+    _exit(3);
+  }
+  struct sigaction Previous[kSignals];
+};
+
+/**
+ * A legacy .vtk file's declared counts (POINTS, CELLS, CELL_TYPES, OFFSETS,
+ * CONNECTIVITY, POINT_DATA, CELL_DATA) checked against the file's size before
+ * VTK's reader sees them: a count that is negative or needs more values than
+ * the file has bytes makes the reader allocate absurd arrays or read past
+ * what it allocated (VTK 9.2's reader corrupts its heap on `CELLS 2000000000`).
+ * False with `why` for such a file.
+ */
+bool LegacyCountsPlausible(const std::string& path, std::string& why)
+{
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const long long bytes = static_cast<long long>(in.tellg());
+  in.seekg(0);
+  std::string line;
+  int lines = 0;
+  while (std::getline(in, line) && ++lines < 1000000)
+  {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    static const char* const keywords[] = { "POINTS", "CELLS", "CELL_TYPES", "OFFSETS",
+      "CONNECTIVITY", "POINT_DATA", "CELL_DATA" };
+    bool counted = false;
+    for (const char* k : keywords)
+    {
+      counted = counted || keyword == k;
+    }
+    if (!counted)
+    {
+      continue;
+    }
+    long long count = 0;
+    if (!(words >> count))
+    {
+      continue; // e.g. "OFFSETS vtktypeint64": the count came on the CELLS line
+    }
+    // POINTS n: 3n values; CELLS n size: size values; the others: n values.
+    long long values = keyword == "POINTS" ? 3 * count : count;
+    long long size = 0;
+    if (keyword == "CELLS" && (words >> size))
+    {
+      values = std::max(count, size);
+    }
+    if (count < 0 || size < 0 || values > bytes)
+    {
+      std::ostringstream text;
+      text << "it declares " << keyword << " " << count << (size != 0 ? " " : "")
+           << (size != 0 ? std::to_string(size) : std::string()) << ", "
+           << (count < 0 || size < 0
+                  ? "a negative count"
+                  : "more values than a file of " + std::to_string(bytes) + " bytes holds");
+      why = text.str();
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Whether `data` has point or cell scalars (or any array to make them from).
+bool HasArrays(vtkDataSet* data)
+{
+  return data->GetPointData()->GetNumberOfArrays() > 0 ||
+    data->GetCellData()->GetNumberOfArrays() > 0;
+}
 
 vtkSmartPointer<vtkUnstructuredGrid> ThresholdedWavelet()
 {
@@ -232,15 +364,24 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::ReadFile(
     vtkNew<vtkXMLUnstructuredGridReader> reader;
     ReaderErrors errors(reader);
     reader->SetFileName(path.c_str());
+    ReaderCrashGuard guard(path);
     reader->Update();
     data = reader->GetOutput();
     readerErrors = errors.Count;
   }
   else
   {
+    std::string why;
+    if (!LegacyCountsPlausible(path, why))
+    {
+      vtkGenericWarningMacro(
+        "vtkHAVSDataSets: " << path << " is corrupt: " << why << "; not read.");
+      return nullptr;
+    }
     vtkNew<vtkUnstructuredGridReader> reader;
     ReaderErrors errors(reader);
     reader->SetFileName(path.c_str());
+    ReaderCrashGuard guard(path);
     reader->Update();
     data = reader->GetOutput();
     readerErrors = errors.Count;
@@ -254,6 +395,13 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::ReadFile(
   if (!data || data->GetNumberOfCells() == 0)
   {
     vtkGenericWarningMacro("vtkHAVSDataSets: no cells read from " << path);
+    return nullptr;
+  }
+  if (!HasArrays(data))
+  {
+    vtkGenericWarningMacro("vtkHAVSDataSets: " << path
+                                               << " has no point or cell array to render (a "
+                                                  "truncated file?)");
     return nullptr;
   }
   vtkPointData* pd = data->GetPointData();
@@ -270,6 +418,21 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::ReadFile(
   {
     pd->SetActiveScalars(pd->GetArrayName(0));
   }
+  // Cells of a type VTK does not know (a corrupt type id): said, then left to
+  // the split (which drops them).
+  vtkIdType unknown = 0;
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
+  {
+    unknown +=
+      std::strcmp(vtkCellTypes::GetClassNameFromTypeId(data->GetCellType(c)), "UnknownClass") == 0
+      ? 1
+      : 0;
+  }
+  if (unknown > 0)
+  {
+    vtkGenericWarningMacro("vtkHAVSDataSets: " << path << ": " << unknown
+                                               << " cells of a type VTK does not know; left out.");
+  }
   // A grid of tetrahedra only is taken as it is (points and cells in order).
   auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
   bool tetrahedra = grid != nullptr;
@@ -279,9 +442,19 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::ReadFile(
   }
   if (tetrahedra)
   {
-    return grid;
+    return grid; // cells with point ids out of range: the mappers skip them, with a warning
   }
-  return Tetrahedralize(data);
+  // Other cells: split as the mappers split them, cells with point ids out of
+  // range left out first (VTK's split would read past the points).
+  vtkHAVSTetrahedralizer::Report report;
+  auto split = vtkHAVSTetrahedralizer::Tetrahedralize(data, &report);
+  if (report.InvalidCells > 0)
+  {
+    vtkGenericWarningMacro("vtkHAVSDataSets: " << path << ": " << report.InvalidCells
+                                               << " cells refer to points that do not exist "
+                                                  "and were left out.");
+  }
+  return split;
 }
 
 //------------------------------------------------------------------------------
@@ -302,7 +475,10 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::ReadPlot3D(
   reader->SetQFileName(qPath.c_str());
   reader->AutoDetectFormatOn();
   reader->SetScalarFunctionNumber(function);
-  reader->Update();
+  {
+    ReaderCrashGuard guard(xyzPath);
+    reader->Update();
+  }
   if (errors.Count > 0)
   {
     vtkGenericWarningMacro("vtkHAVSDataSets: the reader reported "
