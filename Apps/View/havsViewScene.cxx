@@ -176,6 +176,15 @@ vtkAbstractVolumeMapper* Scene::MakeMapper(int kind)
 }
 
 //------------------------------------------------------------------------------
+vtkHAVSVolumeMapper* Scene::GetHAVSMapper()
+{
+  vtkAbstractVolumeMapper* mapper = this->Mappers[MapperHAVS]
+    ? this->Mappers[MapperHAVS].GetPointer()
+    : this->MakeMapper(MapperHAVS);
+  return vtkHAVSVolumeMapper::SafeDownCast(mapper);
+}
+
+//------------------------------------------------------------------------------
 std::string Scene::SetMapper(int kind)
 {
   if (kind < 0 || kind >= NumberOfMappers)
@@ -214,11 +223,7 @@ std::string Scene::GetMapperName() const
 //------------------------------------------------------------------------------
 std::string Scene::SetKBufferSize(int k)
 {
-  auto* havs = vtkHAVSVolumeMapper::SafeDownCast(this->Mappers[MapperHAVS]);
-  if (!havs)
-  {
-    havs = vtkHAVSVolumeMapper::SafeDownCast(this->MakeMapper(MapperHAVS));
-  }
+  vtkHAVSVolumeMapper* havs = this->GetHAVSMapper();
   havs->SetAutomaticKBufferSize(false);
   havs->SetKBufferSize(k);
   return "k = " + std::to_string(havs->GetKBufferSize());
@@ -227,8 +232,7 @@ std::string Scene::SetKBufferSize(int k)
 //------------------------------------------------------------------------------
 std::string Scene::NextKBufferSize()
 {
-  auto* havs = vtkHAVSVolumeMapper::SafeDownCast(this->Mappers[MapperHAVS]);
-  const int current = havs ? havs->GetKBufferSize() : 2;
+  const int current = this->GetHAVSMapper()->GetKBufferSize();
   int next = kKBufferSizes[0];
   for (int k : kKBufferSizes)
   {
@@ -244,11 +248,7 @@ std::string Scene::NextKBufferSize()
 //------------------------------------------------------------------------------
 std::string Scene::ToggleAutomaticK()
 {
-  auto* havs = vtkHAVSVolumeMapper::SafeDownCast(this->Mappers[MapperHAVS]);
-  if (!havs)
-  {
-    havs = vtkHAVSVolumeMapper::SafeDownCast(this->MakeMapper(MapperHAVS));
-  }
+  vtkHAVSVolumeMapper* havs = this->GetHAVSMapper();
   havs->SetAutomaticKBufferSize(!havs->GetAutomaticKBufferSize());
   return std::string("automatic k: ") + (havs->GetAutomaticKBufferSize() ? "on" : "off");
 }
@@ -265,11 +265,7 @@ std::string Scene::SetOrder(const std::string& name)
   {
     order = vtkHAVSVolumeMapper::VisibilityOrderMPVO;
   }
-  auto* havs = vtkHAVSVolumeMapper::SafeDownCast(this->Mappers[MapperHAVS]);
-  if (!havs)
-  {
-    havs = vtkHAVSVolumeMapper::SafeDownCast(this->MakeMapper(MapperHAVS));
-  }
+  vtkHAVSVolumeMapper* havs = this->GetHAVSMapper();
   havs->SetVisibilityOrder(order);
   return std::string("order: ") + OrderName(order);
 }
@@ -277,8 +273,7 @@ std::string Scene::SetOrder(const std::string& name)
 //------------------------------------------------------------------------------
 std::string Scene::NextOrder()
 {
-  auto* havs = vtkHAVSVolumeMapper::SafeDownCast(this->Mappers[MapperHAVS]);
-  const int current = havs ? havs->GetVisibilityOrder() : vtkHAVSVolumeMapper::VisibilityOrderMPVO;
+  const int current = this->GetHAVSMapper()->GetVisibilityOrder();
   switch (current)
   {
     case vtkHAVSVolumeMapper::VisibilityOrderCentroid:
@@ -307,11 +302,7 @@ std::string Scene::NextBlendMode()
 //------------------------------------------------------------------------------
 std::string Scene::ToggleLevelOfDetail()
 {
-  auto* havs = vtkHAVSVolumeMapper::SafeDownCast(this->Mappers[MapperHAVS]);
-  if (!havs)
-  {
-    havs = vtkHAVSVolumeMapper::SafeDownCast(this->MakeMapper(MapperHAVS));
-  }
+  vtkHAVSVolumeMapper* havs = this->GetHAVSMapper();
   havs->SetLevelOfDetail(!havs->GetLevelOfDetail());
   return std::string("level of detail: ") + (havs->GetLevelOfDetail() ? "on" : "off");
 }
@@ -319,11 +310,7 @@ std::string Scene::ToggleLevelOfDetail()
 //------------------------------------------------------------------------------
 std::string Scene::ToggleViolationCount()
 {
-  auto* havs = vtkHAVSVolumeMapper::SafeDownCast(this->Mappers[MapperHAVS]);
-  if (!havs)
-  {
-    havs = vtkHAVSVolumeMapper::SafeDownCast(this->MakeMapper(MapperHAVS));
-  }
+  vtkHAVSVolumeMapper* havs = this->GetHAVSMapper();
   havs->SetCountOrderViolations(!havs->GetCountOrderViolations());
   return std::string("order violations: ") +
     (havs->GetCountOrderViolations() ? "counted" : "not counted");

@@ -36,6 +36,7 @@
 #include <string>
 
 class vtkAbstractVolumeMapper;
+class vtkHAVSVolumeMapper;
 class vtkRenderWindow;
 
 namespace havsview
@@ -108,6 +109,8 @@ private:
   void operator=(const Scene&) = delete;
 
   vtkAbstractVolumeMapper* MakeMapper(int kind);
+  /// The HAVS mapper, made when first needed (its settings live on it).
+  vtkHAVSVolumeMapper* GetHAVSMapper();
 
   vtkSmartPointer<vtkUnstructuredGrid> Grid;
   std::string Name;

@@ -39,28 +39,11 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <string>
 #include <vector>
 
 namespace
 {
-/// A field of /proc/self/status in bytes (VmRSS, VmHWM).
-long long StatusBytes(const char* field)
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  const std::string key = std::string(field) + ":";
-  while (std::getline(status, line))
-  {
-    if (line.compare(0, key.size(), key) == 0)
-    {
-      return 1024LL * std::atoll(line.c_str() + key.size());
-    }
-  }
-  return -1;
-}
-
 struct Progress
 {
   std::vector<double> Values;
@@ -78,7 +61,7 @@ int TestHAVSLargeMesh(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   const double tets = static_cast<double>(grid->GetNumberOfCells());
-  const long long rssGrid = StatusBytes("VmRSS");
+  const long long rssGrid = havstest::ProcessStatusBytes("VmRSS");
   std::printf("%s: %.0f tetrahedra, %lld points, made in %.1f s; VmRSS %.0f MB (the grid: %.0f "
               "bytes a tetrahedron in VTK's arrays)\n",
     name.c_str(), tets, static_cast<long long>(grid->GetNumberOfPoints()),
@@ -104,8 +87,8 @@ int TestHAVSLargeMesh(int argc, char* argv[])
   havstest::PlaceCamera(scene.Renderer, 60.0, 10.0, false);
   scene.Window->Render();
   const double second = vtkTimerLog::GetUniversalTime() - t2;
-  const long long peak = StatusBytes("VmHWM");
-  const long long rssAfter = StatusBytes("VmRSS");
+  const long long peak = havstest::ProcessStatusBytes("VmHWM");
+  const long long rssAfter = havstest::ProcessStatusBytes("VmRSS");
   const double machine = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
   std::printf("first frame %.1f s (preparation included), second frame %.1f s (vtkSMPTools %s)\n",
     first, second,

@@ -55,28 +55,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
 
 namespace
 {
-/// The process' resident set (VmRSS) in bytes, from /proc/self/status.
-long long ResidentBytes()
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-  {
-    if (line.compare(0, 6, "VmRSS:") == 0)
-    {
-      return 1024LL * std::atoll(line.c_str() + 6);
-    }
-  }
-  return -1;
-}
-
 /// GL objects alive in the current context among names 1 … kProbedNames.
 struct LiveObjects
 {
@@ -197,7 +181,7 @@ int TestHAVSSoak(int argc, char* argv[])
     }
     if (frame + 1 == warmUp)
     {
-      rssAfterWarmUp = ResidentBytes();
+      rssAfterWarmUp = havstest::ProcessStatusBytes("VmRSS");
       liveAfterWarmUp = ProbeLiveObjects(scene.Window);
       std::printf("after %d frames (warm-up): VmRSS %.1f MB, live GL objects %s\n", warmUp,
         rssAfterWarmUp / 1048576.0, liveAfterWarmUp.Describe().c_str());
@@ -207,13 +191,13 @@ int TestHAVSSoak(int argc, char* argv[])
       scene.Window->MakeCurrent();
       glErrors += glGetError() != GL_NO_ERROR ? 1 : 0;
       std::printf("frame %5d: VmRSS %.1f MB, %.1f ms a frame so far\n", frame + 1,
-        ResidentBytes() / 1048576.0,
+        havstest::ProcessStatusBytes("VmRSS") / 1048576.0,
         1000.0 * (vtkTimerLog::GetUniversalTime() - start) / (frame + 1));
       std::fflush(stdout);
     }
   }
   const double seconds = vtkTimerLog::GetUniversalTime() - start;
-  const long long rssEnd = ResidentBytes();
+  const long long rssEnd = havstest::ProcessStatusBytes("VmRSS");
   const LiveObjects liveEnd = ProbeLiveObjects(scene.Window);
   scene.Window->MakeCurrent();
   glErrors += glGetError() != GL_NO_ERROR ? 1 : 0;
@@ -284,10 +268,10 @@ int TestHAVSSoak(int argc, char* argv[])
     scene.Window->MakeCurrent();
     glDeleteBuffers(7, buffers);
     glDeleteTextures(3, textures);
-    const long long before = ResidentBytes();
+    const long long before = havstest::ProcessStatusBytes("VmRSS");
     std::vector<char> block(64u << 20);
     std::memset(block.data(), 1, block.size());
-    const double grown = (ResidentBytes() - before) / 1048576.0;
+    const double grown = (havstest::ProcessStatusBytes("VmRSS") - before) / 1048576.0;
     havstest::Check(grown >= 8.0 && block[block.size() / 2] == 1,
       "control: 64 MB touched show in VmRSS (+" + std::to_string(grown) + " MB)");
   }

@@ -11,7 +11,9 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
+#include <string>
 
 namespace havstest
 {
@@ -46,5 +48,20 @@ bool CheckNear(double a, double b, double tol, const std::string& what)
 int Result()
 {
   return Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+}
+
+long long ProcessStatusBytes(const char* field)
+{
+  std::ifstream status("/proc/self/status");
+  const std::string key = std::string(field) + ":";
+  std::string line;
+  while (std::getline(status, line))
+  {
+    if (line.compare(0, key.size(), key) == 0)
+    {
+      return 1024LL * std::atoll(line.c_str() + key.size());
+    }
+  }
+  return -1;
 }
 }

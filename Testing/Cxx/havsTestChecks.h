@@ -34,6 +34,8 @@ bool Check(bool condition, const std::string& what);
 bool CheckNear(double a, double b, double tol, const std::string& what);
 /// EXIT_SUCCESS when no check failed, else EXIT_FAILURE.
 int Result();
+/// A size field of /proc/self/status in bytes ("VmRSS", "VmHWM"); -1 if absent.
+long long ProcessStatusBytes(const char* field);
 }
 
 #endif

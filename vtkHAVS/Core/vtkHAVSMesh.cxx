@@ -38,6 +38,17 @@ vtkStandardNewMacro(vtkHAVSMesh);
 
 namespace
 {
+/// The warning for cells whose point ids fall outside the points (skipped
+/// before the split, or by the face set).
+std::string InvalidCellsWarning(vtkIdType cells)
+{
+  std::ostringstream w;
+  w << cells
+    << " cells refer to points that do not exist (a point id below 0 or past the last "
+       "point) and were skipped.";
+  return w.str();
+}
+
 /// As vtkAbstractVolumeMapper::GetScalarModeAsString.
 const char* ScalarModeName(int mode)
 {
@@ -494,11 +505,7 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   }
   if (this->Tessellation.InvalidCells > 0)
   {
-    std::ostringstream w;
-    w << this->Tessellation.InvalidCells
-      << " cells refer to points that do not exist (a point id below 0 or past the last "
-         "point) and were skipped.";
-    this->Warnings.push_back(w.str());
+    this->Warnings.push_back(InvalidCellsWarning(this->Tessellation.InvalidCells));
   }
   if (this->Tessellation.LowerDimensionCells > 0)
   {
@@ -538,11 +545,7 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   }
   if (this->Faces->GetNumberOfInvalidCells() > 0)
   {
-    std::ostringstream w;
-    w << this->Faces->GetNumberOfInvalidCells()
-      << " cells refer to points that do not exist (a point id below 0 or past the last "
-         "point) and were skipped.";
-    this->Warnings.push_back(w.str());
+    this->Warnings.push_back(InvalidCellsWarning(this->Faces->GetNumberOfInvalidCells()));
   }
   if (this->Faces->GetNumberOfDegenerateTetrahedra() > 0)
   {
