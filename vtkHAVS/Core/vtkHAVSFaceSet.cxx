@@ -137,6 +137,12 @@ void SortedFace(const uint32_t* ids, int face, uint32_t out[4])
 /// ((x1 - x0) x (x2 - x0)) . (x3 - x0): six times the signed volume of the
 /// tetrahedron x0 x1 x2 x3, positive when x3 lies on the side the normal of
 /// the triangle x0 x1 x2 points to.
+double EdgeLength(const double* x0, const double* x1)
+{
+  const double d[3] = { x1[0] - x0[0], x1[1] - x0[1], x1[2] - x0[2] };
+  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
 double TripleProduct(const double* x0, const double* x1, const double* x2, const double* x3)
 {
   double a[3], b[3], d[3];
@@ -167,8 +173,11 @@ std::vector<double> CopyCoordinates(vtkPoints* points)
 }
 
 /// Fills a CellTable from the grid's cells, whatever the storage type of the
-/// cell array: tetrahedra with repeated points or |volume| <= 1e-12 *
-/// (longest edge)^3 are degenerate.
+/// cell array: tetrahedra with repeated points or a volume within the
+/// rounding of its own computation (|6 V| <= 16 eps |a| |b| |d|, the edges from
+/// the first point; eps of double) are degenerate. Scale-free and shape-free:
+/// a needle 1e6 times longer than wide keeps its volume (relative 1e-12),
+/// four points of one plane do not.
 struct ReadCells
 {
   template <typename CellStateT>
@@ -227,11 +236,12 @@ struct ReadCells
             }
           }
           const double sixVolume = TripleProduct(x[0], x[1], x[2], x[3]);
-          const double longest = std::sqrt(longestSquared);
+          const double rounding = 16.0 * std::numeric_limits<double>::epsilon() *
+            EdgeLength(x[0], x[1]) * EdgeLength(x[0], x[2]) * EdgeLength(x[0], x[3]);
           const bool repeated = ids[0] == ids[1] || ids[0] == ids[2] || ids[0] == ids[3] ||
             ids[1] == ids[2] || ids[1] == ids[3] || ids[2] == ids[3];
           // Written so that a NaN volume is degenerate too.
-          if (repeated || !(std::fabs(sixVolume) / 6.0 > 1e-12 * longest * longest * longest))
+          if (repeated || !(std::fabs(sixVolume) > rounding))
           {
             table.Status[cell] = DegenerateTetrahedron;
             ++local.Degenerate;

@@ -14,8 +14,10 @@
  * HAVS draws these faces, not the cells (Callahan, Ikits, Comba and Silva
  * 2005, section 4.1). Build() takes the VTK_TETRA cells of a vtkUnstructuredGrid (ghost cells
  * marked duplicate or hidden are left out, as another piece draws them; other cells
- * are counted as skipped; degenerate tetrahedra, with repeated points or
- * |volume| <= 1e-12 * (longest edge)^3, are counted and dropped, and so
+ * are counted as skipped; degenerate tetrahedra, with repeated points or a
+ * volume within the rounding of its own computation (|6 V| <= 16 eps |a| |b| |d|,
+ * the edges from the first point: scale- and shape-free, so a needle 1e6
+ * times longer than wide is kept), are counted and dropped, and so
  * are duplicate tetrahedra, the same four points as an earlier cell, one
  * copy kept: a mesh's cell written twice is one cell) and stores
  * each face once: a face of one tetrahedron is a boundary face, of two an

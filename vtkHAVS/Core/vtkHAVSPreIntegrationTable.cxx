@@ -182,6 +182,7 @@ bool vtkHAVSPreIntegrationTable::Build(
   this->ScalarRange[0] = scalarRange[0];
   this->ScalarRange[1] = scalarRange[1];
   this->MaxLength = maxLength;
+  this->LengthLogScale = 0.0;
   this->Zero();
   if (!property)
   {
@@ -279,6 +280,21 @@ bool vtkHAVSPreIntegrationTable::Build(
     previous = g;
   }
 
+  // The length axis: logarithmic where the longest segment spans many
+  // optical lengths (see the class description).
+  double tauMax = 0.0;
+  for (const OpticalSample& sample : fine)
+  {
+    tauMax = std::max(tauMax, std::isfinite(sample.Tau) ? sample.Tau : 0.0);
+  }
+  this->LengthLogScale = maxLength * tauMax > 16.0 ? 4.0 * tauMax : 0.0;
+  const bool logarithmic = this->LengthLogScale > 0.0;
+  std::vector<double> layerLength(nl);
+  for (int l = 0; l < nl; ++l)
+  {
+    layerLength[l] = this->LengthAt(static_cast<double>(l) / (nl - 1));
+  }
+
   float* table = this->Table.data();
   const double lengthStep = maxLength / (nl - 1);
   const size_t layer = static_cast<size_t>(ns) * ns * 4;
@@ -297,7 +313,7 @@ bool vtkHAVSPreIntegrationTable::Build(
           {
             double rgba[4];
             IntegrateSegment(property, component, lo + span * f / (ns - 1),
-              lo + span * b / (ns - 1), l * lengthStep, rgba);
+              lo + span * b / (ns - 1), layerLength[l], rgba);
             std::copy(rgba, rgba + 4, entry(f, b, l));
           }
         }
@@ -329,7 +345,11 @@ bool vtkHAVSPreIntegrationTable::Build(
             const double share =
               f == b ? 1.0 : std::fabs(positions[at(j + 1)] - positions[at(j)]) / whole;
             const double meanTau = 0.5 * (sample(j).Tau + sample(j + 1).Tau);
-            unitAttenuation[j] = std::exp(-meanTau * lengthStep * share);
+            // Linear axis: the attenuation per layer, raised by one
+            // multiplication per layer; logarithmic: the extinction per
+            // unit length, exponentiated at each layer's length.
+            unitAttenuation[j] =
+              logarithmic ? meanTau * share : std::exp(-meanTau * lengthStep * share);
           }
           for (int l = 1; l < nl; ++l)
           {
@@ -337,7 +357,14 @@ bool vtkHAVSPreIntegrationTable::Build(
             double transmittance = 1.0;
             for (int j = 0; j < steps; ++j)
             {
-              attenuation[j] *= unitAttenuation[j];
+              if (logarithmic)
+              {
+                attenuation[j] = std::exp(-unitAttenuation[j] * layerLength[l]);
+              }
+              else
+              {
+                attenuation[j] *= unitAttenuation[j];
+              }
               CompositeStep(sample(j), sample(j + 1), attenuation[j], color, transmittance);
             }
             float* out = entry(f, b, l);
@@ -354,6 +381,26 @@ bool vtkHAVSPreIntegrationTable::Build(
 }
 
 //------------------------------------------------------------------------------
+double vtkHAVSPreIntegrationTable::LengthCoordinate(double length) const
+{
+  if (!(this->MaxLength > 0.0) || !(length > 0.0))
+  {
+    return 0.0;
+  }
+  const double a = this->LengthLogScale;
+  const double u =
+    a > 0.0 ? std::log1p(a * length) / std::log1p(a * this->MaxLength) : length / this->MaxLength;
+  return std::min(u, 1.0);
+}
+
+//------------------------------------------------------------------------------
+double vtkHAVSPreIntegrationTable::LengthAt(double u) const
+{
+  const double a = this->LengthLogScale;
+  return a > 0.0 ? std::expm1(u * std::log1p(a * this->MaxLength)) / a : u * this->MaxLength;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSPreIntegrationTable::Lookup(double sf, double sb, double length, double rgba[4]) const
 {
   const int ns = this->BuiltScalarResolution;
@@ -362,7 +409,7 @@ void vtkHAVSPreIntegrationTable::Lookup(double sf, double sb, double length, dou
   auto coordinate = [](double t, int n) { return std::min(std::max(t, 0.0), 1.0) * (n - 1); };
   const double x = coordinate(span > 0 ? (sf - this->ScalarRange[0]) / span : 0.0, ns);
   const double y = coordinate(span > 0 ? (sb - this->ScalarRange[0]) / span : 0.0, ns);
-  const double z = coordinate(this->MaxLength > 0 ? length / this->MaxLength : 0.0, nl);
+  const double z = coordinate(this->LengthCoordinate(length), nl);
   const int x0 = std::min(static_cast<int>(x), ns - 2);
   const int y0 = std::min(static_cast<int>(y), ns - 2);
   const int z0 = std::min(static_cast<int>(z), nl - 2);
@@ -392,5 +439,6 @@ void vtkHAVSPreIntegrationTable::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ExactIntegration: " << this->ExactIntegration << "\n";
   os << indent << "ScalarRange: " << this->ScalarRange[0] << " " << this->ScalarRange[1] << "\n";
   os << indent << "MaxLength: " << this->MaxLength << "\n";
+  os << indent << "LengthLogScale: " << this->LengthLogScale << "\n";
   os << indent << "LastBuildSeconds: " << this->LastBuildSeconds << "\n";
 }

@@ -14,7 +14,7 @@
  * Pre-integration (Röttger, Kraus and Ertl 2000; Engel, Kraus and Ertl 2001)
  * as HAVS uses it (Callahan, Ikits, Comba and Silva 2005). Entry (f, b, l)
  * holds the premultiplied colour and opacity of a ray segment
- * of world length L_l = l / (NL - 1) * MaxLength whose scalar goes linearly
+ * of world length L_l = LengthAt(l / (NL - 1)) whose scalar goes linearly
  * from s_f to s_b (s_i = range[0] + i / (NS - 1) * (range[1] - range[0])),
  * under the optical model of VTK's unstructured-grid integrators:
  * extinction tau(s) = opacity(s) / ScalarOpacityUnitDistance, emission
@@ -32,6 +32,15 @@
  * SubdivisionsPerInterval. ExactIntegration integrates each entry adaptively
  * from the functions instead (IntegrateSegment, error <= 1e-6; slow).
  * Rows are filled in parallel (vtkSMPTools).
+ *
+ * The length axis is linear (L = u MaxLength) unless the longest segment
+ * spans many optical lengths (MaxLength * tau_max > 16, tau_max the largest
+ * extinction of the functions: a mesh whose longest cells are far longer
+ * than the transfer function's scale, e.g. 1e6 times longer than wide, or a
+ * nearly opaque function). Then it is logarithmic, u = log(1 + a L) /
+ * log(1 + a MaxLength) with a = 4 tau_max: uniform steps in u resolve the
+ * lengths over which the opacity changes, however long the longest segment
+ * (a linear axis of 128 steps over 3e6 would put 2.4e4 in its first step).
  */
 #ifndef vtkHAVSPreIntegrationTable_h
 #define vtkHAVSPreIntegrationTable_h
@@ -92,6 +101,12 @@ public:
   int GetBuiltScalarResolution() const { return this->BuiltScalarResolution; }
   int GetBuiltLengthResolution() const { return this->BuiltLengthResolution; }
   vtkGetMacro(MaxLength, double);
+  /// The length axis' scale a (0: linear); see the class description.
+  vtkGetMacro(LengthLogScale, double);
+  /// The length axis' coordinate u in [0, 1] of a segment length (clamped),
+  /// and its inverse, as the table was built.
+  double LengthCoordinate(double length) const;
+  double LengthAt(double u) const;
   const double* GetScalarRange() const { return this->ScalarRange; }
   vtkGetMacro(LastBuildSeconds, double);
 
@@ -156,6 +171,7 @@ private:
   std::vector<float> Additive1D;
   double ScalarRange[2] = { 0.0, 1.0 };
   double MaxLength = 0.0;
+  double LengthLogScale = 0.0;
   int Component = 0;
   int BuiltScalarResolution = 0;
   int BuiltLengthResolution = 0;

@@ -33,18 +33,21 @@ double vtkHAVSTableResolution::MeasureError(
   {
     return 0.0;
   }
-  // Segments drawn uniformly (fixed seed); each one's error is divided by its
+  // Segments drawn uniformly (fixed seed, see below); each one's error is divided by its
   // length in unit distances, at least one length step of the table (below
   // it the entries are nearly linear in the length, and both vanish at 0).
   std::mt19937 random(20261202u);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const double shortest = maxLength / (nl - 1);
+  // Lengths drawn uniformly along the table's own length axis (linear or
+  // logarithmic): on a logarithmic axis, uniform lengths would nearly all be
+  // long, saturated segments that any table gets right.
+  const double shortest = table->LengthAt(1.0 / (nl - 1));
   double sum = 0.0;
   for (int p = 0; p < this->ProbeCount; ++p)
   {
     const double sf = range[0] + span * unit(random);
     const double sb = range[0] + span * unit(random);
-    const double length = maxLength * unit(random);
+    const double length = table->LengthAt(unit(random));
     double looked[4], exact[4];
     table->Lookup(sf, sb, length, looked);
     // At most 256 sub-steps (Richardson-extrapolated: about 1e-6 on a ramp):

@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSGLTable.h"
 
+#include <cmath>
+
 #include "vtkHAVSOpenGL.h"
 #include "vtkHAVSPreIntegrationTable.h"
 #include "vtkObjectFactory.h"
@@ -59,6 +61,7 @@ void vtkHAVSGLTable::Upload(vtkHAVSPreIntegrationTable* table)
   this->Additive1D->Create1DFromRaw(static_cast<unsigned int>(additive.size() / 2), 2, VTK_FLOAT,
     const_cast<float*>(additive.data()));
   this->MaxLength = table->GetMaxLength() > 0.0 ? table->GetMaxLength() : 1.0;
+  this->LengthLogScale = table->GetLengthLogScale();
 }
 
 //------------------------------------------------------------------------------
@@ -72,6 +75,12 @@ void vtkHAVSGLTable::SetUniforms(vtkShaderProgram* program)
   program->SetUniform2f("havsScalarTexel", scalarTexel);
   program->SetUniform2f("havsLengthTexel", lengthTexel);
   program->SetUniformf("havsInvMaxLength", static_cast<float>(1.0 / this->MaxLength));
+  // The length axis (vtkHAVSPreIntegrationTable::LengthCoordinate): linear
+  // for a scale of 0, else u = log(1 + a L) / log(1 + a MaxLength).
+  const double a = this->LengthLogScale;
+  program->SetUniformf("havsLengthLogScale", static_cast<float>(a));
+  program->SetUniformf(
+    "havsInvLogRange", a > 0.0 ? static_cast<float>(1.0 / std::log1p(a * this->MaxLength)) : 0.0f);
 }
 
 //------------------------------------------------------------------------------
@@ -99,5 +108,5 @@ void vtkHAVSGLTable::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Table: " << this->ScalarResolution << "^2 x " << this->LengthResolution
-     << ", max length " << this->MaxLength << "\n";
+     << ", max length " << this->MaxLength << ", length log scale " << this->LengthLogScale << "\n";
 }

@@ -45,7 +45,8 @@ public:
   /// The additive blend's (g, G) nodes (vtkHAVSPreIntegrationTable::GetAdditive1D).
   vtkTextureObject* GetAdditive1D() { return this->Additive1D; }
 
-  /// havsTable, havsScalarTexel, havsLengthTexel, havsInvMaxLength (table active).
+  /// havsTable, havsScalarTexel, havsLengthTexel, havsInvMaxLength,
+  /// havsLengthLogScale, havsInvLogRange (table active).
   void SetUniforms(vtkShaderProgram* program);
 
   void ReleaseGraphicsResources(vtkWindow* window);
@@ -65,6 +66,7 @@ private:
   int ScalarResolution = 0;
   int LengthResolution = 0;
   double MaxLength = 1.0;
+  double LengthLogScale = 0.0; ///< 0: a linear length axis
 };
 
 #endif

@@ -96,8 +96,12 @@ void main()
   float tFarthest = 0.0;
   // A plane the ray runs along (a face seen edge-on: the eye in its plane,
   // its rays on the shared face of two cells) is no exit: in float its
-  // 'towards' is rounding noise, and so would be the distance to it.
-  float parallelToRay = 1e-5 * length(d);
+  // 'towards' is rounding noise, and so would be the distance to it. The
+  // noise of a three-term float dot product of a unit normal and d is at
+  // most about 3 * 2^-24 |d|: the bound is twice that, so that a needle
+  // (a face 1e6 times longer than wide, turned 1e-6 from the ray) still
+  // has its exit.
+  float parallelToRay = 4e-7 * length(d);
   for (int j = 0; j < 4; ++j)
   {
     vec4 plane = havsCells[base + j];

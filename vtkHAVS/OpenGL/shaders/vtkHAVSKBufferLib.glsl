@@ -70,6 +70,8 @@ uniform sampler3D havsTable;     // pre-integrated segments (front s, back s, le
 uniform vec2 havsScalarTexel;    // ((N-1)/N, 0.5/N): [0,1] -> texel centres
 uniform vec2 havsLengthTexel;    // same along the length axis
 uniform float havsInvMaxLength;  // 1 / the table's longest length
+uniform float havsLengthLogScale; // the length axis: 0 linear, else a (see havsLengthCoordinate)
+uniform float havsInvLogRange;    // 1 / log(1 + a * the longest length)
 uniform float havsTerminationOpacity;
 
 uniform sampler2D havsOpaqueDepth; // window depth of the opaque geometry
@@ -172,6 +174,16 @@ float havsOpaqueDistance(vec2 fragCoord)
 #endif
 }
 
+// The table's length coordinate of a segment length, in [0, 1]
+// (vtkHAVSPreIntegrationTable::LengthCoordinate): linear, or logarithmic
+// where the longest segment spans many optical lengths.
+float havsLengthCoordinate(float len)
+{
+  float u = havsLengthLogScale > 0.0 ? log(1.0 + len * havsLengthLogScale) * havsInvLogRange
+                                     : len * havsInvMaxLength;
+  return min(u, 1.0);
+}
+
 // Premultiplied colour and opacity of the segment from a to b.
 vec4 havsSegment(vec2 a, vec2 b)
 {
@@ -181,9 +193,9 @@ vec4 havsSegment(vec2 a, vec2 b)
     return vec4(0.0);
   }
 #if HAVS_CELL_SCALARS
-  vec3 t = vec3(havsScalarOf(a.y), havsScalarOf(a.y), min(len * havsInvMaxLength, 1.0));
+  vec3 t = vec3(havsScalarOf(a.y), havsScalarOf(a.y), havsLengthCoordinate(len));
 #else
-  vec3 t = vec3(havsScalarOf(a.y), havsScalarOf(b.y), min(len * havsInvMaxLength, 1.0));
+  vec3 t = vec3(havsScalarOf(a.y), havsScalarOf(b.y), havsLengthCoordinate(len));
 #endif
   vec3 coord = vec3(t.xy * havsScalarTexel.x + havsScalarTexel.y,
     t.z * havsLengthTexel.x + havsLengthTexel.y);
