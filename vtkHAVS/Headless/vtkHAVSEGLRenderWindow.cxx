@@ -284,39 +284,6 @@ void vtkHAVSEGLRenderWindow::Render()
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSEGLRenderWindow::OpenGLInitContext()
-{
-#if defined(VTKHAVS_USES_GLEW)
-  if (!this->Initialized)
-  {
-    this->ContextCreationTime.Modified();
-    glewExperimental = GL_TRUE;
-    const GLenum result = glewInit();
-    // GLEW loads the GL entry points first, then fails in its GLX part when no
-    // GLX display exists: that one error is expected with EGL.
-    if (result != GLEW_OK && result != GLEW_ERROR_NO_GLX_DISPLAY)
-    {
-      vtkErrorMacro("GLEW could not be initialized on the EGL context: "
-        << reinterpret_cast<const char*>(glewGetErrorString(result)));
-      return;
-    }
-    if (!GLEW_VERSION_3_2)
-    {
-      vtkErrorMacro("The EGL context does not provide OpenGL 3.2.");
-      return;
-    }
-    this->GlewInitValid = true;
-    this->Initialized = true;
-    GLfloat lineWidthRange[2] = { 1.0f, 1.0f };
-    glGetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, lineWidthRange);
-    this->MaximumHardwareLineWidth = (glGetError() == GL_NO_ERROR) ? lineWidthRange[1] : 1.0f;
-    return;
-  }
-#endif
-  this->Superclass::OpenGLInitContext();
-}
-
-//------------------------------------------------------------------------------
 void vtkHAVSEGLRenderWindow::MakeCurrent()
 {
   if (this->Internal->Context == EGL_NO_CONTEXT && !this->CreateContext())
@@ -346,42 +313,6 @@ int vtkHAVSEGLRenderWindow::SupportsOpenGL()
 }
 
 //------------------------------------------------------------------------------
-vtkTypeBool vtkHAVSEGLRenderWindow::IsDirect()
-{
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-void vtkHAVSEGLRenderWindow::Frame()
-{
-  // Nothing to present: no surface. Keep VTK's framebuffer bindings in sync.
-  if (this->Initialized && this->IsCurrent())
-  {
-    this->GetState()->ResetFramebufferBindings();
-  }
-}
-
-//------------------------------------------------------------------------------
-int vtkHAVSEGLRenderWindow::GetColorBufferSizes(int* rgba)
-{
-  GLint drawFramebuffer = 0;
-  if (this->Initialized && this->IsCurrent())
-  {
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
-  }
-  if (drawFramebuffer != 0)
-  {
-    return this->Superclass::GetColorBufferSizes(rgba);
-  }
-  if (!rgba)
-  {
-    return 0;
-  }
-  rgba[0] = rgba[1] = rgba[2] = rgba[3] = 8;
-  return 32;
-}
-
-//------------------------------------------------------------------------------
 void vtkHAVSEGLRenderWindow::Finalize()
 {
   if (this->Internal->Context != EGL_NO_CONTEXT)
@@ -400,6 +331,12 @@ void vtkHAVSEGLRenderWindow::Finalize()
 std::string vtkHAVSEGLRenderWindow::GetPlatformName() const
 {
   return this->Internal->Platform;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkHAVSEGLRenderWindow::GetContextName() const
+{
+  return "EGL";
 }
 
 //------------------------------------------------------------------------------

@@ -38,17 +38,17 @@
 #ifndef vtkHAVSEGLRenderWindow_h
 #define vtkHAVSEGLRenderWindow_h
 
-#include "vtkGenericOpenGLRenderWindow.h"
 #include "vtkHAVSHeadlessModule.h" // For export macro
+#include "vtkHAVSSurfacelessRenderWindow.h"
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
 
-class VTKHAVSHEADLESS_EXPORT vtkHAVSEGLRenderWindow : public vtkGenericOpenGLRenderWindow
+class VTKHAVSHEADLESS_EXPORT vtkHAVSEGLRenderWindow : public vtkHAVSSurfacelessRenderWindow
 {
 public:
   static vtkHAVSEGLRenderWindow* New();
-  vtkTypeMacro(vtkHAVSEGLRenderWindow, vtkGenericOpenGLRenderWindow);
+  vtkTypeMacro(vtkHAVSEGLRenderWindow, vtkHAVSSurfacelessRenderWindow);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
@@ -81,15 +81,7 @@ public:
   void MakeCurrent() override;
   bool IsCurrent() override;
   int SupportsOpenGL() override;
-  vtkTypeBool IsDirect() override;
-  void Frame() override;
   ///@}
-
-  /**
-   * With no framebuffer object bound there is no default framebuffer to ask:
-   * VTK's own render framebuffers are RGBA8, reported as such.
-   */
-  int GetColorBufferSizes(int* rgba) override;
 
   /**
    * Releases the graphics resources of every renderer and destroys the context.
@@ -106,7 +98,7 @@ protected:
   vtkHAVSEGLRenderWindow();
   ~vtkHAVSEGLRenderWindow() override;
 
-  void OpenGLInitContext() override;
+  const char* GetContextName() const override;
 
 private:
   vtkHAVSEGLRenderWindow(const vtkHAVSEGLRenderWindow&) = delete;

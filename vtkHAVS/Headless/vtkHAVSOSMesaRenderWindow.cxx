@@ -523,40 +523,6 @@ void vtkHAVSOSMesaRenderWindow::ReleaseContext()
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSOSMesaRenderWindow::OpenGLInitContext()
-{
-#if defined(VTKHAVS_USES_GLEW)
-  if (!this->Initialized)
-  {
-    this->ContextCreationTime.Modified();
-    glewExperimental = GL_TRUE;
-    const GLenum result = glewInit();
-    // GLEW loads the GL entry points first, then fails in its GLX part: no
-    // GLX context is current. That one error is expected here.
-    if (result != GLEW_OK && result != GLEW_ERROR_NO_GLX_DISPLAY)
-    {
-      vtkErrorMacro("GLEW could not be initialized on the OSMesa context: "
-        << reinterpret_cast<const char*>(glewGetErrorString(result)));
-      return;
-    }
-    if (!GLEW_VERSION_3_2)
-    {
-      vtkErrorMacro("The OSMesa context does not provide OpenGL 3.2 to VTK (GL_VERSION '"
-        << String(glGetString(GL_VERSION)) << "').");
-      return;
-    }
-    this->GlewInitValid = true;
-    this->Initialized = true;
-    GLfloat lineWidthRange[2] = { 1.0f, 1.0f };
-    glGetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, lineWidthRange);
-    this->MaximumHardwareLineWidth = (glGetError() == GL_NO_ERROR) ? lineWidthRange[1] : 1.0f;
-    return;
-  }
-#endif
-  this->Superclass::OpenGLInitContext();
-}
-
-//------------------------------------------------------------------------------
 void vtkHAVSOSMesaRenderWindow::MakeCurrent()
 {
   if (!this->Internal->Context && !this->CreateContext())
@@ -606,42 +572,6 @@ int vtkHAVSOSMesaRenderWindow::SupportsOpenGL()
 }
 
 //------------------------------------------------------------------------------
-vtkTypeBool vtkHAVSOSMesaRenderWindow::IsDirect()
-{
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-void vtkHAVSOSMesaRenderWindow::Frame()
-{
-  // Nothing to present. Keep VTK's framebuffer bindings in sync.
-  if (this->Initialized && this->IsCurrent())
-  {
-    this->GetState()->ResetFramebufferBindings();
-  }
-}
-
-//------------------------------------------------------------------------------
-int vtkHAVSOSMesaRenderWindow::GetColorBufferSizes(int* rgba)
-{
-  GLint drawFramebuffer = 0;
-  if (this->Initialized && this->IsCurrent())
-  {
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
-  }
-  if (drawFramebuffer != 0)
-  {
-    return this->Superclass::GetColorBufferSizes(rgba);
-  }
-  if (!rgba)
-  {
-    return 0;
-  }
-  rgba[0] = rgba[1] = rgba[2] = rgba[3] = 8;
-  return 32;
-}
-
-//------------------------------------------------------------------------------
 void vtkHAVSOSMesaRenderWindow::Finalize()
 {
   if (this->Internal->Context)
@@ -660,6 +590,12 @@ void vtkHAVSOSMesaRenderWindow::Finalize()
 std::string vtkHAVSOSMesaRenderWindow::GetDispatchRoute() const
 {
   return this->Internal->Route;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkHAVSOSMesaRenderWindow::GetContextName() const
+{
+  return "OSMesa";
 }
 
 //------------------------------------------------------------------------------

@@ -50,17 +50,17 @@
 #ifndef vtkHAVSOSMesaRenderWindow_h
 #define vtkHAVSOSMesaRenderWindow_h
 
-#include "vtkGenericOpenGLRenderWindow.h"
 #include "vtkHAVSHeadlessModule.h" // For export macro
+#include "vtkHAVSSurfacelessRenderWindow.h"
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
 
-class VTKHAVSHEADLESS_EXPORT vtkHAVSOSMesaRenderWindow : public vtkGenericOpenGLRenderWindow
+class VTKHAVSHEADLESS_EXPORT vtkHAVSOSMesaRenderWindow : public vtkHAVSSurfacelessRenderWindow
 {
 public:
   static vtkHAVSOSMesaRenderWindow* New();
-  vtkTypeMacro(vtkHAVSOSMesaRenderWindow, vtkGenericOpenGLRenderWindow);
+  vtkTypeMacro(vtkHAVSOSMesaRenderWindow, vtkHAVSSurfacelessRenderWindow);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
@@ -94,15 +94,7 @@ public:
   void MakeCurrent() override;
   bool IsCurrent() override;
   int SupportsOpenGL() override;
-  vtkTypeBool IsDirect() override;
-  void Frame() override;
   ///@}
-
-  /**
-   * With no framebuffer object bound: VTK's own render framebuffers are RGBA8,
-   * reported as such.
-   */
-  int GetColorBufferSizes(int* rgba) override;
 
   ///@{
   /**
@@ -135,7 +127,7 @@ protected:
   vtkHAVSOSMesaRenderWindow();
   ~vtkHAVSOSMesaRenderWindow() override;
 
-  void OpenGLInitContext() override;
+  const char* GetContextName() const override;
 
   /**
    * Every colour read of VTK's (GetPixelData, GetRGBACharPixelData, …) comes
