@@ -1239,17 +1239,12 @@ int Resize()
     // of another view there costs 20 s a time).
     const int largest = LargestWindowDimension(s.Window);
     std::vector<std::array<int, 2>> sizes = { { 1, 1 }, { 2, 3 }, { 17, 5 }, { 64, 64 },
-      { 200, 120 }, { 96, 96 }, { largest, 2 } };
-    // An open defect (issue 20): HAVS in a window far taller than wide under
-    // an orthographic camera is not exact (the error grows with height /
-    // width: 5 x 64 exact, 5 x 200 max 0.015, 5 x 1024 max 0.19, 5 x 16384
-    // max 0.23; k, the k-buffer path, the order and the culling ruled out),
-    // while the cell projection is. Until it is found, the column runs for
-    // the cell projection only.
-    if (cells)
-    {
-      sizes.push_back({ 2, largest });
-    }
+      { 200, 120 }, { 96, 96 }, { largest, 2 }, { 2, largest } };
+    // The column found a defect (issue 20): HAVS measured a parallel view's
+    // distances from the camera, here 70 diagonals away, and float rounding
+    // there swapped the entry and the exit of rays grazing a silhouette edge
+    // (a gap filled: 5 x 1024 max 0.19). vtkHAVSViewFrame now measures them
+    // from at most one diagonal in front of the volume.
     for (const auto& wh : sizes)
     {
       // Largest in one dimension: seen orthographically, the sphere spanning

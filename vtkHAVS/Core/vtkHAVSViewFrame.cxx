@@ -10,10 +10,14 @@
 #include "vtkHAVSViewFrame.h"
 
 #include "vtkCamera.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
+
+#include <algorithm>
+#include <cmath>
 
 //------------------------------------------------------------------------------
 vtkHAVSViewFrame vtkHAVSViewFrame::Make(
@@ -26,6 +30,31 @@ vtkHAVSViewFrame vtkHAVSViewFrame::Make(
   camera->GetDirectionOfProjection(f.DirectionWorld);
   camera->GetClippingRange(f.ClippingRange);
   f.Parallel = camera->GetParallelProjection() != 0;
+  if (f.Parallel)
+  {
+    // The eye at most one bounds diagonal in front of the volume's centre,
+    // on the camera's axis (see the class comment): every distance to the
+    // volume then lies below one and a half diagonals. A camera nearer stays.
+    double bounds[6];
+    volume->GetBounds(bounds);
+    if (vtkMath::AreBoundsInitialized(bounds))
+    {
+      double toCentre[3], diagonal2 = 0.0;
+      for (int i = 0; i < 3; ++i)
+      {
+        toCentre[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]) - f.EyeWorld[i];
+        diagonal2 += (bounds[2 * i + 1] - bounds[2 * i]) * (bounds[2 * i + 1] - bounds[2 * i]);
+      }
+      const double diagonal = std::sqrt(diagonal2);
+      const double move = std::max(0.0, vtkMath::Dot(toCentre, f.DirectionWorld) - diagonal);
+      for (int i = 0; i < 3; ++i)
+      {
+        f.EyeWorld[i] += move * f.DirectionWorld[i];
+      }
+      f.ClippingRange[0] -= move;
+      f.ClippingRange[1] -= move;
+    }
+  }
 
   vtkMatrix4x4* gridToWorld = volume->GetMatrix();
   f.FlipFacing = gridToWorld->Determinant() < 0.0;

@@ -22,6 +22,16 @@
  *   position), where the fragment shaders measure distances;
  * - clip: after the camera's composite projection for the viewport's aspect.
  *
+ * The eye of a parallel camera: a parallel view measures distances along the
+ * direction of projection only, and where the camera stands on its axis
+ * changes nothing but those distances' offset. The frame's eye is therefore
+ * moved along the axis to one bounds diagonal in front of the volume's centre
+ * when the camera stands farther (the clipping range moved with it): the
+ * camera's own position may be a hundred diagonals away, and float distances
+ * measured from there lose the digits that order a ray's nearly coincident
+ * fragments (a ray grazing a silhouette edge enters and leaves the mesh
+ * within 1e-5 of a diagonal).
+ *
  * Matrices are row-major (vtkMatrix4x4's element order); ToColumnMajor()
  * gives OpenGL's.
  */
@@ -48,11 +58,11 @@ public:
   double GridToWorld[16];        ///< the volume's matrix
   double GridToClip[16];         ///< grid -> clip
 
-  double EyeWorld[3] = { 0, 0, 0 };
+  double EyeWorld[3] = { 0, 0, 0 };       ///< parallel: on the axis, near the volume (above)
   double DirectionWorld[3] = { 0, 0, 1 }; ///< direction of projection, unit
   double EyeGrid[3] = { 0, 0, 0 };
   double DirectionGrid[3] = { 0, 0, 1 }; ///< not normalized (the matrix may scale)
-  double ClippingRange[2] = { 0, 1 };
+  double ClippingRange[2] = { 0, 1 };    ///< from EyeWorld
   bool Parallel = false;
   bool FlipFacing = false; ///< the volume's matrix mirrors (negative determinant)
 
