@@ -54,6 +54,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -193,6 +194,96 @@ void TestInvisibleCells(bool cellScalars, bool parallel)
 }
 }
 
+/// Saturated pixels: an opaque transfer function ends most rays early; with
+/// the skip on, their later fragments fail the early stencil test.
+void TestSaturatedPixels(bool interlock)
+{
+  const std::string name = std::string("saturated pixels, ") +
+    (interlock ? "interlock path (emulated on llvmpipe)" : "framebuffer-fetch path");
+  if (interlock)
+  {
+    setenv("HAVS_EMULATE_INTERLOCK", "1", 1);
+  }
+  vtkSmartPointer<vtkUnstructuredGrid> grid = vtkHAVSDataSets::MakeGenerated(14);
+  double range[2];
+  grid->GetPointData()->GetScalars()->GetRange(range);
+  auto property = havstest::MakeRampProperty(range[0], range[1], 1.0, 0.02);
+  property->GetScalarOpacity()->AddPoint(range[0], 0.6);
+
+  vtkNew<vtkHAVSVolumeMapper> mapper;
+  mapper->KeepFloatResultOn();
+  mapper->CountOrderViolationsOn(); // and the fragments that run the shader
+  mapper->SetVisibilityOrderToCentroid();
+  mapper->SetKBufferSize(6);
+  if (interlock)
+  {
+    mapper->SetKBufferPathToFragmentShaderInterlock();
+  }
+  auto scene = havstest::MakeScene(grid, mapper, property, kSize, kSize);
+  havstest::PlaceCamera(scene.Renderer, 35.0, 25.0, false);
+  // One reference for both paths (the same scene).
+  static const std::vector<float> exact =
+    Reference(grid, property, scene.Renderer->GetActiveCamera(), false);
+  vtkHAVSFrameStatistics* stats = mapper->GetLastFrameStatistics();
+
+  auto render = [&](bool skip, vtkIdType& saturated, vtkIdType& shaded)
+  {
+    mapper->SetSkipSaturatedPixels(skip);
+    scene.Window->Render();
+    saturated = stats->GetSaturatedPixels();
+    shaded = stats->GetShadedFragments();
+    return havstest::FloatResult(mapper);
+  };
+  vtkIdType saturatedOn = 0, shadedOn = 0, saturatedOff = 0, shadedOff = 0;
+  const std::vector<float> on = render(true, saturatedOn, shadedOn);
+  const std::vector<float> off = render(false, saturatedOff, shadedOff);
+  const auto dOn = havstest::Compare(on, exact, 5);
+  const auto dOff = havstest::Compare(off, exact, 5);
+  const auto same = havstest::Compare(on, off);
+  size_t covered = 0;
+  for (size_t i = 3; i < exact.size(); i += 4)
+  {
+    covered += exact[i] > 1e-3 ? 1 : 0;
+  }
+  std::printf("%s (path %s): %lld of %zu covered pixels marked saturated; fragments shaded "
+              "%lld with the skip, %lld without (%.2f); RMSE %.6f max %.5f (without: %.6f "
+              "%.5f); against each other max %.2g\n",
+    name.c_str(), vtkHAVSVolumeMapper::GetKBufferPathName(stats->GetKBufferPath()),
+    static_cast<long long>(saturatedOn), covered, static_cast<long long>(shadedOn),
+    static_cast<long long>(shadedOff), shadedOff > 0 ? double(shadedOn) / shadedOff : 0.0, dOn.RMSE,
+    dOn.Max, dOff.RMSE, dOff.Max, same.Max);
+  havstest::Check(stats->GetKBufferPath() ==
+      (interlock ? vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock
+                 : vtkHAVSVolumeMapper::KBufferPathFramebufferFetch),
+    name + ": the path asked for");
+  havstest::Check(saturatedOn > static_cast<vtkIdType>(covered / 2),
+    name + ": most covered pixels saturate (the scene has something to skip)");
+  havstest::Check(saturatedOff == -1, name + ": without the skip nothing is marked");
+  havstest::Check(shadedOff > 0 && shadedOn > 0 && shadedOn < 0.8 * shadedOff,
+    name + ": saturated pixels' fragments are rejected before the shader");
+  havstest::Check(Exact(dOn) && Exact(dOff), name + ": exact with and without the skip");
+  havstest::Check(same.Max < 1e-6, name + ": the same image with and without the skip");
+
+  // Control: a transparent transfer function saturates nothing, and the
+  // skip then shades every fragment.
+  auto faint = havstest::MakeRampProperty(range[0], range[1], 0.05, 1.0);
+  scene.Volume->SetProperty(faint);
+  vtkIdType saturatedFaint = 0, shadedFaintOn = 0, shadedFaintOff = 0;
+  render(true, saturatedFaint, shadedFaintOn);
+  render(false, saturatedFaint, shadedFaintOff);
+  render(true, saturatedFaint, shadedFaintOn);
+  std::printf("  control (transparent): %lld pixels marked; fragments shaded %lld with the skip, "
+              "%lld without\n",
+    static_cast<long long>(saturatedFaint), static_cast<long long>(shadedFaintOn),
+    static_cast<long long>(shadedFaintOff));
+  havstest::Check(saturatedFaint == 0 && shadedFaintOn == shadedFaintOff,
+    name + ": control: nothing saturated, nothing rejected");
+  if (interlock)
+  {
+    unsetenv("HAVS_EMULATE_INTERLOCK");
+  }
+}
+
 /// Off-screen cells: a zoom on a corner, then a clipping plane; each exact
 /// and the same image as with every cell drawn.
 void TestOffscreenCells()
@@ -256,6 +347,8 @@ void TestOffscreenCells()
 
 int TestHAVSSkips(int, char*[])
 {
+  TestSaturatedPixels(false);
+  TestSaturatedPixels(true);
   TestOffscreenCells();
   TestInvisibleCells(false, false);
   TestInvisibleCells(false, true);

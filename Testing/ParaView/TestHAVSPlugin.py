@@ -191,17 +191,19 @@ if args.mode == "serial":
 
     # Skipping hidden cells (transparent, off-screen, clipped away): on by default.
     check(display.HAVSSkipHiddenCells == 1 and mapper.GetSkipInvisibleCells()
-          and mapper.GetSkipOffscreenCells(), "default: hidden cells skipped")
+          and mapper.GetSkipOffscreenCells() and mapper.GetSkipSaturatedPixels(),
+          "default: hidden cells and saturated pixels skipped")
     display.HAVSSkipHiddenCells = 0
     Render(view)
     stats = mapper.GetLastFrameStatistics()
     check(not mapper.GetSkipInvisibleCells() and not mapper.GetSkipOffscreenCells()
+          and not mapper.GetSkipSaturatedPixels()
           and stats.GetInvisibleCells() == 0 and stats.GetCulledCells() == 0,
           "skip hidden cells off: nothing skipped")
     display.HAVSSkipHiddenCells = 1
     Render(view)
-    check(mapper.GetSkipInvisibleCells() and mapper.GetSkipOffscreenCells(),
-          "skip hidden cells on again")
+    check(mapper.GetSkipInvisibleCells() and mapper.GetSkipOffscreenCells()
+          and mapper.GetSkipSaturatedPixels(), "skip hidden cells on again")
 
     # HAVS's level of detail while interacting: a subset of the internal faces that fits
     # the interactive frame time, every face when still.

@@ -37,6 +37,8 @@ void vtkHAVSFrameStatistics::Reset()
   this->OrderViolations = -1;
   this->ViolationPixels.clear();
   this->Fragments = 0;
+  this->SaturatedPixels = -1;
+  this->ShadedFragments = -1;
   this->FacesDrawn = 0;
   this->MeshUpdate = 0;
   this->MeshSeconds = 0.0;
@@ -100,7 +102,8 @@ void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tagging: " << this->Tagging << ", planes " << this->PlaneCount
      << ", section triangles " << this->SectionTriangles << " (" << this->SectionSeconds << " s)\n";
   os << indent << "OrderViolations: " << this->OrderViolations << ", fragments " << this->Fragments
-     << ", faces drawn " << this->FacesDrawn << "\n";
+     << ", faces drawn " << this->FacesDrawn << ", saturated pixels " << this->SaturatedPixels
+     << ", shaded fragments " << this->ShadedFragments << "\n";
   os << indent << "OpaqueGeometry: " << this->OpaqueGeometry << " (depth multisampled "
      << this->OpaqueDepthMultisampled << ", captured " << this->OpaqueDepthCaptured << ")\n";
   os << indent << "Seconds: sort " << this->SortSeconds << " (gather " << this->GatherSeconds

@@ -123,6 +123,17 @@ public:
   /// Fragment-list path: fragments stored.
   vtkSetMacro(Fragments, vtkIdType);
   vtkGetMacro(Fragments, vtkIdType);
+  /// Pixels whose ray had ended at the last saturation mark of the draw, their
+  /// later fragments rejected before the shader (vtkHAVSVolumeMapper::
+  /// SkipSaturatedPixels); -1 when not read (read when the frame is measured,
+  /// its result kept or its violations counted: reading waits for the GPU).
+  vtkSetMacro(SaturatedPixels, vtkIdType);
+  vtkGetMacro(SaturatedPixels, vtkIdType);
+  /// Fragments that ran the k-buffer draw shader (framebuffer-fetch and
+  /// interlock paths), counted by the shader with the order violations
+  /// (vtkHAVSVolumeMapper::CountOrderViolations); -1 when not counted.
+  vtkSetMacro(ShadedFragments, vtkIdType);
+  vtkGetMacro(ShadedFragments, vtkIdType);
   /// Faces drawn (internal and boundary).
   vtkSetMacro(FacesDrawn, vtkIdType);
   vtkGetMacro(FacesDrawn, vtkIdType);
@@ -255,6 +266,8 @@ private:
   vtkIdType OrderViolations = -1;
   std::vector<int> ViolationPixels;
   vtkIdType Fragments = 0;
+  vtkIdType SaturatedPixels = -1;
+  vtkIdType ShadedFragments = -1;
   vtkIdType FacesDrawn = 0;
   double LevelOfDetailFraction = 1.0;
   bool LongSegmentTable = false;

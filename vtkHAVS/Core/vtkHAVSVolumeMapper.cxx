@@ -405,6 +405,7 @@ vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
   r.Opaque = opaque;
   r.MeasureStages = this->MeasureStageTimes;
   r.KeepResult = this->KeepFloatResult;
+  r.SkipSaturated = this->SkipSaturatedPixels && this->BlendMode == COMPOSITE_BLEND;
   return r;
 }
 
@@ -623,6 +624,8 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   stats->SetOrderViolations(request.CountViolations ? result.Violations : -1);
   stats->SetOrderViolationPixels(result.ViolationPixels);
   stats->SetFragments(result.Fragments);
+  stats->SetSaturatedPixels(result.SaturatedPixels);
+  stats->SetShadedFragments(result.ShadedFragments);
   stats->SetFacesDrawn(static_cast<vtkIdType>(this->FaceOrder->GetDrawTriangles().size() / 3));
   stats->SetOpaqueGeometry(request.Opaque);
   stats->SetOpaqueDepthMultisampled(result.OpaqueDepthMultisampled);
@@ -772,6 +775,7 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutomaticTableResolution: " << this->AutomaticTableResolution << " (error bound "
      << this->TableChooser->GetErrorBound() << ")\n";
   os << indent << "SkipOffscreenCells: " << this->SkipOffscreenCells << "\n";
+  os << indent << "SkipSaturatedPixels: " << this->SkipSaturatedPixels << "\n";
   os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << " (opacity "
      << this->Visibility->GetOpacityThreshold() << ")\n";
   os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";

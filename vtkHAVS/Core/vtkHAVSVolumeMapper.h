@@ -218,6 +218,23 @@ public:
   vtkGetMacro(SkipOffscreenCells, bool);
   vtkBooleanMacro(SkipOffscreenCells, bool);
   /**
+   * Reject the fragments of saturated pixels before the k-buffer shader runs
+   * (default on; issue 17): the face draw is cut into batches, and after
+   * each a full-viewport pass marks in a stencil buffer the pixels whose ray
+   * has ended (opacity at EarlyRayTerminationOpacity, or an opaque surface
+   * reached); the next batches' fragments there fail the early stencil test.
+   * The shader would discard exactly those fragments itself, so the image is
+   * the same; the saving is the shader's loads (framebuffer fetch) or its
+   * critical section (interlock). Framebuffer-fetch and interlock paths,
+   * composite blend; the fragment lists store every fragment regardless.
+   * The frame statistics give the pixels marked and, with
+   * CountOrderViolations, the fragments that ran the shader
+   * (GetSaturatedPixels, GetShadedFragments).
+   */
+  vtkSetMacro(SkipSaturatedPixels, bool);
+  vtkGetMacro(SkipSaturatedPixels, bool);
+  vtkBooleanMacro(SkipSaturatedPixels, bool);
+  /**
    * Nearly invisible cells: also skip a cell when the table's opacity for
    * the longest segment over its scalar range is at most this (default 0:
    * only fully transparent cells, exact). Above 0 trades exactness for speed.
@@ -542,7 +559,8 @@ public:
     bool RasterBoundOnly = false;
     bool MeasureStages = false;
     bool KeepResult = false;
-    bool Finish = false; ///< wait for the draw to finish (the frame time is measured)
+    bool Finish = false;        ///< wait for the draw to finish (the frame time is measured)
+    bool SkipSaturated = false; ///< reject saturated pixels' fragments early (SkipSaturatedPixels)
   };
 
   /// What the graphics layer reports of a drawn frame.
@@ -551,6 +569,8 @@ public:
     vtkIdType Violations = 0;
     std::vector<int> ViolationPixels;
     vtkIdType Fragments = 0;
+    vtkIdType SaturatedPixels = -1; ///< marked by the last saturation pass (-1: not read)
+    vtkIdType ShadedFragments = -1; ///< fragment-shader invocations of the face draw (-1: not read)
     bool OpaqueDepthMultisampled = false; ///< the opaque depth came from a multisampled framebuffer
     bool OpaqueDepthCaptured = false;     ///< the opaque depth was read (resolved if multisampled)
     double UploadSeconds = 0.0;
@@ -596,6 +616,7 @@ protected:
   bool AutomaticTableResolution = true;
   bool SkipInvisibleCells = true;
   bool SkipOffscreenCells = true;
+  bool SkipSaturatedPixels = true;
   bool LevelOfDetail = true;
   double LevelOfDetailFraction = 1.0;
   int LevelOfDetailStrategy = 3; // vtkHAVSInternalFaceRanking::Area

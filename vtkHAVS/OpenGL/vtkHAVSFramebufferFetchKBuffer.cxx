@@ -75,7 +75,7 @@ bool vtkHAVSFramebufferFetchKBuffer::Allocate(vtkHAVSGLPassContext& context)
 }
 
 //------------------------------------------------------------------------------
-bool vtkHAVSFramebufferFetchKBuffer::Clear(vtkHAVSGLPassContext&)
+bool vtkHAVSFramebufferFetchKBuffer::Clear(vtkHAVSGLPassContext& context)
 {
   const int attachments = static_cast<int>(this->Targets.size());
   this->Framebuffer->Bind();
@@ -88,6 +88,10 @@ bool vtkHAVSFramebufferFetchKBuffer::Clear(vtkHAVSGLPassContext&)
   {
     glClearBufferfv(GL_COLOR, a, a == 1 ? firstPair : emptyPair);
   }
+  if (context.Request.SkipSaturated)
+  {
+    this->Saturation.Attach(context);
+  }
   return true;
 }
 
@@ -98,7 +102,7 @@ bool vtkHAVSFramebufferFetchKBuffer::Draw(vtkHAVSGLPassContext& context)
     vtkHAVSKBufferShaders::FetchDrawShader(context.Request.K, context.ShaderFeatures()));
   if (program)
   {
-    context.DrawFaces(program);
+    this->DrawFaces(context, program, false);
   }
   return program != nullptr;
 }
@@ -138,6 +142,7 @@ void vtkHAVSFramebufferFetchKBuffer::ReleaseGraphicsResources(vtkWindow* window)
     t->ReleaseGraphicsResources(window);
   }
   this->Targets.clear();
+  this->Saturation.ReleaseGraphicsResources();
   if (this->Framebuffer)
   {
     this->Framebuffer->ReleaseGraphicsResources(window);

@@ -205,7 +205,7 @@ void vtkHAVSGLFrameTargets::ResetViolationCounter()
   const GLuint zero = 0;
   if (!this->ViolationCounter)
   {
-    const GLuint zeros[1 + LoggedViolations] = {};
+    const GLuint zeros[2 + LoggedViolations] = {};
     glGenBuffers(1, &this->ViolationCounter);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
     glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(zeros), zeros, GL_DYNAMIC_READ);
@@ -214,14 +214,17 @@ void vtkHAVSGLFrameTargets::ResetViolationCounter()
   {
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
     glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &zero);
+    glBufferSubData(
+      GL_SHADER_STORAGE_BUFFER, (1 + LoggedViolations) * sizeof(GLuint), sizeof(GLuint), &zero);
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, this->ViolationCounter);
 }
 
 //------------------------------------------------------------------------------
-std::uint64_t vtkHAVSGLFrameTargets::ReadViolationCounter(std::vector<int>& pixels)
+std::uint64_t vtkHAVSGLFrameTargets::ReadViolationCounter(
+  std::vector<int>& pixels, std::uint64_t* shaded)
 {
-  GLuint data[1 + LoggedViolations] = {};
+  GLuint data[2 + LoggedViolations] = {};
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(data), data);
@@ -230,6 +233,10 @@ std::uint64_t vtkHAVSGLFrameTargets::ReadViolationCounter(std::vector<int>& pixe
   {
     pixels.push_back(static_cast<int>(data[1 + i] & 0xFFFFu));
     pixels.push_back(static_cast<int>(data[1 + i] >> 16));
+  }
+  if (shaded)
+  {
+    *shaded = data[1 + LoggedViolations];
   }
   return data[0];
 }

@@ -80,7 +80,7 @@ public:
   /// Zeroes the order-violation counter and binds it (binding 3).
   void ResetViolationCounter();
   /// The count, and the first pixels (x, y) into `pixels`.
-  std::uint64_t ReadViolationCounter(std::vector<int>& pixels);
+  std::uint64_t ReadViolationCounter(std::vector<int>& pixels, std::uint64_t* shaded = nullptr);
 
   /// Composites the result over VTK's framebuffer (viewport set by the caller).
   bool Composite(int originX, int originY);

@@ -222,7 +222,8 @@ void vtkHAVSGLMesh::ReadBack(
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing)
+void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int batches,
+  const std::function<void(int)>& betweenBatches)
 {
   const bool roles = program->IsUniformUsed("havsRole");
   const bool ownPlane = program->IsUniformUsed("havsOwnPlane");
@@ -255,10 +256,22 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing)
     }
   };
   drawSections(true);
-  glFrontFace(flipFacing ? GL_CW : GL_CCW);
-  glBindVertexArray(this->VertexArray);
-  glDrawElements(GL_TRIANGLES, this->IndexCount, GL_UNSIGNED_INT, nullptr);
-  glFrontFace(GL_CCW);
+  const GLsizei faces = this->IndexCount / 3;
+  batches = betweenBatches ? std::max(1, std::min(batches, static_cast<int>(faces))) : 1;
+  for (int b = 0; b < batches; ++b)
+  {
+    const GLsizei first = static_cast<GLsizei>(static_cast<long long>(faces) * b / batches);
+    const GLsizei last = static_cast<GLsizei>(static_cast<long long>(faces) * (b + 1) / batches);
+    glFrontFace(flipFacing ? GL_CW : GL_CCW);
+    glBindVertexArray(this->VertexArray);
+    glDrawElements(GL_TRIANGLES, 3 * (last - first), GL_UNSIGNED_INT,
+      reinterpret_cast<const void*>(3 * sizeof(GLuint) * static_cast<size_t>(first)));
+    glFrontFace(GL_CCW);
+    if (b + 1 < batches)
+    {
+      betweenBatches(b);
+    }
+  }
   drawSections(false);
   glBindVertexArray(0);
 }

@@ -27,8 +27,9 @@
 #include "vtkSmartPointer.h"  // For vtkSmartPointer
 #include "vtkTextureObject.h" // For vtkSmartPointer<vtkTextureObject>
 
-#include <cstdint> // For uint32_t
-#include <vector>  // For std::vector
+#include <cstdint>    // For uint32_t
+#include <functional> // For std::function
+#include <vector>     // For std::vector
 
 class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
@@ -87,9 +88,12 @@ public:
    * Draws, with `program` bound: the entering sections, the faces (front
    * faces counter-clockwise, or clockwise for a mirroring volume matrix), the
    * leaving sections. Sets havsRole and havsOwnPlane for the sections where
-   * the program uses them.
+   * the program uses them. The faces go in `batches` draw calls of about
+   * equal size; `betweenBatches(b)` runs after batch b (all but the last),
+   * and must leave `program` bound again.
    */
-  void DrawFaces(vtkShaderProgram* program, bool flipFacing);
+  void DrawFaces(vtkShaderProgram* program, bool flipFacing, int batches = 1,
+    const std::function<void(int)>& betweenBatches = nullptr);
 
   void ReleaseGraphicsResources(vtkWindow* window);
 

@@ -70,6 +70,10 @@ bool vtkHAVSInterlockKBuffer::Clear(vtkHAVSGLPassContext& context)
     context.DrawFullViewport();
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
+  if (context.Request.SkipSaturated)
+  {
+    this->Saturation.Attach(context); // on the result's framebuffer, which rasterizes the faces
+  }
   return clear != nullptr;
 }
 
@@ -80,7 +84,7 @@ bool vtkHAVSInterlockKBuffer::Draw(vtkHAVSGLPassContext& context)
     context.Request.K, vtkHAVSGLCapabilities::AvailableInterlock(), context.ShaderFeatures()));
   if (program)
   {
-    context.DrawFaces(program);
+    this->DrawFaces(context, program, true);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   context.Window->GetState()->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -104,6 +108,7 @@ bool vtkHAVSInterlockKBuffer::Resolve(vtkHAVSGLPassContext& context)
 //------------------------------------------------------------------------------
 void vtkHAVSInterlockKBuffer::ReleaseGraphicsResources(vtkWindow*)
 {
+  this->Saturation.ReleaseGraphicsResources();
   if (this->PixelEntries)
   {
     glDeleteBuffers(1, &this->PixelEntries);

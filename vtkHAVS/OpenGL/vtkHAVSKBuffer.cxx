@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSKBuffer.h"
 
+#include "vtkHAVSGLPassContext.h"
+#include "vtkHAVSKBufferShaders.h"
 #include "vtkHAVSVolumeMapper.h"
 
 //------------------------------------------------------------------------------
@@ -17,4 +19,17 @@ void vtkHAVSKBuffer::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Path: " << vtkHAVSVolumeMapper::GetKBufferPathName(this->GetPath())
      << " (k <= " << this->GetMaximumK() << ")\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSKBuffer::DrawFaces(
+  vtkHAVSGLPassContext& context, vtkShaderProgram* program, bool storageBuffer)
+{
+  const vtkHAVSVolumeMapper::FrameRequest& r = context.Request;
+  const std::string mark = r.SkipSaturated
+    ? vtkHAVSKBufferShaders::SaturationMarkShader(this->GetPath(), r.K)
+    : std::string();
+  // Measured only where the frame waits for the GPU anyway.
+  const bool measure = r.MeasureStages || r.KeepResult || r.CountViolations;
+  this->Saturation.DrawFaces(context, program, mark, storageBuffer, measure);
 }

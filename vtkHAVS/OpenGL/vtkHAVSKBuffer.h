@@ -32,9 +32,11 @@
 #ifndef vtkHAVSKBuffer_h
 #define vtkHAVSKBuffer_h
 
+#include "vtkHAVSGLSaturationMask.h" // For vtkHAVSGLSaturationMask
 #include "vtkObject.h"
 
 class vtkHAVSGLPassContext;
+class vtkShaderProgram;
 class vtkWindow;
 
 class vtkHAVSKBuffer : public vtkObject
@@ -59,12 +61,25 @@ public:
 
   /// Fragments stored in the last frame (fragment lists; 0 elsewhere).
   vtkIdType GetLastFragmentCount() const { return this->LastFragmentCount; }
+  /// The pixels the last frame's last saturation mark found
+  /// (vtkHAVSGLSaturationMask; -1 when not measured).
+  vtkIdType GetLastSaturatedPixels() const { return this->Saturation.GetLastSaturatedPixels(); }
 
 protected:
   vtkHAVSKBuffer() = default;
   ~vtkHAVSKBuffer() override = default;
 
+  /**
+   * The faces through `program`, skipping saturated pixels when the frame
+   * asks for it (markShader: the path's vtkHAVSKBufferShaders::
+   * SaturationMarkShader) and measuring what vtkHAVSGLSaturationMask measures
+   * when the frame waits for the GPU anyway. Call Saturation.Attach() with
+   * the draw framebuffer bound before.
+   */
+  void DrawFaces(vtkHAVSGLPassContext& context, vtkShaderProgram* program, bool storageBuffer);
+
   vtkIdType LastFragmentCount = 0;
+  vtkHAVSGLSaturationMask Saturation;
 
 private:
   vtkHAVSKBuffer(const vtkHAVSKBuffer&) = delete;

@@ -24,6 +24,7 @@
 #include "vtkHAVSListDrawFS.h"
 #include "vtkHAVSQuadVS.h"
 #include "vtkHAVSResolveFS.h"
+#include "vtkHAVSSaturationMarkFS.h"
 #include "vtkHAVSTrivialFS.h"
 
 #include <sstream>
@@ -117,6 +118,37 @@ std::string vtkHAVSKBufferShaders::InterlockDrawShader(
   Replace(source, "//HAVS::InterlockLayout", layout[kind]);
   Replace(source, "//HAVS::InterlockBegin", begin[kind]);
   Replace(source, "//HAVS::InterlockEnd", end[kind]);
+  return source;
+}
+
+std::string vtkHAVSKBufferShaders::SaturationMarkShader(int path, int k)
+{
+  std::string extension, declarations, load;
+  int stride = 1;
+  if (path == vtkHAVSVolumeMapper::KBufferPathFramebufferFetch)
+  {
+    extension = "#extension GL_EXT_shader_framebuffer_fetch : require";
+    declarations = "layout(location = 0) inout vec4 havsColor;\n"
+                   "layout(location = 1) inout vec4 havsEntries0;";
+    load = "color = havsColor;\n  front = havsEntries0.xy;";
+  }
+  else if (path == vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock)
+  {
+    stride = InterlockPixelStride(k);
+    declarations = "layout(std430, binding = 0) buffer HAVSPixelEntries\n{\n"
+                   "  vec4 havsPixelData[];\n};";
+    load = "int base = (int(gl_FragCoord.y) * int(havsViewportSize.x) + int(gl_FragCoord.x)) *\n"
+           "    HAVS_PIXEL_STRIDE;\n"
+           "  color = havsPixelData[base];\n  front = havsPixelData[base + 1].xy;";
+  }
+  else
+  {
+    return std::string();
+  }
+  std::string source = Compose(vtkHAVSSaturationMarkFS, k, stride);
+  Replace(source, "//HAVS::MarkExtension", extension);
+  Replace(source, "//HAVS::MarkDeclarations", declarations);
+  Replace(source, "//HAVS::MarkLoad", load);
   return source;
 }
 

@@ -72,6 +72,9 @@ public:
   /// Interlock draw pass.
   static std::string InterlockDrawShader(
     int k, InterlockKind kind, const Features& features = Features());
+  /// Saturation mark between batches of the face draw (vtkHAVSGLSaturationMask)
+  /// on the framebuffer-fetch and interlock paths; empty for other paths.
+  static std::string SaturationMarkShader(int path, int k);
   /// Interlock clear pass (per-pixel storage to empty).
   static std::string InterlockClearShader(int k);
   /// Fragment-list draw pass (append to per-pixel lists).

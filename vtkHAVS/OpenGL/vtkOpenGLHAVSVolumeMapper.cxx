@@ -272,6 +272,7 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
     this->Targets->ResetViolationCounter();
     ok = kbuffer->Allocate(context) && kbuffer->Clear(context) && kbuffer->Draw(context);
     result.Fragments = kbuffer->GetLastFragmentCount();
+    result.SaturatedPixels = kbuffer->GetLastSaturatedPixels();
   }
   const double t1 = now();
   if (ok && !request.RasterBoundOnly)
@@ -284,8 +285,13 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   const double tr = now();
   if (ok && !request.RasterBoundOnly && !extremum && request.CountViolations)
   {
+    std::uint64_t shaded = 0;
     result.Violations =
-      static_cast<vtkIdType>(this->Targets->ReadViolationCounter(result.ViolationPixels));
+      static_cast<vtkIdType>(this->Targets->ReadViolationCounter(result.ViolationPixels, &shaded));
+    if (kbuffer->GetPath() != KBufferPathFragmentLists)
+    {
+      result.ShadedFragments = static_cast<vtkIdType>(shaded);
+    }
   }
   if (ok && request.KeepResult)
   {

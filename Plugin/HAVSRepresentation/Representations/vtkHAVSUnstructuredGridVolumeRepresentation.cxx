@@ -110,6 +110,7 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSSkipHiddenCells(int ski
 {
   this->HAVSMapper->SetSkipInvisibleCells(skip != 0);
   this->HAVSMapper->SetSkipOffscreenCells(skip != 0);
+  this->HAVSMapper->SetSkipSaturatedPixels(skip != 0);
   this->Modified();
 }
 

@@ -14,10 +14,14 @@ in vec3 havsPositionRC;
 HAVS_FACE_SCALAR_INPUT
 
 //HAVS::FetchDeclarations
+// Saturated pixels are rejected before the shader (vtkHAVSGLSaturationMask:
+// stencil test between batches); no depth or stencil is written here.
+layout(early_fragment_tests) in;
 
 void main()
 {
   float tolerance = havsTieTolerance(havsPositionRC);
+  havsCountShaded();
   vec4 color = havsColor;
   vec2 E[HAVS_K];
   //HAVS::FetchLoad

@@ -9,6 +9,9 @@
 //HAVS::KBufferLib
 
 //HAVS::InterlockLayout
+// Saturated pixels are rejected before the shader (vtkHAVSGLSaturationMask:
+// stencil test between batches); no depth or stencil is written here.
+layout(early_fragment_tests) in;
 
 in vec3 havsPositionRC;
 HAVS_FACE_SCALAR_INPUT
@@ -22,6 +25,7 @@ layout(std430, binding = 0) buffer HAVSPixelEntries
 void main()
 {
   float tolerance = havsTieTolerance(havsPositionRC);
+  havsCountShaded();
   if (havsClipped(havsPositionRC))
   {
     discard;

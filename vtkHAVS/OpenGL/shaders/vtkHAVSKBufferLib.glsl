@@ -105,6 +105,7 @@ layout(std430, binding = 3) buffer HAVSOrderViolations
 {
   uint havsOrderViolations;
   uint havsViolationPixels[16]; // the first pixels with one: x | y << 16
+  uint havsShadedFragments;     // fragments that ran the draw shader (havsCountShaded)
 };
 
 void havsCountViolation()
@@ -114,6 +115,15 @@ void havsCountViolation()
   {
     havsViolationPixels[i] = uint(gl_FragCoord.x) | (uint(gl_FragCoord.y) << 16);
   }
+}
+
+// Counted with the violations: a fragment that runs the draw shader (one
+// rejected by the early stencil test of vtkHAVSGLSaturationMask does not).
+void havsCountShaded()
+{
+#if HAVS_COUNT_VIOLATIONS
+  atomicAdd(havsShadedFragments, 1u);
+#endif
 }
 
 const float HAVS_TIE = 1.0e-4;
