@@ -462,6 +462,8 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   if (wasValid && this->HashedSource && cellData == hadCellScalars &&
     !(cellData && this->Tessellation.Tessellated) &&
     selection.VectorMode == previousSelection.VectorMode &&
+    selection.HigherOrderSubdivision == previousSelection.HigherOrderSubdivision &&
+    this->Tessellation.AddedPoints == 0 &&
     this->Grid->GetNumberOfPoints() == data->GetNumberOfPoints() &&
     GeometryHashOf(data) == this->GeometryHash)
   {
@@ -494,7 +496,8 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
 
   // The cells as tetrahedra.
   report(0.0);
-  this->Grid = vtkHAVSTetrahedralizer::Tetrahedralize(data, &this->Tessellation);
+  this->Grid = vtkHAVSTetrahedralizer::Tetrahedralize(
+    data, &this->Tessellation, selection.HigherOrderSubdivision);
   if (!this->Grid || this->Grid->GetNumberOfCells() == 0)
   {
     std::ostringstream why;
