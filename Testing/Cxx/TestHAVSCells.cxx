@@ -49,8 +49,10 @@
 //              the blunt fin's costs of both are printed;
 //   subdivision quadratic cells refined (SetHigherOrderSubdivision): a
 //              cylindrical shell sector in curved quadratic hexahedra (every
-//              other cell's node order turned a quarter) and in curved
-//              quadratic tetrahedra, mid-edge nodes on the arcs. The
+//              other cell's node order turned a quarter), in curved
+//              quadratic tetrahedra, mid-edge nodes on the arcs, and (levels
+//              1 and 2) in triquadratic and Lagrange hexahedra, quadratic
+//              wedges and a mix of hexahedra and wedges. The
 //              tessellation's volume converges to the cells' own volume
 //              (Gauss quadrature of the Jacobian), the error falling at every
 //              level; a linear field (curved cells) and a quadratic one
@@ -85,7 +87,9 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericCell.h"
+#include "vtkHigherOrderHexahedron.h"
 #include "vtkImageData.h"
+#include "vtkLagrangeHexahedron.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkMultiBlockPLOT3DReader.h"
 #include "vtkNew.h"
@@ -95,11 +99,13 @@
 #include "vtkPoints.h"
 #include "vtkQuadraticHexahedron.h"
 #include "vtkQuadraticTetra.h"
+#include "vtkQuadraticWedge.h"
 #include "vtkRectilinearGrid.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkStructuredGrid.h"
 #include "vtkTetra.h"
+#include "vtkTriQuadraticHexahedron.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -1115,25 +1121,70 @@ vtkSmartPointer<vtkPoints> ShellPoints(const int m[3])
 /// cell's node order turned a quarter about its third axis, so neighbours
 /// see a shared face in different local frames) or in six quadratic
 /// tetrahedra per box (Kuhn's split of the parameter box: conforming).
-vtkSmartPointer<vtkUnstructuredGrid> CurvedShell(const int m[3], bool tetrahedra)
+enum ShellCells
 {
+  ShellHexahedra20,
+  ShellTetrahedra10,
+  ShellHexahedra27,
+  ShellWedges15,
+  ShellLagrangeHexahedra,
+  ShellMixed ///< 20-node hexahedra at i = 0, quadratic wedges elsewhere
+};
+
+vtkSmartPointer<vtkUnstructuredGrid> CurvedShell(const int m[3], int kind)
+{
+  const bool tetrahedra = kind == ShellTetrahedra10;
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   grid->SetPoints(ShellPoints(m));
   auto id = [&](int a, int b, int c)
   { return static_cast<vtkIdType>(a + (2 * m[0] + 1) * (b + (2 * m[1] + 1) * c)); };
   vtkNew<vtkQuadraticHexahedron> hex;
-  const double* pc = hex->GetParametricCoords();
+  vtkNew<vtkTriQuadraticHexahedron> hex27;
+  vtkNew<vtkLagrangeHexahedron> lagrange;
+  lagrange->GetPointIds()->SetNumberOfIds(27);
+  lagrange->GetPoints()->SetNumberOfPoints(27);
+  lagrange->SetUniformOrderFromNumPoints(27);
+  lagrange->Initialize();
+  vtkNew<vtkQuadraticWedge> wedge;
+  const bool twenty = kind == ShellHexahedra20 || kind == ShellMixed;
+  const int nodes = twenty ? 20 : 27;
+  const int type = twenty      ? VTK_QUADRATIC_HEXAHEDRON
+    : kind == ShellHexahedra27 ? VTK_TRIQUADRATIC_HEXAHEDRON
+                               : VTK_LAGRANGE_HEXAHEDRON;
+  const double* pc = twenty    ? hex->GetParametricCoords()
+    : kind == ShellHexahedra27 ? hex27->GetParametricCoords()
+                               : lagrange->GetParametricCoords();
   for (int k = 0; k < m[2]; ++k)
   {
     for (int j = 0; j < m[1]; ++j)
     {
       for (int i = 0; i < m[0]; ++i)
       {
+        if (kind == ShellWedges15 || (kind == ShellMixed && i > 0))
+        {
+          // The box's two prisms: triangles (0,0) (2,0) (0,2) and (2,0) (2,2) (0,2).
+          const double* wp = wedge->GetParametricCoords();
+          for (int half = 0; half < 2; ++half)
+          {
+            vtkIdType ids[15];
+            for (int v = 0; v < 15; ++v)
+            {
+              const double r = wp[3 * v], q = wp[3 * v + 1], t = wp[3 * v + 2];
+              const double a = half ? 2.0 - 2.0 * q : 2.0 * r;
+              const double b = half ? 2.0 * r + 2.0 * q : 2.0 * q;
+              ids[v] = id(2 * i + static_cast<int>(std::lround(a)),
+                2 * j + static_cast<int>(std::lround(b)),
+                2 * k + static_cast<int>(std::lround(2 * t)));
+            }
+            grid->InsertNextCell(VTK_QUADRATIC_WEDGE, 15, ids);
+          }
+          continue;
+        }
         if (!tetrahedra)
         {
-          vtkIdType ids[20];
-          const bool turned = (i + j + k) % 2 == 1;
-          for (int v = 0; v < 20; ++v)
+          vtkIdType ids[27];
+          const bool turned = (i + j + k) % 2 == 1 && kind != ShellMixed;
+          for (int v = 0; v < nodes; ++v)
           {
             int o[3] = { static_cast<int>(std::lround(2 * pc[3 * v])),
               static_cast<int>(std::lround(2 * pc[3 * v + 1])),
@@ -1146,7 +1197,7 @@ vtkSmartPointer<vtkUnstructuredGrid> CurvedShell(const int m[3], bool tetrahedra
             }
             ids[v] = id(2 * i + o[0], 2 * j + o[1], 2 * k + o[2]);
           }
-          grid->InsertNextCell(VTK_QUADRATIC_HEXAHEDRON, 20, ids);
+          grid->InsertNextCell(type, nodes, ids);
           continue;
         }
         int axes[3] = { 0, 1, 2 };
@@ -1188,7 +1239,7 @@ vtkSmartPointer<vtkUnstructuredGrid> CurvedShell(const int m[3], bool tetrahedra
 
 /// The volume of a non-linear cell: its Jacobian's determinant by Gauss
 /// quadrature (6 points per axis; a tetrahedron through the collapsed cube).
-double CellVolume(vtkCell* cell, bool tetrahedron)
+double CellVolume(vtkCell* cell, bool tetrahedron, bool wedge = false)
 {
   static const double gx[6] = { 0.033765242898423986, 0.16939530676686776, 0.38069040695840156,
     0.61930959304159844, 0.83060469323313224, 0.96623475710157601 };
@@ -1212,6 +1263,11 @@ double CellVolume(vtkCell* cell, bool tetrahedron)
           p[1] = v * (1 - u);
           p[2] = t * (1 - u) * (1 - v);
           w *= (1 - u) * (1 - u) * (1 - v);
+        }
+        if (wedge)
+        {
+          p[1] = gx[b] * (1 - gx[a]);
+          w *= 1 - gx[a];
         }
         cell->InterpolateDerivs(p, derivs.data());
         double j[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
@@ -1282,7 +1338,7 @@ int Subdivision()
   const vtkIdType quads = 2 * (m[0] * m[1] + m[0] * m[2] + m[1] * m[2]);
   for (bool tetrahedra : { false, true })
   {
-    auto shell = CurvedShell(m, tetrahedra);
+    auto shell = CurvedShell(m, tetrahedra ? ShellTetrahedra10 : ShellHexahedra20);
     const char* what = tetrahedra ? "quadratic tetrahedra" : "quadratic hexahedra";
     double exact = 0.0;
     vtkNew<vtkGenericCell> cell;
@@ -1350,6 +1406,58 @@ int Subdivision()
     }
   }
 
+  // The other families, levels 0 to 2: triquadratic and Lagrange (order 2)
+  // hexahedra, quadratic wedges (two per box: shared diagonal faces).
+  // (The Lagrange hexahedron of order 2 interpolates in the triquadratic
+  // one's space: the same nodes give the same cells, so its volume is the
+  // triquadratic one's by quadrature.)
+  double triquadraticVolume = 0.0;
+  for (int kind : { ShellHexahedra27, ShellLagrangeHexahedra, ShellWedges15, ShellMixed })
+  {
+    auto shell = CurvedShell(m, kind);
+    const char* what = kind == ShellHexahedra27 ? "triquadratic hexahedra"
+      : kind == ShellWedges15                   ? "quadratic wedges"
+      : kind == ShellMixed                      ? "20-node hexahedra and quadratic wedges"
+                                                : "Lagrange hexahedra (order 2)";
+    double exact = 0.0;
+    vtkNew<vtkGenericCell> cell;
+    for (vtkIdType c = 0; kind != ShellLagrangeHexahedra && c < shell->GetNumberOfCells(); ++c)
+    {
+      shell->GetCell(c, cell);
+      exact += CellVolume(cell, false, shell->GetCellType(c) == VTK_QUADRATIC_WEDGE);
+    }
+    if (kind == ShellHexahedra27)
+    {
+      triquadraticVolume = exact;
+    }
+    if (kind == ShellLagrangeHexahedra)
+    {
+      exact = triquadraticVolume;
+    }
+    std::printf("%s (%lld cells): volume by quadrature %.9f\n", what,
+      static_cast<long long>(shell->GetNumberOfCells()), exact);
+    double previous = 1e30;
+    for (int level = 1; level <= 2; ++level)
+    {
+      vtkHAVSTetrahedralizer::Report report;
+      auto tets = vtkHAVSTetrahedralizer::Tetrahedralize(shell, &report, level);
+      const double error = std::fabs(TetrahedraVolume(tets) - exact) / exact;
+      const vtkIdType boundary = BoundaryTriangles(tets);
+      const vtkIdType expected = 2 * quads << (2 * level);
+      const double fieldError = FieldError(tets, shell->GetNumberOfPoints(), Linear);
+      std::printf("  level %d: %lld tetrahedra, volume error %.3e, boundary triangles %lld "
+                  "(refined surface %lld), linear field error %.1e\n",
+        level, static_cast<long long>(tets->GetNumberOfCells()), error,
+        static_cast<long long>(boundary), static_cast<long long>(expected), fieldError);
+      havstest::Check(report.RefinedCells == shell->GetNumberOfCells() && boundary == expected &&
+          fieldError < 1e-12,
+        std::string(what) + ": refined, no cracks, the linear field exact");
+      havstest::Check(error < previous / 3.0, std::string(what) + ": volume error falls");
+      previous = error;
+    }
+    havstest::Check(previous < 5e-3, std::string(what) + ": volume within 5e-3 at level 2");
+  }
+
   // A quadratic field on straight (sheared) quadratic cells: exact at every new point.
   for (bool tetrahedra : { false, true })
   {
@@ -1383,7 +1491,7 @@ int Subdivision()
 
   // Rendering: both mappers at level 2 against the reference at level 2;
   // control: the reference at level 0.
-  auto shell = CurvedShell(m, false);
+  auto shell = CurvedShell(m, ShellHexahedra20);
   auto property = havstest::MakeRampProperty(0.0, 9.0, 0.8, 0.5);
   for (bool cells : { false, true })
   {

@@ -10,6 +10,9 @@
 #include "vtkHAVSTetrahedralizer.h"
 
 #include "vtkAppendFilter.h"
+#include "vtkBezierHexahedron.h"
+#include "vtkBezierTetra.h"
+#include "vtkBezierWedge.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellTypes.h"
@@ -18,6 +21,8 @@
 #include "vtkDataArray.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkGenericCell.h"
+#include "vtkHigherOrderHexahedron.h"
+#include "vtkHigherOrderWedge.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
@@ -315,6 +320,41 @@ void SplitLatticeTetrahedron(const std::array<std::array<int, 3>, 4>& t, int dep
   }
 }
 
+/// Cell `c` of `input` into `cell`, a Lagrange or Bezier cell with its
+/// order (the grid's HigherOrderDegrees, or uniform from its point count) and
+/// a Bezier cell with its rational weights (when the points have them).
+void GetCell(vtkUnstructuredGrid* input, vtkIdType c, vtkGenericCell* cell)
+{
+  input->GetCell(c, cell);
+  vtkCell* actual = cell->GetRepresentativeCell();
+  const vtkIdType npts = cell->GetNumberOfPoints();
+  vtkCellData* cd = input->GetCellData();
+  const bool degrees = cd->GetHigherOrderDegrees() != nullptr;
+  if (auto* hex = vtkHigherOrderHexahedron::SafeDownCast(actual))
+  {
+    degrees ? hex->SetOrderFromCellData(cd, npts, c) : hex->SetUniformOrderFromNumPoints(npts);
+  }
+  else if (auto* wedge = vtkHigherOrderWedge::SafeDownCast(actual))
+  {
+    degrees ? wedge->SetOrderFromCellData(cd, npts, c) : wedge->SetUniformOrderFromNumPoints(npts);
+  }
+  if (input->GetPointData()->GetRationalWeights())
+  {
+    if (auto* bh = vtkBezierHexahedron::SafeDownCast(actual))
+    {
+      bh->SetRationalWeightsFromPointData(input->GetPointData(), npts);
+    }
+    else if (auto* bt = vtkBezierTetra::SafeDownCast(actual))
+    {
+      bt->SetRationalWeightsFromPointData(input->GetPointData(), npts);
+    }
+    else if (auto* bw = vtkBezierWedge::SafeDownCast(actual))
+    {
+      bw->SetRationalWeightsFromPointData(input->GetPointData(), npts);
+    }
+  }
+}
+
 /// Refines one cell (any thread): fills `r` from `cell` at `level`.
 void RefineCell(vtkCell* cell, Family family, int level, int split, RefinedCell& r)
 {
@@ -529,7 +569,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::RefineHigherOrderCe
   std::vector<RefinedCell> cells(refined.size());
   {
     vtkNew<vtkGenericCell> first; // a first GetCell on this thread, before the parallel ones
-    input->GetCell(refined[0], first);
+    GetCell(input, refined[0], first);
   }
   vtkSMPThreadLocalObject<vtkGenericCell> threadCell;
   vtkSMPTools::For(0, static_cast<vtkIdType>(refined.size()),
@@ -538,7 +578,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::RefineHigherOrderCe
       vtkGenericCell* cell = threadCell.Local();
       for (vtkIdType r = begin; r < end; ++r)
       {
-        input->GetCell(refined[r], cell);
+        GetCell(input, refined[r], cell);
         RefineCell(cell, FamilyOf(input->GetCellType(refined[r])), level, split, cells[r]);
       }
     });
