@@ -1538,6 +1538,19 @@ int Subdivision()
     const auto c = havstest::Compare(image, exact[0], kEdge);
     Print(std::string("control: ") + Name(cells) + " level 2 vs reference level 0", c);
     havstest::Check(!Exact(c), "control: level 0 differs (the curvature shows)");
+    // The level changed on the same mapper: the mesh is tessellated again.
+    if (auto* h = vtkHAVSVolumeMapper::SafeDownCast(mapper))
+    {
+      h->SetHigherOrderSubdivision(0);
+    }
+    if (auto* p = vtkHAVSCellProjectionMapper::SafeDownCast(mapper))
+    {
+      p->SetHigherOrderSubdivision(0);
+    }
+    scene.Window->Render();
+    const auto again = havstest::Compare(havstest::FloatResult(mapper), exact[0], kEdge);
+    Print(std::string(Name(cells)) + " set to level 0 vs reference level 0", again);
+    havstest::Check(Exact(again), std::string(Name(cells)) + ": a new level re-tessellates");
   }
   return havstest::Result();
 }

@@ -510,6 +510,14 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   {
     this->Warnings.push_back(InvalidCellsWarning(this->Tessellation.InvalidCells));
   }
+  if (this->Tessellation.UnrefinedNonLinearCells > 0)
+  {
+    std::ostringstream w;
+    w << this->Tessellation.UnrefinedNonLinearCells
+      << " non-linear cells (pyramids) are not refined by the higher-order subdivision: "
+         "they are split at their nodes.";
+    this->Warnings.push_back(w.str());
+  }
   if (this->Tessellation.LowerDimensionCells > 0)
   {
     std::ostringstream w;
@@ -629,6 +637,8 @@ void vtkHAVSMesh::PrintSelf(ostream& os, vtkIndent indent)
      << this->ScalarDescription << ")\n";
   os << indent << "Tessellated: " << this->Tessellation.Tessellated << " ("
      << this->Tessellation.SplitCells << " cells split into " << this->Tessellation.OutputTetrahedra
-     << " tetrahedra, " << this->Tessellation.LowerDimensionCells
-     << " lower-dimensional cells left out)\n";
+     << " tetrahedra; higher-order subdivision " << this->Tessellation.HigherOrderSubdivision
+     << ": " << this->Tessellation.RefinedCells << " cells refined, "
+     << this->Tessellation.AddedPoints << " points added; "
+     << this->Tessellation.LowerDimensionCells << " lower-dimensional cells left out)\n";
 }
