@@ -46,7 +46,22 @@
 //              new scalars, point and cell data): only the scalars are mapped
 //              and uploaded again, the order is reused, the image is exact
 //              and changed; control: the points moved make the mesh again;
-//              the blunt fin's costs of both are printed.
+//              the blunt fin's costs of both are printed;
+//   subdivision quadratic cells refined (SetHigherOrderSubdivision): a
+//              cylindrical shell sector in curved quadratic hexahedra (every
+//              other cell's node order turned a quarter), in curved
+//              quadratic tetrahedra, mid-edge nodes on the arcs, and (levels
+//              1 and 2) in triquadratic and Lagrange hexahedra, quadratic
+//              wedges and a mix of hexahedra and wedges. The
+//              tessellation's volume converges to the cells' own volume
+//              (Gauss quadrature of the Jacobian), the error falling at every
+//              level; a linear field (curved cells) and a quadratic one
+//              (sheared straight cells) are reproduced exactly at every new
+//              point; no cracks: the boundary triangles are the refined
+//              surface's (controls: pieces split by their local order, points
+//              not merged, give more); HAVS and the cell projection at level
+//              2 against the reference at level 2; control: the reference at
+//              level 0 differs beyond the bound (the curvature shows).
 //
 // Usage: TestHAVSCells <case> [full]   (full: every view for linear and celldata)
 #include "havsTestChecks.h"
@@ -71,7 +86,10 @@
 #include "vtkCellType.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkGenericCell.h"
+#include "vtkHigherOrderHexahedron.h"
 #include "vtkImageData.h"
+#include "vtkLagrangeHexahedron.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkMultiBlockPLOT3DReader.h"
 #include "vtkNew.h"
@@ -79,10 +97,15 @@
 #include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkQuadraticHexahedron.h"
+#include "vtkQuadraticTetra.h"
+#include "vtkQuadraticWedge.h"
 #include "vtkRectilinearGrid.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkStructuredGrid.h"
+#include "vtkTetra.h"
+#include "vtkTriQuadraticHexahedron.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -1066,6 +1089,471 @@ int BluntFin()
   havstest::Check(Exact(worst), "blunt fin structured, cell scalars: exact");
   return havstest::Result();
 }
+
+//------------------------------------------------------------------------------
+// subdivision
+constexpr double kInner = 1.0, kOuter = 2.0, kHeight = 1.0;
+constexpr double kQuarter = 1.5707963267948966;
+
+/// The shell sector rho in [1, 2], theta in [0, pi/2], z in [0, 1] on a
+/// lattice of (2 m[a] + 1) points per axis mapped onto the cylinder.
+vtkSmartPointer<vtkPoints> ShellPoints(const int m[3])
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  for (int c = 0; c <= 2 * m[2]; ++c)
+  {
+    for (int b = 0; b <= 2 * m[1]; ++b)
+    {
+      for (int a = 0; a <= 2 * m[0]; ++a)
+      {
+        const double rho = kInner + (kOuter - kInner) * a / (2.0 * m[0]);
+        const double theta = kQuarter * b / (2.0 * m[1]);
+        points->InsertNextPoint(
+          rho * std::cos(theta), rho * std::sin(theta), kHeight * c / (2.0 * m[2]));
+      }
+    }
+  }
+  return points;
+}
+
+/// The curved shell in m[0] x m[1] x m[2] quadratic hexahedra (every other
+/// cell's node order turned a quarter about its third axis, so neighbours
+/// see a shared face in different local frames) or in six quadratic
+/// tetrahedra per box (Kuhn's split of the parameter box: conforming).
+enum ShellCells
+{
+  ShellHexahedra20,
+  ShellTetrahedra10,
+  ShellHexahedra27,
+  ShellWedges15,
+  ShellLagrangeHexahedra,
+  ShellMixed ///< 20-node hexahedra at i = 0, quadratic wedges elsewhere
+};
+
+vtkSmartPointer<vtkUnstructuredGrid> CurvedShell(const int m[3], int kind)
+{
+  const bool tetrahedra = kind == ShellTetrahedra10;
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(ShellPoints(m));
+  auto id = [&](int a, int b, int c)
+  { return static_cast<vtkIdType>(a + (2 * m[0] + 1) * (b + (2 * m[1] + 1) * c)); };
+  vtkNew<vtkQuadraticHexahedron> hex;
+  vtkNew<vtkTriQuadraticHexahedron> hex27;
+  vtkNew<vtkLagrangeHexahedron> lagrange;
+  lagrange->GetPointIds()->SetNumberOfIds(27);
+  lagrange->GetPoints()->SetNumberOfPoints(27);
+  lagrange->SetUniformOrderFromNumPoints(27);
+  lagrange->Initialize();
+  vtkNew<vtkQuadraticWedge> wedge;
+  const bool twenty = kind == ShellHexahedra20 || kind == ShellMixed;
+  const int nodes = twenty ? 20 : 27;
+  const int type = twenty      ? VTK_QUADRATIC_HEXAHEDRON
+    : kind == ShellHexahedra27 ? VTK_TRIQUADRATIC_HEXAHEDRON
+                               : VTK_LAGRANGE_HEXAHEDRON;
+  const double* pc = twenty    ? hex->GetParametricCoords()
+    : kind == ShellHexahedra27 ? hex27->GetParametricCoords()
+                               : lagrange->GetParametricCoords();
+  for (int k = 0; k < m[2]; ++k)
+  {
+    for (int j = 0; j < m[1]; ++j)
+    {
+      for (int i = 0; i < m[0]; ++i)
+      {
+        if (kind == ShellWedges15 || (kind == ShellMixed && i > 0))
+        {
+          // The box's two prisms: triangles (0,0) (2,0) (0,2) and (2,0) (2,2) (0,2).
+          const double* wp = wedge->GetParametricCoords();
+          for (int half = 0; half < 2; ++half)
+          {
+            vtkIdType ids[15];
+            for (int v = 0; v < 15; ++v)
+            {
+              const double r = wp[3 * v], q = wp[3 * v + 1], t = wp[3 * v + 2];
+              const double a = half ? 2.0 - 2.0 * q : 2.0 * r;
+              const double b = half ? 2.0 * r + 2.0 * q : 2.0 * q;
+              ids[v] = id(2 * i + static_cast<int>(std::lround(a)),
+                2 * j + static_cast<int>(std::lround(b)),
+                2 * k + static_cast<int>(std::lround(2 * t)));
+            }
+            grid->InsertNextCell(VTK_QUADRATIC_WEDGE, 15, ids);
+          }
+          continue;
+        }
+        if (!tetrahedra)
+        {
+          vtkIdType ids[27];
+          const bool turned = (i + j + k) % 2 == 1 && kind != ShellMixed;
+          for (int v = 0; v < nodes; ++v)
+          {
+            int o[3] = { static_cast<int>(std::lround(2 * pc[3 * v])),
+              static_cast<int>(std::lround(2 * pc[3 * v + 1])),
+              static_cast<int>(std::lround(2 * pc[3 * v + 2])) };
+            if (turned)
+            {
+              const int a = o[0];
+              o[0] = o[1];
+              o[1] = 2 - a;
+            }
+            ids[v] = id(2 * i + o[0], 2 * j + o[1], 2 * k + o[2]);
+          }
+          grid->InsertNextCell(type, nodes, ids);
+          continue;
+        }
+        int axes[3] = { 0, 1, 2 };
+        do
+        {
+          std::array<std::array<int, 3>, 4> v;
+          v[0] = { 2 * i, 2 * j, 2 * k };
+          for (int s = 0; s < 3; ++s)
+          {
+            v[s + 1] = v[s];
+            v[s + 1][axes[s]] += 2;
+          }
+          // Positive orientation in the parameter box (the map keeps it).
+          const double d[3][3] = { { double(v[1][0] - v[0][0]), double(v[1][1] - v[0][1]),
+                                     double(v[1][2] - v[0][2]) },
+            { double(v[2][0] - v[0][0]), double(v[2][1] - v[0][1]), double(v[2][2] - v[0][2]) },
+            { double(v[3][0] - v[0][0]), double(v[3][1] - v[0][1]), double(v[3][2] - v[0][2]) } };
+          const double det = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) -
+            d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
+            d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+          if (det < 0)
+          {
+            std::swap(v[1], v[2]);
+          }
+          auto at = [&](int a) { return id(v[a][0], v[a][1], v[a][2]); };
+          auto mid = [&](int a, int b)
+          { return id((v[a][0] + v[b][0]) / 2, (v[a][1] + v[b][1]) / 2, (v[a][2] + v[b][2]) / 2); };
+          // vtkQuadraticTetra: corners, then the edges 01, 12, 20, 03, 13, 23.
+          const vtkIdType q[10] = { at(0), at(1), at(2), at(3), mid(0, 1), mid(1, 2), mid(2, 0),
+            mid(0, 3), mid(1, 3), mid(2, 3) };
+          grid->InsertNextCell(VTK_QUADRATIC_TETRA, 10, q);
+        } while (std::next_permutation(axes, axes + 3));
+      }
+    }
+  }
+  SetLinearField(grid);
+  return grid;
+}
+
+/// The volume of a non-linear cell: its Jacobian's determinant by Gauss
+/// quadrature (6 points per axis; a tetrahedron through the collapsed cube).
+double CellVolume(vtkCell* cell, bool tetrahedron, bool wedge = false)
+{
+  static const double gx[6] = { 0.033765242898423986, 0.16939530676686776, 0.38069040695840156,
+    0.61930959304159844, 0.83060469323313224, 0.96623475710157601 };
+  static const double gw[6] = { 0.085662246189585173, 0.18038078652406930, 0.23395696728634552,
+    0.23395696728634552, 0.18038078652406930, 0.085662246189585173 };
+  const int nodes = static_cast<int>(cell->GetNumberOfPoints());
+  std::vector<double> derivs(3 * nodes);
+  double volume = 0.0;
+  for (int a = 0; a < 6; ++a)
+  {
+    for (int b = 0; b < 6; ++b)
+    {
+      for (int c = 0; c < 6; ++c)
+      {
+        double p[3] = { gx[a], gx[b], gx[c] };
+        double w = gw[a] * gw[b] * gw[c];
+        if (tetrahedron)
+        {
+          const double u = gx[a], v = gx[b], t = gx[c];
+          p[0] = u;
+          p[1] = v * (1 - u);
+          p[2] = t * (1 - u) * (1 - v);
+          w *= (1 - u) * (1 - u) * (1 - v);
+        }
+        if (wedge)
+        {
+          p[1] = gx[b] * (1 - gx[a]);
+          w *= 1 - gx[a];
+        }
+        cell->InterpolateDerivs(p, derivs.data());
+        double j[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
+        for (int n = 0; n < nodes; ++n)
+        {
+          double x[3];
+          cell->GetPoints()->GetPoint(n, x);
+          for (int r = 0; r < 3; ++r)
+          {
+            for (int q = 0; q < 3; ++q)
+            {
+              j[r][q] += derivs[q * nodes + n] * x[r];
+            }
+          }
+        }
+        const double det = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) -
+          j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
+          j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
+        volume += w * det;
+      }
+    }
+  }
+  return volume;
+}
+
+/// The summed volumes of a grid of tetrahedra.
+double TetrahedraVolume(vtkUnstructuredGrid* tets)
+{
+  double volume = 0.0;
+  for (vtkIdType c = 0; c < tets->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts = 0;
+    const vtkIdType* p = nullptr;
+    tets->GetCellPoints(c, npts, p);
+    double x[4][3];
+    for (int v = 0; v < 4; ++v)
+    {
+      tets->GetPoint(p[v], x[v]);
+    }
+    volume += std::fabs(vtkTetra::ComputeVolume(x[0], x[1], x[2], x[3]));
+  }
+  return volume;
+}
+
+double Quadratic(const double* x)
+{
+  return x[0] * x[0] - 2.0 * x[1] * x[2] + 0.5 * x[2] * x[2] + x[0] * x[1] + x[1];
+}
+
+/// The largest difference between the active point scalars of `grid`'s
+/// points from `first` on and `field` at their positions.
+double FieldError(vtkDataSet* grid, vtkIdType first, double (*field)(const double*))
+{
+  vtkDataArray* s = grid->GetPointData()->GetScalars();
+  double worst = s ? 0.0 : 1e30;
+  for (vtkIdType i = first; s && i < grid->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    grid->GetPoint(i, x);
+    worst = std::max(worst, std::fabs(s->GetTuple1(i) - field(x)));
+  }
+  return worst;
+}
+
+int Subdivision()
+{
+  const int m[3] = { 2, 3, 2 };
+  const vtkIdType quads = 2 * (m[0] * m[1] + m[0] * m[2] + m[1] * m[2]);
+  for (bool tetrahedra : { false, true })
+  {
+    auto shell = CurvedShell(m, tetrahedra ? ShellTetrahedra10 : ShellHexahedra20);
+    const char* what = tetrahedra ? "quadratic tetrahedra" : "quadratic hexahedra";
+    double exact = 0.0;
+    vtkNew<vtkGenericCell> cell;
+    for (vtkIdType c = 0; c < shell->GetNumberOfCells(); ++c)
+    {
+      shell->GetCell(c, cell);
+      exact += CellVolume(cell, tetrahedra);
+    }
+    std::printf("%s (%lld cells): volume by quadrature %.9f (the cylinder's sector %.9f)\n", what,
+      static_cast<long long>(shell->GetNumberOfCells()), exact,
+      kQuarter / 2.0 * (kOuter * kOuter - kInner * kInner) * kHeight);
+    double previous = 1e30;
+    for (int level = 0; level <= 3; ++level)
+    {
+      vtkHAVSTetrahedralizer::Report report;
+      auto tets = vtkHAVSTetrahedralizer::Tetrahedralize(shell, &report, level);
+      const double error = std::fabs(TetrahedraVolume(tets) - exact) / exact;
+      const vtkIdType boundary = BoundaryTriangles(tets);
+      const vtkIdType expected = 2 * quads << (2 * level);
+      const double fieldError = FieldError(tets, shell->GetNumberOfPoints(), Linear);
+      std::printf("  level %d: %lld tetrahedra, %lld points added, volume error %.3e, "
+                  "boundary triangles %lld (refined surface %lld), linear field error %.1e, "
+                  "%.3f s\n",
+        level, static_cast<long long>(tets->GetNumberOfCells()),
+        static_cast<long long>(report.AddedPoints), error, static_cast<long long>(boundary),
+        static_cast<long long>(expected), fieldError, report.Seconds);
+      // Level 1 of a quadratic tetrahedron is its canonical eight, which level 0 is too.
+      if (level >= 2 || !tetrahedra)
+      {
+        havstest::Check(error < (level >= 2 ? previous / 3.0 : previous),
+          std::string(what) + ": volume error falls at level " + std::to_string(level));
+      }
+      else
+      {
+        havstest::Check(error <= previous, std::string(what) + ": level 1 no worse than 0");
+      }
+      previous = error;
+      if (level >= 1)
+      {
+        havstest::Check(report.RefinedCells == shell->GetNumberOfCells(),
+          std::string(what) + ": every cell refined");
+        havstest::Check(boundary == expected,
+          std::string(what) + ": no cracks at level " + std::to_string(level));
+        havstest::Check(
+          fieldError < 1e-12, std::string(what) + ": the linear field exact at the new points");
+      }
+      if (level == 3)
+      {
+        havstest::Check(error < 1e-3, std::string(what) + ": volume within 1e-3 at level 3");
+      }
+    }
+    // Controls: the pieces split by their local order; the points not merged.
+    for (int split :
+      { vtkHAVSTetrahedralizer::SplitLocalOrder, vtkHAVSTetrahedralizer::SplitUnmerged })
+    {
+      auto tets = vtkHAVSTetrahedralizer::Tetrahedralize(shell, nullptr, 2, split);
+      const vtkIdType boundary = BoundaryTriangles(tets);
+      std::printf("  control (%s, level 2): boundary triangles %lld (refined surface %lld)\n",
+        split == vtkHAVSTetrahedralizer::SplitLocalOrder ? "local order" : "points not merged",
+        static_cast<long long>(boundary), static_cast<long long>(2 * quads << 4));
+      if (!tetrahedra || split == vtkHAVSTetrahedralizer::SplitUnmerged)
+      {
+        havstest::Check(boundary > (2 * quads << 4), std::string(what) + ": the control cracks");
+      }
+    }
+  }
+
+  // The other families, levels 0 to 2: triquadratic and Lagrange (order 2)
+  // hexahedra, quadratic wedges (two per box: shared diagonal faces).
+  // (The Lagrange hexahedron of order 2 interpolates in the triquadratic
+  // one's space: the same nodes give the same cells, so its volume is the
+  // triquadratic one's by quadrature.)
+  double triquadraticVolume = 0.0;
+  for (int kind : { ShellHexahedra27, ShellLagrangeHexahedra, ShellWedges15, ShellMixed })
+  {
+    auto shell = CurvedShell(m, kind);
+    const char* what = kind == ShellHexahedra27 ? "triquadratic hexahedra"
+      : kind == ShellWedges15                   ? "quadratic wedges"
+      : kind == ShellMixed                      ? "20-node hexahedra and quadratic wedges"
+                                                : "Lagrange hexahedra (order 2)";
+    double exact = 0.0;
+    vtkNew<vtkGenericCell> cell;
+    for (vtkIdType c = 0; kind != ShellLagrangeHexahedra && c < shell->GetNumberOfCells(); ++c)
+    {
+      shell->GetCell(c, cell);
+      exact += CellVolume(cell, false, shell->GetCellType(c) == VTK_QUADRATIC_WEDGE);
+    }
+    if (kind == ShellHexahedra27)
+    {
+      triquadraticVolume = exact;
+    }
+    if (kind == ShellLagrangeHexahedra)
+    {
+      exact = triquadraticVolume;
+    }
+    std::printf("%s (%lld cells): volume by quadrature %.9f\n", what,
+      static_cast<long long>(shell->GetNumberOfCells()), exact);
+    double previous = 1e30;
+    for (int level = 1; level <= 2; ++level)
+    {
+      vtkHAVSTetrahedralizer::Report report;
+      auto tets = vtkHAVSTetrahedralizer::Tetrahedralize(shell, &report, level);
+      const double error = std::fabs(TetrahedraVolume(tets) - exact) / exact;
+      const vtkIdType boundary = BoundaryTriangles(tets);
+      const vtkIdType expected = 2 * quads << (2 * level);
+      const double fieldError = FieldError(tets, shell->GetNumberOfPoints(), Linear);
+      std::printf("  level %d: %lld tetrahedra, volume error %.3e, boundary triangles %lld "
+                  "(refined surface %lld), linear field error %.1e\n",
+        level, static_cast<long long>(tets->GetNumberOfCells()), error,
+        static_cast<long long>(boundary), static_cast<long long>(expected), fieldError);
+      havstest::Check(report.RefinedCells == shell->GetNumberOfCells() && boundary == expected &&
+          fieldError < 1e-12,
+        std::string(what) + ": refined, no cracks, the linear field exact");
+      havstest::Check(error < previous / 3.0, std::string(what) + ": volume error falls");
+      previous = error;
+    }
+    havstest::Check(previous < 5e-3, std::string(what) + ": volume within 5e-3 at level 2");
+  }
+
+  // A quadratic field on straight (sheared) quadratic cells: exact at every new point.
+  for (bool tetrahedra : { false, true })
+  {
+    auto grid = tetrahedra ? QuadraticTetrahedra(2) : QuadraticHexahedra(2, false);
+    for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      grid->GetPoint(i, x);
+      grid->GetPoints()->SetPoint(
+        i, x[0] + 0.3 * x[1], 0.8 * x[1] - 0.2 * x[2], 1.1 * x[2] + 0.25 * x[0]);
+    }
+    vtkNew<vtkDoubleArray> q;
+    q->SetName("q");
+    q->SetNumberOfTuples(grid->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      grid->GetPoint(i, x);
+      q->SetValue(i, Quadratic(x));
+    }
+    grid->GetPointData()->SetScalars(q);
+    vtkHAVSTetrahedralizer::Report report;
+    auto tets = vtkHAVSTetrahedralizer::Tetrahedralize(grid, &report, 2);
+    const double e = FieldError(tets, grid->GetNumberOfPoints(), Quadratic);
+    // Control: the field of the level-0 split at the same points (linear per tetrahedron).
+    std::printf("sheared %s, level 2: quadratic field error %.2e at %lld new points\n",
+      tetrahedra ? "quadratic tetrahedra" : "quadratic hexahedra", e,
+      static_cast<long long>(report.AddedPoints));
+    havstest::Check(report.AddedPoints > 0 && e < 1e-12, "the quadratic field exact at new points");
+  }
+
+  // Rendering: both mappers at level 2 against the reference at level 2;
+  // control: the reference at level 0.
+  auto shell = CurvedShell(m, ShellHexahedra20);
+  auto property = havstest::MakeRampProperty(0.0, 9.0, 0.8, 0.5);
+  for (bool cells : { false, true })
+  {
+    auto mapper = MakeMapper(cells);
+    if (auto* h = vtkHAVSVolumeMapper::SafeDownCast(mapper))
+    {
+      h->SetHigherOrderSubdivision(2);
+    }
+    if (auto* p = vtkHAVSCellProjectionMapper::SafeDownCast(mapper))
+    {
+      p->SetHigherOrderSubdivision(2);
+    }
+    const View& view = kViews[cells ? 3 : 0];
+    havstest::Messages* messages = havstest::CountMessages(mapper);
+    auto scene = havstest::MakeScene(shell, mapper, property, kSize, kSize);
+    havstest::PlaceCamera(scene.Renderer, view.Azimuth, view.Elevation, view.Parallel);
+    scene.Window->Render();
+    const std::vector<float> image = havstest::FloatResult(mapper);
+    havstest::Check(messages->Errors == 0 && !image.empty(),
+      std::string(Name(cells)) + " at level 2: rendered without errors");
+    std::vector<float> exact[2];
+    for (int level : { 2, 0 })
+    {
+      vtkNew<vtkHAVSReferenceRenderer> r;
+      r->SetInputData(shell);
+      r->SetHigherOrderSubdivision(level);
+      r->SetProperty(property);
+      r->SetCamera(scene.Renderer->GetActiveCamera());
+      r->SetSize(kSize, kSize);
+      if (r->Render())
+      {
+        vtkFloatArray* out = r->GetImage();
+        exact[level / 2].assign(out->GetPointer(0), out->GetPointer(0) + 4 * kSize * kSize);
+      }
+    }
+    if (image.empty() || exact[0].empty() || exact[1].empty())
+    {
+      havstest::Check(false, "the references rendered");
+      continue;
+    }
+    const auto d = havstest::Compare(image, exact[1], kEdge);
+    Print(std::string(Name(cells)) + " level 2 vs reference level 2", d);
+    havstest::Check(Exact(d), std::string(Name(cells)) + ": exact at level 2");
+    const auto c = havstest::Compare(image, exact[0], kEdge);
+    Print(std::string("control: ") + Name(cells) + " level 2 vs reference level 0", c);
+    havstest::Check(!Exact(c), "control: level 0 differs (the curvature shows)");
+    // The level changed on the same mapper: the mesh is tessellated again.
+    if (auto* h = vtkHAVSVolumeMapper::SafeDownCast(mapper))
+    {
+      h->SetHigherOrderSubdivision(0);
+    }
+    if (auto* p = vtkHAVSCellProjectionMapper::SafeDownCast(mapper))
+    {
+      p->SetHigherOrderSubdivision(0);
+    }
+    scene.Window->Render();
+    const auto again = havstest::Compare(havstest::FloatResult(mapper), exact[0], kEdge);
+    Print(std::string(Name(cells)) + " set to level 0 vs reference level 0", again);
+    havstest::Check(Exact(again), std::string(Name(cells)) + ": a new level re-tessellates");
+  }
+  return havstest::Result();
+}
 }
 
 int TestHAVSCells(int argc, char* argv[])
@@ -1097,6 +1585,11 @@ int TestHAVSCells(int argc, char* argv[])
   {
     return TimeSteps();
   }
-  havstest::Check(false, "a known case: linear, celldata, vector, bluntfin, multiblock, timesteps");
+  if (which == "subdivision")
+  {
+    return Subdivision();
+  }
+  havstest::Check(
+    false, "a known case: linear, celldata, vector, bluntfin, multiblock, timesteps, subdivision");
   return havstest::Result();
 }

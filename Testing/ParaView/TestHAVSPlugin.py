@@ -189,6 +189,14 @@ if args.mode == "serial":
           and mapper.GetLastTableError() >= 0,
           "automatic table on again: chosen again (%d^3)" % mapper.GetLastTableScalarResolution())
 
+    # The subdivision of higher-order cells: 0 by default, passed to the mapper.
+    check(display.HAVSHigherOrderSubdivision == 0 and mapper.GetHigherOrderSubdivision() == 0,
+          "default: higher-order subdivision 0")
+    display.HAVSHigherOrderSubdivision = 2
+    check(mapper.GetHigherOrderSubdivision() == 2, "higher-order subdivision set to 2")
+    display.HAVSHigherOrderSubdivision = 0
+    Render(view)
+
     # Skipping hidden cells (transparent, off-screen, clipped away): on by default.
     check(display.HAVSSkipHiddenCells == 1 and mapper.GetSkipInvisibleCells()
           and mapper.GetSkipOffscreenCells() and mapper.GetSkipSaturatedPixels(),

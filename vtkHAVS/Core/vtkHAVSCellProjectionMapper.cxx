@@ -228,8 +228,9 @@ void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volum
     this->GetInputAlgorithm()->Update();
   }
   auto warnOnce = [this](int which, const std::string& m) { this->WarnOnce(which, m); };
-  const auto state = vtkHAVSMapperInputs::PrepareMesh(this, volume, this->Mesh,
-    "vtkHAVSCellProjectionMapper", warnOnce, this->VectorMode, this->VectorComponent);
+  const auto state =
+    vtkHAVSMapperInputs::PrepareMesh(this, volume, this->Mesh, "vtkHAVSCellProjectionMapper",
+      warnOnce, this->VectorMode, this->VectorComponent, this->HigherOrderSubdivision);
   if (state == vtkHAVSMapperInputs::MeshFailed)
   {
     return;
@@ -324,6 +325,7 @@ void vtkHAVSCellProjectionMapper::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "BlendMode: " << this->BlendMode
      << ", ShuffleOrderForTesting: " << this->ShuffleOrderForTesting << "\n";
+  os << indent << "HigherOrderSubdivision: " << this->HigherOrderSubdivision << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult
      << ", WrongExitForTesting: " << this->WrongExitForTesting << "\n";
   os << indent << "Last frame: " << this->LastCellsDrawn << " cells, " << this->LastCycleBreaks

@@ -144,6 +144,19 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Subdivision of quadratic and higher-order cells (vtkHAVSTetrahedralizer):
+   * 0 (the default) splits them at their nodes only; n >= 1 refines every
+   * non-linear hexahedron, tetrahedron and wedge uniformly in its parametric
+   * space, 2^n segments per edge, points and point data through the cell's
+   * own interpolation (curved cells drawn curved), crack-free across
+   * neighbours. Linear cells are unaffected. At most 6. A change re-tessellates.
+   */
+  vtkSetClampMacro(HigherOrderSubdivision, int, 0, 6);
+  vtkGetMacro(HigherOrderSubdivision, int);
+  ///@}
+
+  ///@{
   /// Keep the frame's float result (premultiplied RGBA) for GetFloatResult().
   vtkSetMacro(KeepFloatResult, bool);
   vtkGetMacro(KeepFloatResult, bool);
@@ -256,6 +269,7 @@ private:
   bool NearPlaneSection = true;
   int VectorMode = -1;
   int VectorComponent = 0;
+  int HigherOrderSubdivision = 0;
   vtkIdType LastSectionTriangles = 0;
   bool MeasureStageTimes = false;
   bool LastOrderReused = false;

@@ -82,9 +82,10 @@ bool vtkHAVSMapperInputs::GetCompositeInputBounds(vtkAbstractVolumeMapper* mappe
 //------------------------------------------------------------------------------
 vtkHAVSMapperInputs::MeshState vtkHAVSMapperInputs::PrepareMesh(vtkAbstractVolumeMapper* mapper,
   vtkVolume* volume, vtkHAVSMesh* mesh, const char* mapperName, const WarnOnce& warnOnce,
-  int vectorMode, int vectorComponent)
+  int vectorMode, int vectorComponent, int higherOrderSubdivision)
 {
   vtkHAVSMesh::ScalarSelection selection;
+  selection.HigherOrderSubdivision = higherOrderSubdivision;
   selection.VectorMode = vectorMode;
   selection.VectorComponent = vectorComponent;
   selection.Mode = mapper->GetScalarMode();

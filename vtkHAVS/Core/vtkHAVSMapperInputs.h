@@ -68,10 +68,11 @@ public:
    * Builds `mesh` from the mapper's input and scalar selection when either
    * changed (progress through the mapper's UpdateProgress), reporting what
    * vtkHAVSMesh says; `mapperName` names the mapper in the messages.
+   * `higherOrderSubdivision`: the tetrahedralizer's level for non-linear cells.
    */
   static MeshState PrepareMesh(vtkAbstractVolumeMapper* mapper, vtkVolume* volume,
     vtkHAVSMesh* mesh, const char* mapperName, const WarnOnce& warnOnce, int vectorMode = -1,
-    int vectorComponent = 0);
+    int vectorComponent = 0, int higherOrderSubdivision = 0);
 
   /// Marks `info` as taking any vtkDataSet (the mappers split what is not
   /// tetrahedra) or a composite data set of them (appended into one grid).

@@ -462,6 +462,8 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   if (wasValid && this->HashedSource && cellData == hadCellScalars &&
     !(cellData && this->Tessellation.Tessellated) &&
     selection.VectorMode == previousSelection.VectorMode &&
+    selection.HigherOrderSubdivision == previousSelection.HigherOrderSubdivision &&
+    this->Tessellation.AddedPoints == 0 &&
     this->Grid->GetNumberOfPoints() == data->GetNumberOfPoints() &&
     GeometryHashOf(data) == this->GeometryHash)
   {
@@ -494,7 +496,8 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
 
   // The cells as tetrahedra.
   report(0.0);
-  this->Grid = vtkHAVSTetrahedralizer::Tetrahedralize(data, &this->Tessellation);
+  this->Grid = vtkHAVSTetrahedralizer::Tetrahedralize(
+    data, &this->Tessellation, selection.HigherOrderSubdivision);
   if (!this->Grid || this->Grid->GetNumberOfCells() == 0)
   {
     std::ostringstream why;
@@ -506,6 +509,14 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   if (this->Tessellation.InvalidCells > 0)
   {
     this->Warnings.push_back(InvalidCellsWarning(this->Tessellation.InvalidCells));
+  }
+  if (this->Tessellation.UnrefinedNonLinearCells > 0)
+  {
+    std::ostringstream w;
+    w << this->Tessellation.UnrefinedNonLinearCells
+      << " non-linear cells (pyramids) are not refined by the higher-order subdivision: "
+         "they are split at their nodes.";
+    this->Warnings.push_back(w.str());
   }
   if (this->Tessellation.LowerDimensionCells > 0)
   {
@@ -626,6 +637,8 @@ void vtkHAVSMesh::PrintSelf(ostream& os, vtkIndent indent)
      << this->ScalarDescription << ")\n";
   os << indent << "Tessellated: " << this->Tessellation.Tessellated << " ("
      << this->Tessellation.SplitCells << " cells split into " << this->Tessellation.OutputTetrahedra
-     << " tetrahedra, " << this->Tessellation.LowerDimensionCells
-     << " lower-dimensional cells left out)\n";
+     << " tetrahedra; higher-order subdivision " << this->Tessellation.HigherOrderSubdivision
+     << ": " << this->Tessellation.RefinedCells << " cells refined, "
+     << this->Tessellation.AddedPoints << " points added; "
+     << this->Tessellation.LowerDimensionCells << " lower-dimensional cells left out)\n";
 }

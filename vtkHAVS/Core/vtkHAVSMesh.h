@@ -75,11 +75,14 @@ public:
     std::string Name;
     int VectorMode = VectorModeDisabled;
     int VectorComponent = 0;
+    /// vtkHAVSTetrahedralizer's subdivision level of non-linear cells (0: their nodes only).
+    int HigherOrderSubdivision = 0;
     bool operator==(const ScalarSelection& o) const
     {
       return this->Mode == o.Mode && this->AccessMode == o.AccessMode && this->Id == o.Id &&
         this->Name == o.Name && this->VectorMode == o.VectorMode &&
-        this->VectorComponent == o.VectorComponent;
+        this->VectorComponent == o.VectorComponent &&
+        this->HigherOrderSubdivision == o.HigherOrderSubdivision;
     }
   };
 

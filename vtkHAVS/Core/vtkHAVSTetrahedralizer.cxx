@@ -10,6 +10,9 @@
 #include "vtkHAVSTetrahedralizer.h"
 
 #include "vtkAppendFilter.h"
+#include "vtkBezierHexahedron.h"
+#include "vtkBezierTetra.h"
+#include "vtkBezierWedge.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellTypes.h"
@@ -17,14 +20,25 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetTriangleFilter.h"
+#include "vtkGenericCell.h"
+#include "vtkHigherOrderHexahedron.h"
+#include "vtkHigherOrderWedge.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkSMPThreadLocalObject.h"
+#include "vtkSMPTools.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace
@@ -220,6 +234,461 @@ vtkSmartPointer<vtkUnstructuredGrid> WithoutInvalidCells(vtkDataSet* data, vtkId
 }
 }
 
+namespace
+{
+/// The parametric families a non-linear cell is refined in.
+enum Family
+{
+  NotRefined,
+  HexahedronFamily,
+  TetrahedronFamily,
+  WedgeFamily
+};
+
+Family FamilyOf(int type)
+{
+  switch (type)
+  {
+    case VTK_QUADRATIC_HEXAHEDRON:
+    case VTK_TRIQUADRATIC_HEXAHEDRON:
+    case VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON:
+    case VTK_LAGRANGE_HEXAHEDRON:
+    case VTK_BEZIER_HEXAHEDRON:
+      return HexahedronFamily;
+    case VTK_QUADRATIC_TETRA:
+    case VTK_LAGRANGE_TETRAHEDRON:
+    case VTK_BEZIER_TETRAHEDRON:
+      return TetrahedronFamily;
+    case VTK_QUADRATIC_WEDGE:
+    case VTK_QUADRATIC_LINEAR_WEDGE:
+    case VTK_BIQUADRATIC_QUADRATIC_WEDGE:
+    case VTK_LAGRANGE_WEDGE:
+    case VTK_BEZIER_WEDGE:
+      return WedgeFamily;
+    default:
+      return NotRefined;
+  }
+}
+
+int CornersOf(Family f)
+{
+  return f == HexahedronFamily ? 8 : f == TetrahedronFamily ? 4 : 6;
+}
+
+/// A lattice point's identity: the parent's corner ids (sorted) with their
+/// integer weights (summing to N^3). The same from every cell sharing the point.
+using PointKey = std::vector<std::pair<vtkIdType, long long>>;
+
+/// One refined cell: its lattice points (key, position, interpolation
+/// weights over the cell's nodes) and its linear pieces (local lattice indices).
+struct RefinedCell
+{
+  Family Kind = NotRefined;
+  std::vector<int> Lattice; ///< dense (N+1)^3 index -> local point (-1: none)
+  std::vector<PointKey> Keys;
+  std::vector<double> Positions;        ///< 3 per local point
+  std::vector<double> Weights;          ///< nodes per local point
+  std::vector<vtkIdType> NodeIds;       ///< the cell's point ids
+  std::vector<std::vector<int>> Pieces; ///< local points of each linear piece
+  std::vector<int> PieceTypes;
+};
+
+/// The recursive canonical split of a lattice tetrahedron (corners as
+/// lattice coordinates) into 8^depth tetrahedra.
+void SplitLatticeTetrahedron(const std::array<std::array<int, 3>, 4>& t, int depth,
+  std::vector<std::array<std::array<int, 3>, 4>>& out)
+{
+  if (depth == 0)
+  {
+    out.push_back(t);
+    return;
+  }
+  auto mid = [&](int a, int b)
+  {
+    return std::array<int, 3>{ (t[a][0] + t[b][0]) / 2, (t[a][1] + t[b][1]) / 2,
+      (t[a][2] + t[b][2]) / 2 };
+  };
+  const auto e01 = mid(0, 1), e12 = mid(1, 2), e20 = mid(2, 0), e03 = mid(0, 3), e13 = mid(1, 3),
+             e23 = mid(2, 3);
+  const std::array<std::array<std::array<int, 3>, 4>, 8> children = { { { t[0], e01, e20, e03 },
+    { t[1], e12, e01, e13 }, { t[2], e20, e12, e23 }, { t[3], e03, e13, e23 },
+    { e01, e23, e12, e13 }, { e01, e23, e13, e03 }, { e01, e23, e03, e20 },
+    { e01, e23, e20, e12 } } };
+  for (const auto& c : children)
+  {
+    SplitLatticeTetrahedron(c, depth - 1, out);
+  }
+}
+
+/// Cell `c` of `input` into `cell`, a Lagrange or Bezier cell with its
+/// order (the grid's HigherOrderDegrees, or uniform from its point count) and
+/// a Bezier cell with its rational weights (when the points have them).
+void GetCell(vtkUnstructuredGrid* input, vtkIdType c, vtkGenericCell* cell)
+{
+  input->GetCell(c, cell);
+  vtkCell* actual = cell->GetRepresentativeCell();
+  const vtkIdType npts = cell->GetNumberOfPoints();
+  vtkCellData* cd = input->GetCellData();
+  const bool degrees = cd->GetHigherOrderDegrees() != nullptr;
+  if (auto* hex = vtkHigherOrderHexahedron::SafeDownCast(actual))
+  {
+    degrees ? hex->SetOrderFromCellData(cd, npts, c) : hex->SetUniformOrderFromNumPoints(npts);
+  }
+  else if (auto* wedge = vtkHigherOrderWedge::SafeDownCast(actual))
+  {
+    degrees ? wedge->SetOrderFromCellData(cd, npts, c) : wedge->SetUniformOrderFromNumPoints(npts);
+  }
+  if (input->GetPointData()->GetRationalWeights())
+  {
+    if (auto* bh = vtkBezierHexahedron::SafeDownCast(actual))
+    {
+      bh->SetRationalWeightsFromPointData(input->GetPointData(), npts);
+    }
+    else if (auto* bt = vtkBezierTetra::SafeDownCast(actual))
+    {
+      bt->SetRationalWeightsFromPointData(input->GetPointData(), npts);
+    }
+    else if (auto* bw = vtkBezierWedge::SafeDownCast(actual))
+    {
+      bw->SetRationalWeightsFromPointData(input->GetPointData(), npts);
+    }
+  }
+}
+
+/// Refines one cell (any thread): fills `r` from `cell` at `level`.
+void RefineCell(vtkCell* cell, Family family, int level, int split, RefinedCell& r)
+{
+  const int n = 1 << level;
+  const int side = n + 1;
+  const int corners = CornersOf(family);
+  const int nodes = static_cast<int>(cell->GetNumberOfPoints());
+  const double* nodePcoords = cell->GetParametricCoords();
+  r.Kind = family;
+  r.NodeIds.assign(nodes, 0);
+  for (int i = 0; i < nodes; ++i)
+  {
+    r.NodeIds[i] = cell->GetPointId(i);
+  }
+  // Each corner's position in the unit lattice cube / simplex (0 or 1 per axis).
+  int cornerBits[8][3];
+  for (int c = 0; c < corners; ++c)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      cornerBits[c][a] = nodePcoords[3 * c + a] > 0.5 ? 1 : 0;
+    }
+  }
+  const long long n3 = static_cast<long long>(n) * n * n;
+  // The integer weight of corner c at lattice point (i, j, k), scale N^3.
+  auto weight = [&](int c, int i, int j, int k) -> long long
+  {
+    const int* b = cornerBits[c];
+    switch (family)
+    {
+      case HexahedronFamily:
+        return static_cast<long long>(b[0] ? i : n - i) * (b[1] ? j : n - j) * (b[2] ? k : n - k);
+      case TetrahedronFamily:
+      {
+        const int l = b[0] ? i : b[1] ? j : b[2] ? k : n - i - j - k;
+        return static_cast<long long>(l) * n * n;
+      }
+      default: // wedge: triangle (i, j) times line k
+      {
+        const int l = b[0] ? i : b[1] ? j : n - i - j;
+        return static_cast<long long>(l) * (b[2] ? k : n - k) * n;
+      }
+    }
+  };
+  auto inside = [&](int i, int j, int k)
+  {
+    switch (family)
+    {
+      case HexahedronFamily:
+        return true;
+      case TetrahedronFamily:
+        return i + j + k <= n;
+      default:
+        return i + j <= n;
+    }
+  };
+  auto index = [&](int i, int j, int k) { return i + side * (j + side * k); };
+  r.Lattice.assign(static_cast<size_t>(side) * side * side, -1);
+  std::vector<double> weights(nodes);
+  double x[3];
+  for (int k = 0; k <= n; ++k)
+  {
+    for (int j = 0; j <= n; ++j)
+    {
+      for (int i = 0; i <= n; ++i)
+      {
+        if (!inside(i, j, k))
+        {
+          continue;
+        }
+        PointKey key;
+        double pcoords[3] = { 0.0, 0.0, 0.0 };
+        for (int c = 0; c < corners; ++c)
+        {
+          const long long w = weight(c, i, j, k);
+          if (w != 0)
+          {
+            key.emplace_back(r.NodeIds[c], w);
+            for (int a = 0; a < 3; ++a)
+            {
+              pcoords[a] +=
+                static_cast<double>(w) / static_cast<double>(n3) * nodePcoords[3 * c + a];
+            }
+          }
+        }
+        std::sort(key.begin(), key.end());
+        int subId = 0;
+        cell->EvaluateLocation(subId, pcoords, x, weights.data());
+        r.Lattice[index(i, j, k)] = static_cast<int>(r.Keys.size());
+        r.Keys.push_back(std::move(key));
+        r.Positions.insert(r.Positions.end(), x, x + 3);
+        r.Weights.insert(r.Weights.end(), weights.begin(), weights.end());
+      }
+    }
+  }
+  auto at = [&](int i, int j, int k) { return r.Lattice[index(i, j, k)]; };
+  auto addPiece = [&](int type, std::vector<int> ids)
+  {
+    if (split == vtkHAVSTetrahedralizer::SplitLocalOrder && type != VTK_TETRA)
+    {
+      // The control: each piece into tetrahedra by its local order.
+      static const int hexTets[6][4] = { { 0, 1, 2, 6 }, { 0, 2, 3, 6 }, { 0, 3, 7, 6 },
+        { 0, 7, 4, 6 }, { 0, 4, 5, 6 }, { 0, 5, 1, 6 } };
+      static const int wedgeTets[3][4] = { { 0, 1, 2, 5 }, { 0, 1, 5, 4 }, { 0, 4, 5, 3 } };
+      const int count = type == VTK_HEXAHEDRON ? 6 : 3;
+      for (int t = 0; t < count; ++t)
+      {
+        const int* local = type == VTK_HEXAHEDRON ? hexTets[t] : wedgeTets[t];
+        r.Pieces.push_back({ ids[local[0]], ids[local[1]], ids[local[2]], ids[local[3]] });
+        r.PieceTypes.push_back(VTK_TETRA);
+      }
+      return;
+    }
+    r.Pieces.push_back(std::move(ids));
+    r.PieceTypes.push_back(type);
+  };
+  if (family == HexahedronFamily)
+  {
+    for (int k = 0; k < n; ++k)
+    {
+      for (int j = 0; j < n; ++j)
+      {
+        for (int i = 0; i < n; ++i)
+        {
+          addPiece(VTK_HEXAHEDRON,
+            { at(i, j, k), at(i + 1, j, k), at(i + 1, j + 1, k), at(i, j + 1, k), at(i, j, k + 1),
+              at(i + 1, j, k + 1), at(i + 1, j + 1, k + 1), at(i, j + 1, k + 1) });
+        }
+      }
+    }
+  }
+  else if (family == WedgeFamily)
+  {
+    for (int k = 0; k < n; ++k)
+    {
+      for (int j = 0; j < n; ++j)
+      {
+        for (int i = 0; i + j < n; ++i)
+        {
+          addPiece(VTK_WEDGE,
+            { at(i, j, k), at(i + 1, j, k), at(i, j + 1, k), at(i, j, k + 1), at(i + 1, j, k + 1),
+              at(i, j + 1, k + 1) });
+          if (i + j + 2 <= n)
+          {
+            addPiece(VTK_WEDGE,
+              { at(i + 1, j, k), at(i + 1, j + 1, k), at(i, j + 1, k), at(i + 1, j, k + 1),
+                at(i + 1, j + 1, k + 1), at(i, j + 1, k + 1) });
+          }
+        }
+      }
+    }
+  }
+  else
+  {
+    std::array<std::array<int, 3>, 4> root;
+    for (int c = 0; c < 4; ++c)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        root[c][a] = cornerBits[c][a] * n;
+      }
+    }
+    std::vector<std::array<std::array<int, 3>, 4>> tets;
+    SplitLatticeTetrahedron(root, level, tets);
+    for (const auto& t : tets)
+    {
+      addPiece(VTK_TETRA,
+        { at(t[0][0], t[0][1], t[0][2]), at(t[1][0], t[1][1], t[1][2]),
+          at(t[2][0], t[2][1], t[2][2]), at(t[3][0], t[3][1], t[3][2]) });
+    }
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::RefineHigherOrderCells(
+  vtkDataSet* data, int level, Report* report, int split)
+{
+  Report local;
+  Report& rep = report ? *report : local;
+  auto* input = vtkUnstructuredGrid::SafeDownCast(data);
+  level = std::min(level, static_cast<int>(MaximumHigherOrderSubdivision));
+  if (!input || level < 1)
+  {
+    return nullptr;
+  }
+  const vtkIdType numberOfCells = input->GetNumberOfCells();
+  std::vector<vtkIdType> refined;
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  {
+    const int type = input->GetCellType(c);
+    if (vtkCellTypes::GetDimension(type) != 3 || vtkCellTypes::IsLinear(type))
+    {
+      continue;
+    }
+    if (FamilyOf(type) != NotRefined)
+    {
+      refined.push_back(c);
+    }
+    else
+    {
+      ++rep.UnrefinedNonLinearCells;
+    }
+  }
+  if (refined.empty())
+  {
+    return nullptr;
+  }
+  rep.RefinedCells = static_cast<vtkIdType>(refined.size());
+
+  // Each cell's lattice (in parallel: the cells are independent).
+  std::vector<RefinedCell> cells(refined.size());
+  {
+    vtkNew<vtkGenericCell> first; // a first GetCell on this thread, before the parallel ones
+    GetCell(input, refined[0], first);
+  }
+  vtkSMPThreadLocalObject<vtkGenericCell> threadCell;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(refined.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      vtkGenericCell* cell = threadCell.Local();
+      for (vtkIdType r = begin; r < end; ++r)
+      {
+        GetCell(input, refined[r], cell);
+        RefineCell(cell, FamilyOf(input->GetCellType(refined[r])), level, split, cells[r]);
+      }
+    });
+
+  // One output point per key: the input's points keep their ids (a corner
+  // is its input point), new points follow.
+  const vtkIdType inputPoints = input->GetNumberOfPoints();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->DeepCopy(input->GetPoints());
+  vtkPointData* inPD = input->GetPointData();
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkPointData* outPD = out->GetPointData();
+  outPD->InterpolateAllocate(inPD, inputPoints);
+  for (vtkIdType p = 0; p < inputPoints; ++p)
+  {
+    outPD->CopyData(inPD, p, p);
+  }
+  std::map<PointKey, vtkIdType> merged;
+  vtkNew<vtkIdList> nodeIds;
+  std::vector<std::vector<vtkIdType>> outputIds(cells.size());
+  for (size_t r = 0; r < cells.size(); ++r)
+  {
+    const RefinedCell& rc = cells[r];
+    const size_t count = rc.Keys.size();
+    const size_t nodes = rc.NodeIds.size();
+    outputIds[r].resize(count);
+    nodeIds->SetNumberOfIds(static_cast<vtkIdType>(nodes));
+    for (size_t i = 0; i < nodes; ++i)
+    {
+      nodeIds->SetId(static_cast<vtkIdType>(i), rc.NodeIds[i]);
+    }
+    for (size_t p = 0; p < count; ++p)
+    {
+      const PointKey& key = rc.Keys[p];
+      vtkIdType id = -1;
+      if (split != SplitUnmerged)
+      {
+        if (key.size() == 1)
+        {
+          id = key[0].first; // a corner of the parent
+        }
+        else
+        {
+          auto found = merged.find(key);
+          if (found != merged.end())
+          {
+            id = found->second;
+          }
+        }
+      }
+      if (id < 0)
+      {
+        id = points->InsertNextPoint(&rc.Positions[3 * p]);
+        outPD->InterpolatePoint(inPD, id, nodeIds, const_cast<double*>(&rc.Weights[nodes * p]));
+        ++rep.AddedPoints;
+        if (split != SplitUnmerged)
+        {
+          merged.emplace(key, id);
+        }
+      }
+      outputIds[r][p] = id;
+    }
+  }
+  out->SetPoints(points);
+
+  // The cells: the pieces of refined cells, every other cell as it is.
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = out->GetCellData();
+  outCD->CopyAllocate(inCD, numberOfCells);
+  out->Allocate(numberOfCells);
+  size_t next = 0;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  {
+    if (next < refined.size() && refined[next] == c)
+    {
+      const RefinedCell& rc = cells[next];
+      for (size_t piece = 0; piece < rc.Pieces.size(); ++piece)
+      {
+        ids->SetNumberOfIds(static_cast<vtkIdType>(rc.Pieces[piece].size()));
+        for (size_t i = 0; i < rc.Pieces[piece].size(); ++i)
+        {
+          ids->SetId(static_cast<vtkIdType>(i), outputIds[next][rc.Pieces[piece][i]]);
+        }
+        const vtkIdType id = out->InsertNextCell(rc.PieceTypes[piece], ids);
+        outCD->CopyData(inCD, c, id);
+      }
+      ++next;
+      continue;
+    }
+    input->GetCellPoints(c, ids);
+    const vtkIdType id = input->GetCellType(c) == VTK_POLYHEDRON
+      ? -1
+      : out->InsertNextCell(input->GetCellType(c), ids);
+    if (id < 0)
+    {
+      vtkIdType nfaces = 0;
+      const vtkIdType* faces = nullptr;
+      input->GetFaceStream(c, nfaces, faces);
+      const vtkIdType pid = out->InsertNextCell(
+        VTK_POLYHEDRON, ids->GetNumberOfIds(), ids->GetPointer(0), nfaces, faces);
+      outCD->CopyData(inCD, c, pid);
+      continue;
+    }
+    outCD->CopyData(inCD, c, id);
+  }
+  return out;
+}
+
 //------------------------------------------------------------------------------
 bool vtkHAVSTetrahedralizer::IsTetrahedral(vtkDataSet* data)
 {
@@ -250,7 +719,7 @@ bool vtkHAVSTetrahedralizer::IsTetrahedral(vtkDataSet* data)
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
-  vtkDataSet* data, Report* report)
+  vtkDataSet* data, Report* report, int higherOrderSubdivision, int split)
 {
   Report local;
   Report& r = report ? *report : local;
@@ -271,7 +740,28 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
   {
     data = valid;
   }
-  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
+  r.HigherOrderSubdivision =
+    std::max(0, std::min(higherOrderSubdivision, static_cast<int>(MaximumHigherOrderSubdivision)));
+  // The non-linear cells refined first (counted as the input's cells below).
+  vtkSmartPointer<vtkUnstructuredGrid> refined =
+    RefineHigherOrderCells(data, r.HigherOrderSubdivision, &r, split);
+  if (refined)
+  {
+    for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
+    {
+      const int type = data->GetCellType(c);
+      if (vtkCellTypes::GetDimension(type) < 3)
+      {
+        ++r.LowerDimensionCells;
+      }
+      else if (type != VTK_TETRA)
+      {
+        ++r.SplitCells;
+      }
+    }
+    data = refined;
+  }
+  for (vtkIdType c = 0; !refined && c < data->GetNumberOfCells(); ++c)
   {
     const int type = data->GetCellType(c);
     const int dimension = vtkCellTypes::GetDimension(type);
@@ -286,17 +776,21 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
     }
   }
   vtkSmartPointer<vtkUnstructuredGrid> grid;
-  if (r.QuadraticTetrahedra > 0)
+  if (refined && IsTetrahedral(refined))
+  {
+    grid = refined; // refined tetrahedra only: nothing left to split
+  }
+  else if (r.QuadraticTetrahedra > 0)
   {
     grid = SplitWithCanonicalQuadraticTetrahedra(data);
   }
   if (!grid)
   {
-    vtkNew<vtkDataSetTriangleFilter> split;
-    split->SetInputData(data);
-    split->TetrahedraOnlyOn();
-    split->Update();
-    grid = split->GetOutput();
+    vtkNew<vtkDataSetTriangleFilter> triangulate;
+    triangulate->SetInputData(data);
+    triangulate->TetrahedraOnlyOn();
+    triangulate->Update();
+    grid = triangulate->GetOutput();
   }
   r.Tessellated = true;
   r.OutputTetrahedra = grid->GetNumberOfCells();

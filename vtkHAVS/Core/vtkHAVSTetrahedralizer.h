@@ -27,6 +27,20 @@
  * sides. Point and cell data travel with the points and cells, so cell
  * scalars stay exact per cell. Cells of dimension below 3 are left out and
  * counted.
+ *
+ * Higher-order subdivision (level n >= 1; 0, the default, is the split
+ * above): every non-linear hexahedron, tetrahedron and wedge (quadratic,
+ * bi/triquadratic, Lagrange, Bezier) is first refined uniformly in its
+ * parametric space, 2^n segments along each edge, each new point placed and
+ * its point data interpolated through the cell's own interpolation
+ * (vtkCell::EvaluateLocation), so curved cells become curved. The pieces are
+ * linear hexahedra, wedges (then split by the ordered triangulator, whose
+ * choice of a quadrilateral's diagonal depends on the global point ids only,
+ * the same from both sides) and tetrahedra (the canonical eight, recursively:
+ * a triangular face has one lattice triangulation). A point on a shared edge
+ * or face is the same point from both cells: points are merged by a key of
+ * the parent cell's corner ids and their integer lattice weights. Non-linear
+ * pyramids are not refined (their nodes are split as at level 0) and counted.
  */
 #ifndef vtkHAVSTetrahedralizer_h
 #define vtkHAVSTetrahedralizer_h
@@ -55,6 +69,26 @@ public:
     vtkIdType InvalidCells = 0; ///< cells with a point id out of range: left out before the split
     vtkIdType OutputTetrahedra = 0;
     double Seconds = 0.0;
+    int HigherOrderSubdivision = 0;        ///< the level used
+    vtkIdType RefinedCells = 0;            ///< non-linear cells refined (level >= 1)
+    vtkIdType UnrefinedNonLinearCells = 0; ///< non-linear cells not refined (pyramids)
+    vtkIdType AddedPoints = 0;             ///< points the refinement added
+  };
+
+  /// The largest subdivision level (2^6 = 64 segments per edge).
+  static constexpr int MaximumHigherOrderSubdivision = 6;
+
+  /**
+   * How refined cells are split (a testing hook; only SplitOrdered is
+   * crack-free): SplitLocalOrder cuts every piece into tetrahedra by its
+   * local lattice order (a quadrilateral's diagonal chosen per cell);
+   * SplitUnmerged gives every refined cell its own new points.
+   */
+  enum SubdivisionSplit
+  {
+    SplitOrdered = 0,
+    SplitLocalOrder = 1,
+    SplitUnmerged = 2
   };
 
   /// Whether `data` is a vtkUnstructuredGrid of VTK_TETRA cells only.
@@ -62,9 +96,21 @@ public:
 
   /**
    * The tetrahedral grid of `data` (the input itself when IsTetrahedral()).
-   * nullptr for a null input.
+   * nullptr for a null input. `higherOrderSubdivision` (clamped to 0 …
+   * MaximumHigherOrderSubdivision): see the class description.
    */
-  static vtkSmartPointer<vtkUnstructuredGrid> Tetrahedralize(vtkDataSet* data, Report* report);
+  static vtkSmartPointer<vtkUnstructuredGrid> Tetrahedralize(
+    vtkDataSet* data, Report* report, int higherOrderSubdivision = 0, int split = SplitOrdered);
+
+  /**
+   * The non-linear 3D cells of `data` refined at `level` into linear
+   * hexahedra, wedges and tetrahedra (see the class description); other
+   * cells as they are. The input's points keep their ids; new points follow.
+   * nullptr when `data` is not an unstructured grid, `level` < 1 or no cell
+   * was refined.
+   */
+  static vtkSmartPointer<vtkUnstructuredGrid> RefineHigherOrderCells(
+    vtkDataSet* data, int level, Report* report, int split = SplitOrdered);
 
   /**
    * The leaves of a multiblock or partitioned data set as one unstructured

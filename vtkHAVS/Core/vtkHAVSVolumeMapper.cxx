@@ -166,7 +166,7 @@ bool vtkHAVSVolumeMapper::PrepareMesh(vtkVolume* volume)
   const auto state = vtkHAVSMapperInputs::PrepareMesh(
     this, volume, this->Mesh, "vtkHAVSVolumeMapper",
     [this](int which, const std::string& m) { this->WarnOnce(which, m); }, this->VectorMode,
-    this->VectorComponent);
+    this->VectorComponent, this->HigherOrderSubdivision);
   if (state == vtkHAVSMapperInputs::MeshRebuilt)
   {
     this->LevelOfDetailControl->Reset();
@@ -783,6 +783,7 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FaceRasterBoundMode: " << this->FaceRasterBoundMode << "\n";
   os << indent << "VectorMode: " << this->VectorMode << " (component " << this->VectorComponent
      << ")\n";
+  os << indent << "HigherOrderSubdivision: " << this->HigherOrderSubdivision << "\n";
   const char* orders[] = { "Centroid", "MPVO", "Automatic" };
   const char* methods[] = { "Ignore", "BoundaryLayers", "Convexification" };
   os << indent << "VisibilityOrder: " << orders[this->VisibilityOrder] << "\n";

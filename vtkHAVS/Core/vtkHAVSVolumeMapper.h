@@ -464,6 +464,19 @@ public:
 
   ///@{
   /**
+   * Subdivision of quadratic and higher-order cells (vtkHAVSTetrahedralizer):
+   * 0 (the default) splits them at their nodes only; n >= 1 refines every
+   * non-linear hexahedron, tetrahedron and wedge uniformly in its parametric
+   * space, 2^n segments per edge, points and point data through the cell's
+   * own interpolation (curved cells drawn curved), crack-free across
+   * neighbours. Linear cells are unaffected. At most 6. A change re-tessellates.
+   */
+  vtkSetClampMacro(HigherOrderSubdivision, int, 0, 6);
+  vtkGetMacro(HigherOrderSubdivision, int);
+  ///@}
+
+  ///@{
+  /**
    * When on, each frame's premultiplied float RGBA result (before it is
    * blended into the window) is kept and can be read with GetFloatResult().
    */
@@ -631,6 +644,7 @@ protected:
   bool PlaneSections = true;
   int VectorMode = -1;
   int VectorComponent = 0;
+  int HigherOrderSubdivision = 0;
 
 private:
   vtkHAVSVolumeMapper(const vtkHAVSVolumeMapper&) = delete;

@@ -58,6 +58,17 @@ void vtkHAVSReferenceRenderer::SetInputData(vtkDataSet* grid)
   this->Modified();
 }
 
+void vtkHAVSReferenceRenderer::SetHigherOrderSubdivision(int level)
+{
+  level = std::max(0, std::min(level, 6));
+  if (level != this->HigherOrderSubdivision)
+  {
+    this->HigherOrderSubdivision = level;
+    this->Input = nullptr; // split again at the next ComputeFragments
+    this->Modified();
+  }
+}
+
 void vtkHAVSReferenceRenderer::SetProperty(vtkVolumeProperty* property)
 {
   this->Property = property;
@@ -120,7 +131,8 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
   }
   if (!this->Input || this->Input->GetMTime() < this->Source->GetMTime())
   {
-    this->Input = vtkHAVSTetrahedralizer::Tetrahedralize(this->Source, nullptr);
+    this->Input =
+      vtkHAVSTetrahedralizer::Tetrahedralize(this->Source, nullptr, this->HigherOrderSubdivision);
   }
   vtkDataArray* pointScalars = this->Input->GetPointData()->GetScalars();
   vtkDataArray* cellScalars = this->Input->GetCellData()->GetScalars();
@@ -831,6 +843,7 @@ void vtkHAVSReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
   os << indent << "Fragments: " << this->Fragments.size() << "\n";
+  os << indent << "HigherOrderSubdivision: " << this->HigherOrderSubdivision << "\n";
   os << indent << "NearPlaneClipping: " << this->NearPlaneClipping
      << ", BlendMode: " << this->BlendMode << "\n";
   os << indent

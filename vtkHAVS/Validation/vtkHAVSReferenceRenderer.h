@@ -103,6 +103,13 @@ public:
   /// Render the active cell scalars even where point scalars exist (off by default).
   vtkSetMacro(UseCellScalars, bool);
   vtkGetMacro(UseCellScalars, bool);
+  /**
+   * The subdivision of quadratic and higher-order cells, as the mappers'
+   * SetHigherOrderSubdivision (0, the default: their nodes only), so that the
+   * reference sees the tessellation the mapper draws.
+   */
+  void SetHigherOrderSubdivision(int level);
+  vtkGetMacro(HigherOrderSubdivision, int);
   /// Whether the last ComputeFragments() used cell scalars.
   vtkGetMacro(CellScalarsUsed, bool);
   ///@}
@@ -241,6 +248,7 @@ private:
   vtkSmartPointer<vtkDataSet> Source;         // what SetInputData was given
   vtkSmartPointer<vtkUnstructuredGrid> Input; // it as tetrahedra
   bool UseCellScalars = false;
+  int HigherOrderSubdivision = 0;
   bool CellScalarsUsed = false;
   vtkSmartPointer<vtkVolumeProperty> Property;
   vtkSmartPointer<vtkCamera> Camera;

@@ -100,6 +100,12 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSTableResolution(int res
   this->Modified();
 }
 
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSHigherOrderSubdivision(int level)
+{
+  this->HAVSMapper->SetHigherOrderSubdivision(level);
+  this->Modified();
+}
+
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSAutomaticTable(int automatic)
 {
   this->HAVSMapper->SetAutomaticTableResolution(automatic != 0);

@@ -49,6 +49,7 @@ public:
   int GetHAVSKBufferSize();
   void SetHAVSEarlyRayTerminationOpacity(double opacity);
   void SetHAVSTableResolution(int resolution);
+  void SetHAVSHigherOrderSubdivision(int level);
   void SetHAVSAutomaticTable(int automatic);
   void SetHAVSSkipHiddenCells(int skip);
   void SetHAVSBoundaryMode(int mode);
