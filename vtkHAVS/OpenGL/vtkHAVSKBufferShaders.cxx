@@ -23,6 +23,8 @@
 #include "vtkHAVSKBufferLib.h"
 #include "vtkHAVSListDrawFS.h"
 #include "vtkHAVSQuadVS.h"
+#include "vtkHAVSRayCastFS.h"
+#include "vtkHAVSRayCastPeelFS.h"
 #include "vtkHAVSResolveFS.h"
 #include "vtkHAVSTrivialFS.h"
 
@@ -244,4 +246,22 @@ std::string vtkHAVSKBufferShaders::CellProjectionShader(bool opaque, int blend)
   std::string source = Compose(vtkHAVSCellProjectionFS, 1, 1, features);
   Replace(source, "//HAVS::CellBlend", "#define HAVS_CELL_BLEND " + std::to_string(blend));
   return source;
+}
+
+std::string vtkHAVSKBufferShaders::RayCastPeelShader()
+{
+  Features features;
+  features.CountViolations = false;
+  features.Tagging = false;
+  features.Opaque = false;
+  return Compose(vtkHAVSRayCastPeelFS, 1, 1, features);
+}
+
+std::string vtkHAVSKBufferShaders::RayCastShader(bool opaque)
+{
+  Features features;
+  features.CountViolations = false;
+  features.Tagging = false;
+  features.Opaque = opaque;
+  return Compose(vtkHAVSRayCastFS, 1, 1, features);
 }

@@ -103,6 +103,14 @@ public:
   static std::string CellProjectionVertexShader();
   static std::string CellProjectionShader(bool opaque, int blend = 0);
   ///@}
+
+  ///@{
+  /// vtkHAVSRayCastMapper: the boundary entries' depth-peeling fragment
+  /// shader (with CellProjectionVertexShader), and the ray-casting pass's
+  /// (with QuadVertexShader; the opaque cut compiled in with `opaque`).
+  static std::string RayCastPeelShader();
+  static std::string RayCastShader(bool opaque);
+  ///@}
 };
 
 #endif
