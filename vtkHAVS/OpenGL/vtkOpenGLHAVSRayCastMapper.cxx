@@ -245,7 +245,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   cache->ReadyShaderProgram(peel);
   vtkHAVSViewFrame::ToColumnMajor(view.ModelToClip, m);
   peel->SetUniformMatrix4x4("havsMCDC", m);
-  peel->SetUniformf("havsPeelBias", 1.0e-5f);
+  peel->SetUniformf("havsPeelBias", 0.0f);
   cache->ReadyShaderProgram(cast);
   this->GLTable->SetUniforms(cast);
   cast->SetUniformf("havsTerminationOpacity", frame.TerminationOpacity);

@@ -184,7 +184,9 @@ void main()
     cell = next;
   }
   atomicAdd(havsCellsCrossed, uint(steps));
-  float reach = ended ? HAVS_EMPTY : distance0 + tIn * distanceRate;
+  // (Never before the entry the peeling found: the next pass peels strictly
+  // beyond it, so that every pass moves each ray on.)
+  float reach = ended ? HAVS_EMPTY : max(distance0 + tIn * distanceRate, keyDistance);
   imageStore(havsRayState, pixel, vec4(reach, before + (1.0 - before) * color.a, 0.0, 0.0));
   havsPassColor = color;
 }
