@@ -94,6 +94,7 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastPeelPasses = 0;
   this->LastRaysStarted = 0;
   this->LastCellsCrossed = 0;
+  this->LastSectionTriangles = 0;
   if (this->BlendMode != COMPOSITE_BLEND)
   {
     vtkErrorMacro("Blend mode " << this->BlendMode
@@ -150,11 +151,12 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     return;
   }
-  if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, false))
+  if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, this->NearPlaneSection))
   {
     this->WarnOnce(vtkHAVSMapperInputs::WarnPlanes,
       "More than 6 clipping planes; vtkHAVSRayCastMapper uses the first 6.");
   }
+  this->LastSectionTriangles = this->Planes->GetNumberOfSectionTriangles();
 
   RayFrame frame;
   frame.View = &view;
@@ -193,7 +195,8 @@ void vtkHAVSRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EarlyRayTerminationOpacity: " << this->EarlyRayTerminationOpacity
      << ", MaximumPeelPasses: " << this->MaximumPeelPasses << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult
-     << ", BrokenNeighboursForTesting: " << this->BrokenNeighboursForTesting << "\n";
+     << ", BrokenNeighboursForTesting: " << this->BrokenNeighboursForTesting
+     << ", NearPlaneSection: " << this->NearPlaneSection << "\n";
   os << indent << "Last frame: " << this->LastPeelPasses << " peel passes, "
      << this->LastRaysStarted << " rays, " << this->LastCellsCrossed << " cells crossed, "
      << this->LastDrawSeconds << " s\n";

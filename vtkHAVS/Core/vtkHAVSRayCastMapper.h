@@ -33,8 +33,11 @@
  * Same inputs, scalars and table as vtkHAVSVolumeMapper
  * (vtkHAVSMapperInputs), the volume's matrix, perspective and parallel
  * cameras, opaque geometry, up to 6 clipping planes (each ray clipped to
- * them). Composite blending only. Not yet: the camera inside the mesh (the
- * GL near clip removes the entry faces there), screen tiles.
+ * them). The camera inside the mesh: where the near plane cuts it (the GL
+ * near clip removes the entry faces there) the rays start on the near
+ * plane's section (vtkHAVSFramePlanes, each triangle with its cell), drawn
+ * with the entries of the first pass. Composite blending only. Not yet:
+ * screen tiles.
  *
  * The mesh's layout is vtkHAVSRayCastMesh (96 bytes per tetrahedron).
  *
@@ -124,6 +127,17 @@ public:
   ///@}
 
   ///@{
+  /// Start the rays on the near plane's section where it cuts the mesh (the
+  /// camera inside it). On by default; off only as a negative control.
+  vtkSetMacro(NearPlaneSection, bool);
+  vtkGetMacro(NearPlaneSection, bool);
+  vtkBooleanMacro(NearPlaneSection, bool);
+  ///@}
+
+  /// Triangles of the near plane's section drawn in the last frame.
+  vtkGetMacro(LastSectionTriangles, vtkIdType);
+
+  ///@{
   /**
    * The last frame: depth-peeling passes that started rays, rays started
    * over all passes, cells crossed over all rays (segments integrated), and
@@ -189,6 +203,8 @@ private:
   int MaximumPeelPasses = 0;
   bool KeepFloatResult = false;
   bool BrokenNeighboursForTesting = false;
+  bool NearPlaneSection = true;
+  vtkIdType LastSectionTriangles = 0;
   int VectorMode = -1;
   int VectorComponent = 0;
   int LastPeelPasses = 0;

@@ -134,6 +134,42 @@ void vtkOpenGLHAVSRayCastMapper::Upload(const RayFrame& frame)
 }
 
 //------------------------------------------------------------------------------
+int vtkOpenGLHAVSRayCastMapper::UploadSection(const RayFrame& frame)
+{
+  const std::vector<vtkHAVSFramePlanes::Section>& sections = frame.Planes->GetSections();
+  if (sections.empty())
+  {
+    return 0; // (the camera outside the mesh: nothing cut by the near plane)
+  }
+  const vtkMTimeType version = frame.Planes->GetSectionsVersion();
+  if (this->SectionArray && this->UploadedSection == version)
+  {
+    return this->SectionTriangles;
+  }
+  if (!this->SectionArray)
+  {
+    glGenVertexArrays(1, &this->SectionArray);
+    glGenBuffers(2, this->SectionBuffers);
+  }
+  const vtkHAVSFramePlanes::Section& section = sections.front(); // the near plane's only
+  glBindVertexArray(this->SectionArray);
+  glBindBuffer(GL_ARRAY_BUFFER, this->SectionBuffers[0]);
+  glBufferData(
+    GL_ARRAY_BUFFER, section.Points.size() * sizeof(float), section.Points.data(), GL_STREAM_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glBindVertexArray(0);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->SectionBuffers[1]);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, section.Cells.size() * sizeof(uint32_t),
+    section.Cells.data(), GL_STREAM_DRAW);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  this->UploadedSection = version;
+  this->SectionTriangles = static_cast<int>(section.Cells.size());
+  return this->SectionTriangles;
+}
+
+//------------------------------------------------------------------------------
 void vtkOpenGLHAVSRayCastMapper::ResizeImages(int width, int height)
 {
   if (this->Images[0] && this->ImageSize[0] == width && this->ImageSize[1] == height)
@@ -180,6 +216,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     return false;
   }
   this->Upload(frame);
+  const int sectionTriangles = this->UploadSection(frame);
   const vtkHAVSViewFrame& view = *frame.View;
   const int width = view.Width, height = view.Height;
   this->Targets->Resize(width, height);
@@ -297,11 +334,22 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     state->vtkglEnable(GL_CULL_FACE);
     state->vtkglCullFace(GL_BACK);
     glFrontFace(view.FlipFacing ? GL_CW : GL_CCW);
-    glBindVertexArray(this->VertexArray);
     for (int stage = 0; stage < 2; ++stage)
     {
       peel->SetUniformi("havsPeelStage", stage);
+      state->vtkglEnable(GL_CULL_FACE);
+      glBindVertexArray(this->VertexArray);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->Buffers[FaceCellBuffer]);
       glDrawElements(GL_TRIANGLES, 3 * this->BoundaryFaces, GL_UNSIGNED_INT, nullptr);
+      if (pass == 0 && sectionTriangles > 0)
+      {
+        // The camera inside: the rays start on the near plane's section
+        // (either facing), nearer than any boundary face behind it.
+        state->vtkglDisable(GL_CULL_FACE);
+        glBindVertexArray(this->SectionArray);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->SectionBuffers[1]);
+        glDrawArrays(GL_TRIANGLES, 0, 3 * sectionTriangles);
+      }
       glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
     glBindVertexArray(0);
@@ -374,6 +422,15 @@ void vtkOpenGLHAVSRayCastMapper::ReleaseGraphicsResources(vtkWindow* window)
     this->VertexArray = 0;
     std::fill(this->Buffers, this->Buffers + 6, 0u);
   }
+  if (this->SectionArray)
+  {
+    glDeleteVertexArrays(1, &this->SectionArray);
+    glDeleteBuffers(2, this->SectionBuffers);
+    this->SectionArray = 0;
+    this->SectionBuffers[0] = this->SectionBuffers[1] = 0;
+    this->SectionTriangles = 0;
+  }
+  this->UploadedSection = 0;
   this->ReleaseImages();
   home->RemoveObserver(this->WindowDeleteObserver);
   this->Window = nullptr;

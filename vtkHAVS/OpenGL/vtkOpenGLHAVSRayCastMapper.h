@@ -22,6 +22,8 @@
  * those cells, blending under the float result (vtkHAVSGLFrameTargets, which
  * also captures the opaque depth and composites over VTK's framebuffer).
  * Passes repeat until one starts no ray (a counter read back per pass).
+ * With the camera inside the mesh the first pass also draws the near plane's
+ * section (both facings), whose cells the rays start in.
  * Needs OpenGL 4.3 (storage buffers, image load/store).
  */
 #ifndef vtkOpenGLHAVSRayCastMapper_h
@@ -60,6 +62,8 @@ private:
   void PrepareWindow(vtkOpenGLRenderWindow* window);
   void OnWindowDeleted(vtkObject* window, unsigned long, void*);
   void Upload(const RayFrame& frame);
+  /// The near plane's section (triangles and their cells); returns its triangle count.
+  int UploadSection(const RayFrame& frame);
   void ResizeImages(int width, int height);
   void ReleaseImages();
 
@@ -72,6 +76,10 @@ private:
                                                   // neighbours, counts
   unsigned int Images[3] = { 0, 0, 0 };           // entry key, entry cell, ray state
   int ImageSize[2] = { 0, 0 };
+  unsigned int SectionArray = 0;
+  unsigned int SectionBuffers[2] = { 0, 0 }; // points, cells
+  int SectionTriangles = 0;
+  vtkMTimeType UploadedSection = 0;
   int BoundaryFaces = 0;
   int Tetrahedra = 0;
   vtkMTimeType UploadedMesh = 0;
