@@ -21,7 +21,9 @@
 // a view that needs more than one depth-peeling pass (required of the
 // hollow sphere, torus and two blocks), one pass only. The
 // passes, rays and cells crossed are printed per view; a convex mesh needs
-// exactly one pass.
+// exactly one pass. The screen tiles (view 0): each tile with a covered pixel
+// took part, the largest per-tile pass count is the frame's, the image
+// without tiles is the same.
 //
 // Scene "clip": one and two clipping planes on the hollow sphere,
 // perspective and parallel (control: without them). Scene "opaque": an
@@ -55,6 +57,7 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -96,6 +99,61 @@ void PrintCounts(vtkHAVSRayCastMapper* mapper, int size)
     mapper->GetLastPeelPasses(), static_cast<long long>(mapper->GetLastRaysStarted()),
     rays > 0 ? static_cast<double>(mapper->GetLastCellsCrossed()) / rays : 0.0,
     mapper->GetLastDrawSeconds(), size);
+}
+
+/// The screen tiles of the frame just drawn: each tile with a covered pixel
+/// took part in a pass, none without one did; the largest per-tile count is
+/// the frame's pass count; without tiles (a full-viewport pass) the image is
+/// the same.
+void CheckTiles(vtkHAVSRayCastMapper* mapper, vtkRenderWindow* window, int size)
+{
+  const auto tiled = havstest::FloatResult(mapper);
+  const int grid[2] = { mapper->GetLastTileGrid()[0], mapper->GetLastTileGrid()[1] };
+  const std::vector<int> passes = mapper->GetLastTilePasses();
+  const int framePasses = mapper->GetLastPeelPasses();
+  const int tileSize = mapper->GetTileSize();
+  int active = 0, largest = 0, covered = 0, wrong = 0;
+  std::vector<int> histogram(framePasses + 1, 0);
+  for (int ty = 0; ty < grid[1]; ++ty)
+  {
+    for (int tx = 0; tx < grid[0]; ++tx)
+    {
+      const int count = passes.at(static_cast<size_t>(ty) * grid[0] + tx);
+      bool any = false;
+      for (int y = ty * tileSize; y < std::min(size, (ty + 1) * tileSize); ++y)
+      {
+        for (int x = tx * tileSize; x < std::min(size, (tx + 1) * tileSize); ++x)
+        {
+          any = any || tiled[4 * (static_cast<size_t>(y) * size + x) + 3] > 0.0f;
+        }
+      }
+      active += count > 0 ? 1 : 0;
+      covered += any ? 1 : 0;
+      wrong += any && count == 0 ? 1 : 0;
+      largest = std::max(largest, count);
+      if (count >= 0 && count < static_cast<int>(histogram.size()))
+      {
+        ++histogram[count];
+      }
+    }
+  }
+  mapper->TilesOff();
+  window->Render();
+  const auto whole = havstest::Compare(havstest::FloatResult(mapper), tiled);
+  mapper->TilesOn();
+  std::printf("    tiles %d x %d of %d px: %d with rays, %d with covered pixels; tiles by "
+              "passes:",
+    grid[0], grid[1], tileSize, active, covered);
+  for (size_t i = 0; i < histogram.size(); ++i)
+  {
+    std::printf(" %zu:%d", i, histogram[i]);
+  }
+  std::printf("; without tiles: max difference %.2g\n", whole.Max);
+  havstest::Check(grid[0] * grid[1] == static_cast<int>(passes.size()) && active > 0,
+    "tiles: one count per tile, some with rays");
+  havstest::Check(wrong == 0, "tiles: every tile with a covered pixel took part");
+  havstest::Check(largest == framePasses, "tiles: the largest per-tile pass count is the frame's");
+  havstest::Check(whole.Max < 1e-6, "tiles: the image without tiles is the same");
 }
 
 /// Clipping planes on the hollow sphere (as TestHAVSCellProjection's clip scene).
@@ -325,6 +383,10 @@ int TestHAVSRayCast(int argc, char* argv[])
     {
       ++inexact;
       havstest::Check(false, name + ": exact");
+    }
+    if (v == 0)
+    {
+      CheckTiles(mapper, s.Window, size);
     }
     if (v < 2)
     {

@@ -95,6 +95,8 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastRaysStarted = 0;
   this->LastCellsCrossed = 0;
   this->LastSectionTriangles = 0;
+  this->LastTileGrid[0] = this->LastTileGrid[1] = 0;
+  this->LastTilePasses.clear();
   if (this->BlendMode != COMPOSITE_BLEND)
   {
     vtkErrorMacro("Blend mode " << this->BlendMode
@@ -170,6 +172,7 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.KeepResult = this->KeepFloatResult;
   frame.TerminationOpacity = static_cast<float>(this->EarlyRayTerminationOpacity);
   frame.MaximumPasses = this->MaximumPeelPasses > 0 ? this->MaximumPeelPasses : 1024;
+  frame.TileSize = this->Tiles ? this->TileSize : 0;
   RayCounts counts;
   if (this->DrawRays(renderer, frame, &counts))
   {
@@ -177,6 +180,9 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     this->LastRaysStarted = static_cast<vtkIdType>(counts.Rays);
     this->LastCellsCrossed = static_cast<vtkIdType>(counts.Cells);
     this->LastDrawSeconds = counts.Seconds;
+    this->LastTileGrid[0] = counts.TileGrid[0];
+    this->LastTileGrid[1] = counts.TileGrid[1];
+    this->LastTilePasses.swap(counts.TilePasses);
   }
 }
 
@@ -197,6 +203,7 @@ void vtkHAVSRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "KeepFloatResult: " << this->KeepFloatResult
      << ", BrokenNeighboursForTesting: " << this->BrokenNeighboursForTesting
      << ", NearPlaneSection: " << this->NearPlaneSection << "\n";
+  os << indent << "Tiles: " << this->Tiles << ", TileSize: " << this->TileSize << "\n";
   os << indent << "Last frame: " << this->LastPeelPasses << " peel passes, "
      << this->LastRaysStarted << " rays, " << this->LastCellsCrossed << " cells crossed, "
      << this->LastDrawSeconds << " s\n";

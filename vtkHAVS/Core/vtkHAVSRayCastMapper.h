@@ -36,8 +36,9 @@
  * them). The camera inside the mesh: where the near plane cuts it (the GL
  * near clip removes the entry faces there) the rays start on the near
  * plane's section (vtkHAVSFramePlanes, each triangle with its cell), drawn
- * with the entries of the first pass. Composite blending only. Not yet:
- * screen tiles.
+ * with the entries of the first pass. Screen tiles: the ray-casting pass
+ * works only in the tiles where rays start, with per-tile pass counts.
+ * Composite blending only.
  *
  * The mesh's layout is vtkHAVSRayCastMesh (96 bytes per tetrahedron).
  *
@@ -127,6 +128,30 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Screen tiles (the seed's tiling): the ray-casting pass draws only the
+   * tiles of TileSize x TileSize pixels in which the pass's peeling found an
+   * entry, and each tile counts its passes (GetLastTilePasses()). On by
+   * default, 16 pixels; off: a full-viewport pass each time (same image).
+   */
+  vtkSetMacro(Tiles, bool);
+  vtkGetMacro(Tiles, bool);
+  vtkBooleanMacro(Tiles, bool);
+  vtkSetClampMacro(TileSize, int, 4, 256);
+  vtkGetMacro(TileSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * The last frame's tiles: their grid (columns, rows) and, per tile (row
+   * by row, bottom first), the passes in which rays started there (0: none,
+   * no ray-casting work there; the largest is GetLastPeelPasses()).
+   */
+  const int* GetLastTileGrid() const { return this->LastTileGrid; }
+  const std::vector<int>& GetLastTilePasses() const { return this->LastTilePasses; }
+  ///@}
+
+  ///@{
   /// Start the rays on the near plane's section where it cuts the mesh (the
   /// camera inside it). On by default; off only as a negative control.
   vtkSetMacro(NearPlaneSection, bool);
@@ -170,6 +195,7 @@ public:
     bool KeepResult = false;
     float TerminationOpacity = 0.999f;
     int MaximumPasses = 1024;
+    int TileSize = 16; ///< 0: no tiles
   };
   /// What the graphics layer counted in one frame.
   struct RayCounts
@@ -178,6 +204,8 @@ public:
     long long Rays = 0;
     long long Cells = 0;
     double Seconds = 0.0;
+    int TileGrid[2] = { 0, 0 };
+    std::vector<int> TilePasses;
   };
 
 protected:
@@ -204,6 +232,10 @@ private:
   bool KeepFloatResult = false;
   bool BrokenNeighboursForTesting = false;
   bool NearPlaneSection = true;
+  bool Tiles = true;
+  int TileSize = 16;
+  int LastTileGrid[2] = { 0, 0 };
+  std::vector<int> LastTilePasses;
   vtkIdType LastSectionTriangles = 0;
   int VectorMode = -1;
   int VectorComponent = 0;

@@ -25,6 +25,7 @@
 #include "vtkHAVSQuadVS.h"
 #include "vtkHAVSRayCastFS.h"
 #include "vtkHAVSRayCastPeelFS.h"
+#include "vtkHAVSRayCastTileVS.h"
 #include "vtkHAVSResolveFS.h"
 #include "vtkHAVSTrivialFS.h"
 
@@ -264,4 +265,9 @@ std::string vtkHAVSKBufferShaders::RayCastShader(bool opaque)
   features.Tagging = false;
   features.Opaque = opaque;
   return Compose(vtkHAVSRayCastFS, 1, 1, features);
+}
+
+std::string vtkHAVSKBufferShaders::RayCastTileVertexShader()
+{
+  return vtkHAVSRayCastTileVS;
 }

@@ -107,9 +107,12 @@ public:
   ///@{
   /// vtkHAVSRayCastMapper: the boundary entries' depth-peeling fragment
   /// shader (with CellProjectionVertexShader), and the ray-casting pass's
-  /// (with QuadVertexShader; the opaque cut compiled in with `opaque`).
+  /// (with RayCastTileVertexShader, or QuadVertexShader without tiles; the
+  /// opaque cut compiled in with `opaque`).
   static std::string RayCastPeelShader();
   static std::string RayCastShader(bool opaque);
+  /// The ray-casting pass's vertex shader: one instance per screen tile.
+  static std::string RayCastTileVertexShader();
   ///@}
 };
 

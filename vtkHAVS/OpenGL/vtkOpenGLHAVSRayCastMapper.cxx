@@ -45,7 +45,9 @@ enum BufferIndex
   FaceCellBuffer,
   CellBuffer,
   NeighbourBuffer,
-  CountBuffer
+  CountBuffer,
+  TileBuffer,
+  NumberOfBuffers
 };
 enum ImageIndex
 {
@@ -91,7 +93,8 @@ void vtkOpenGLHAVSRayCastMapper::Upload(const RayFrame& frame)
   if (!this->VertexArray)
   {
     glGenVertexArrays(1, &this->VertexArray);
-    glGenBuffers(6, this->Buffers);
+    glGenBuffers(NumberOfBuffers, this->Buffers);
+    glGenVertexArrays(1, &this->TileArray);
   }
   if (this->UploadedMesh != frame.MeshVersion)
   {
@@ -230,7 +233,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     cache->ReadyShaderProgram(vtkHAVSKBufferShaders::CellProjectionVertexShader().c_str(),
       vtkHAVSKBufferShaders::RayCastPeelShader().c_str(), "");
   vtkShaderProgram* cast = peel && peel->GetCompiled()
-    ? cache->ReadyShaderProgram(vtkHAVSKBufferShaders::QuadVertexShader().c_str(),
+    ? cache->ReadyShaderProgram(vtkHAVSKBufferShaders::RayCastTileVertexShader().c_str(),
         vtkHAVSKBufferShaders::RayCastShader(frame.Opaque).c_str(), "")
     : nullptr;
   if (!cast || !cast->GetCompiled())
@@ -279,6 +282,24 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
       program->SetUniform4fv("havsPlanesRC", planeCount, planes);
     }
   }
+  // Screen tiles (without them, one tile covering the viewport).
+  const int tileSize = frame.TileSize > 0 ? frame.TileSize : std::max(width, height);
+  const int tileCount[2] = { (width + tileSize - 1) / tileSize,
+    (height + tileSize - 1) / tileSize };
+  const int tiles = tileCount[0] * tileCount[1];
+  {
+    const std::vector<GLuint> none(static_cast<size_t>(tiles), 0u);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[TileBuffer]);
+    glBufferData(
+      GL_SHADER_STORAGE_BUFFER, none.size() * sizeof(GLuint), none.data(), GL_STREAM_DRAW);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  }
+  for (vtkShaderProgram* program : { peel, cast })
+  {
+    cache->ReadyShaderProgram(program);
+    program->SetUniform2i("havsTileCount", tileCount);
+    program->SetUniformi("havsTileSize", tileSize);
+  }
   cache->ReadyShaderProgram(peel);
   vtkHAVSViewFrame::ToColumnMajor(view.ModelToClip, m);
   peel->SetUniformMatrix4x4("havsMCDC", m);
@@ -313,6 +334,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->Buffers[FaceCellBuffer]);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, this->Buffers[NeighbourBuffer]);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, this->Buffers[CountBuffer]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, this->Buffers[TileBuffer]);
 
   state->PushFramebufferBindings();
   this->Targets->BindResult();
@@ -329,6 +351,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   {
     // Peel: the nearest front-facing boundary entry beyond each ray's reach.
     cache->ReadyShaderProgram(peel);
+    peel->SetUniformi("havsPass", pass + 1);
     state->vtkglDisable(GL_BLEND);
     state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     state->vtkglEnable(GL_CULL_FACE);
@@ -360,7 +383,11 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
-    this->Targets->DrawFullViewport();
+    // (Only the tiles where this pass's peeling found entries.)
+    cast->SetUniformi("havsPass", pass + 1);
+    glBindVertexArray(this->TileArray);
+    glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles);
+    glBindVertexArray(0);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
       GL_BUFFER_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountBuffer]);
@@ -378,6 +405,15 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   counts->Passes = passes;
   counts->Rays = readBack[0];
   counts->Cells = readBack[1];
+  {
+    std::vector<GLuint> last(static_cast<size_t>(tiles), 0u);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[TileBuffer]);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, last.size() * sizeof(GLuint), last.data());
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    counts->TileGrid[0] = tileCount[0];
+    counts->TileGrid[1] = tileCount[1];
+    counts->TilePasses.assign(last.begin(), last.end());
+  }
   state->vtkglDisable(GL_BLEND);
   for (GLuint unit = 0; unit < 3; ++unit)
   {
@@ -418,9 +454,10 @@ void vtkOpenGLHAVSRayCastMapper::ReleaseGraphicsResources(vtkWindow* window)
   if (this->VertexArray)
   {
     glDeleteVertexArrays(1, &this->VertexArray);
-    glDeleteBuffers(6, this->Buffers);
-    this->VertexArray = 0;
-    std::fill(this->Buffers, this->Buffers + 6, 0u);
+    glDeleteVertexArrays(1, &this->TileArray);
+    glDeleteBuffers(NumberOfBuffers, this->Buffers);
+    this->VertexArray = this->TileArray = 0;
+    std::fill(this->Buffers, this->Buffers + NumberOfBuffers, 0u);
   }
   if (this->SectionArray)
   {

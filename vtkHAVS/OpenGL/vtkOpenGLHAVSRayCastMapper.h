@@ -19,7 +19,9 @@
  * (key and cell), in images. Each depth-peeling pass draws the front-facing
  * boundary faces twice (the nearest entry beyond each ray's reach, then its
  * cell) and then one full-viewport ray-casting pass that walks the rays from
- * those cells, blending under the float result (vtkHAVSGLFrameTargets, which
+ * those cells (one instance per screen tile, drawn only where the pass
+ * found entries; storage buffer 8 holds each tile's last pass), blending
+ * under the float result (vtkHAVSGLFrameTargets, which
  * also captures the opaque depth and composites over VTK's framebuffer).
  * Passes repeat until one starts no ray (a counter read back per pass).
  * With the camera inside the mesh the first pass also draws the near plane's
@@ -72,9 +74,9 @@ private:
   vtkNew<vtkHAVSGLTable> GLTable;
   vtkNew<vtkHAVSGLFrameTargets> Targets;
   unsigned int VertexArray = 0;
-  unsigned int Buffers[6] = { 0, 0, 0, 0, 0, 0 }; // points, faces, face cells, cells,
-                                                  // neighbours, counts
-  unsigned int Images[3] = { 0, 0, 0 };           // entry key, entry cell, ray state
+  unsigned int Buffers[7] = {}; // points, faces, face cells, cells, neighbours, counts, tiles
+  unsigned int TileArray = 0;   // (no attributes: the tiles' corners come from their ids)
+  unsigned int Images[3] = { 0, 0, 0 }; // entry key, entry cell, ray state
   int ImageSize[2] = { 0, 0 };
   unsigned int SectionArray = 0;
   unsigned int SectionBuffers[2] = { 0, 0 }; // points, cells

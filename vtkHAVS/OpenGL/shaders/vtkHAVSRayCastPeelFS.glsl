@@ -19,6 +19,15 @@ layout(std430, binding = 5) readonly buffer HAVSEntryCells
 {
   uint havsEntryCells[];
 };
+// Per screen tile: the last pass (1-based) in which a ray started there.
+layout(std430, binding = 8) buffer HAVSTiles
+{
+  uint havsTiles[];
+};
+uniform ivec2 havsTileCount;
+uniform int havsTileSize;
+uniform int havsPass; // this pass, 1-based
+
 layout(binding = 0, r32ui) uniform coherent uimage2D havsEntryKey;
 layout(binding = 1, r32ui) uniform coherent uimage2D havsEntryCell;
 layout(binding = 2, rg32f) uniform readonly image2D havsRayState;
@@ -54,5 +63,7 @@ void main()
   {
     // (Several faces at the same key: an edge; any of them is an entry.)
     imageStore(havsEntryCell, pixel, uvec4(havsEntryCells[gl_PrimitiveID] + 1u));
+    ivec2 tile = pixel / havsTileSize;
+    havsTiles[tile.y * havsTileCount.x + tile.x] = uint(havsPass);
   }
 }
