@@ -11,8 +11,8 @@
 // re-entries by depth peeling; seed 002) against the exact reference
 // (vtkHAVSReferenceRenderer): the float result at N standard views
 // (perspective, turned off the axes on the test meshes) and a parallel view,
-// and the volume's matrix (rotated, stretched, against the transformed
-// grid). Required: RMSE < 5e-4 and max < 0.01 (MISSION's "exact"), leaving
+// and, with 3 views or more, the volume's matrix (rotated, stretched, against
+// the transformed grid). Required: RMSE < 5e-4 and max < 0.01 (MISSION's "exact"), leaving
 // out up to 0.05 % of the pixels (centres on a face edge, covered
 // differently by rasterizer and rays; as TestHAVSCellProjection).
 //
@@ -428,6 +428,10 @@ int TestHAVSRayCast(int argc, char* argv[])
     havstest::Check(mostPasses == 1, "a convex mesh: one peeling pass");
   }
 
+  if (views < 3)
+  {
+    return havstest::Result(); // (the default suite's short runs: the matrix in the .full ones)
+  }
   // The volume's matrix: rotated and stretched, against the transformed grid.
   vtkNew<vtkTransform> transform;
   transform->RotateWXYZ(35.0, 0.3, 1.0, 0.2);

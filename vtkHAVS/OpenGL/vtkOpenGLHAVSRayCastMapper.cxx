@@ -181,7 +181,7 @@ void vtkOpenGLHAVSRayCastMapper::ResizeImages(int width, int height)
   }
   this->ReleaseImages();
   glGenTextures(3, this->Images);
-  const GLenum formats[3] = { GL_R32UI, GL_R32UI, GL_RG32F };
+  const GLenum formats[3] = { GL_R32UI, GL_R32UI, GL_RGBA32F };
   for (int i = 0; i < 3; ++i)
   {
     glBindTexture(GL_TEXTURE_2D, this->Images[i]);
@@ -303,7 +303,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   cache->ReadyShaderProgram(peel);
   vtkHAVSViewFrame::ToColumnMajor(view.ModelToClip, m);
   peel->SetUniformMatrix4x4("havsMCDC", m);
-  peel->SetUniformf("havsPeelBias", 0.0f);
+  peel->SetUniformf("havsPeelTolerance", 1.0e-5f);
   cache->ReadyShaderProgram(cast);
   this->GLTable->SetUniforms(cast);
   cast->SetUniformf("havsTerminationOpacity", frame.TerminationOpacity);
@@ -319,13 +319,13 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
 
   // Per pixel: no entry yet, the ray has reached nothing, opacity 0.
   const GLuint noKey = 0xffffffffu, noCell = 0;
-  const float fresh[2] = { -3.0e38f, 0.0f };
+  const float fresh[4] = { -3.0e38f, 0.0f, -3.0e38f, 0.0f };
   glClearTexImage(this->Images[EntryKeyImage], 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &noKey);
   glClearTexImage(this->Images[EntryCellImage], 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &noCell);
-  glClearTexImage(this->Images[RayStateImage], 0, GL_RG, GL_FLOAT, fresh);
+  glClearTexImage(this->Images[RayStateImage], 0, GL_RGBA, GL_FLOAT, fresh);
   glBindImageTexture(0, this->Images[EntryKeyImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   glBindImageTexture(1, this->Images[EntryCellImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-  glBindImageTexture(2, this->Images[RayStateImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32F);
+  glBindImageTexture(2, this->Images[RayStateImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   const GLuint zeroCounts[2] = { 0, 0 };
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountBuffer]);
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(zeroCounts), zeroCounts);

@@ -34,7 +34,7 @@ layout(std430, binding = 7) buffer HAVSRayCounts
 };
 layout(binding = 0, r32ui) uniform coherent uimage2D havsEntryKey;
 layout(binding = 1, r32ui) uniform coherent uimage2D havsEntryCell;
-layout(binding = 2, rg32f) uniform coherent image2D havsRayState;
+layout(binding = 2, rgba32f) uniform coherent image2D havsRayState;
 
 uniform mat4 havsDCMC;        // clip -> model
 uniform mat4 havsMCRC;        // model -> eye-relative world (volume matrix included)
@@ -61,7 +61,7 @@ void main()
   // Ready for the next pass.
   imageStore(havsEntryCell, pixel, uvec4(0u));
   imageStore(havsEntryKey, pixel, uvec4(0xffffffffu));
-  vec2 state = imageLoad(havsRayState, pixel).xy; // reach, opacity so far
+  vec4 state = imageLoad(havsRayState, pixel); // reach, opacity so far, last entry
   atomicAdd(havsRaysStarted, 1u);
 
   // The pixel's ray, o + t d, in model coordinates.
@@ -103,6 +103,12 @@ void main()
     {
       tHigh = -HAVS_EMPTY;
     }
+  }
+  // Nothing before the reach is integrated again (an entry taken a hair
+  // before it, at a seam).
+  if (state.x > -HAVS_EMPTY)
+  {
+    tLow = max(tLow, (state.x - distance0) / distanceRate);
   }
 #if HAVS_OPAQUE
   float opaque = havsOpaqueDistance(gl_FragCoord.xy);
@@ -184,9 +190,9 @@ void main()
     cell = next;
   }
   atomicAdd(havsCellsCrossed, uint(steps));
-  // (Never before the entry the peeling found: the next pass peels strictly
-  // beyond it, so that every pass moves each ray on.)
+  // (Never before the entry the peeling found.)
   float reach = ended ? HAVS_EMPTY : max(distance0 + tIn * distanceRate, keyDistance);
-  imageStore(havsRayState, pixel, vec4(reach, before + (1.0 - before) * color.a, 0.0, 0.0));
+  imageStore(
+    havsRayState, pixel, vec4(reach, before + (1.0 - before) * color.a, keyDistance, 0.0));
   havsPassColor = color;
 }

@@ -30,10 +30,12 @@ uniform int havsPass; // this pass, 1-based
 
 layout(binding = 0, r32ui) uniform coherent uimage2D havsEntryKey;
 layout(binding = 1, r32ui) uniform coherent uimage2D havsEntryCell;
-layout(binding = 2, rg32f) uniform readonly image2D havsRayState;
+// The ray: the eye distance it has reached, its opacity, the distance of its
+// last entry.
+layout(binding = 2, rgba32f) uniform readonly image2D havsRayState;
 
-uniform int havsPeelStage;   // 0: the nearest key; 1: the cell at it
-uniform float havsPeelBias;  // relative: an entry must lie this far beyond the ray's reach
+uniform int havsPeelStage;        // 0: the nearest key; 1: the cell at it
+uniform float havsPeelTolerance;  // relative: how far before the reach an entry may lie
 
 layout(location = 0) out vec4 havsUnused; // (colour writes masked)
 
@@ -48,11 +50,15 @@ void main()
 {
   havsUnused = vec4(0.0);
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  float reached = imageLoad(havsRayState, pixel).x;
+  vec4 ray = imageLoad(havsRayState, pixel);
   float d = havsDistance(havsPositionRC);
-  if (!(d > reached + havsPeelBias * abs(reached)))
+  // Beyond the last entry (strictly: every pass moves the ray on), and not
+  // before where the ray left the mesh, up to rounding: an entry that
+  // coincides with the exit (a seam of duplicated points, the far side of a
+  // dropped flat cell) is taken. An ended ray has reached HAVS_EMPTY.
+  if (!(d > ray.z && d >= ray.x - havsPeelTolerance * abs(ray.x)))
   {
-    return; // peeled already (or the ray has ended: reached = HAVS_EMPTY)
+    return;
   }
   uint key = havsOrderedKey(d);
   if (havsPeelStage == 0)
