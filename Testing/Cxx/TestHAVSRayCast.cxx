@@ -28,6 +28,8 @@
 // Scene "clip": one and two clipping planes on the hollow sphere,
 // perspective and parallel (control: without them). Scene "opaque": an
 // opaque sphere inside a box (control: the reference through the surface).
+// Scene "seam": two boxes touching, points not merged (coincident boundary
+// faces: the ray leaves and re-enters at the same point; one pass fails).
 // Scenes "inside-box", "inside-bluntfin": the camera inside the mesh, the rays
 // starting on the near plane's section (control: without it).
 //
@@ -41,6 +43,7 @@
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSStandardViews.h"
 
+#include "vtkAppendFilter.h"
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
@@ -317,8 +320,35 @@ int TestHAVSRayCast(int argc, char* argv[])
   {
     return InsideScene(scene.substr(7), size);
   }
-  auto grid = scene == "box" ? vtkHAVSDataSets::MakeBox(8, 8, 8, 0.125, 0.0, 1.0)
-                             : vtkHAVSDataSets::Load(scene);
+  vtkSmartPointer<vtkUnstructuredGrid> grid;
+  if (scene == "box")
+  {
+    grid = vtkHAVSDataSets::MakeBox(8, 8, 8, 0.125, 0.0, 1.0);
+  }
+  else if (scene == "seam")
+  {
+    // Two boxes that touch, their points not merged: every ray through the
+    // shared plane leaves one box and enters the other at the same point
+    // (coincident boundary faces, as the LOX post's O-grid seam).
+    auto a = vtkHAVSDataSets::MakeBox(6, 6, 6, 0.125, 0.0, 1.0);
+    auto b = vtkHAVSDataSets::MakeBox(6, 6, 6, 0.125, 0.0, 1.0);
+    vtkNew<vtkTransform> shift;
+    shift->Translate(0.75, 0.0, 0.0); // (exactly the first box's width)
+    vtkNew<vtkTransformFilter> moved;
+    moved->SetInputData(b);
+    moved->SetTransform(shift);
+    vtkNew<vtkAppendFilter> both;
+    both->AddInputData(a);
+    both->AddInputConnection(moved->GetOutputPort());
+    both->MergePointsOff();
+    both->Update();
+    grid = both->GetOutput();
+    grid->GetPointData()->SetActiveScalars("s");
+  }
+  else
+  {
+    grid = vtkHAVSDataSets::Load(scene);
+  }
   if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "scene " + scene + " loads"))
   {
     return EXIT_FAILURE;
@@ -326,7 +356,8 @@ int TestHAVSRayCast(int argc, char* argv[])
   const bool dataSet = scene == "bluntfin" || scene == "combustor" || scene == "loxpost";
   const bool turned = !dataSet || scene == "loxpost";
   // Rays that leave and re-enter: the controls' one peeling pass must fail.
-  const bool reentrant = scene == "hollowsphere" || scene == "torus" || scene == "twoblocks";
+  const bool reentrant =
+    scene == "hollowsphere" || scene == "torus" || scene == "twoblocks" || scene == "seam";
   std::printf("%s: %lld cells, %d^2, %d views + parallel\n", scene.c_str(),
     static_cast<long long>(grid->GetNumberOfCells()), size, views);
   auto property = havstest::MakeRampPropertyFor(grid);
