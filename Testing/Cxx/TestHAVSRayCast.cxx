@@ -28,6 +28,8 @@
 // Scene "clip": one and two clipping planes on the hollow sphere,
 // perspective and parallel (control: without them). Scene "opaque": an
 // opaque sphere inside a box (control: the reference through the surface).
+// Scenes "blend-<mesh>": maximum, minimum intensity and additive against
+// the reference under the same blend (control: a broken neighbour table).
 // Scene "seam": two boxes touching, points not merged (coincident boundary
 // faces: the ray leaves and re-enters at the same point; one pass fails).
 // Scenes "inside-box", "inside-bluntfin": the camera inside the mesh, the rays
@@ -45,6 +47,7 @@
 
 #include "vtkAppendFilter.h"
 #include "vtkCamera.h"
+#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
@@ -233,6 +236,119 @@ int OpaqueScene(int size)
   return havstest::Result();
 }
 
+/// The order-independent blends (maximum, minimum intensity, additive)
+/// against the reference under the same blend, at view 0 (and a parallel
+/// view with `views` 2); control: a broken neighbour table (must fail at half the views or
+/// more: where the field hardly varies along the rays an extremum cannot
+/// show it). The minimum on the scalars negated (see below).
+int BlendScene(const std::string& mesh, int size, int views)
+{
+  auto grid = vtkHAVSDataSets::Load(mesh);
+  if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "scene " + mesh + " loads"))
+  {
+    return EXIT_FAILURE;
+  }
+  double range[2];
+  grid->GetPointData()->GetScalars()->GetRange(range);
+  auto property = havstest::MakeRampPropertyFor(grid);
+  auto thin = havstest::MakeRampProperty(range[0], range[1], 0.8, grid->GetLength());
+  vtkNew<vtkHAVSRayCastMapper> mapper;
+  mapper->KeepFloatResultOn();
+  auto s = havstest::MakeScene(grid, mapper, property, size, size);
+  vtkCamera* camera = s.Renderer->GetActiveCamera();
+  const size_t edgePixels = static_cast<size_t>(size) * size / 2000;
+  auto place = [&](int v)
+  {
+    vtkHAVSStandardViews::PlaceCamera(camera, grid, v == 0 ? 0 : 3);
+    camera->SetParallelProjection(v == 0 ? 0 : 1);
+    camera->Azimuth(v == 0 ? 7.0 : 11.0);
+    camera->Elevation(v == 0 ? 5.0 : 7.0);
+    camera->OrthogonalizeViewUp();
+    if (v != 0)
+    {
+      s.Renderer->ResetCamera();
+    }
+    s.Renderer->ResetCameraClippingRange();
+  };
+  auto reference = [&](vtkVolumeProperty* used, int blend)
+  {
+    vtkNew<vtkHAVSReferenceRenderer> r;
+    r->SetInputData(vtkUnstructuredGrid::SafeDownCast(mapper->GetInput()));
+    r->SetProperty(used);
+    r->SetCamera(camera);
+    r->SetSize(size, size);
+    r->SetBlendMode(blend);
+    r->Render();
+    vtkFloatArray* image = r->GetImage();
+    return std::vector<float>(image->GetPointer(0), image->GetPointer(0) + 4 * size * size);
+  };
+  {
+    // The additive sum scales with 1 / unit distance: scaled so that the
+    // brightest pixel of view 0 is 0.5, neither dim nor clamped.
+    place(0);
+    const auto probe = reference(thin, 4);
+    double brightest = 0.0;
+    for (size_t p = 0; p < probe.size(); p += 4)
+    {
+      brightest = std::max(brightest, static_cast<double>(probe[p]));
+    }
+    if (brightest > 0.0)
+    {
+      thin->SetScalarOpacityUnitDistance(grid->GetLength() * brightest / 0.5);
+    }
+  }
+  // The minimum of the scalars lies where the rays enter on these meshes (a
+  // broken table cannot show there): the minimum is checked on the scalars
+  // negated, so that it lies where the maximum did, inside.
+  vtkNew<vtkUnstructuredGrid> negated;
+  negated->ShallowCopy(grid);
+  {
+    vtkDataArray* scalars = grid->GetPointData()->GetScalars();
+    vtkNew<vtkFloatArray> minus;
+    minus->SetName("negated");
+    minus->SetNumberOfTuples(scalars->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+    {
+      minus->SetValue(i, static_cast<float>(-scalars->GetComponent(i, 0)));
+    }
+    negated->GetPointData()->AddArray(minus);
+    negated->GetPointData()->SetActiveScalars("negated");
+  }
+  auto negatedProperty = havstest::MakeRampPropertyFor(negated);
+  const char* const names[] = { "", "maximum intensity", "minimum intensity", "", "additive" };
+  for (int blend : { 1, 2, 4 })
+  {
+    vtkVolumeProperty* used =
+      blend == 4 ? thin.Get() : (blend == 2 ? negatedProperty.Get() : property.Get());
+    s.Volume->SetProperty(used);
+    mapper->SetInputData(blend == 2 ? negated.Get() : grid.Get());
+    mapper->SetBlendMode(blend);
+    int inexact = 0, controlsFailed = 0;
+    for (int v = 0; v < views; ++v)
+    {
+      place(v);
+      const std::string name =
+        std::string(names[blend]) + (v == 0 ? ", view 0" : ", parallel view");
+      const auto exact = reference(used, blend);
+      s.Window->Render();
+      const auto d = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
+      Print(name, d);
+      inexact += Exact(d) ? 0 : 1;
+      mapper->SetBrokenNeighboursForTesting(true);
+      s.Window->Render();
+      const auto broken = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
+      Print(name + ": control, a broken neighbour table", broken);
+      controlsFailed += Exact(broken) ? 0 : 1;
+      mapper->SetBrokenNeighboursForTesting(false);
+    }
+    havstest::Check(inexact == 0, std::string(names[blend]) + ": exact at every view");
+    havstest::Check(2 * controlsFailed >= views,
+      std::string(names[blend]) +
+        ": negative control, a broken table fails at half the views or more");
+  }
+  return havstest::Result();
+}
+
 /// The camera inside the mesh (perspective, the near plane in it, as
 /// TestHAVSCellProjection's inside scenes): against the reference, which
 /// starts the rays at the near plane; control: without the near plane's section.
@@ -319,6 +435,10 @@ int TestHAVSRayCast(int argc, char* argv[])
   if (scene.rfind("inside-", 0) == 0)
   {
     return InsideScene(scene.substr(7), size);
+  }
+  if (scene.rfind("blend-", 0) == 0)
+  {
+    return BlendScene(scene.substr(6), size, argc > 3 ? std::min(views, 2) : 1);
   }
   vtkSmartPointer<vtkUnstructuredGrid> grid;
   if (scene == "box")

@@ -97,11 +97,18 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastSectionTriangles = 0;
   this->LastTileGrid[0] = this->LastTileGrid[1] = 0;
   this->LastTilePasses.clear();
-  if (this->BlendMode != COMPOSITE_BLEND)
+  switch (this->BlendMode)
   {
-    vtkErrorMacro("Blend mode " << this->BlendMode
-                                << " is not supported by vtkHAVSRayCastMapper (composite is).");
-    return;
+    case COMPOSITE_BLEND:
+    case MAXIMUM_INTENSITY_BLEND:
+    case MINIMUM_INTENSITY_BLEND:
+    case ADDITIVE_BLEND:
+      break;
+    default:
+      vtkErrorMacro("Blend mode " << this->BlendMode
+                                  << " is not supported by vtkHAVSRayCastMapper (composite, "
+                                     "maximum, minimum intensity and additive are).");
+      return;
   }
   if (this->GetNumberOfInputConnections(0) > 0)
   {
@@ -117,15 +124,19 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   const std::vector<uint32_t>& tets = this->Mesh->GetFaceSet()->GetTetrahedra();
   const std::vector<float>* cellScalars =
     this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronScalars() : nullptr;
-  if (state == vtkHAVSMapperInputs::MeshScalarsUpdated && this->RayMesh)
+  // The neighbours are kept for a new time step on the same mesh (the
+  // fields again) and for an unchanged one, unless the testing aid changed.
+  const bool keepNeighbours = this->RayMesh &&
+    this->RayMeshBroken == this->BrokenNeighboursForTesting &&
+    (state == vtkHAVSMapperInputs::MeshUnchanged ||
+      state == vtkHAVSMapperInputs::MeshScalarsUpdated);
+  if (keepNeighbours && state == vtkHAVSMapperInputs::MeshScalarsUpdated)
   {
-    // A new time step on the same mesh: the fields again, the neighbours kept.
     this->RayMesh->UpdateFields(
       this->Mesh->GetPoints(), this->Mesh->GetScalars(), tets, cellScalars);
     this->RayMeshTime.Modified();
   }
-  else if (state != vtkHAVSMapperInputs::MeshUnchanged || !this->RayMesh ||
-    this->RayMeshBroken != this->BrokenNeighboursForTesting)
+  else if (!keepNeighbours)
   {
     this->RayMesh.reset(new vtkHAVSRayCastMesh);
     this->RayMesh->Build(this->Mesh->GetPoints(), this->Mesh->GetScalars(), tets, cellScalars);
@@ -173,6 +184,7 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.TerminationOpacity = static_cast<float>(this->EarlyRayTerminationOpacity);
   frame.MaximumPasses = this->MaximumPeelPasses > 0 ? this->MaximumPeelPasses : 1024;
   frame.TileSize = this->Tiles ? this->TileSize : 0;
+  frame.Blend = this->BlendMode;
   RayCounts counts;
   if (this->DrawRays(renderer, frame, &counts))
   {
@@ -198,6 +210,7 @@ void vtkHAVSRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Table: " << this->TableScalarResolution << "^2 x " << this->TableLengthResolution
      << "\n";
+  os << indent << "BlendMode: " << this->BlendMode << "\n";
   os << indent << "EarlyRayTerminationOpacity: " << this->EarlyRayTerminationOpacity
      << ", MaximumPeelPasses: " << this->MaximumPeelPasses << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult

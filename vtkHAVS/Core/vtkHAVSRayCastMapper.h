@@ -38,7 +38,7 @@
  * plane's section (vtkHAVSFramePlanes, each triangle with its cell), drawn
  * with the entries of the first pass. Screen tiles: the ray-casting pass
  * works only in the tiles where rays start, with per-tile pass counts.
- * Composite blending only.
+ * Blend modes: composite, maximum and minimum intensity, additive.
  *
  * The mesh's layout is vtkHAVSRayCastMesh (96 bytes per tetrahedron).
  *
@@ -71,6 +71,19 @@ public:
   static vtkHAVSRayCastMapper* New();
   vtkTypeMacro(vtkHAVSRayCastMapper, vtkUnstructuredGridVolumeMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Blend modes (vtkVolumeMapper's numbering): composite (default), maximum
+   * and minimum intensity, additive, as vtkHAVSCellProjectionMapper's (the
+   * extremal scalar along the ray in the mesh coloured by the transfer
+   * function; VTK's additive: the integral of tau(s) s, clamped to 1, grey).
+   */
+  static constexpr int MINIMUM_INTENSITY_BLEND = 2;
+  static constexpr int ADDITIVE_BLEND = 4;
+  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
+  void SetBlendModeToAdditive() { this->SetBlendMode(ADDITIVE_BLEND); }
+  ///@}
 
   ///@{
   /// Resolutions of the pre-integration table (as vtkHAVSVolumeMapper's; default 128).
@@ -196,6 +209,7 @@ public:
     float TerminationOpacity = 0.999f;
     int MaximumPasses = 1024;
     int TileSize = 16; ///< 0: no tiles
+    int Blend = 0;     ///< the blend mode
   };
   /// What the graphics layer counted in one frame.
   struct RayCounts

@@ -11,6 +11,7 @@
 
 #include "vtkHAVSVolumeMapper.h"
 
+#include "vtkHAVSAdditiveLib.h"
 #include "vtkHAVSCellProjectionFS.h"
 #include "vtkHAVSCellProjectionVS.h"
 #include "vtkHAVSClearFS.h"
@@ -246,6 +247,7 @@ std::string vtkHAVSKBufferShaders::CellProjectionShader(bool opaque, int blend)
   features.Opaque = opaque;
   std::string source = Compose(vtkHAVSCellProjectionFS, 1, 1, features);
   Replace(source, "//HAVS::CellBlend", "#define HAVS_CELL_BLEND " + std::to_string(blend));
+  Replace(source, "//HAVS::AdditiveLib", vtkHAVSAdditiveLib);
   return source;
 }
 
@@ -258,13 +260,16 @@ std::string vtkHAVSKBufferShaders::RayCastPeelShader()
   return Compose(vtkHAVSRayCastPeelFS, 1, 1, features);
 }
 
-std::string vtkHAVSKBufferShaders::RayCastShader(bool opaque)
+std::string vtkHAVSKBufferShaders::RayCastShader(bool opaque, int blend)
 {
   Features features;
   features.CountViolations = false;
   features.Tagging = false;
   features.Opaque = opaque;
-  return Compose(vtkHAVSRayCastFS, 1, 1, features);
+  std::string source = Compose(vtkHAVSRayCastFS, 1, 1, features);
+  Replace(source, "//HAVS::CellBlend", "#define HAVS_CELL_BLEND " + std::to_string(blend));
+  Replace(source, "//HAVS::AdditiveLib", vtkHAVSAdditiveLib);
+  return source;
 }
 
 std::string vtkHAVSKBufferShaders::RayCastTileVertexShader()

@@ -9,6 +9,7 @@
 =========================================================================*/
 #include "vtkOpenGLHAVSRayCastMapper.h"
 
+#include "vtkHAVSExtremumPass.h"
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSGLCapabilities.h"
 #include "vtkHAVSGLFrameTargets.h"
@@ -234,7 +235,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
       vtkHAVSKBufferShaders::RayCastPeelShader().c_str(), "");
   vtkShaderProgram* cast = peel && peel->GetCompiled()
     ? cache->ReadyShaderProgram(vtkHAVSKBufferShaders::RayCastTileVertexShader().c_str(),
-        vtkHAVSKBufferShaders::RayCastShader(frame.Opaque).c_str(), "")
+        vtkHAVSKBufferShaders::RayCastShader(frame.Opaque, frame.Blend).c_str(), "")
     : nullptr;
   if (!cast || !cast->GetCompiled())
   {
@@ -246,8 +247,10 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   vtkHAVSGLScopedPassState passState(state);
   vtkTextureObject* table = this->GLTable->GetTable();
   vtkTextureObject* depth = this->Targets->GetOpaqueDepth();
+  vtkTextureObject* additive = this->GLTable->GetAdditive1D();
   table->Activate();
   depth->Activate();
+  additive->Activate();
 
   // The uniforms both programs read (the view, the planes).
   float m[16];
@@ -309,6 +312,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   cast->SetUniformf("havsTerminationOpacity", frame.TerminationOpacity);
   cast->SetUniformf("havsGapLength", 3.0e38f);
   cast->SetUniformi("havsOpaqueDepth", depth->GetTextureUnit());
+  cast->SetUniformi("havsAdditive", additive->GetTextureUnit());
   double clipToModel[16];
   vtkMatrix4x4::Invert(view.ModelToClip, clipToModel);
   vtkHAVSViewFrame::ToColumnMajor(clipToModel, m);
@@ -382,7 +386,18 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     cache->ReadyShaderProgram(cast);
     state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     state->vtkglEnable(GL_BLEND);
-    state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+    if (frame.Blend == vtkHAVSRayCastMapper::COMPOSITE_BLEND)
+    {
+      // Front to back: this pass goes under the earlier ones (premultiplied).
+      state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+    }
+    else
+    {
+      // Order-independent: the largest (of s, or of 1 - s), or the sum.
+      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+      state->vtkglBlendEquation(
+        frame.Blend == vtkHAVSRayCastMapper::ADDITIVE_BLEND ? GL_FUNC_ADD : GL_MAX);
+    }
     // (Only the tiles where this pass's peeling found entries.)
     cast->SetUniformi("havsPass", pass + 1);
     glBindVertexArray(this->TileArray);
@@ -415,6 +430,17 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     counts->TilePasses.assign(last.begin(), last.end());
   }
   state->vtkglDisable(GL_BLEND);
+  state->vtkglBlendEquation(GL_FUNC_ADD);
+  bool resolved = true;
+  if (frame.Blend != vtkHAVSRayCastMapper::COMPOSITE_BLEND)
+  {
+    const auto kind = frame.Blend == vtkHAVSRayCastMapper::ADDITIVE_BLEND
+      ? vtkHAVSExtremumPass::ResolveAdditive
+      : (frame.Blend == vtkHAVSRayCastMapper::MINIMUM_INTENSITY_BLEND
+            ? vtkHAVSExtremumPass::ResolveMinimum
+            : vtkHAVSExtremumPass::ResolveMaximum);
+    resolved = vtkHAVSExtremumPass::ResolveResult(window, this->Targets, this->GLTable, kind);
+  }
   for (GLuint unit = 0; unit < 3; ++unit)
   {
     glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
@@ -425,10 +451,16 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     this->KeptSize[0] = width;
     this->KeptSize[1] = height;
   }
+  additive->Deactivate();
   table->Deactivate();
   depth->Deactivate();
   state->PopFramebufferBindings();
   state->vtkglViewport(view.OriginX, view.OriginY, width, height);
+  if (!resolved)
+  {
+    vtkErrorMacro("The resolve shader could not be built; see the shader log above.");
+    return false;
+  }
   return this->Targets->Composite(view.OriginX, view.OriginY);
 }
 

@@ -12,8 +12,18 @@
 // ends where the ray leaves the mesh (neighbour -1: the next pass peels the
 // next entry beyond it), at the clipping planes or the opaque surface, or at
 // the termination opacity (the ray is then done for every later pass).
+//
+// The order-independent blends (HAVS_CELL_BLEND 1, 2: maximum and minimum
+// intensity; 4: VTK's additive) write the ray's extremal scalar in the mesh
+// (1 - s for the minimum) for GL_MAX blending across passes, or its additive
+// integral for GL_FUNC_ADD, with a coverage flag beside it; the extremum
+// resolve (vtkHAVSExtremumResolveFS) colours the pixel.
 //HAVS::Defines
+//HAVS::CellBlend
 //HAVS::KBufferLib
+#if HAVS_CELL_BLEND == 4
+//HAVS::AdditiveLib
+#endif
 
 // Per tetrahedron (vtkHAVSCellGeometry): 4 outward face planes, then the
 // field's gradient and offset, model coordinates.
@@ -138,6 +148,8 @@ void main()
   }
 
   vec4 color = vec4(0.0);
+  float extremum = 0.0; // (the order-independent blends)
+  bool covered = false;
   float before = state.y;
   bool ended = false;
   int steps = 0;
@@ -172,7 +184,16 @@ void main()
       vec4 field = havsCells[base + 4];
       float sA = clamp(dot(field.xyz, p + (a - tIn) * d) + field.w, 0.0, 1.0);
       float sB = clamp(dot(field.xyz, p + (b - tIn) * d) + field.w, 0.0, 1.0);
+      covered = true;
+#if HAVS_CELL_BLEND == 1
+      extremum = max(extremum, max(sA, sB));
+#elif HAVS_CELL_BLEND == 2
+      extremum = max(extremum, 1.0 - min(sA, sB));
+#elif HAVS_CELL_BLEND == 4
+      extremum += havsAdditiveSegment(sA, sB, (b - a) * worldPerT);
+#else
       color += (1.0 - color.a) * havsSegment(vec2(0.0, sA), vec2((b - a) * worldPerT, sB));
+#endif
     }
     tIn = tOut;
     if (tOut >= tHigh || before + (1.0 - before) * color.a >= havsTerminationOpacity)
@@ -194,5 +215,13 @@ void main()
   float reach = ended ? HAVS_EMPTY : max(distance0 + tIn * distanceRate, keyDistance);
   imageStore(
     havsRayState, pixel, vec4(reach, before + (1.0 - before) * color.a, keyDistance, 0.0));
+#if HAVS_CELL_BLEND != 0
+  if (!covered)
+  {
+    discard; // (the ray state is written already)
+  }
+  havsPassColor = vec4(extremum, 1.0, 0.0, 0.0);
+#else
   havsPassColor = color;
+#endif
 }
