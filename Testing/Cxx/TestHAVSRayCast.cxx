@@ -30,6 +30,8 @@
 // opaque sphere inside a box (control: the reference through the surface).
 // Scenes "blend-<mesh>": maximum, minimum intensity and additive against
 // the reference under the same blend (control: a broken neighbour table).
+// Scenes "cells-<mesh>": cell scalars (constant per cell, jumping from cell
+// to cell), no point scalars.
 // Scene "seam": two boxes touching, points not merged (coincident boundary
 // faces: the ray leaves and re-enters at the same point; one pass fails).
 // Scenes "inside-box", "inside-bluntfin": the camera inside the mesh, the rays
@@ -47,8 +49,12 @@
 
 #include "vtkAppendFilter.h"
 #include "vtkCamera.h"
+#include "vtkCell.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
@@ -64,6 +70,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -471,6 +478,41 @@ int TestHAVSRayCast(int argc, char* argv[])
     grid = both->GetOutput();
     grid->GetPointData()->SetActiveScalars("s");
   }
+  else if (scene.rfind("cells-", 0) == 0)
+  {
+    // Cell scalars (constant per cell, jumping from cell to cell), no point
+    // scalars: each segment integrated at its cell's value.
+    auto base = vtkHAVSDataSets::Load(scene.substr(6));
+    if (base)
+    {
+      grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+      grid->DeepCopy(base);
+      vtkNew<vtkDoubleArray> c;
+      c->SetName("c");
+      c->SetNumberOfTuples(grid->GetNumberOfCells());
+      for (vtkIdType i = 0; i < grid->GetNumberOfCells(); ++i)
+      {
+        double centre[3] = { 0, 0, 0 };
+        vtkIdList* ids = grid->GetCell(i)->GetPointIds();
+        for (vtkIdType v = 0; v < ids->GetNumberOfIds(); ++v)
+        {
+          double x[3];
+          grid->GetPoint(ids->GetId(v), x);
+          for (int d = 0; d < 3; ++d)
+          {
+            centre[d] += x[d] / ids->GetNumberOfIds();
+          }
+        }
+        c->SetValue(
+          i, 0.5 + 0.5 * std::sin(7.0 * centre[0] + 3.0 * centre[1]) * std::cos(5.0 * centre[2]));
+      }
+      while (grid->GetPointData()->GetNumberOfArrays() > 0)
+      {
+        grid->GetPointData()->RemoveArray(0);
+      }
+      grid->GetCellData()->SetScalars(c);
+    }
+  }
   else
   {
     grid = vtkHAVSDataSets::Load(scene);
@@ -482,11 +524,21 @@ int TestHAVSRayCast(int argc, char* argv[])
   const bool dataSet = scene == "bluntfin" || scene == "combustor" || scene == "loxpost";
   const bool turned = !dataSet || scene == "loxpost";
   // Rays that leave and re-enter: the controls' one peeling pass must fail.
-  const bool reentrant =
-    scene == "hollowsphere" || scene == "torus" || scene == "twoblocks" || scene == "seam";
+  const bool reentrant = scene == "hollowsphere" || scene == "torus" || scene == "twoblocks" ||
+    scene == "seam" || scene == "cells-hollowsphere";
   std::printf("%s: %lld cells, %d^2, %d views + parallel\n", scene.c_str(),
     static_cast<long long>(grid->GetNumberOfCells()), size, views);
-  auto property = havstest::MakeRampPropertyFor(grid);
+  vtkSmartPointer<vtkVolumeProperty> property;
+  if (grid->GetPointData()->GetScalars())
+  {
+    property = havstest::MakeRampPropertyFor(grid);
+  }
+  else
+  {
+    double range[2];
+    grid->GetCellData()->GetScalars()->GetRange(range);
+    property = havstest::MakeRampProperty(range[0], range[1], 0.8, grid->GetLength() / 8.0);
+  }
   const size_t edgePixels = static_cast<size_t>(size) * size / 2000;
 
   vtkNew<vtkHAVSRayCastMapper> mapper;
