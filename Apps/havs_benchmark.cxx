@@ -38,7 +38,9 @@
 // lower bound of any face-based method; sort-bound is the sort alone),
 // reference (the exact images, computed and cached in their own process before
 // the timed configurations; always run first), cellproj (vtkHAVSCellProjectionMapper:
-// the exact MPVO cell order, boundary layers; cellproj-convex: the convexification), and
+// the exact MPVO cell order, boundary layers; cellproj-convex: the convexification),
+// tetraycast (vtkHAVSRayCastMapper: GPU ray casting through the tetrahedra, re-entries
+// by depth peeling), and
 // VTK's vtkProjectedTetrahedraMapper, vtkUnstructuredGridVolumeZSweepMapper and
 // vtkUnstructuredGridVolumeRayCastMapper (ImageSampleDistance 1,
 // AutoAdjustSampleDistances off, vtkUnstructuredGridLinearRayIntegrator).
@@ -59,6 +61,7 @@
 #include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSImageMetrics.h"
 #include "vtkHAVSInternalFaceRanking.h"
+#include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSRenderWindowFactory.h"
 #include "vtkHAVSStandardViews.h"
@@ -369,6 +372,7 @@ int RunWorker(const Options& o)
     vtkSmartPointer<vtkUnstructuredGridVolumeMapper> mapper;
     vtkHAVSVolumeMapper* havs = nullptr;
     vtkHAVSCellProjectionMapper* cellProjection = nullptr;
+    vtkHAVSRayCastMapper* tetRayCast = nullptr;
     vtkSmartPointer<vtkActor> opaqueActor; // -opaque: in the scene, behind the eye
     if (config.rfind("havs", 0) == 0 || config == "raster-bound")
     {
@@ -483,6 +487,14 @@ int RunWorker(const Options& o)
         m->SetNonConvexMethod(vtkHAVSVisibilityOrder::NonConvexConvexification);
       }
       cellProjection = m;
+      mapper = m;
+    }
+    else if (config == "tetraycast")
+    {
+      // vtkHAVSRayCastMapper (issue 21): GPU ray casting, depth-peeled re-entries.
+      auto m = vtkSmartPointer<vtkHAVSRayCastMapper>::New();
+      m->SetEarlyRayTerminationOpacity(0.999);
+      tetRayCast = m;
       mapper = m;
     }
     else if (config == "zsweep" || config == "raycast")
@@ -619,6 +631,16 @@ int RunWorker(const Options& o)
         {
           sort.push_back(1000.0 * cellProjection->GetLastOrderSeconds());
           draw.push_back(1000.0 * cellProjection->GetLastDrawSeconds());
+        }
+        else if (tetRayCast)
+        {
+          sort.push_back(0.0); // (no order)
+          draw.push_back(1000.0 * tetRayCast->GetLastDrawSeconds());
+          const double rays = static_cast<double>(tetRayCast->GetLastRaysStarted());
+          std::fprintf(stderr,
+            "tetraycast %s view %d: %d peel passes, %.0f rays, %.1f cells crossed per ray\n",
+            dataset.c_str(), view, tetRayCast->GetLastPeelPasses(), rays,
+            rays > 0 ? static_cast<double>(tetRayCast->GetLastCellsCrossed()) / rays : 0.0);
         }
       }
       if (config != "raster-bound")
@@ -1292,6 +1314,25 @@ std::string Report(const std::vector<Row>& allRows, const Options& o, const std:
         md << ".\n";
       }
     }
+    if (ms.count("tetraycast"))
+    {
+      // vtkHAVSRayCastMapper against HAVS's defaults, the cell projection and PT (issue 21).
+      for (const Row* row : rowsOf("tetraycast"))
+      {
+        const Row& r = *row;
+        md << "\nGPU ray casting (tetraycast, re-entries by depth peeling): "
+           << Cell(r, "ms_median", "%.1f") << " ms (draw " << Cell(r, "draw_ms", "%.1f")
+           << "), RMSE " << Cell(r, "rmse", "%.5f") << ", max " << Cell(r, "max", "%.4f");
+        for (const char* other : { "havs-default", "cellproj", "pt", "raster-bound" })
+        {
+          if (ms.count(other))
+          {
+            md << "; " << std::setprecision(3) << ms["tetraycast"] / ms[other] << "× " << other;
+          }
+        }
+        md << ".\n";
+      }
+    }
     if (std::isfinite(havs6) &&
       (ms.count("pt") || ms.count("zsweep") || ms.count("raycast") || ms.count("raster-bound")))
     {
@@ -1398,7 +1439,7 @@ int main(int argc, char* argv[])
                    "havs-k14-table64,havs-k6-count,havs-k6-untagged,havs-k6-noterm,havs-k6-opaque,"
                    "havs-k6-table64,havs-k6-table256,havs-k6-auto,havs-k6-mpvo,"
                    "havs-k1-mpvo,havs-k2-mpvo,havs-k2-mpvo-convex,havs-k2-auto,havs-lists,"
-                   "cellproj,raster-bound,sort-bound,pt,"
+                   "cellproj,tetraycast,raster-bound,sort-bound,pt,"
                    "zsweep,raycast"));
   if (o.Worker)
   {

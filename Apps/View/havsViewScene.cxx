@@ -11,6 +11,7 @@
 
 #include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSFrameStatistics.h"
+#include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -38,7 +39,7 @@ namespace havsview
 namespace
 {
 const char* const kMapperNames[] = { "HAVS", "HAVS cell projection", "PT (VTK)", "ZSweep (VTK)",
-  "RayCast (VTK)" };
+  "RayCast (VTK)", "HAVS ray caster" };
 const int kKBufferSizes[] = { 1, 2, 3, 4, 6, 8, 12 };
 // vtkVolumeMapper's numbers: composite, maximum, minimum, additive.
 const int kBlendModes[] = { 0, 1, 2, 4 };
@@ -162,6 +163,9 @@ vtkAbstractVolumeMapper* Scene::MakeMapper(int kind)
       break;
     case MapperZSweep:
       mapper.TakeReference(vtkUnstructuredGridVolumeZSweepMapper::New());
+      break;
+    case MapperTetRayCast:
+      mapper.TakeReference(vtkHAVSRayCastMapper::New());
       break;
     default:
       mapper.TakeReference(vtkUnstructuredGridVolumeRayCastMapper::New());

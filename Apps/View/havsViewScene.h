@@ -51,6 +51,7 @@ public:
     MapperPT,
     MapperZSweep,
     MapperRayCast,
+    MapperTetRayCast, ///< vtkHAVSRayCastMapper
     NumberOfMappers
   };
 

@@ -65,7 +65,7 @@ void Usage(std::ostream& out)
          "  --array NAME        the scalar array (default: the active or first one)\n"
          "  --q FILE            PLOT3D solution file;  --function N  its scalar (100)\n"
          "  --size WxH          window size (960x720)\n"
-         "  --mapper NAME       havs, cellprojection, pt, zsweep, raycast (havs)\n"
+         "  --mapper NAME       havs, cellprojection, pt, zsweep, raycast, tetraycast (havs)\n"
          "  --k N               HAVS k (default: the mapper's, 2)\n"
          "  --order NAME        centroid, mpvo, automatic (default: the mapper's, MPVO)\n"
          "  --interactive S     frame time aimed at while the camera moves (0.1 s)\n"
@@ -208,6 +208,8 @@ int MapperKind(const std::string& name)
     return havsview::Scene::MapperZSweep;
   if (name == "raycast")
     return havsview::Scene::MapperRayCast;
+  if (name == "tetraycast")
+    return havsview::Scene::MapperTetRayCast;
   return -1;
 }
 

@@ -65,6 +65,15 @@ int TestHAVSShaderSources(int, char*[])
   check(vtkHAVSKBufferShaders::CellProjectionVertexShader(), "cell_projection", "vert");
   check(vtkHAVSKBufferShaders::CellProjectionShader(false), "cell_projection", "frag");
   check(vtkHAVSKBufferShaders::CellProjectionShader(true), "cell_projection_opaque", "frag");
+  check(vtkHAVSKBufferShaders::RayCastPeelShader(), "ray_cast_peel", "frag");
+  check(vtkHAVSKBufferShaders::RayCastShader(false), "ray_cast", "frag");
+  check(vtkHAVSKBufferShaders::RayCastShader(true), "ray_cast_opaque", "frag");
+  for (int blend : { 1, 2, 4 })
+  {
+    check(vtkHAVSKBufferShaders::RayCastShader(true, blend),
+      "ray_cast_blend" + std::to_string(blend), "frag");
+  }
+  check(vtkHAVSKBufferShaders::RayCastTileVertexShader(), "ray_cast_tile", "vert");
   for (int blend : { 1, 2, 4 })
   {
     check(vtkHAVSKBufferShaders::CellProjectionShader(true, blend),

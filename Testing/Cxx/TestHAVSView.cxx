@@ -252,7 +252,7 @@ int TestHAVSView(int argc, char* argv[])
   havstest::Check(states[1].Get("mapper")[0] == 1.0,
     "view1 drawn by the HAVS cell projection after one `m` (state:" + states[1].Mapper + ")");
   havstest::Check(states[2].Get("mapper")[0] == 0.0,
-    "view2 drawn by HAVS again after four more `m` (state:" + states[2].Mapper + ")");
+    "view2 drawn by HAVS again after five more `m` (state:" + states[2].Mapper + ")");
   havstest::Check(states[2].Get("opacity")[0] == states[0].Get("opacity")[0] + 1,
     "the editor added one opacity node");
 

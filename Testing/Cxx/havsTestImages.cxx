@@ -12,6 +12,7 @@
 #include "vtkFloatArray.h"
 #include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSImageMetrics.h"
+#include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -61,8 +62,10 @@ std::vector<float> FloatResult(vtkAbstractVolumeMapper* mapper)
   int size[2] = { 0, 0 };
   auto* havs = vtkHAVSVolumeMapper::SafeDownCast(mapper);
   auto* cells = vtkHAVSCellProjectionMapper::SafeDownCast(mapper);
+  auto* rays = vtkHAVSRayCastMapper::SafeDownCast(mapper);
   if (!(havs ? havs->GetFloatResult(result, size)
-             : (cells ? cells->GetFloatResult(result, size) : false)))
+             : (cells ? cells->GetFloatResult(result, size)
+                      : (rays ? rays->GetFloatResult(result, size) : false))))
   {
     return {};
   }

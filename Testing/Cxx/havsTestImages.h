@@ -35,7 +35,7 @@ std::string BaselineDir();
 /// Reads the window's RGBA (float, [0,1]) after a render.
 std::vector<float> ReadRGBA(vtkRenderWindow* window);
 /// The kept float result (KeepFloatResultOn before rendering) of a
-/// vtkHAVSVolumeMapper or vtkHAVSCellProjectionMapper; empty without one.
+/// vtkHAVSVolumeMapper, vtkHAVSCellProjectionMapper or vtkHAVSRayCastMapper; empty without one.
 std::vector<float> FloatResult(vtkAbstractVolumeMapper* mapper);
 
 /// vtkHAVSImageMetrics' figures of a comparison.

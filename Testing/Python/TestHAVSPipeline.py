@@ -121,6 +121,23 @@ print("cell projection vs reference: RMSE %.2e, max %.2e (%d cells)"
       % (metrics.GetRMSE(), metrics.GetMaxAbsError(), cells.GetLastCellsDrawn()))
 check(metrics.GetMaxAbsError() < 1e-3 and cells.GetLastCellsDrawn() == 320,
       "cell projection equals the reference on the edited box")
+
+# The ray-casting mapper swaps in too: its override from Python, the same image.
+rays = vtkhavs.vtkHAVSRayCastMapper()
+check(rays.GetClassName() == "vtkOpenGLHAVSRayCastMapper",
+      "vtkHAVSRayCastMapper() gives %s" % rays.GetClassName())
+rays.SetInputConnection(tets.GetOutputPort())
+rays.KeepFloatResultOn()
+volume.SetMapper(rays)
+window.Render()
+ray_result = vtkFloatArray()
+check(rays.GetFloatResult(ray_result, size), "ray casting: float result kept")
+check(metrics.Compare(ray_result, reference.GetImage()), "ray casting: images compare")
+print("ray casting vs reference: RMSE %.2e, max %.2e (%d peel passes, %d rays)"
+      % (metrics.GetRMSE(), metrics.GetMaxAbsError(), rays.GetLastPeelPasses(),
+         rays.GetLastRaysStarted()))
+check(metrics.GetMaxAbsError() < 1e-3 and rays.GetLastPeelPasses() == 1,
+      "ray casting equals the reference on the edited box (convex: one pass)")
 volume.SetMapper(mapper)
 
 # Order violations and the automatic order, from Python: long, flat cells

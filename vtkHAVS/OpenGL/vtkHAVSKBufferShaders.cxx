@@ -11,6 +11,7 @@
 
 #include "vtkHAVSVolumeMapper.h"
 
+#include "vtkHAVSAdditiveLib.h"
 #include "vtkHAVSCellProjectionFS.h"
 #include "vtkHAVSCellProjectionVS.h"
 #include "vtkHAVSClearFS.h"
@@ -23,6 +24,9 @@
 #include "vtkHAVSKBufferLib.h"
 #include "vtkHAVSListDrawFS.h"
 #include "vtkHAVSQuadVS.h"
+#include "vtkHAVSRayCastFS.h"
+#include "vtkHAVSRayCastPeelFS.h"
+#include "vtkHAVSRayCastTileVS.h"
 #include "vtkHAVSResolveFS.h"
 #include "vtkHAVSSaturationMarkFS.h"
 #include "vtkHAVSTrivialFS.h"
@@ -275,5 +279,32 @@ std::string vtkHAVSKBufferShaders::CellProjectionShader(bool opaque, int blend)
   features.Opaque = opaque;
   std::string source = Compose(vtkHAVSCellProjectionFS, 1, 1, features);
   Replace(source, "//HAVS::CellBlend", "#define HAVS_CELL_BLEND " + std::to_string(blend));
+  Replace(source, "//HAVS::AdditiveLib", vtkHAVSAdditiveLib);
   return source;
+}
+
+std::string vtkHAVSKBufferShaders::RayCastPeelShader()
+{
+  Features features;
+  features.CountViolations = false;
+  features.Tagging = false;
+  features.Opaque = false;
+  return Compose(vtkHAVSRayCastPeelFS, 1, 1, features);
+}
+
+std::string vtkHAVSKBufferShaders::RayCastShader(bool opaque, int blend)
+{
+  Features features;
+  features.CountViolations = false;
+  features.Tagging = false;
+  features.Opaque = opaque;
+  std::string source = Compose(vtkHAVSRayCastFS, 1, 1, features);
+  Replace(source, "//HAVS::CellBlend", "#define HAVS_CELL_BLEND " + std::to_string(blend));
+  Replace(source, "//HAVS::AdditiveLib", vtkHAVSAdditiveLib);
+  return source;
+}
+
+std::string vtkHAVSKBufferShaders::RayCastTileVertexShader()
+{
+  return vtkHAVSRayCastTileVS;
 }

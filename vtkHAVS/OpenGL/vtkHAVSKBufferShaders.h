@@ -106,6 +106,17 @@ public:
   static std::string CellProjectionVertexShader();
   static std::string CellProjectionShader(bool opaque, int blend = 0);
   ///@}
+
+  ///@{
+  /// vtkHAVSRayCastMapper: the boundary entries' depth-peeling fragment
+  /// shader (with CellProjectionVertexShader), and the ray-casting pass's
+  /// (with RayCastTileVertexShader; the opaque cut compiled in with
+  /// `opaque`; `blend` as CellProjectionShader's).
+  static std::string RayCastPeelShader();
+  static std::string RayCastShader(bool opaque, int blend = 0);
+  /// The ray-casting pass's vertex shader: one instance per screen tile.
+  static std::string RayCastTileVertexShader();
+  ///@}
 };
 
 #endif

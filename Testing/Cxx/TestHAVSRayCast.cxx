@@ -1,0 +1,663 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSRayCast.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+// vtkHAVSRayCastMapper (issue 21: GPU ray casting through the tetrahedra,
+// re-entries by depth peeling; seed 002) against the exact reference
+// (vtkHAVSReferenceRenderer): the float result at N standard views
+// (perspective, turned off the axes on the test meshes) and a parallel view,
+// and, with 3 views or more, the volume's matrix (rotated, stretched, against
+// the transformed grid). Required: RMSE < 5e-4 and max < 0.01 (MISSION's "exact"), leaving
+// out up to 0.05 % of the pixels (centres on a face edge, covered
+// differently by rasterizer and rays; as TestHAVSCellProjection).
+//
+// Negative controls that must fail the same bound at every control view:
+// a broken neighbour table (each cell's neighbours rotated by one face); at
+// a view that needs more than one depth-peeling pass (required of the
+// hollow sphere, torus and two blocks), one pass only. The
+// passes, rays and cells crossed are printed per view; a convex mesh needs
+// exactly one pass. The screen tiles (view 0): each tile with a covered pixel
+// took part, the largest per-tile pass count is the frame's, the image
+// without tiles is the same.
+//
+// Scene "clip": one and two clipping planes on the hollow sphere,
+// perspective and parallel (control: without them). Scene "opaque": an
+// opaque sphere inside a box (control: the reference through the surface).
+// Scenes "blend-<mesh>": maximum, minimum intensity and additive against
+// the reference under the same blend (control: a broken neighbour table).
+// Scenes "cells-<mesh>": cell scalars (constant per cell, jumping from cell
+// to cell), no point scalars.
+// Scene "seam": two boxes touching, points not merged (coincident boundary
+// faces: the ray leaves and re-enters at the same point; one pass fails).
+// Scenes "inside-box", "inside-bluntfin": the camera inside the mesh, the rays
+// starting on the near plane's section (control: without it).
+//
+// Usage: TestHAVSRayCast <scene> [size] [views]
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestScenes.h"
+
+#include "vtkHAVSDataSets.h"
+#include "vtkHAVSRayCastMapper.h"
+#include "vtkHAVSReferenceRenderer.h"
+#include "vtkHAVSStandardViews.h"
+
+#include "vtkAppendFilter.h"
+#include "vtkCamera.h"
+#include "vtkCell.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTimerLog.h"
+#include "vtkTransform.h"
+#include "vtkTransformFilter.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace
+{
+bool Exact(const havstest::ImageDifference& d)
+{
+  return d.RMSE < 5e-4 && d.Max < 0.01;
+}
+
+std::vector<float> Reference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
+  vtkCamera* camera, int size, vtkPlaneCollection* planes = nullptr, vtkFloatArray* depth = nullptr)
+{
+  vtkNew<vtkHAVSReferenceRenderer> reference;
+  reference->SetInputData(grid);
+  reference->SetProperty(property);
+  reference->SetCamera(camera);
+  reference->SetSize(size, size);
+  reference->SetClippingPlanes(planes);
+  reference->SetOpaqueDepth(depth);
+  reference->Render();
+  vtkFloatArray* image = reference->GetImage();
+  return std::vector<float>(image->GetPointer(0), image->GetPointer(0) + 4 * size * size);
+}
+
+void Print(const std::string& what, const havstest::ImageDifference& d)
+{
+  std::printf("  %-58s RMSE %.6f  max %.6f  px > 1/255 %.3f %%\n", what.c_str(), d.RMSE, d.Max,
+    100.0 * d.FractionOver1);
+}
+
+void PrintCounts(vtkHAVSRayCastMapper* mapper, int size)
+{
+  const double rays = static_cast<double>(mapper->GetLastRaysStarted());
+  std::printf("    %d peel passes, %lld rays started, %.1f cells crossed per ray, %.3f s draw "
+              "(%d^2)\n",
+    mapper->GetLastPeelPasses(), static_cast<long long>(mapper->GetLastRaysStarted()),
+    rays > 0 ? static_cast<double>(mapper->GetLastCellsCrossed()) / rays : 0.0,
+    mapper->GetLastDrawSeconds(), size);
+}
+
+/// The screen tiles of the frame just drawn: each tile with a covered pixel
+/// took part in a pass, none without one did; the largest per-tile count is
+/// the frame's pass count; without tiles (a full-viewport pass) the image is
+/// the same.
+void CheckTiles(vtkHAVSRayCastMapper* mapper, vtkRenderWindow* window, int size)
+{
+  const auto tiled = havstest::FloatResult(mapper);
+  const int grid[2] = { mapper->GetLastTileGrid()[0], mapper->GetLastTileGrid()[1] };
+  const std::vector<int> passes = mapper->GetLastTilePasses();
+  const int framePasses = mapper->GetLastPeelPasses();
+  const int tileSize = mapper->GetTileSize();
+  int active = 0, largest = 0, covered = 0, wrong = 0;
+  std::vector<int> histogram(framePasses + 1, 0);
+  for (int ty = 0; ty < grid[1]; ++ty)
+  {
+    for (int tx = 0; tx < grid[0]; ++tx)
+    {
+      const int count = passes.at(static_cast<size_t>(ty) * grid[0] + tx);
+      bool any = false;
+      for (int y = ty * tileSize; y < std::min(size, (ty + 1) * tileSize); ++y)
+      {
+        for (int x = tx * tileSize; x < std::min(size, (tx + 1) * tileSize); ++x)
+        {
+          any = any || tiled[4 * (static_cast<size_t>(y) * size + x) + 3] > 0.0f;
+        }
+      }
+      active += count > 0 ? 1 : 0;
+      covered += any ? 1 : 0;
+      wrong += any && count == 0 ? 1 : 0;
+      largest = std::max(largest, count);
+      if (count >= 0 && count < static_cast<int>(histogram.size()))
+      {
+        ++histogram[count];
+      }
+    }
+  }
+  mapper->TilesOff();
+  window->Render();
+  const auto whole = havstest::Compare(havstest::FloatResult(mapper), tiled);
+  mapper->TilesOn();
+  std::printf("    tiles %d x %d of %d px: %d with rays, %d with covered pixels; tiles by "
+              "passes:",
+    grid[0], grid[1], tileSize, active, covered);
+  for (size_t i = 0; i < histogram.size(); ++i)
+  {
+    std::printf(" %zu:%d", i, histogram[i]);
+  }
+  std::printf("; without tiles: max difference %.2g\n", whole.Max);
+  havstest::Check(grid[0] * grid[1] == static_cast<int>(passes.size()) && active > 0,
+    "tiles: one count per tile, some with rays");
+  havstest::Check(wrong == 0, "tiles: every tile with a covered pixel took part");
+  havstest::Check(largest == framePasses, "tiles: the largest per-tile pass count is the frame's");
+  havstest::Check(whole.Max < 1e-6, "tiles: the image without tiles is the same");
+}
+
+/// Clipping planes on the hollow sphere (as TestHAVSCellProjection's clip
+/// scene): one and two planes, perspective and parallel ("clip-all"; "clip":
+/// one plane in perspective, two in parallel).
+int ClipScene(int size, bool all)
+{
+  auto grid = vtkHAVSDataSets::Load("hollowsphere");
+  auto property = havstest::MakeRampPropertyFor(grid);
+  vtkNew<vtkHAVSRayCastMapper> mapper;
+  mapper->KeepFloatResultOn();
+  auto s = havstest::MakeScene(grid, mapper, property, size, size);
+  double bounds[6], centre[3];
+  grid->GetBounds(bounds);
+  grid->GetCenter(centre);
+  vtkNew<vtkPlane> first, second;
+  first->SetOrigin(centre[0] + 0.1 * (bounds[1] - bounds[0]), centre[1], centre[2]);
+  first->SetNormal(-0.8, 0.2, 0.3);
+  second->SetOrigin(centre);
+  second->SetNormal(0.1, -0.3, 1.0);
+  const size_t edgePixels = static_cast<size_t>(size) * size / 2000;
+  for (int n = 1; n <= 2; ++n)
+  {
+    vtkNew<vtkPlaneCollection> planes;
+    planes->AddItem(first);
+    if (n == 2)
+    {
+      planes->AddItem(second);
+    }
+    for (bool parallel : { false, true })
+    {
+      if (!all && parallel != (n == 2))
+      {
+        continue; // (the short run: one plane in perspective, two in parallel)
+      }
+      havstest::PlaceCamera(s.Renderer, 30.0, 20.0, parallel);
+      mapper->SetClippingPlanes(planes);
+      s.Window->Render();
+      const auto clipped = havstest::FloatResult(mapper);
+      const auto exact = Reference(grid, property, s.Renderer->GetActiveCamera(), size, planes);
+      mapper->SetClippingPlanes(static_cast<vtkPlaneCollection*>(nullptr));
+      s.Window->Render();
+      const auto whole = havstest::FloatResult(mapper);
+      const std::string name = std::to_string(n) + (n == 1 ? " plane, " : " planes, ") +
+        (parallel ? "parallel" : "perspective");
+      const auto d = havstest::Compare(clipped, exact, edgePixels);
+      const auto control = havstest::Compare(whole, exact, edgePixels);
+      Print("clipping, " + name, d);
+      Print("clipping, " + name + ": control, without the planes", control);
+      havstest::Check(Exact(d), "clipping, " + name + ": exact");
+      havstest::Check(control.Max > 0.05, "clipping, " + name + ": control, the planes matter");
+    }
+  }
+  return havstest::Result();
+}
+
+/// An opaque sphere inside a box: the rays end at its surface.
+int OpaqueScene(int size)
+{
+  auto grid = vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
+  auto property = havstest::MakeRampPropertyFor(grid);
+  vtkNew<vtkHAVSRayCastMapper> mapper;
+  mapper->KeepFloatResultOn();
+  auto s = havstest::MakeScene(grid, mapper, property, size, size);
+  havstest::AddOpaqueSphere(s.Renderer);
+  havstest::PlaceCamera(s.Renderer, 25.0, 15.0, false);
+  s.Window->Render();
+  const auto image = havstest::FloatResult(mapper);
+  vtkNew<vtkFloatArray> depth;
+  s.Window->GetZbufferData(0, 0, size - 1, size - 1, depth);
+  const auto exact = Reference(grid, property, s.Renderer->GetActiveCamera(), size, nullptr, depth);
+  const auto d = havstest::Compare(image, exact, static_cast<size_t>(size) * size / 2000);
+  const auto control =
+    havstest::Compare(Reference(grid, property, s.Renderer->GetActiveCamera(), size), exact);
+  Print("opaque sphere: vs the reference cut at the surface", d);
+  Print("opaque sphere: control, the reference through it", control);
+  havstest::Check(Exact(d), "opaque sphere: the rays end at its surface");
+  havstest::Check(control.RMSE > 10.0 * d.RMSE && control.Max > 0.05,
+    "opaque sphere: negative control, the surface matters");
+  return havstest::Result();
+}
+
+/// The order-independent blends (maximum, minimum intensity, additive)
+/// against the reference under the same blend, at view 0 (and a parallel
+/// view with `views` 2); control: a broken neighbour table (must fail at half the views or
+/// more: where the field hardly varies along the rays an extremum cannot
+/// show it). The minimum on the scalars negated (see below).
+int BlendScene(const std::string& mesh, int size, int views)
+{
+  auto grid = vtkHAVSDataSets::Load(mesh);
+  if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "scene " + mesh + " loads"))
+  {
+    return EXIT_FAILURE;
+  }
+  double range[2];
+  grid->GetPointData()->GetScalars()->GetRange(range);
+  auto property = havstest::MakeRampPropertyFor(grid);
+  auto thin = havstest::MakeRampProperty(range[0], range[1], 0.8, grid->GetLength());
+  vtkNew<vtkHAVSRayCastMapper> mapper;
+  mapper->KeepFloatResultOn();
+  auto s = havstest::MakeScene(grid, mapper, property, size, size);
+  vtkCamera* camera = s.Renderer->GetActiveCamera();
+  const size_t edgePixels = static_cast<size_t>(size) * size / 2000;
+  auto place = [&](int v)
+  {
+    vtkHAVSStandardViews::PlaceCamera(camera, grid, v == 0 ? 0 : 3);
+    camera->SetParallelProjection(v == 0 ? 0 : 1);
+    camera->Azimuth(v == 0 ? 7.0 : 11.0);
+    camera->Elevation(v == 0 ? 5.0 : 7.0);
+    camera->OrthogonalizeViewUp();
+    if (v != 0)
+    {
+      s.Renderer->ResetCamera();
+    }
+    s.Renderer->ResetCameraClippingRange();
+  };
+  auto reference = [&](vtkVolumeProperty* used, int blend)
+  {
+    vtkNew<vtkHAVSReferenceRenderer> r;
+    r->SetInputData(vtkUnstructuredGrid::SafeDownCast(mapper->GetInput()));
+    r->SetProperty(used);
+    r->SetCamera(camera);
+    r->SetSize(size, size);
+    r->SetBlendMode(blend);
+    r->Render();
+    vtkFloatArray* image = r->GetImage();
+    return std::vector<float>(image->GetPointer(0), image->GetPointer(0) + 4 * size * size);
+  };
+  {
+    // The additive sum scales with 1 / unit distance: scaled so that the
+    // brightest pixel of view 0 is 0.5, neither dim nor clamped.
+    place(0);
+    const auto probe = reference(thin, 4);
+    double brightest = 0.0;
+    for (size_t p = 0; p < probe.size(); p += 4)
+    {
+      brightest = std::max(brightest, static_cast<double>(probe[p]));
+    }
+    if (brightest > 0.0)
+    {
+      thin->SetScalarOpacityUnitDistance(grid->GetLength() * brightest / 0.5);
+    }
+  }
+  // The minimum of the scalars lies where the rays enter on these meshes (a
+  // broken table cannot show there): the minimum is checked on the scalars
+  // negated, so that it lies where the maximum did, inside.
+  vtkNew<vtkUnstructuredGrid> negated;
+  negated->ShallowCopy(grid);
+  {
+    vtkDataArray* scalars = grid->GetPointData()->GetScalars();
+    vtkNew<vtkFloatArray> minus;
+    minus->SetName("negated");
+    minus->SetNumberOfTuples(scalars->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+    {
+      minus->SetValue(i, static_cast<float>(-scalars->GetComponent(i, 0)));
+    }
+    negated->GetPointData()->AddArray(minus);
+    negated->GetPointData()->SetActiveScalars("negated");
+  }
+  auto negatedProperty = havstest::MakeRampPropertyFor(negated);
+  const char* const names[] = { "", "maximum intensity", "minimum intensity", "", "additive" };
+  for (int blend : { 1, 2, 4 })
+  {
+    vtkVolumeProperty* used =
+      blend == 4 ? thin.Get() : (blend == 2 ? negatedProperty.Get() : property.Get());
+    s.Volume->SetProperty(used);
+    mapper->SetInputData(blend == 2 ? negated.Get() : grid.Get());
+    mapper->SetBlendMode(blend);
+    int inexact = 0, controlsFailed = 0;
+    for (int v = 0; v < views; ++v)
+    {
+      place(v);
+      const std::string name =
+        std::string(names[blend]) + (v == 0 ? ", view 0" : ", parallel view");
+      const auto exact = reference(used, blend);
+      s.Window->Render();
+      const auto d = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
+      Print(name, d);
+      inexact += Exact(d) ? 0 : 1;
+      mapper->SetBrokenNeighboursForTesting(true);
+      s.Window->Render();
+      const auto broken = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
+      Print(name + ": control, a broken neighbour table", broken);
+      controlsFailed += Exact(broken) ? 0 : 1;
+      mapper->SetBrokenNeighboursForTesting(false);
+    }
+    havstest::Check(inexact == 0, std::string(names[blend]) + ": exact at every view");
+    havstest::Check(2 * controlsFailed >= views,
+      std::string(names[blend]) +
+        ": negative control, a broken table fails at half the views or more");
+  }
+  return havstest::Result();
+}
+
+/// The camera inside the mesh (perspective, the near plane in it, as
+/// TestHAVSCellProjection's inside scenes): against the reference, which
+/// starts the rays at the near plane; control: without the near plane's section.
+int InsideScene(const std::string& mesh, int size)
+{
+  auto grid = mesh == "box" ? vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0)
+                            : vtkHAVSDataSets::Load(mesh);
+  if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "scene " + mesh + " loads"))
+  {
+    return EXIT_FAILURE;
+  }
+  double bounds[6];
+  grid->GetBounds(bounds);
+  double eye[3] = { 0.31, 0.355, 0.405 }, direction[3] = { 1.0, 0.4, 0.3 };
+  if (mesh != "box")
+  {
+    // Inside the flow, in front of the fin, looking downstream and a little up.
+    const double f[3] = { 0.45, 0.6, 0.5 };
+    for (int i = 0; i < 3; ++i)
+    {
+      eye[i] = bounds[2 * i] + f[i] * (bounds[2 * i + 1] - bounds[2 * i]);
+    }
+    direction[1] = 0.3;
+    direction[2] = 0.2;
+  }
+  auto property = havstest::MakeRampPropertyFor(grid);
+  vtkNew<vtkHAVSRayCastMapper> mapper;
+  mapper->KeepFloatResultOn();
+  auto s = havstest::MakeScene(grid, mapper, property, size, size);
+  vtkCamera* camera = s.Renderer->GetActiveCamera();
+  camera->SetPosition(eye);
+  camera->SetFocalPoint(eye[0] + direction[0], eye[1] + direction[1], eye[2] + direction[2]);
+  camera->SetViewUp(0, 0, 1);
+  camera->SetViewAngle(60.0);
+  const double length = grid->GetLength();
+  camera->SetClippingRange(0.05 * length, 2.0 * length);
+  mapper->NearPlaneSectionOn();
+  s.Window->Render();
+  const auto image = havstest::FloatResult(mapper);
+  const vtkIdType triangles = mapper->GetLastSectionTriangles();
+  PrintCounts(mapper, size);
+  mapper->NearPlaneSectionOff();
+  s.Window->Render();
+  const auto without = havstest::FloatResult(mapper);
+  vtkNew<vtkHAVSReferenceRenderer> reference;
+  reference->SetInputData(grid);
+  reference->SetProperty(property);
+  reference->SetCamera(camera);
+  reference->SetSize(size, size);
+  reference->Render();
+  const vtkIdType started = reference->GetNumberOfStartedInside();
+  vtkFloatArray* ref = reference->GetImage();
+  const std::vector<float> exact(ref->GetPointer(0), ref->GetPointer(0) + 4 * size * size);
+  const size_t edgePixels = static_cast<size_t>(size) * size / 2000;
+  const auto d = havstest::Compare(image, exact, edgePixels);
+  const auto control = havstest::Compare(without, exact, edgePixels);
+  std::printf("camera inside %s: %lld of %d rays start in the mesh, section %lld triangles\n",
+    mesh.c_str(), static_cast<long long>(started), size * size, static_cast<long long>(triangles));
+  Print(mesh + ": vs the reference", d);
+  Print(mesh + ": control, without the near section", control);
+  havstest::Check(started > size * size / 2 && triangles > 0,
+    mesh + ": most rays start in the mesh, the section is drawn");
+  havstest::Check(havstest::AllFinite(image), mesh + ": finite pixels");
+  havstest::Check(Exact(d), mesh + ": exact with the camera inside");
+  havstest::Check(
+    !Exact(control) && control.RMSE > 10.0 * d.RMSE, mesh + ": negative control, no section fails");
+  return havstest::Result();
+}
+}
+
+int TestHAVSRayCast(int argc, char* argv[])
+{
+  const std::string scene = argc > 1 ? argv[1] : "hollowsphere";
+  const int size = argc > 2 ? std::atoi(argv[2]) : 96;
+  const int views = argc > 3 ? std::atoi(argv[3]) : 6;
+  if (scene == "opaque")
+  {
+    return OpaqueScene(size);
+  }
+  if (scene == "clip" || scene == "clip-all")
+  {
+    return ClipScene(size, scene == "clip-all");
+  }
+  if (scene.rfind("inside-", 0) == 0)
+  {
+    return InsideScene(scene.substr(7), size);
+  }
+  if (scene.rfind("blend-", 0) == 0)
+  {
+    return BlendScene(scene.substr(6), size, argc > 3 ? std::min(views, 2) : 1);
+  }
+  vtkSmartPointer<vtkUnstructuredGrid> grid;
+  if (scene == "box")
+  {
+    grid = vtkHAVSDataSets::MakeBox(8, 8, 8, 0.125, 0.0, 1.0);
+  }
+  else if (scene == "seam")
+  {
+    // Two boxes that touch, their points not merged: every ray through the
+    // shared plane leaves one box and enters the other at the same point
+    // (coincident boundary faces, as the LOX post's O-grid seam).
+    auto a = vtkHAVSDataSets::MakeBox(6, 6, 6, 0.125, 0.0, 1.0);
+    auto b = vtkHAVSDataSets::MakeBox(6, 6, 6, 0.125, 0.0, 1.0);
+    vtkNew<vtkTransform> shift;
+    shift->Translate(0.75, 0.0, 0.0); // (exactly the first box's width)
+    vtkNew<vtkTransformFilter> moved;
+    moved->SetInputData(b);
+    moved->SetTransform(shift);
+    vtkNew<vtkAppendFilter> both;
+    both->AddInputData(a);
+    both->AddInputConnection(moved->GetOutputPort());
+    both->MergePointsOff();
+    both->Update();
+    grid = both->GetOutput();
+    grid->GetPointData()->SetActiveScalars("s");
+  }
+  else if (scene.rfind("cells-", 0) == 0)
+  {
+    // Cell scalars (constant per cell, jumping from cell to cell), no point
+    // scalars: each segment integrated at its cell's value.
+    auto base = vtkHAVSDataSets::Load(scene.substr(6));
+    if (base)
+    {
+      grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+      grid->DeepCopy(base);
+      vtkNew<vtkDoubleArray> c;
+      c->SetName("c");
+      c->SetNumberOfTuples(grid->GetNumberOfCells());
+      for (vtkIdType i = 0; i < grid->GetNumberOfCells(); ++i)
+      {
+        double centre[3] = { 0, 0, 0 };
+        vtkIdList* ids = grid->GetCell(i)->GetPointIds();
+        for (vtkIdType v = 0; v < ids->GetNumberOfIds(); ++v)
+        {
+          double x[3];
+          grid->GetPoint(ids->GetId(v), x);
+          for (int d = 0; d < 3; ++d)
+          {
+            centre[d] += x[d] / ids->GetNumberOfIds();
+          }
+        }
+        c->SetValue(
+          i, 0.5 + 0.5 * std::sin(7.0 * centre[0] + 3.0 * centre[1]) * std::cos(5.0 * centre[2]));
+      }
+      while (grid->GetPointData()->GetNumberOfArrays() > 0)
+      {
+        grid->GetPointData()->RemoveArray(0);
+      }
+      grid->GetCellData()->SetScalars(c);
+    }
+  }
+  else
+  {
+    grid = vtkHAVSDataSets::Load(scene);
+  }
+  if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "scene " + scene + " loads"))
+  {
+    return EXIT_FAILURE;
+  }
+  const bool dataSet = scene == "bluntfin" || scene == "combustor" || scene == "loxpost";
+  const bool turned = !dataSet || scene == "loxpost";
+  // Rays that leave and re-enter: the controls' one peeling pass must fail.
+  const bool reentrant = scene == "hollowsphere" || scene == "torus" || scene == "twoblocks" ||
+    scene == "seam" || scene == "cells-hollowsphere";
+  std::printf("%s: %lld cells, %d^2, %d views + parallel\n", scene.c_str(),
+    static_cast<long long>(grid->GetNumberOfCells()), size, views);
+  vtkSmartPointer<vtkVolumeProperty> property;
+  if (grid->GetPointData()->GetScalars())
+  {
+    property = havstest::MakeRampPropertyFor(grid);
+  }
+  else
+  {
+    double range[2];
+    grid->GetCellData()->GetScalars()->GetRange(range);
+    property = havstest::MakeRampProperty(range[0], range[1], 0.8, grid->GetLength() / 8.0);
+  }
+  const size_t edgePixels = static_cast<size_t>(size) * size / 2000;
+
+  vtkNew<vtkHAVSRayCastMapper> mapper;
+  if (!havstest::Check(mapper.GetPointer() != nullptr &&
+          std::string(mapper->GetClassName()) == "vtkOpenGLHAVSRayCastMapper",
+        "New() gives the OpenGL override"))
+  {
+    return EXIT_FAILURE;
+  }
+  mapper->KeepFloatResultOn();
+  auto s = havstest::MakeScene(grid, mapper, property, size, size);
+  vtkCamera* camera = s.Renderer->GetActiveCamera();
+  int inexact = 0, brokenFailed = 0, onePassFailed = 0, onePassViews = 0, controlViews = 0;
+  int mostPasses = 0;
+  int fewestPasses = 1 << 30;
+  double worstRMSE = 0.0, worstMax = 0.0;
+  for (int v = 0; v <= views; ++v)
+  {
+    const bool parallel = v == views;
+    vtkHAVSStandardViews::PlaceCamera(camera, grid, parallel ? 3 : v);
+    camera->SetParallelProjection(parallel ? 1 : 0);
+    if (turned)
+    {
+      camera->Azimuth(7.0);
+      camera->Elevation(5.0);
+      camera->OrthogonalizeViewUp();
+    }
+    s.Renderer->ResetCameraClippingRange();
+    if (parallel)
+    {
+      camera->Azimuth(11.0);
+      camera->Elevation(7.0);
+      camera->OrthogonalizeViewUp();
+      s.Renderer->ResetCamera();
+      s.Renderer->ResetCameraClippingRange();
+    }
+    const std::string name = "view " + std::to_string(v) + (parallel ? " (parallel)" : "");
+    const double r0 = vtkTimerLog::GetUniversalTime();
+    const auto exact = Reference(grid, property, camera, size);
+    const double referenceSeconds = vtkTimerLog::GetUniversalTime() - r0;
+    s.Window->Render();
+    const auto d = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
+    Print(name, d);
+    PrintCounts(mapper, size);
+    std::printf("    reference %.2f s\n", referenceSeconds);
+    mostPasses = std::max(mostPasses, mapper->GetLastPeelPasses());
+    fewestPasses = std::min(fewestPasses, mapper->GetLastPeelPasses());
+    worstRMSE = std::max(worstRMSE, d.RMSE);
+    worstMax = std::max(worstMax, d.Max);
+    if (!Exact(d))
+    {
+      ++inexact;
+      havstest::Check(false, name + ": exact");
+    }
+    if (v == 0)
+    {
+      CheckTiles(mapper, s.Window, size);
+    }
+    if (v < 2)
+    {
+      ++controlViews;
+      mapper->SetBrokenNeighboursForTesting(true);
+      s.Window->Render();
+      const auto broken = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
+      Print(name + ": control, a broken neighbour table", broken);
+      brokenFailed += Exact(broken) ? 0 : 1;
+      mapper->SetBrokenNeighboursForTesting(false);
+      if (mapper->GetLastPeelPasses() >= 2)
+      {
+        ++onePassViews;
+        mapper->SetMaximumPeelPasses(1);
+        s.Window->Render();
+        const auto one = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
+        Print(name + ": control, one peeling pass", one);
+        onePassFailed += Exact(one) ? 0 : 1;
+        mapper->SetMaximumPeelPasses(0);
+      }
+    }
+  }
+  std::printf("  worst over the views: RMSE %.6f max %.6f; peel passes %d .. %d\n", worstRMSE,
+    worstMax, fewestPasses, mostPasses);
+  havstest::Check(inexact == 0, "exact at every view");
+  havstest::Check(brokenFailed == controlViews,
+    "negative control: the broken neighbour table fails at every control view");
+  if (reentrant)
+  {
+    havstest::Check(onePassViews == controlViews,
+      "the rays re-enter: more than one peeling pass at every control view");
+  }
+  std::printf("  control, one peeling pass: fails at %d of the %d control views that need more\n",
+    onePassFailed, onePassViews);
+  havstest::Check(onePassFailed == onePassViews,
+    "negative control: one peeling pass fails at every control view that needs more");
+  if (scene == "box")
+  {
+    havstest::Check(mostPasses == 1, "a convex mesh: one peeling pass");
+  }
+
+  if (views < 3)
+  {
+    return havstest::Result(); // (the default suite's short runs: the matrix in the .full ones)
+  }
+  // The volume's matrix: rotated and stretched, against the transformed grid.
+  vtkNew<vtkTransform> transform;
+  transform->RotateWXYZ(35.0, 0.3, 1.0, 0.2);
+  transform->Scale(1.0, 1.6, 0.7);
+  s.Volume->SetUserTransform(transform);
+  vtkNew<vtkTransformFilter> moved;
+  moved->SetInputData(grid);
+  moved->SetTransform(transform);
+  moved->Update();
+  auto movedGrid = vtkUnstructuredGrid::SafeDownCast(moved->GetOutput());
+  vtkHAVSStandardViews::PlaceCamera(camera, movedGrid, 5);
+  camera->SetParallelProjection(0);
+  s.Renderer->ResetCameraClippingRange();
+  s.Window->Render();
+  const auto d = havstest::Compare(
+    havstest::FloatResult(mapper), Reference(movedGrid, property, camera, size), edgePixels);
+  Print("volume matrix (rotated, stretched) vs the transformed grid", d);
+  havstest::Check(Exact(d), "the volume's matrix: exact");
+  return havstest::Result();
+}

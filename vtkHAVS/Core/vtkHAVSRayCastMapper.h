@@ -1,0 +1,271 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSRayCastMapper.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSRayCastMapper
+ * @brief   GPU ray casting through the tetrahedra, with depth-peeled re-entries.
+ *
+ * The second mapper of vtkHAVS after HAVS, from Bernardon, Pagot, Comba and
+ * Silva, "GPU-based Tiled Ray Casting using Depth Peeling" (2005, seed 002),
+ * after Weiler, Kraus, Merz and Ertl (2003). No sorting: per pixel the ray
+ * starts at the nearest front-facing boundary face (its tetrahedron known
+ * per face), walks from cell to cell through the face neighbours (the exit
+ * face: the nearest forward intersection among the cell's face planes,
+ * computed in double precision on the CPU, walked in float in model
+ * coordinates on the GPU), integrates each segment from the shared
+ * pre-integration table (the scalar at both ends from the cell's linear
+ * field) and composites front to back, until it leaves the mesh, reaches
+ * opaque geometry or a clipping plane, or its opacity reaches
+ * EarlyRayTerminationOpacity.
+ *
+ * Non-convex meshes, without convexification: a ray that leaves the mesh
+ * re-enters at the next layer of front-facing boundary faces beyond its
+ * exit, found by depth peeling. Passes repeat until one starts no ray (all
+ * of them, counted: GetLastPeelPasses()); MaximumPeelPasses limits them (a
+ * negative control: one pass on a mesh that needs more).
+ *
+ * Same inputs, scalars and table as vtkHAVSVolumeMapper
+ * (vtkHAVSMapperInputs), the volume's matrix, perspective and parallel
+ * cameras, opaque geometry, up to 6 clipping planes (each ray clipped to
+ * them). The camera inside the mesh: where the near plane cuts it (the GL
+ * near clip removes the entry faces there) the rays start on the near
+ * plane's section (vtkHAVSFramePlanes, each triangle with its cell), drawn
+ * with the entries of the first pass. Screen tiles: the ray-casting pass
+ * works only in the tiles where rays start, with per-tile pass counts.
+ * Blend modes: composite, maximum and minimum intensity, additive.
+ *
+ * The mesh's layout is vtkHAVSRayCastMesh (96 bytes per tetrahedron).
+ *
+ * Abstract: New() gives the graphics layer's override
+ * (vtkOpenGLHAVSRayCastMapper), as vtkHAVSVolumeMapper does.
+ */
+#ifndef vtkHAVSRayCastMapper_h
+#define vtkHAVSRayCastMapper_h
+
+#include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkNew.h"            // For vtkNew
+#include "vtkUnstructuredGridVolumeMapper.h"
+
+#include <array>  // For std::array
+#include <memory> // For std::unique_ptr
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+class vtkFloatArray;
+class vtkHAVSFramePlanes;
+class vtkHAVSMesh;
+class vtkHAVSPreIntegrationTable;
+class vtkHAVSRayCastMesh;
+class vtkHAVSViewFrame;
+
+class VTKHAVSCORE_EXPORT vtkHAVSRayCastMapper : public vtkUnstructuredGridVolumeMapper
+{
+public:
+  /// The graphics layer's override (vtkOpenGLHAVSRayCastMapper); nullptr without one.
+  static vtkHAVSRayCastMapper* New();
+  vtkTypeMacro(vtkHAVSRayCastMapper, vtkUnstructuredGridVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Blend modes (vtkVolumeMapper's numbering): composite (default), maximum
+   * and minimum intensity, additive, as vtkHAVSCellProjectionMapper's (the
+   * extremal scalar along the ray in the mesh coloured by the transfer
+   * function; VTK's additive: the integral of tau(s) s, clamped to 1, grey).
+   */
+  static constexpr int MINIMUM_INTENSITY_BLEND = 2;
+  static constexpr int ADDITIVE_BLEND = 4;
+  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
+  void SetBlendModeToAdditive() { this->SetBlendMode(ADDITIVE_BLEND); }
+  ///@}
+
+  ///@{
+  /// Resolutions of the pre-integration table (as vtkHAVSVolumeMapper's; default 128).
+  vtkSetClampMacro(TableScalarResolution, int, 4, 1024);
+  vtkGetMacro(TableScalarResolution, int);
+  vtkSetClampMacro(TableLengthResolution, int, 4, 1024);
+  vtkGetMacro(TableLengthResolution, int);
+  ///@}
+
+  ///@{
+  /// A ray stops once its opacity reaches this (default 0.999, as vtkHAVSVolumeMapper).
+  vtkSetClampMacro(EarlyRayTerminationOpacity, double, 0.0, 1.0);
+  vtkGetMacro(EarlyRayTerminationOpacity, double);
+  ///@}
+
+  ///@{
+  /**
+   * The most depth-peeling passes per frame (each starts the rays at the
+   * next layer of boundary entries); 0 (the default): as many as the mesh
+   * needs, until a pass starts no ray (at most 1024).
+   */
+  vtkSetClampMacro(MaximumPeelPasses, int, 0, 1024);
+  vtkGetMacro(MaximumPeelPasses, int);
+  ///@}
+
+  ///@{
+  /// The input: any vtkDataSet, or a composite data set of them (as vtkHAVSCellProjectionMapper).
+  void SetInputData(vtkDataSet* input) override;
+  void SetInputData(vtkUnstructuredGridBase* input) override;
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
+  ///@}
+
+  ///@{
+  /// How a multi-component array becomes the scalar (as vtkSmartVolumeMapper::SetVectorMode).
+  vtkSetClampMacro(VectorMode, int, -1, 1);
+  vtkGetMacro(VectorMode, int);
+  vtkSetClampMacro(VectorComponent, int, 0, 3);
+  vtkGetMacro(VectorComponent, int);
+  ///@}
+
+  ///@{
+  /// Keep the frame's float result (premultiplied RGBA) for GetFloatResult().
+  vtkSetMacro(KeepFloatResult, bool);
+  vtkGetMacro(KeepFloatResult, bool);
+  vtkBooleanMacro(KeepFloatResult, bool);
+  bool GetFloatResult(vtkFloatArray* rgba, int size[2]);
+  ///@}
+
+  ///@{
+  /// Testing aid (a negative control): each cell's neighbours rotated by one
+  /// face (vtkHAVSRayCastMesh::BreakNeighboursForTesting). Off by default.
+  void SetBrokenNeighboursForTesting(bool broken);
+  vtkGetMacro(BrokenNeighboursForTesting, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Screen tiles (the seed's tiling): the ray-casting pass draws only the
+   * tiles of TileSize x TileSize pixels in which the pass's peeling found an
+   * entry, and each tile counts its passes (GetLastTilePasses()). On by
+   * default, 16 pixels; off: a full-viewport pass each time (same image).
+   */
+  vtkSetMacro(Tiles, bool);
+  vtkGetMacro(Tiles, bool);
+  vtkBooleanMacro(Tiles, bool);
+  vtkSetClampMacro(TileSize, int, 4, 256);
+  vtkGetMacro(TileSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * The last frame's tiles: their grid (columns, rows) and, per tile (row
+   * by row, bottom first), the passes in which rays started there (0: none,
+   * no ray-casting work there; the largest is GetLastPeelPasses()).
+   */
+  const int* GetLastTileGrid() const { return this->LastTileGrid; }
+  const std::vector<int>& GetLastTilePasses() const { return this->LastTilePasses; }
+  ///@}
+
+  ///@{
+  /// Start the rays on the near plane's section where it cuts the mesh (the
+  /// camera inside it). On by default; off only as a negative control.
+  vtkSetMacro(NearPlaneSection, bool);
+  vtkGetMacro(NearPlaneSection, bool);
+  vtkBooleanMacro(NearPlaneSection, bool);
+  ///@}
+
+  /// Triangles of the near plane's section drawn in the last frame.
+  vtkGetMacro(LastSectionTriangles, vtkIdType);
+
+  ///@{
+  /**
+   * The last frame: depth-peeling passes that started rays, rays started
+   * over all passes, cells crossed over all rays (segments integrated), and
+   * seconds of the draw (with the GPU finished).
+   */
+  vtkGetMacro(LastPeelPasses, int);
+  vtkGetMacro(LastRaysStarted, vtkIdType);
+  vtkGetMacro(LastCellsCrossed, vtkIdType);
+  vtkGetMacro(LastDrawSeconds, double);
+  ///@}
+
+#ifndef __VTK_WRAP__
+  /// The compact mesh layout of the last frame (nullptr before one).
+  const vtkHAVSRayCastMesh* GetRayCastMesh() const { return this->RayMesh.get(); }
+#endif
+
+  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
+
+  /// What the graphics layer draws in one frame.
+  struct RayFrame
+  {
+    const vtkHAVSViewFrame* View = nullptr;
+    vtkHAVSMesh* Mesh = nullptr;
+    const vtkHAVSRayCastMesh* RayMesh = nullptr;
+    vtkMTimeType MeshVersion = 0; ///< changes whenever RayMesh does
+    vtkHAVSPreIntegrationTable* Table = nullptr;
+    vtkMTimeType TableVersion = 0;
+    vtkHAVSFramePlanes* Planes = nullptr;
+    bool Opaque = false;
+    bool KeepResult = false;
+    float TerminationOpacity = 0.999f;
+    int MaximumPasses = 1024;
+    int TileSize = 16; ///< 0: no tiles
+    int Blend = 0;     ///< the blend mode
+  };
+  /// What the graphics layer counted in one frame.
+  struct RayCounts
+  {
+    int Passes = 0;
+    long long Rays = 0;
+    long long Cells = 0;
+    double Seconds = 0.0;
+    int TileGrid[2] = { 0, 0 };
+    std::vector<int> TilePasses;
+  };
+
+protected:
+  vtkHAVSRayCastMapper();
+  ~vtkHAVSRayCastMapper() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  /// The graphics layer: draws one frame (false, with an error, when it cannot).
+  virtual bool DrawRays(vtkRenderer* renderer, const RayFrame& frame, RayCounts* counts);
+  /// The last kept float result (nullptr without one).
+  virtual const std::vector<float>* GetKeptResult(int size[2]);
+
+private:
+  vtkHAVSRayCastMapper(const vtkHAVSRayCastMapper&) = delete;
+  void operator=(const vtkHAVSRayCastMapper&) = delete;
+
+  void WarnOnce(int which, const std::string& message);
+
+  int TableScalarResolution = 128;
+  int TableLengthResolution = 128;
+  double EarlyRayTerminationOpacity = 0.999;
+  int MaximumPeelPasses = 0;
+  bool KeepFloatResult = false;
+  bool BrokenNeighboursForTesting = false;
+  bool NearPlaneSection = true;
+  bool Tiles = true;
+  int TileSize = 16;
+  int LastTileGrid[2] = { 0, 0 };
+  std::vector<int> LastTilePasses;
+  vtkIdType LastSectionTriangles = 0;
+  int VectorMode = -1;
+  int VectorComponent = 0;
+  int LastPeelPasses = 0;
+  vtkIdType LastRaysStarted = 0;
+  vtkIdType LastCellsCrossed = 0;
+  double LastDrawSeconds = 0.0;
+
+  vtkNew<vtkHAVSMesh> Mesh;
+  vtkNew<vtkHAVSPreIntegrationTable> Table;
+  vtkTimeStamp TableBuildTime;
+  vtkNew<vtkHAVSFramePlanes> Planes;
+  std::unique_ptr<vtkHAVSRayCastMesh> RayMesh;
+  vtkTimeStamp RayMeshTime;
+  bool RayMeshBroken = false;   // the layout holds the broken table
+  std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
+};
+
+#endif

@@ -1,0 +1,115 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSRayCastMesh.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSRayCastMesh.h"
+
+#include "vtkHAVSCellGeometry.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <array>
+
+namespace
+{
+struct FaceKey
+{
+  std::array<uint32_t, 3> Ids; // sorted point ids
+  uint32_t Slot;               // 4 * tetrahedron + face
+  bool operator<(const FaceKey& other) const
+  {
+    return this->Ids != other.Ids ? this->Ids < other.Ids : this->Slot < other.Slot;
+  }
+};
+}
+
+//------------------------------------------------------------------------------
+size_t vtkHAVSRayCastMesh::ComputeNeighbours(
+  const std::vector<uint32_t>& tets, std::vector<int32_t>& out)
+{
+  const size_t count = tets.size() / 4;
+  std::vector<FaceKey> keys(4 * count);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const uint32_t* ids = &tets[4 * static_cast<size_t>(t)];
+        for (int j = 0; j < 4; ++j)
+        {
+          FaceKey& key = keys[4 * static_cast<size_t>(t) + j];
+          key.Ids = { ids[(j + 1) % 4], ids[(j + 2) % 4], ids[(j + 3) % 4] };
+          std::sort(key.Ids.begin(), key.Ids.end());
+          key.Slot = static_cast<uint32_t>(4 * t + j);
+        }
+      }
+    });
+  vtkSMPTools::Sort(keys.begin(), keys.end());
+  out.assign(4 * count, -1);
+  size_t boundary = 0;
+  for (size_t i = 0; i < keys.size();)
+  {
+    size_t j = i + 1;
+    while (j < keys.size() && keys[j].Ids == keys[i].Ids)
+    {
+      ++j;
+    }
+    if (j - i >= 2)
+    {
+      // The first two share the face; any others stay boundary.
+      out[keys[i].Slot] = static_cast<int32_t>(keys[i + 1].Slot / 4);
+      out[keys[i + 1].Slot] = static_cast<int32_t>(keys[i].Slot / 4);
+      boundary += j - i - 2;
+    }
+    else
+    {
+      ++boundary;
+    }
+    i = j;
+  }
+  return boundary;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSRayCastMesh::Build(const std::vector<float>& points, const std::vector<float>& scalars,
+  const std::vector<uint32_t>& tets, const std::vector<float>* cellScalars)
+{
+  std::vector<uint32_t> faces; // 12 point ids per tetrahedron, face j outward
+  vtkHAVSCellGeometry::Compute(points, scalars, tets, this->Cells, faces, cellScalars);
+  const size_t boundary = ComputeNeighbours(tets, this->Neighbours);
+  this->BoundaryFaces.clear();
+  this->BoundaryCells.clear();
+  this->BoundaryFaces.reserve(3 * boundary);
+  this->BoundaryCells.reserve(boundary);
+  for (size_t slot = 0; slot < this->Neighbours.size(); ++slot)
+  {
+    if (this->Neighbours[slot] < 0)
+    {
+      this->BoundaryFaces.insert(this->BoundaryFaces.end(), &faces[3 * slot], &faces[3 * slot] + 3);
+      this->BoundaryCells.push_back(static_cast<uint32_t>(slot / 4));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSRayCastMesh::UpdateFields(const std::vector<float>& points,
+  const std::vector<float>& scalars, const std::vector<uint32_t>& tets,
+  const std::vector<float>* cellScalars)
+{
+  std::vector<uint32_t> faces;
+  vtkHAVSCellGeometry::Compute(points, scalars, tets, this->Cells, faces, cellScalars);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSRayCastMesh::BreakNeighboursForTesting()
+{
+  for (size_t t = 0; t + 3 < this->Neighbours.size(); t += 4)
+  {
+    std::rotate(&this->Neighbours[t], &this->Neighbours[t] + 1, &this->Neighbours[t] + 4);
+  }
+}

@@ -1,0 +1,227 @@
+#version 430 core
+// Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+// vtkHAVSRayCastMapper: the ray-casting pass (Weiler et al. 2003; Bernardon
+// et al. 2005, seed 002), one full-viewport fragment per pixel. Where the
+// peeling found an entry (the tetrahedron behind the nearest boundary face
+// beyond the ray's reach), the pixel's ray walks from cell to cell through
+// the face neighbours: it leaves each cell through the nearest of its face
+// planes it moves towards, the scalars at both ends come from the cell's
+// linear field, the segment from the pre-integration table; segments are
+// composited front to back into this pass's colour, which blending puts
+// under what the earlier passes left (ONE_MINUS_DST_ALPHA, ONE). The walk
+// ends where the ray leaves the mesh (neighbour -1: the next pass peels the
+// next entry beyond it), at the clipping planes or the opaque surface, or at
+// the termination opacity (the ray is then done for every later pass).
+//
+// The order-independent blends (HAVS_CELL_BLEND 1, 2: maximum and minimum
+// intensity; 4: VTK's additive) write the ray's extremal scalar in the mesh
+// (1 - s for the minimum) for GL_MAX blending across passes, or its additive
+// integral for GL_FUNC_ADD, with a coverage flag beside it; the extremum
+// resolve (vtkHAVSExtremumResolveFS) colours the pixel.
+//HAVS::Defines
+//HAVS::CellBlend
+//HAVS::KBufferLib
+#if HAVS_CELL_BLEND == 4
+//HAVS::AdditiveLib
+#endif
+
+// Per tetrahedron (vtkHAVSCellGeometry): 4 outward face planes, then the
+// field's gradient and offset, model coordinates.
+layout(std430, binding = 4) readonly buffer HAVSCells
+{
+  vec4 havsCells[];
+};
+// Per tetrahedron: the tetrahedron across face j, -1 on the boundary.
+layout(std430, binding = 6) readonly buffer HAVSNeighbours
+{
+  int havsNeighbours[];
+};
+// Counts over the frame: rays started, cells crossed.
+layout(std430, binding = 7) buffer HAVSRayCounts
+{
+  uint havsRaysStarted;
+  uint havsCellsCrossed;
+};
+layout(binding = 0, r32ui) uniform coherent uimage2D havsEntryKey;
+layout(binding = 1, r32ui) uniform coherent uimage2D havsEntryCell;
+layout(binding = 2, rgba32f) uniform coherent image2D havsRayState;
+
+uniform mat4 havsDCMC;        // clip -> model
+uniform mat4 havsMCRC;        // model -> eye-relative world (volume matrix included)
+uniform vec3 havsEyeMC;       // the eye in model coordinates
+uniform vec3 havsDirectionMC; // the direction of projection in model coordinates
+uniform int havsMaxSteps;     // a guard against a cycle in a broken table
+
+layout(location = 0) out vec4 havsPassColor;
+
+float havsKeyDistance(uint k)
+{
+  return uintBitsToFloat((k & 0x80000000u) != 0u ? (k & 0x7fffffffu) : ~k);
+}
+
+void main()
+{
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  uint entry = imageLoad(havsEntryCell, pixel).x;
+  if (entry == 0u)
+  {
+    discard;
+  }
+  float keyDistance = havsKeyDistance(imageLoad(havsEntryKey, pixel).x);
+  // Ready for the next pass.
+  imageStore(havsEntryCell, pixel, uvec4(0u));
+  imageStore(havsEntryKey, pixel, uvec4(0xffffffffu));
+  vec4 state = imageLoad(havsRayState, pixel); // reach, opacity so far, last entry
+  atomicAdd(havsRaysStarted, 1u);
+
+  // The pixel's ray, o + t d, in model coordinates.
+  vec2 ndc = gl_FragCoord.xy / havsViewportSize * 2.0 - 1.0;
+  vec4 nearMC = havsDCMC * vec4(ndc, -1.0, 1.0);
+  vec3 o, d;
+  if (havsParallel != 0)
+  {
+    o = nearMC.xyz / nearMC.w;
+    d = havsDirectionMC;
+  }
+  else
+  {
+    o = havsEyeMC;
+    d = nearMC.xyz / nearMC.w - havsEyeMC;
+  }
+  vec3 oRC = (havsMCRC * vec4(o, 1.0)).xyz;
+  vec3 dRC = mat3(havsMCRC) * d;
+  float worldPerT = length(dRC);
+  // The eye distance along the ray is linear in t.
+  float distance0 = havsParallel != 0 ? dot(oRC, havsDirectionOfProjection) : 0.0;
+  float distanceRate = havsParallel != 0 ? dot(dRC, havsDirectionOfProjection) : worldPerT;
+
+  // What of the ray is kept: the clipping (and near) planes, the opaque surface.
+  float tLow = -HAVS_EMPTY, tHigh = HAVS_EMPTY;
+  for (int i = 0; i < havsPlaneCount; ++i)
+  {
+    float f0 = dot(havsPlanesRC[i].xyz, oRC) + havsPlanesRC[i].w;
+    float rate = dot(havsPlanesRC[i].xyz, dRC);
+    if (rate > 0.0)
+    {
+      tLow = max(tLow, -f0 / rate);
+    }
+    else if (rate < 0.0)
+    {
+      tHigh = min(tHigh, -f0 / rate);
+    }
+    else if (f0 < 0.0)
+    {
+      tHigh = -HAVS_EMPTY;
+    }
+  }
+  // Nothing before the reach is integrated again (an entry taken a hair
+  // before it, at a seam).
+  if (state.x > -HAVS_EMPTY)
+  {
+    tLow = max(tLow, (state.x - distance0) / distanceRate);
+  }
+#if HAVS_OPAQUE
+  float opaque = havsOpaqueDistance(gl_FragCoord.xy);
+  if (opaque < HAVS_EMPTY)
+  {
+    tHigh = min(tHigh, (opaque - distance0) / distanceRate);
+  }
+#endif
+
+  // Where the ray enters its first cell: the farthest of the planes it
+  // enters by (the rasterized entry distance where none is found).
+  int cell = int(entry) - 1;
+  float parallelToRay = 4e-7 * length(d);
+  float tIn = -HAVS_EMPTY;
+  for (int j = 0; j < 4; ++j)
+  {
+    vec4 plane = havsCells[5 * cell + j];
+    float towards = dot(plane.xyz, d);
+    if (towards < -parallelToRay)
+    {
+      tIn = max(tIn, -(dot(plane.xyz, o) + plane.w) / towards);
+    }
+  }
+  if (tIn <= -HAVS_EMPTY)
+  {
+    tIn = (keyDistance - distance0) / distanceRate;
+  }
+
+  vec4 color = vec4(0.0);
+  float extremum = 0.0; // (the order-independent blends)
+  bool covered = false;
+  float before = state.y;
+  bool ended = false;
+  int steps = 0;
+  for (; steps < havsMaxSteps; ++steps)
+  {
+    int base = 5 * cell;
+    vec3 p = o + tIn * d;
+    float dt = HAVS_EMPTY;
+    int face = -1;
+    for (int j = 0; j < 4; ++j)
+    {
+      vec4 plane = havsCells[base + j];
+      float towards = dot(plane.xyz, d);
+      if (towards > parallelToRay)
+      {
+        float s = -(dot(plane.xyz, p) + plane.w) / towards;
+        if (s < dt)
+        {
+          dt = s;
+          face = j;
+        }
+      }
+    }
+    if (face < 0)
+    {
+      break; // (a degenerate cell: the ray leaves here)
+    }
+    float tOut = tIn + max(dt, 0.0);
+    float a = max(tIn, tLow), b = min(tOut, tHigh);
+    if (b > a)
+    {
+      vec4 field = havsCells[base + 4];
+      float sA = clamp(dot(field.xyz, p + (a - tIn) * d) + field.w, 0.0, 1.0);
+      float sB = clamp(dot(field.xyz, p + (b - tIn) * d) + field.w, 0.0, 1.0);
+      covered = true;
+#if HAVS_CELL_BLEND == 1
+      extremum = max(extremum, max(sA, sB));
+#elif HAVS_CELL_BLEND == 2
+      extremum = max(extremum, 1.0 - min(sA, sB));
+#elif HAVS_CELL_BLEND == 4
+      extremum += havsAdditiveSegment(sA, sB, (b - a) * worldPerT);
+#else
+      color += (1.0 - color.a) * havsSegment(vec2(0.0, sA), vec2((b - a) * worldPerT, sB));
+#endif
+    }
+    tIn = tOut;
+    if (tOut >= tHigh || before + (1.0 - before) * color.a >= havsTerminationOpacity)
+    {
+      ended = true;
+      ++steps;
+      break;
+    }
+    int next = havsNeighbours[4 * cell + face];
+    if (next < 0)
+    {
+      ++steps;
+      break; // out of the mesh: the next pass finds where it comes back
+    }
+    cell = next;
+  }
+  atomicAdd(havsCellsCrossed, uint(steps));
+  // (Never before the entry the peeling found.)
+  float reach = ended ? HAVS_EMPTY : max(distance0 + tIn * distanceRate, keyDistance);
+  imageStore(
+    havsRayState, pixel, vec4(reach, before + (1.0 - before) * color.a, keyDistance, 0.0));
+#if HAVS_CELL_BLEND != 0
+  if (!covered)
+  {
+    discard; // (the ray state is written already)
+  }
+  havsPassColor = vec4(extremum, 1.0, 0.0, 0.0);
+#else
+  havsPassColor = color;
+#endif
+}

@@ -1,0 +1,515 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkOpenGLHAVSRayCastMapper.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkOpenGLHAVSRayCastMapper.h"
+
+#include "vtkHAVSExtremumPass.h"
+#include "vtkHAVSFramePlanes.h"
+#include "vtkHAVSGLCapabilities.h"
+#include "vtkHAVSGLFrameTargets.h"
+#include "vtkHAVSGLPassContext.h"
+#include "vtkHAVSGLTable.h"
+#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSMesh.h"
+#include "vtkHAVSOpenGL.h"
+#include "vtkHAVSRayCastMesh.h"
+#include "vtkHAVSViewFrame.h"
+
+#include "vtkCommand.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTimerLog.h"
+
+#include <algorithm>
+#include <cstdint>
+
+vtkStandardNewMacro(vtkOpenGLHAVSRayCastMapper);
+
+namespace
+{
+enum BufferIndex
+{
+  PointBuffer,
+  FaceBuffer,
+  FaceCellBuffer,
+  CellBuffer,
+  NeighbourBuffer,
+  CountBuffer,
+  TileBuffer,
+  NumberOfBuffers
+};
+enum ImageIndex
+{
+  EntryKeyImage,
+  EntryCellImage,
+  RayStateImage
+};
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLHAVSRayCastMapper::vtkOpenGLHAVSRayCastMapper() = default;
+
+vtkOpenGLHAVSRayCastMapper::~vtkOpenGLHAVSRayCastMapper()
+{
+  this->ReleaseGraphicsResources(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSRayCastMapper::PrepareWindow(vtkOpenGLRenderWindow* window)
+{
+  if (this->Window == window)
+  {
+    window->MakeCurrent();
+    return;
+  }
+  this->ReleaseGraphicsResources(this->Window);
+  this->Window = window;
+  this->WindowDeleteObserver = window->AddObserver(
+    vtkCommand::DeleteEvent, this, &vtkOpenGLHAVSRayCastMapper::OnWindowDeleted);
+  window->MakeCurrent();
+  this->GLTable->SetContext(window);
+  this->Targets->SetContext(window);
+}
+
+void vtkOpenGLHAVSRayCastMapper::OnWindowDeleted(vtkObject* window, unsigned long, void*)
+{
+  this->ReleaseGraphicsResources(vtkWindow::SafeDownCast(window));
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSRayCastMapper::Upload(const RayFrame& frame)
+{
+  if (!this->VertexArray)
+  {
+    glGenVertexArrays(1, &this->VertexArray);
+    glGenBuffers(NumberOfBuffers, this->Buffers);
+    glGenVertexArrays(1, &this->TileArray);
+  }
+  if (this->UploadedMesh != frame.MeshVersion)
+  {
+    const vtkHAVSRayCastMesh& mesh = *frame.RayMesh;
+    const std::vector<float>& points = frame.Mesh->GetPoints();
+    glBindVertexArray(this->VertexArray);
+    glBindBuffer(GL_ARRAY_BUFFER, this->Buffers[PointBuffer]);
+    glBufferData(GL_ARRAY_BUFFER, points.size() * sizeof(float), points.data(), GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->Buffers[FaceBuffer]);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, mesh.GetBoundaryFaces().size() * sizeof(uint32_t),
+      mesh.GetBoundaryFaces().data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
+    auto storage = [](GLuint buffer, size_t bytes, const void* data)
+    {
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+      // (At least 16 bytes: an empty mesh still binds a buffer.)
+      glBufferData(GL_SHADER_STORAGE_BUFFER, std::max<size_t>(bytes, 16), bytes ? data : nullptr,
+        GL_STATIC_DRAW);
+    };
+    storage(this->Buffers[FaceCellBuffer], mesh.GetBoundaryCells().size() * sizeof(uint32_t),
+      mesh.GetBoundaryCells().data());
+    storage(
+      this->Buffers[CellBuffer], mesh.GetCells().size() * sizeof(float), mesh.GetCells().data());
+    storage(this->Buffers[NeighbourBuffer], mesh.GetNeighbours().size() * sizeof(int32_t),
+      mesh.GetNeighbours().data());
+    storage(this->Buffers[CountBuffer], 2 * sizeof(uint32_t), nullptr);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    this->BoundaryFaces = static_cast<int>(mesh.GetNumberOfBoundaryFaces());
+    this->Tetrahedra = static_cast<int>(mesh.GetNumberOfTetrahedra());
+    this->UploadedMesh = frame.MeshVersion;
+  }
+  if (this->UploadedTable != frame.TableVersion)
+  {
+    this->GLTable->Upload(frame.Table);
+    this->UploadedTable = frame.TableVersion;
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkOpenGLHAVSRayCastMapper::UploadSection(const RayFrame& frame)
+{
+  const std::vector<vtkHAVSFramePlanes::Section>& sections = frame.Planes->GetSections();
+  if (sections.empty())
+  {
+    return 0; // (the camera outside the mesh: nothing cut by the near plane)
+  }
+  const vtkMTimeType version = frame.Planes->GetSectionsVersion();
+  if (this->SectionArray && this->UploadedSection == version)
+  {
+    return this->SectionTriangles;
+  }
+  if (!this->SectionArray)
+  {
+    glGenVertexArrays(1, &this->SectionArray);
+    glGenBuffers(2, this->SectionBuffers);
+  }
+  const vtkHAVSFramePlanes::Section& section = sections.front(); // the near plane's only
+  glBindVertexArray(this->SectionArray);
+  glBindBuffer(GL_ARRAY_BUFFER, this->SectionBuffers[0]);
+  glBufferData(
+    GL_ARRAY_BUFFER, section.Points.size() * sizeof(float), section.Points.data(), GL_STREAM_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glBindVertexArray(0);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->SectionBuffers[1]);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, section.Cells.size() * sizeof(uint32_t),
+    section.Cells.data(), GL_STREAM_DRAW);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  this->UploadedSection = version;
+  this->SectionTriangles = static_cast<int>(section.Cells.size());
+  return this->SectionTriangles;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSRayCastMapper::ResizeImages(int width, int height)
+{
+  if (this->Images[0] && this->ImageSize[0] == width && this->ImageSize[1] == height)
+  {
+    return;
+  }
+  this->ReleaseImages();
+  glGenTextures(3, this->Images);
+  const GLenum formats[3] = { GL_R32UI, GL_R32UI, GL_RGBA32F };
+  for (int i = 0; i < 3; ++i)
+  {
+    glBindTexture(GL_TEXTURE_2D, this->Images[i]);
+    glTexStorage2D(GL_TEXTURE_2D, 1, formats[i], width, height);
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+  this->ImageSize[0] = width;
+  this->ImageSize[1] = height;
+}
+
+void vtkOpenGLHAVSRayCastMapper::ReleaseImages()
+{
+  if (this->Images[0])
+  {
+    glDeleteTextures(3, this->Images);
+    std::fill(this->Images, this->Images + 3, 0u);
+  }
+  this->ImageSize[0] = this->ImageSize[1] = 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLHAVSRayCastMapper::DrawRays(
+  vtkRenderer* renderer, const RayFrame& frame, RayCounts* counts)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!window)
+  {
+    vtkErrorMacro("vtkHAVSRayCastMapper needs an OpenGL render window.");
+    return false;
+  }
+  this->PrepareWindow(window);
+  if (!vtkHAVSGLCapabilities::HasVersion(4, 3))
+  {
+    vtkErrorMacro("vtkHAVSRayCastMapper needs OpenGL 4.3 (storage buffers, images).");
+    return false;
+  }
+  this->Upload(frame);
+  const int sectionTriangles = this->UploadSection(frame);
+  const vtkHAVSViewFrame& view = *frame.View;
+  const int width = view.Width, height = view.Height;
+  this->Targets->Resize(width, height);
+  this->ResizeImages(width, height);
+  if (frame.Opaque)
+  {
+    this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height, this);
+  }
+  vtkOpenGLShaderCache* cache = window->GetShaderCache();
+  vtkShaderProgram* peel =
+    cache->ReadyShaderProgram(vtkHAVSKBufferShaders::CellProjectionVertexShader().c_str(),
+      vtkHAVSKBufferShaders::RayCastPeelShader().c_str(), "");
+  vtkShaderProgram* cast = peel && peel->GetCompiled()
+    ? cache->ReadyShaderProgram(vtkHAVSKBufferShaders::RayCastTileVertexShader().c_str(),
+        vtkHAVSKBufferShaders::RayCastShader(frame.Opaque, frame.Blend).c_str(), "")
+    : nullptr;
+  if (!cast || !cast->GetCompiled())
+  {
+    vtkErrorMacro("The ray-casting shaders could not be built; see the shader log above.");
+    return false;
+  }
+
+  vtkOpenGLState* state = window->GetState();
+  vtkHAVSGLScopedPassState passState(state);
+  vtkTextureObject* table = this->GLTable->GetTable();
+  vtkTextureObject* depth = this->Targets->GetOpaqueDepth();
+  vtkTextureObject* additive = this->GLTable->GetAdditive1D();
+  table->Activate();
+  depth->Activate();
+  additive->Activate();
+
+  // The uniforms both programs read (the view, the planes).
+  float m[16];
+  const double* shift = frame.Mesh->GetShift();
+  float eye[3], direction[3], directionWorld[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    eye[i] = static_cast<float>(view.EyeGrid[i] - shift[i]);
+    direction[i] = static_cast<float>(view.DirectionGrid[i]);
+    directionWorld[i] = static_cast<float>(view.DirectionWorld[i]);
+  }
+  const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
+  const int planeCount = std::min(frame.Planes->GetNumberOfPlanes(), 7);
+  float planes[7][4] = {};
+  for (int i = 0; i < planeCount; ++i)
+  {
+    std::copy(frame.Planes->GetPlane(i).begin(), frame.Planes->GetPlane(i).end(), planes[i]);
+  }
+  for (vtkShaderProgram* program : { peel, cast })
+  {
+    cache->ReadyShaderProgram(program);
+    vtkHAVSViewFrame::ToColumnMajor(view.ModelToEyeRelative, m);
+    program->SetUniformMatrix4x4("havsMCRC", m);
+    vtkHAVSViewFrame::ToColumnMajor(view.ClipToEyeRelative, m);
+    program->SetUniformMatrix4x4("havsDCRC", m);
+    program->SetUniform3f("havsDirectionOfProjection", directionWorld);
+    program->SetUniformi("havsParallel", view.Parallel ? 1 : 0);
+    program->SetUniform2f("havsViewportSize", viewport);
+    program->SetUniformi("havsPlaneCount", planeCount);
+    if (planeCount > 0)
+    {
+      program->SetUniform4fv("havsPlanesRC", planeCount, planes);
+    }
+  }
+  // Screen tiles (without them, one tile covering the viewport).
+  const int tileSize = frame.TileSize > 0 ? frame.TileSize : std::max(width, height);
+  const int tileCount[2] = { (width + tileSize - 1) / tileSize,
+    (height + tileSize - 1) / tileSize };
+  const int tiles = tileCount[0] * tileCount[1];
+  {
+    const std::vector<GLuint> none(static_cast<size_t>(tiles), 0u);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[TileBuffer]);
+    glBufferData(
+      GL_SHADER_STORAGE_BUFFER, none.size() * sizeof(GLuint), none.data(), GL_STREAM_DRAW);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  }
+  for (vtkShaderProgram* program : { peel, cast })
+  {
+    cache->ReadyShaderProgram(program);
+    program->SetUniform2i("havsTileCount", tileCount);
+    program->SetUniformi("havsTileSize", tileSize);
+  }
+  cache->ReadyShaderProgram(peel);
+  vtkHAVSViewFrame::ToColumnMajor(view.ModelToClip, m);
+  peel->SetUniformMatrix4x4("havsMCDC", m);
+  peel->SetUniformf("havsPeelTolerance", 1.0e-5f);
+  cache->ReadyShaderProgram(cast);
+  this->GLTable->SetUniforms(cast);
+  cast->SetUniformf("havsTerminationOpacity", frame.TerminationOpacity);
+  cast->SetUniformf("havsGapLength", 3.0e38f);
+  cast->SetUniformi("havsOpaqueDepth", depth->GetTextureUnit());
+  cast->SetUniformi("havsAdditive", additive->GetTextureUnit());
+  double clipToModel[16];
+  vtkMatrix4x4::Invert(view.ModelToClip, clipToModel);
+  vtkHAVSViewFrame::ToColumnMajor(clipToModel, m);
+  cast->SetUniformMatrix4x4("havsDCMC", m);
+  cast->SetUniform3f("havsEyeMC", eye);
+  cast->SetUniform3f("havsDirectionMC", direction);
+  cast->SetUniformi("havsMaxSteps", this->Tetrahedra + 16);
+
+  // Per pixel: no entry yet, the ray has reached nothing, opacity 0.
+  const GLuint noKey = 0xffffffffu, noCell = 0;
+  const float fresh[4] = { -3.0e38f, 0.0f, -3.0e38f, 0.0f };
+  glClearTexImage(this->Images[EntryKeyImage], 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &noKey);
+  glClearTexImage(this->Images[EntryCellImage], 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &noCell);
+  glClearTexImage(this->Images[RayStateImage], 0, GL_RGBA, GL_FLOAT, fresh);
+  glBindImageTexture(0, this->Images[EntryKeyImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+  glBindImageTexture(1, this->Images[EntryCellImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+  glBindImageTexture(2, this->Images[RayStateImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  const GLuint zeroCounts[2] = { 0, 0 };
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountBuffer]);
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(zeroCounts), zeroCounts);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, this->Buffers[CellBuffer]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->Buffers[FaceCellBuffer]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, this->Buffers[NeighbourBuffer]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, this->Buffers[CountBuffer]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, this->Buffers[TileBuffer]);
+
+  state->PushFramebufferBindings();
+  this->Targets->BindResult();
+  state->vtkglViewport(0, 0, width, height);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  const float zero[4] = { 0, 0, 0, 0 };
+  glClearBufferfv(GL_COLOR, 0, zero);
+  glFinish();
+  const double t0 = vtkTimerLog::GetUniversalTime();
+  GLuint started = 0;
+  int passes = 0;
+  GLuint readBack[2] = { 0, 0 };
+  for (int pass = 0; pass<frame.MaximumPasses&& this->BoundaryFaces> 0; ++pass)
+  {
+    // Peel: the nearest front-facing boundary entry beyond each ray's reach.
+    cache->ReadyShaderProgram(peel);
+    peel->SetUniformi("havsPass", pass + 1);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    state->vtkglEnable(GL_CULL_FACE);
+    state->vtkglCullFace(GL_BACK);
+    glFrontFace(view.FlipFacing ? GL_CW : GL_CCW);
+    for (int stage = 0; stage < 2; ++stage)
+    {
+      peel->SetUniformi("havsPeelStage", stage);
+      state->vtkglEnable(GL_CULL_FACE);
+      glBindVertexArray(this->VertexArray);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->Buffers[FaceCellBuffer]);
+      glDrawElements(GL_TRIANGLES, 3 * this->BoundaryFaces, GL_UNSIGNED_INT, nullptr);
+      if (pass == 0 && sectionTriangles > 0)
+      {
+        // The camera inside: the rays start on the near plane's section
+        // (either facing), nearer than any boundary face behind it.
+        state->vtkglDisable(GL_CULL_FACE);
+        glBindVertexArray(this->SectionArray);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->SectionBuffers[1]);
+        glDrawArrays(GL_TRIANGLES, 0, 3 * sectionTriangles);
+      }
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+    glBindVertexArray(0);
+    glFrontFace(GL_CCW);
+    state->vtkglDisable(GL_CULL_FACE);
+    // Cast: walk the rays from their entries, the pass's colour under the result.
+    cache->ReadyShaderProgram(cast);
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    state->vtkglEnable(GL_BLEND);
+    if (frame.Blend == vtkHAVSRayCastMapper::COMPOSITE_BLEND)
+    {
+      // Front to back: this pass goes under the earlier ones (premultiplied).
+      state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+    }
+    else
+    {
+      // Order-independent: the largest (of s, or of 1 - s), or the sum.
+      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+      state->vtkglBlendEquation(
+        frame.Blend == vtkHAVSRayCastMapper::ADDITIVE_BLEND ? GL_FUNC_ADD : GL_MAX);
+    }
+    // (Only the tiles where this pass's peeling found entries.)
+    cast->SetUniformi("havsPass", pass + 1);
+    glBindVertexArray(this->TileArray);
+    glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles);
+    glBindVertexArray(0);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+      GL_BUFFER_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountBuffer]);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(readBack), readBack);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    if (readBack[0] == started)
+    {
+      break; // this pass started no ray: every ray is done
+    }
+    started = readBack[0];
+    ++passes;
+  }
+  glFinish();
+  counts->Seconds = vtkTimerLog::GetUniversalTime() - t0;
+  counts->Passes = passes;
+  counts->Rays = readBack[0];
+  counts->Cells = readBack[1];
+  {
+    std::vector<GLuint> last(static_cast<size_t>(tiles), 0u);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[TileBuffer]);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, last.size() * sizeof(GLuint), last.data());
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    counts->TileGrid[0] = tileCount[0];
+    counts->TileGrid[1] = tileCount[1];
+    counts->TilePasses.assign(last.begin(), last.end());
+  }
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglBlendEquation(GL_FUNC_ADD);
+  bool resolved = true;
+  if (frame.Blend != vtkHAVSRayCastMapper::COMPOSITE_BLEND)
+  {
+    const auto kind = frame.Blend == vtkHAVSRayCastMapper::ADDITIVE_BLEND
+      ? vtkHAVSExtremumPass::ResolveAdditive
+      : (frame.Blend == vtkHAVSRayCastMapper::MINIMUM_INTENSITY_BLEND
+            ? vtkHAVSExtremumPass::ResolveMinimum
+            : vtkHAVSExtremumPass::ResolveMaximum);
+    resolved = vtkHAVSExtremumPass::ResolveResult(window, this->Targets, this->GLTable, kind);
+  }
+  for (GLuint unit = 0; unit < 3; ++unit)
+  {
+    glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+  }
+  if (frame.KeepResult)
+  {
+    this->Targets->ReadResult(this->KeptResult);
+    this->KeptSize[0] = width;
+    this->KeptSize[1] = height;
+  }
+  additive->Deactivate();
+  table->Deactivate();
+  depth->Deactivate();
+  state->PopFramebufferBindings();
+  state->vtkglViewport(view.OriginX, view.OriginY, width, height);
+  if (!resolved)
+  {
+    vtkErrorMacro("The resolve shader could not be built; see the shader log above.");
+    return false;
+  }
+  return this->Targets->Composite(view.OriginX, view.OriginY);
+}
+
+//------------------------------------------------------------------------------
+const std::vector<float>* vtkOpenGLHAVSRayCastMapper::GetKeptResult(int size[2])
+{
+  size[0] = this->KeptSize[0];
+  size[1] = this->KeptSize[1];
+  return this->KeptResult.empty() ? nullptr : &this->KeptResult;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSRayCastMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (!this->Window || (window && window != this->Window))
+  {
+    return;
+  }
+  vtkOpenGLRenderWindow* home = this->Window;
+  home->MakeCurrent();
+  this->GLTable->ReleaseGraphicsResources(home);
+  this->Targets->ReleaseGraphicsResources(home);
+  if (this->VertexArray)
+  {
+    glDeleteVertexArrays(1, &this->VertexArray);
+    glDeleteVertexArrays(1, &this->TileArray);
+    glDeleteBuffers(NumberOfBuffers, this->Buffers);
+    this->VertexArray = this->TileArray = 0;
+    std::fill(this->Buffers, this->Buffers + NumberOfBuffers, 0u);
+  }
+  if (this->SectionArray)
+  {
+    glDeleteVertexArrays(1, &this->SectionArray);
+    glDeleteBuffers(2, this->SectionBuffers);
+    this->SectionArray = 0;
+    this->SectionBuffers[0] = this->SectionBuffers[1] = 0;
+    this->SectionTriangles = 0;
+  }
+  this->UploadedSection = 0;
+  this->ReleaseImages();
+  home->RemoveObserver(this->WindowDeleteObserver);
+  this->Window = nullptr;
+  this->UploadedMesh = this->UploadedTable = 0;
+  this->BoundaryFaces = this->Tetrahedra = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Window: " << this->Window << "\n";
+}
