@@ -263,6 +263,16 @@ void TestSaturatedPixels(bool interlock)
     name + ": saturated pixels' fragments are rejected before the shader");
   havstest::Check(Exact(dOn) && Exact(dOff), name + ": exact with and without the skip");
   havstest::Check(same.Max < 1e-6, name + ": the same image with and without the skip");
+  // The default (Automatic): the interlock path only.
+  mapper->SetSkipSaturatedPixels(vtkHAVSVolumeMapper::SkipSaturatedPixelsAutomatic);
+  scene.Window->Render();
+  const vtkIdType saturatedAuto = stats->GetSaturatedPixels();
+  const vtkIdType shadedAuto = stats->GetShadedFragments();
+  std::printf("  default (automatic): %lld pixels marked, %lld fragments shaded\n",
+    static_cast<long long>(saturatedAuto), static_cast<long long>(shadedAuto));
+  havstest::Check(interlock ? saturatedAuto == saturatedOn && shadedAuto == shadedOn
+                            : saturatedAuto == -1 && shadedAuto == shadedOff,
+    name + ": the default skips on the interlock path only");
 
   // Control: a transparent transfer function saturates nothing, and the
   // skip then shades every fragment.

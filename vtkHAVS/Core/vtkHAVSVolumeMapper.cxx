@@ -405,7 +405,10 @@ vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
   r.Opaque = opaque;
   r.MeasureStages = this->MeasureStageTimes;
   r.KeepResult = this->KeepFloatResult;
-  r.SkipSaturated = this->SkipSaturatedPixels && this->BlendMode == COMPOSITE_BLEND;
+  r.SkipSaturated = this->BlendMode == COMPOSITE_BLEND &&
+    (this->SkipSaturatedPixels == SkipSaturatedPixelsAlways ||
+      (this->SkipSaturatedPixels == SkipSaturatedPixelsAutomatic &&
+        path == KBufferPathFragmentShaderInterlock));
   return r;
 }
 

@@ -116,7 +116,9 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSSkipHiddenCells(int ski
 {
   this->HAVSMapper->SetSkipInvisibleCells(skip != 0);
   this->HAVSMapper->SetSkipOffscreenCells(skip != 0);
-  this->HAVSMapper->SetSkipSaturatedPixels(skip != 0);
+  this->HAVSMapper->SetSkipSaturatedPixels(skip != 0
+      ? vtkHAVSVolumeMapper::SkipSaturatedPixelsAutomatic
+      : vtkHAVSVolumeMapper::SkipSaturatedPixelsNever);
   this->Modified();
 }
 
