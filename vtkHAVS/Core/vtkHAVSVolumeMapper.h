@@ -229,10 +229,10 @@ public:
    * the stencil test. Composite blend; the fragment lists store every
    * fragment regardless. SkipSaturatedPixelsAutomatic (the default) uses it
    * on the interlock path only: on llvmpipe's framebuffer-fetch path the
-   * shader's own discard is nearly as cheap, and the marks cost more than
-   * they save (measured: the blunt fin at 512^2, 1.19x the frame time with
-   * nothing to skip, 1.03x with most rays ending early). On (1) forces it on
-   * both paths, Off (0) never. The frame statistics give the pixels marked
+   * shader's own discard is nearly as cheap, and two measurements disagreed
+   * (the blunt fin at 512^2, nothing to skip / most rays ending early: 1.19x
+   * / 1.03x the default's frame time in one run, 0.96x / 0.80x in another).
+   * On (1) forces it on both paths, Off (0) never. The frame statistics give the pixels marked
    * and, with CountOrderViolations, the fragments that ran the shader
    * (GetSaturatedPixels, GetShadedFragments).
    */

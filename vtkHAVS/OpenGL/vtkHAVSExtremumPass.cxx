@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSExtremumPass.h"
 
+#include "vtkVolumeMapper.h"
+
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLPassContext.h"
 #include "vtkHAVSGLTable.h"
@@ -86,4 +88,21 @@ bool vtkHAVSExtremumPass::ResolveResult(vtkOpenGLRenderWindow* window,
   extremum->Deactivate();
   extremum->ReleaseGraphicsResources(window);
   return built;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSExtremumPass::ResolveBlend(vtkOpenGLRenderWindow* window,
+  vtkHAVSGLFrameTargets* targets, vtkHAVSGLTable* table, int blendMode)
+{
+  switch (blendMode)
+  {
+    case vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND:
+      return ResolveResult(window, targets, table, ResolveMaximum);
+    case vtkVolumeMapper::MINIMUM_INTENSITY_BLEND:
+      return ResolveResult(window, targets, table, ResolveMinimum);
+    case vtkVolumeMapper::ADDITIVE_BLEND:
+      return ResolveResult(window, targets, table, ResolveAdditive);
+    default:
+      return true;
+  }
 }

@@ -49,6 +49,12 @@ public:
    */
   static bool ResolveResult(vtkOpenGLRenderWindow* window, vtkHAVSGLFrameTargets* targets,
     vtkHAVSGLTable* table, ResolveKind kind);
+  /**
+   * The same for a mapper's blend mode (vtkVolumeMapper's BlendModes: maximum,
+   * minimum or additive; composite needs no resolve and returns true).
+   */
+  static bool ResolveBlend(vtkOpenGLRenderWindow* window, vtkHAVSGLFrameTargets* targets,
+    vtkHAVSGLTable* table, int blendMode);
 
 protected:
   vtkHAVSExtremumPass() = default;

@@ -301,16 +301,8 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   glFrontFace(GL_CCW);
   state->vtkglDisable(GL_CULL_FACE);
   state->vtkglBlendEquation(GL_FUNC_ADD);
-  bool resolved = true;
-  if (frame.Blend != vtkHAVSCellProjectionMapper::COMPOSITE_BLEND)
-  {
-    const auto kind = frame.Blend == vtkHAVSCellProjectionMapper::ADDITIVE_BLEND
-      ? vtkHAVSExtremumPass::ResolveAdditive
-      : (frame.Blend == vtkHAVSCellProjectionMapper::MINIMUM_INTENSITY_BLEND
-            ? vtkHAVSExtremumPass::ResolveMinimum
-            : vtkHAVSExtremumPass::ResolveMaximum);
-    resolved = vtkHAVSExtremumPass::ResolveResult(window, this->Targets, this->GLTable, kind);
-  }
+  const bool resolved =
+    vtkHAVSExtremumPass::ResolveBlend(window, this->Targets, this->GLTable, frame.Blend);
   if (frame.KeepResult)
   {
     this->Targets->ReadResult(this->KeptResult);

@@ -431,16 +431,8 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   }
   state->vtkglDisable(GL_BLEND);
   state->vtkglBlendEquation(GL_FUNC_ADD);
-  bool resolved = true;
-  if (frame.Blend != vtkHAVSRayCastMapper::COMPOSITE_BLEND)
-  {
-    const auto kind = frame.Blend == vtkHAVSRayCastMapper::ADDITIVE_BLEND
-      ? vtkHAVSExtremumPass::ResolveAdditive
-      : (frame.Blend == vtkHAVSRayCastMapper::MINIMUM_INTENSITY_BLEND
-            ? vtkHAVSExtremumPass::ResolveMinimum
-            : vtkHAVSExtremumPass::ResolveMaximum);
-    resolved = vtkHAVSExtremumPass::ResolveResult(window, this->Targets, this->GLTable, kind);
-  }
+  const bool resolved =
+    vtkHAVSExtremumPass::ResolveBlend(window, this->Targets, this->GLTable, frame.Blend);
   for (GLuint unit = 0; unit < 3; ++unit)
   {
     glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
