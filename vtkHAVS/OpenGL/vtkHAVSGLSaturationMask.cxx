@@ -56,10 +56,9 @@ void vtkHAVSGLSaturationMask::DrawFaces(vtkHAVSGLPassContext& context, vtkShader
   const std::string& markShader, bool storageBarrier, bool measure)
 {
   this->LastSaturatedPixels = -1;
-  const bool flip = context.Request.View->FlipFacing;
   if (markShader.empty())
   {
-    context.Mesh->DrawFaces(program, flip);
+    context.DrawFaces(program);
     return;
   }
   if (measure && !this->Query)
@@ -100,7 +99,7 @@ void vtkHAVSGLSaturationMask::DrawFaces(vtkHAVSGLPassContext& context, vtkShader
     }
     context.Window->GetShaderCache()->ReadyShaderProgram(program);
   };
-  context.Mesh->DrawFaces(program, flip, Batches, mark);
+  context.Mesh->DrawFaces(program, context.Request.View->FlipFacing, Batches, mark);
   state->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
   if (marked)
   {
