@@ -26,7 +26,9 @@
 // 76 % of the range (opacity only in the lowest and highest 12 %): what
 // skipping invisible cells saves; "<name>-opaque": opacity 0.5 to 1 and a unit
 // distance ten times shorter, most rays ending early: what rejecting saturated
-// pixels saves.
+// pixels saves; "<name>-zoom": the standard function, each view zoomed 4x on a
+// point between the centre and a corner of the bounds, so that most cells lie
+// outside the view frustum: what culling off-screen cells saves.
 // Configurations: HAVS at k = 1, 2, 4, 6, 8, 14 (128^3 table), HAVS k = 14 with
 // 32^3 and 64^3 tables, HAVS k = 6 without boundary tagging (its cost and
 // what it buys; -gaplength: VTK 5's heuristic), -mpvo (the MPVO face order instead of
@@ -35,7 +37,8 @@
 // -count (the order-violation counter on), -noterm (no early ray termination), -opaque (an
 // opaque actor in the scene, so the opaque-depth cut runs), havs-default (the mapper with its
 // default settings: what a user gets; havs-default-noskip: with every cell drawn,
-// SkipInvisibleCells off; havs-default-sat: SkipSaturatedPixels on every path), HAVS fragment lists
+// SkipInvisibleCells off; havs-default-sat: SkipSaturatedPixels on every path;
+// havs-default-nocull: every cell ordered and drawn, SkipOffscreenCells off), HAVS fragment lists
 // (exact per-pixel sort), raster-bound (the same faces in the same order with a trivial shader: the
 // lower bound of any face-based method; sort-bound is the sort alone),
 // reference (the exact images, computed and cached in their own process before
@@ -139,7 +142,8 @@ enum class Variant
 {
   Standard,
   Band,
-  Opaque
+  Opaque,
+  Zoom
 };
 
 /// Not empty, not opaque; every opacity node is a colour node (so that VTK's
@@ -187,11 +191,11 @@ vtkSmartPointer<vtkVolumeProperty> MakeProperty(
 
 /// A data set name with its transfer-function variant: "<name>-band" and
 /// "<name>-opaque" load <name> with that function.
-const char* const VariantSuffixes[] = { "", "-band", "-opaque" };
+const char* const VariantSuffixes[] = { "", "-band", "-opaque", "-zoom" };
 
 Variant VariantOf(const std::string& dataset)
 {
-  for (Variant v : { Variant::Band, Variant::Opaque })
+  for (Variant v : { Variant::Band, Variant::Opaque, Variant::Zoom })
   {
     const std::string suffix = VariantSuffixes[static_cast<int>(v)];
     if (dataset.size() > suffix.size() &&
@@ -207,6 +211,35 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadDataSet(const std::string& dataset)
 {
   const size_t suffix = std::string(VariantSuffixes[static_cast<int>(VariantOf(dataset))]).size();
   return vtkHAVSDataSets::Load(dataset.substr(0, dataset.size() - suffix));
+}
+
+/// A benchmark view: vtkHAVSStandardViews' view; for "<name>-zoom" moved (eye
+/// and focal point alike) to look at the point 60 % of the way from the
+/// bounds' centre to their lowest corner, and zoomed 4x.
+void PlaceView(vtkCamera* camera, vtkUnstructuredGrid* grid, int view, const std::string& dataset)
+{
+  vtkHAVSStandardViews::PlaceCamera(camera, grid, view);
+  if (VariantOf(dataset) != Variant::Zoom)
+  {
+    return;
+  }
+  double b[6], focal[3], eye[3], range[2];
+  grid->GetBounds(b);
+  camera->GetFocalPoint(focal);
+  camera->GetPosition(eye);
+  camera->GetClippingRange(range);
+  for (int k = 0; k < 3; ++k)
+  {
+    const double shift = 0.6 * (b[2 * k] - 0.5 * (b[2 * k] + b[2 * k + 1]));
+    focal[k] += shift;
+    eye[k] += shift;
+  }
+  camera->SetFocalPoint(focal);
+  camera->SetPosition(eye);
+  camera->Zoom(4.0);
+  // The moved eye may stand nearer the bounds: the near plane in front of them.
+  const double length = grid->GetLength();
+  camera->SetClippingRange(std::max(1e-3 * length, range[0] - length), range[1] + length);
 }
 
 double PeakMegabytes()
@@ -292,7 +325,7 @@ int DumpCases(const Options& o)
     volume->SetMapper(mapper);
     volume->SetProperty(MakeProperty(grid, VariantOf(dataset)));
     renderer->AddVolume(volume);
-    vtkHAVSStandardViews::PlaceCamera(renderer->GetActiveCamera(), grid, 0);
+    PlaceView(renderer->GetActiveCamera(), grid, 0, dataset);
     window->Render();
     const std::string dir = o.DumpCase + "/" + dataset + "_" + std::to_string(o.Size);
     mapper->SetCaptureDirectory(dir.c_str());
@@ -337,6 +370,7 @@ int RunWorker(const Options& o)
   int viewsDone = 0;
   std::string tableText = "-";
   long long skipped = -1; // HAVS: the tetrahedra skipped as invisible
+  long long culled = -1;  // HAVS: the tetrahedra culled off-screen (the last view)
   // The level of detail: the share of internal faces drawn per frame, the
   // ranking's preprocessing time and memory; the rotation's frame times, the
   // share of its settled frames within 25 % of the budget, the still frame's share.
@@ -351,7 +385,7 @@ int RunWorker(const Options& o)
     vtkNew<vtkCamera> camera;
     for (int view = 0; view < o.Views; ++view)
     {
-      vtkHAVSStandardViews::PlaceCamera(camera, grid, view);
+      PlaceView(camera, grid, view, dataset);
       bool computed = false;
       const double t0 = vtkTimerLog::GetUniversalTime();
       ReferenceImage(o, dataset, grid, property, camera, view, &computed);
@@ -372,7 +406,7 @@ int RunWorker(const Options& o)
     const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
     for (int view = 0; view < o.Views; ++view)
     {
-      vtkHAVSStandardViews::PlaceCamera(camera, grid, view);
+      PlaceView(camera, grid, view, dataset);
       double eye[3], dop[3];
       camera->GetPosition(eye);
       camera->GetDirectionOfProjection(dop);
@@ -426,6 +460,12 @@ int RunWorker(const Options& o)
       {
         // The defaults with every cell drawn: what skipping invisible cells buys.
         m->SkipInvisibleCellsOff();
+      }
+      else if (config == "havs-default-nocull")
+      {
+        // The defaults with every cell ordered and drawn: what culling the
+        // cells outside the view frustum buys.
+        m->SkipOffscreenCellsOff();
       }
       else if (config == "havs-default-sat")
       {
@@ -575,7 +615,7 @@ int RunWorker(const Options& o)
     volume->SetProperty(property);
     renderer->AddVolume(volume);
     vtkCamera* camera = renderer->GetActiveCamera();
-    vtkHAVSStandardViews::PlaceCamera(camera, grid, 0);
+    PlaceView(camera, grid, 0, dataset);
     window->Render(); // warm-up: faces, tables, shaders (twice: drivers compile lazily)
     if (havs)
     {
@@ -619,7 +659,7 @@ int RunWorker(const Options& o)
       {
         break; // the rotation: only the still frame at view 0 is measured against the reference
       }
-      vtkHAVSStandardViews::PlaceCamera(camera, grid, view);
+      PlaceView(camera, grid, view, dataset);
       if (opaqueActor)
       {
         // Behind the eye: in the scene, never in the picture.
@@ -705,6 +745,7 @@ int RunWorker(const Options& o)
     if (havs) // the table HAVS drew with: N (fixed) or N:error (chosen automatically)
     {
       skipped = static_cast<long long>(havs->GetLastFrameStatistics()->GetInvisibleCells());
+      culled = static_cast<long long>(havs->GetLastFrameStatistics()->GetCulledCells());
       rankingMB = havs->GetLevelOfDetailRanking()->GetMemoryBytes() / 1048576.0;
       tableText = std::to_string(havs->GetLastTableScalarResolution());
       if (havs->GetAutomaticTableResolution())
@@ -720,20 +761,21 @@ int RunWorker(const Options& o)
   {
     maxError = NAN;
   }
-  std::printf("RESULT dataset=%s config=%s size=%d tets=%lld views=%d frames=%zu ms_median=%.3f "
-              "ms_min=%.3f ms_max=%.3f sort_ms=%.3f gather_ms=%.3f draw_ms=%.3f flush_ms=%.3f "
-              "composite_ms=%.3f upload_ms=%.3f readback_ms=%.3f layers_ms=%.3f rmse=%.6f max=%.6f "
-              "over1=%.6f peak_mb=%.1f smp=%s threads=%d table=%s skipped=%lld lod_fraction=%.4f "
-              "ranking_s=%.3f ranking_mb=%.1f lod_target_ms=%.0f lod_within25=%.3f lod_still=%.3f "
-              "lod_trace=%s\n",
+  std::printf(
+    "RESULT dataset=%s config=%s size=%d tets=%lld views=%d frames=%zu ms_median=%.3f "
+    "ms_min=%.3f ms_max=%.3f sort_ms=%.3f gather_ms=%.3f draw_ms=%.3f flush_ms=%.3f "
+    "composite_ms=%.3f upload_ms=%.3f readback_ms=%.3f layers_ms=%.3f rmse=%.6f max=%.6f "
+    "over1=%.6f peak_mb=%.1f smp=%s threads=%d table=%s skipped=%lld culled=%lld lod_fraction=%.4f "
+    "ranking_s=%.3f ranking_mb=%.1f lod_target_ms=%.0f lod_within25=%.3f lod_still=%.3f "
+    "lod_trace=%s\n",
     dataset.c_str(), config.c_str(), o.Size, static_cast<long long>(tets), viewsDone, frame.size(),
     Median(frame), frame.empty() ? NAN : *std::min_element(frame.begin(), frame.end()),
     frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort),
     Median(gather), Median(draw), Median(flush), Median(composite), Median(upload),
     Median(readback), Median(layers), rmse, maxError, pixels > 0 ? over1 / pixels : NAN,
     PeakMegabytes(), vtkSMPTools::GetBackend(), vtkSMPTools::GetEstimatedNumberOfThreads(),
-    tableText.c_str(), skipped, Median(lodFractions), rankingSeconds, rankingMB, 1000.0 * lodTarget,
-    lodWithin, lodStill, TraceText(lodTrace).c_str());
+    tableText.c_str(), skipped, culled, Median(lodFractions), rankingSeconds, rankingMB,
+    1000.0 * lodTarget, lodWithin, lodStill, TraceText(lodTrace).c_str());
   return EXIT_SUCCESS;
 }
 
@@ -758,8 +800,8 @@ using Row = std::map<std::string, std::string>;
 const char* const kColumns[] = { "dataset", "config", "size", "tets", "views", "frames",
   "ms_median", "ms_min", "ms_max", "sort_ms", "gather_ms", "draw_ms", "flush_ms", "composite_ms",
   "upload_ms", "readback_ms", "layers_ms", "mtets_per_s", "rmse", "max", "over1", "peak_mb", "smp",
-  "threads", "table", "skipped", "lod_fraction", "ranking_s", "ranking_mb", "lod_target_ms",
-  "lod_within25", "lod_still", "lod_trace", "command" };
+  "threads", "table", "skipped", "culled", "lod_fraction", "ranking_s", "ranking_mb",
+  "lod_target_ms", "lod_within25", "lod_still", "lod_trace", "command" };
 
 /// A CSV field, quoted where it holds a comma or a quote.
 std::string CsvField(const std::string& text)
@@ -1313,6 +1355,20 @@ std::string Report(const std::vector<Row>& allRows, const Options& o, const std:
         md << "; with every cell drawn (havs-default-noskip): " << Cell(*r, "ms_median", "%.1f")
            << " ms (draw " << Cell(*r, "draw_ms", "%.1f") << "), so skipping takes "
            << std::setprecision(3) << t / Value(*r, "ms_median") << "× its time";
+      }
+      if (def.count("culled") && !def.at("culled").empty() && def.at("culled") != "0" &&
+        def.at("culled") != "-1")
+      {
+        md << "; " << def.at("culled")
+           << " tetrahedra off-screen in the last view (culled: not ordered, not drawn)";
+      }
+      for (const Row* r : rowsOf("havs-default-nocull"))
+      {
+        md << "; with every cell ordered and drawn (havs-default-nocull): "
+           << Cell(*r, "ms_median", "%.1f") << " ms (sort " << Cell(*r, "sort_ms", "%.1f")
+           << ", draw " << Cell(*r, "draw_ms", "%.1f") << "; default sort "
+           << Cell(def, "sort_ms", "%.1f") << "), so culling takes " << std::setprecision(3)
+           << t / Value(*r, "ms_median") << "× its time";
       }
       for (const Row* r : rowsOf("havs-default-sat"))
       {

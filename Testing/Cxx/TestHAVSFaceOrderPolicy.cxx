@@ -22,8 +22,15 @@
 //   this mesh, k and path; another k probes again.
 // - No order needed (extremum blend modes): Order -1, the faces once.
 // - Every draw order is a permutation of the mesh's faces.
+// - Culled cells (those wholly on the outside of a plane) are neither
+//   ordered nor drawn: the centroid order keys only the other faces and is
+//   the full order with the culled-only faces taken out; the exact order
+//   visits only the kept tetrahedra, every internal face between two of
+//   them has its front cell visited first, and each face with a kept cell
+//   is ordered once.
 // Controls: Invalidate() makes the same view sort again (the reuse check can
-// fail), and the reversed centroid order fails the front-to-back check.
+// fail), the reversed centroid order fails the front-to-back check, and the
+// reversed exact cell order fails the front-cell-first check.
 #include "havsTestChecks.h"
 #include "havsTestViews.h"
 
@@ -33,14 +40,17 @@
 #include "vtkHAVSFaceSorter.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSViewFrame.h"
+#include "vtkHAVSVisibilityOrder.h"
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -76,6 +86,68 @@ double Distance(
     d2 += (c / 3.0 - eye[k]) * (c / 3.0 - eye[k]);
   }
   return std::sqrt(d2);
+}
+
+/// Internal faces between two kept tetrahedra whose front tetrahedron (the
+/// one on the eye's side of the face) comes after its back one in `cells`
+/// (a cell order: tetrahedron indices). Kept: not `culled` (per grid cell).
+int FrontAfterBack(vtkHAVSFaceSet* faces, vtkHAVSVisibilityOrder* order, vtkPoints* points,
+  const std::vector<uint32_t>& cells, const std::vector<uint8_t>& culled, const double eye[3])
+{
+  const std::vector<uint32_t>& tets = faces->GetTetrahedra();
+  const std::vector<uint32_t>& tetCells = faces->GetTetrahedronCells();
+  std::vector<int64_t> rank(tets.size() / 4, -1);
+  for (size_t i = 0; i < cells.size(); ++i)
+  {
+    rank[cells[i]] = static_cast<int64_t>(i);
+  }
+  const std::vector<uint32_t>& fv = faces->GetFaceVertices();
+  int wrong = 0;
+  for (vtkIdType f = 0; f < faces->GetNumberOfFaces(); ++f)
+  {
+    vtkIdType t[2];
+    order->GetFaceTetrahedra(f, t);
+    if (t[0] < 0 || t[1] < 0 || culled[tetCells[t[0]]] || culled[tetCells[t[1]]])
+    {
+      continue;
+    }
+    double p[3][3], far[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      points->GetPoint(fv[3 * f + i], p[i]);
+    }
+    // The far vertex of tetrahedron 0: the one not on the face.
+    for (int j = 0; j < 4; ++j)
+    {
+      const uint32_t v = tets[4 * t[0] + j];
+      if (v != fv[3 * f] && v != fv[3 * f + 1] && v != fv[3 * f + 2])
+      {
+        points->GetPoint(v, far);
+      }
+    }
+    double u[3], w[3], n[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      u[k] = p[1][k] - p[0][k];
+      w[k] = p[2][k] - p[0][k];
+    }
+    n[0] = u[1] * w[2] - u[2] * w[1];
+    n[1] = u[2] * w[0] - u[0] * w[2];
+    n[2] = u[0] * w[1] - u[1] * w[0];
+    double sideEye = 0.0, sideFar = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      sideEye += n[k] * (eye[k] - p[0][k]);
+      sideFar += n[k] * (far[k] - p[0][k]);
+    }
+    const vtkIdType front = (sideEye > 0.0) == (sideFar > 0.0) ? t[0] : t[1];
+    const vtkIdType back = front == t[0] ? t[1] : t[0];
+    if (rank[front] < 0 || rank[back] < 0 || rank[front] > rank[back])
+    {
+      ++wrong;
+    }
+  }
+  return wrong;
 }
 }
 
@@ -181,6 +253,100 @@ int TestHAVSFaceOrderPolicy(int, char*[])
   havstest::Check(plan.Order == centroid && plan.Probe, "Automatic: another k probes again");
   plan = policy->Begin(mesh, 3, 1, true, false);
   havstest::Check(!plan.Probe, "Automatic: no probe where none may be drawn (raster bound)");
+
+  // Culled cells: those wholly on the outside of the plane x = 0.45 (kept
+  // where x >= 0.45), as vtkHAVSViewCulling marks them.
+  {
+    vtkHAVSFaceSet* faces = mesh->GetFaceSet();
+    const std::vector<uint32_t>& tets = faces->GetTetrahedra();
+    const std::vector<uint32_t>& tetCells = faces->GetTetrahedronCells();
+    std::vector<uint8_t> culled(grid->GetNumberOfCells(), 0);
+    size_t keptTets = 0;
+    for (size_t t = 0; t < tetCells.size(); ++t)
+    {
+      bool outside = true;
+      for (int j = 0; j < 4; ++j)
+      {
+        outside = outside && grid->GetPoints()->GetPoint(tets[4 * t + j])[0] < 0.45;
+      }
+      culled[tetCells[t]] = outside;
+      keptTets += !outside;
+    }
+    const std::vector<uint32_t>& faceCells = faces->GetFaceCells();
+    auto kept = [&](uint32_t c) { return c != vtkHAVSFaceSet::NoCell && !culled[c]; };
+    std::vector<uint32_t> unculled;
+    for (vtkIdType f = 0; f < faces->GetNumberOfFaces(); ++f)
+    {
+      if (kept(faceCells[2 * f]) || kept(faceCells[2 * f + 1]))
+      {
+        unculled.push_back(static_cast<uint32_t>(f));
+      }
+    }
+    havstest::Check(keptTets > 0 && keptTets < tetCells.size() &&
+        unculled.size() < static_cast<size_t>(faces->GetNumberOfFaces()),
+      "culling: the plane culls some tetrahedra, not all");
+    auto unculledOnly = [&](const std::vector<uint32_t>& triangles)
+    {
+      std::vector<std::array<uint32_t, 3>> all = Faces(triangles), expected;
+      for (uint32_t f : unculled)
+      {
+        std::array<uint32_t, 3> v = { faces->GetFaceVertices()[3 * f],
+          faces->GetFaceVertices()[3 * f + 1], faces->GetFaceVertices()[3 * f + 2] };
+        std::sort(v.begin(), v.end());
+        expected.push_back(v);
+      }
+      std::sort(expected.begin(), expected.end());
+      return all == expected;
+    };
+
+    // Centroid: the full order, then the culled one.
+    policy->SetCellCulling(nullptr, 0);
+    policy->SetVisibilityOrder(centroid);
+    policy->Prepare(policy->Begin(mesh, 2, 1, true, true), mesh, grid, viewA);
+    const std::vector<uint32_t> full = sorter->GetOrder();
+    policy->SetCellCulling(&culled, 1);
+    const vtkIdType sortsCulled = sorter->GetNumberOfSorts();
+    policy->Prepare(policy->Begin(mesh, 2, 1, true, true), mesh, grid, viewA);
+    std::vector<uint32_t> filtered;
+    std::copy_if(full.begin(), full.end(), std::back_inserter(filtered),
+      [&](uint32_t f) { return std::binary_search(unculled.begin(), unculled.end(), f); });
+    havstest::Check(sorter->GetNumberOfSorts() == sortsCulled + 1 &&
+        policy->GetLastOrderedFaces() == static_cast<vtkIdType>(unculled.size()) &&
+        sorter->GetOrder() == filtered,
+      "culling, centroid: only the faces with a kept cell are sorted, in the full order's "
+      "sequence");
+    havstest::Check(unculledOnly(policy->GetDrawTriangles()),
+      "culling, centroid: the faces with a kept cell are drawn, each once");
+    policy->Prepare(policy->Begin(mesh, 2, 1, true, true), mesh, grid, viewA);
+    havstest::Check(sorter->GetNumberOfSorts() == sortsCulled + 1 && policy->GetLastReused(),
+      "culling, centroid: the same view and culling sort nothing again");
+
+    // MPVO: only the kept tetrahedra are visited, front cells first.
+    policy->SetVisibilityOrder(mpvo);
+    havstest::Check(policy->Prepare(policy->Begin(mesh, 2, 1, true, true), mesh, grid, viewA),
+      "culling, MPVO: the order is made");
+    vtkHAVSVisibilityOrder* exact = policy->GetExactOrder();
+    const std::vector<uint32_t> cells = exact->GetCellOrder();
+    havstest::Check(cells.size() == keptTets &&
+        policy->GetLastOrderedFaces() == static_cast<vtkIdType>(unculled.size()) &&
+        unculledOnly(policy->GetDrawTriangles()),
+      "culling, MPVO: the kept tetrahedra only; each face with a kept cell ordered once (" +
+        std::to_string(policy->GetLastOrderedFaces()) + " of " +
+        std::to_string(faces->GetNumberOfFaces()) + " faces, " + std::to_string(keptTets) + " of " +
+        std::to_string(tetCells.size()) + " tetrahedra)");
+    const int wrong = FrontAfterBack(faces, exact, grid->GetPoints(), cells, culled, eyeA);
+    havstest::Check(wrong == 0,
+      "culling, MPVO: every face between kept cells has its front cell first (" +
+        std::to_string(wrong) + " do not)");
+    const std::vector<uint32_t> reversed(cells.rbegin(), cells.rend());
+    havstest::Check(FrontAfterBack(faces, exact, grid->GetPoints(), reversed, culled, eyeA) > 0,
+      "control: the reversed cell order has faces with the front cell last");
+    policy->SetCellCulling(nullptr, 0);
+    policy->Prepare(policy->Begin(mesh, 2, 1, true, true), mesh, grid, viewA);
+    havstest::Check(exact->GetCellOrder().size() == tetCells.size() &&
+        policy->GetLastOrderedFaces() == faces->GetNumberOfFaces(),
+      "culling off, MPVO: every tetrahedron and face ordered again");
+  }
 
   // No order needed.
   plan = policy->Begin(mesh, 2, 1, false, true);

@@ -77,6 +77,7 @@ const std::vector<uint32_t>* vtkHAVSFaceOrderPolicy::MakeExactOrder(
     this->ExactMeshTime = mesh->GetBuildTime();
     this->ExactValid = false;
   }
+  this->Exact->SetSkippedCells(this->Culled, this->CullingVersion);
   const vtkHAVSVisibilityOrder::ViewKey key =
     this->Exact->MakeViewKey(mesh->GetBuildTime(), view, this->NonConvexMethod);
   if (!this->ExactValid || !(key == this->LastExactKey))
@@ -89,7 +90,8 @@ const std::vector<uint32_t>* vtkHAVSFaceOrderPolicy::MakeExactOrder(
     changed = true;
   }
   const std::vector<uint32_t>& order = this->Exact->GetOrder();
-  if (static_cast<vtkIdType>(order.size()) != mesh->GetFaceSet()->GetNumberOfFaces())
+  if (static_cast<vtkIdType>(order.size()) + this->Exact->GetNumberOfSkippedFaces() !=
+    mesh->GetFaceSet()->GetNumberOfFaces())
   {
     this->ExactValid = false;
     return nullptr;
@@ -117,6 +119,15 @@ bool vtkHAVSFaceOrderPolicy::Prepare(
   }
   if (drawn == vtkHAVSVolumeMapper::VisibilityOrderCentroid)
   {
+    if (this->Culled)
+    {
+      this->ListUnculledFaces(mesh);
+      this->Centroid->SetFaceSubset(&this->UnculledFaces, this->UnculledTime.GetMTime());
+    }
+    else
+    {
+      this->Centroid->SetFaceSubset(nullptr, 0);
+    }
     changed = this->Centroid->Sort(
       mesh->GetFaceSet(), view.GridToWorld, view.EyeWorld, view.DirectionWorld, view.Parallel);
     order = &this->Centroid->GetOrder();
@@ -136,6 +147,7 @@ bool vtkHAVSFaceOrderPolicy::Prepare(
     this->LastGatherSeconds = vtkTimerLog::GetUniversalTime() - gatherStart;
   }
   this->LastOrder = drawn;
+  this->LastOrderedFaces = order ? static_cast<vtkIdType>(order->size()) : 0;
   this->LastReused = !newOrder;
   this->LastSeconds = vtkTimerLog::GetUniversalTime() - start;
   return ok;
@@ -167,16 +179,43 @@ void vtkHAVSFaceOrderPolicy::SetFaceSubset(
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSFaceOrderPolicy::ListUnculledFaces(vtkHAVSMesh* mesh)
+{
+  if (this->UnculledMesh == mesh->GetBuildTime() && this->UnculledCulling == this->CullingVersion)
+  {
+    return;
+  }
+  const std::vector<uint32_t>& faceCells = mesh->GetFaceSet()->GetFaceCells();
+  const std::vector<uint8_t>& culled = *this->Culled;
+  auto kept = [&](uint32_t cell)
+  { return cell != vtkHAVSFaceSet::NoCell && (cell >= culled.size() || culled[cell] == 0); };
+  const size_t numFaces = faceCells.size() / 2;
+  this->UnculledFaces.clear();
+  for (size_t f = 0; f < numFaces; ++f)
+  {
+    if (kept(faceCells[2 * f]) || kept(faceCells[2 * f + 1]))
+    {
+      this->UnculledFaces.push_back(static_cast<uint32_t>(f));
+    }
+  }
+  this->UnculledMesh = mesh->GetBuildTime();
+  this->UnculledCulling = this->CullingVersion;
+  this->UnculledTime.Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_t>* order)
 {
   vtkHAVSFaceSet* faces = mesh->GetFaceSet();
   const std::vector<uint32_t>& faceVertices = mesh->GetFaceVertexIds();
   const std::vector<uint8_t>& boundary = faces->GetBoundaryFlags();
-  const vtkIdType numFaces = faces->GetNumberOfFaces();
+  // An order may leave out the faces of culled cells only.
+  const vtkIdType numFaces =
+    order ? static_cast<vtkIdType>(order->size()) : faces->GetNumberOfFaces();
   this->DrawTriangles.resize(3 * numFaces);
   this->DrawBoundary.resize(numFaces);
   const std::vector<uint32_t>* ranks = this->Subset.Ranks;
-  if (ranks && ranks->size() != static_cast<size_t>(numFaces))
+  if (ranks && ranks->size() != static_cast<size_t>(faces->GetNumberOfFaces()))
   {
     ranks = nullptr; // not this mesh's ranking: every face
   }

@@ -109,8 +109,12 @@ public:
   /**
    * The cells the frame cannot see (vtkHAVSViewCulling: per grid cell id, 1
    * culled; null: none), and when that set last changed. A face both of whose
-   * cells are culled (or hidden) is not gathered; culling makes no boundary
-   * face (a culled cell's faces lie outside the image or the clipped volume).
+   * cells are culled is neither ordered (the centroid sort keys only the
+   * other faces, the exact order skips the culled cells:
+   * vtkHAVSVisibilityOrder::SetSkippedCells) nor gathered; a face both of
+   * whose cells are culled or hidden is not gathered. Culling makes no
+   * boundary face (a culled cell's faces lie outside the image or the
+   * clipped volume).
    */
   void SetCellCulling(const std::vector<uint8_t>* culled, vtkMTimeType version);
 
@@ -147,6 +151,9 @@ public:
   vtkGetMacro(LastSeconds, double);
   /// The part of LastSeconds that gathered the draw triangles in the new order.
   vtkGetMacro(LastGatherSeconds, double);
+  /// Faces in the order drawn (0 without one): fewer than the mesh's when
+  /// culled cells were left out of it.
+  vtkGetMacro(LastOrderedFaces, vtkIdType);
   /// The exact order's cycle breaks, boundary relations and their seconds.
   vtkIdType GetLastCycleBreaks() const;
   vtkIdType GetLastBoundaryRelations() const;
@@ -207,6 +214,13 @@ private:
   const std::vector<uint8_t>* Culled = nullptr;
   vtkMTimeType CullingVersion = 0;
   vtkMTimeType GatheredCulling = 0;
+  // The faces with a cell that is not culled (the centroid sort's subset),
+  // for the mesh and culling they were listed for.
+  void ListUnculledFaces(vtkHAVSMesh* mesh);
+  std::vector<uint32_t> UnculledFaces;
+  vtkMTimeType UnculledMesh = 0;
+  vtkMTimeType UnculledCulling = 0;
+  vtkTimeStamp UnculledTime;
   struct SubsetKey
   {
     const std::vector<uint32_t>* Ranks = nullptr;
@@ -224,6 +238,7 @@ private:
   bool LastReused = false;
   double LastSeconds = 0.0;
   double LastGatherSeconds = 0.0;
+  vtkIdType LastOrderedFaces = 0;
 };
 
 #endif

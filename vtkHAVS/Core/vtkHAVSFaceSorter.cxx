@@ -43,7 +43,8 @@ bool vtkHAVSFaceSorter::Sort(vtkHAVSFaceSet* faces, const double modelToWorld[16
   std::copy(directionOfProjectionWorld, directionOfProjectionWorld + 3, direction.begin());
   if (this->Valid && faces->GetBuildTime() == this->LastFaceBuildTime &&
     this->GetMTime() == this->LastSortMTime && matrix == this->LastMatrix && eye == this->LastEye &&
-    direction == this->LastDirection && parallelProjection == this->LastParallel)
+    direction == this->LastDirection && parallelProjection == this->LastParallel &&
+    this->SubsetVersion == this->LastSubsetVersion)
   {
     return false;
   }
@@ -60,14 +61,28 @@ bool vtkHAVSFaceSorter::Sort(vtkHAVSFaceSet* faces, const double modelToWorld[16
       m[4 * r + 3] - eye[r];
   }
   const float* centroids = faces->GetCentroids().data();
-  const vtkIdType n = faces->GetNumberOfFaces();
+  const vtkIdType numberOfFaces = faces->GetNumberOfFaces();
+  const uint32_t* subset = nullptr;
+  vtkIdType n = numberOfFaces;
+  if (this->Subset && !this->Subset->empty() &&
+    (this->Subset->size() > static_cast<size_t>(numberOfFaces) ||
+      this->Subset->back() >= static_cast<uint32_t>(numberOfFaces)))
+  {
+    vtkErrorMacro("Sort: the face subset does not belong to this face set; sorting every face.");
+  }
+  else if (this->Subset)
+  {
+    subset = this->Subset->data();
+    n = static_cast<vtkIdType>(this->Subset->size());
+  }
   this->Keys.resize(static_cast<size_t>(n));
   float* keys = this->Keys.data();
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
     {
-      for (vtkIdType f = begin; f < end; ++f)
+      for (vtkIdType i = begin; i < end; ++i)
       {
+        const vtkIdType f = subset ? static_cast<vtkIdType>(subset[i]) : i;
         const float* c = centroids + 3 * f;
         double w[3];
         for (int r = 0; r < 3; ++r)
@@ -77,10 +92,29 @@ bool vtkHAVSFaceSorter::Sort(vtkHAVSFaceSet* faces, const double modelToWorld[16
         const double key = parallelProjection
           ? w[0] * direction[0] + w[1] * direction[1] + w[2] * direction[2]
           : w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-        keys[f] = static_cast<float>(key);
+        keys[i] = static_cast<float>(key);
       }
     });
-  this->RadixSorter->Sort(keys, static_cast<size_t>(n), this->Order);
+  if (subset)
+  {
+    // Positions in the subset, sorted; then the faces they stand for.
+    this->RadixSorter->Sort(keys, static_cast<size_t>(n), this->SubsetOrder);
+    this->Order.resize(this->SubsetOrder.size());
+    uint32_t* order = this->Order.data();
+    const uint32_t* positions = this->SubsetOrder.data();
+    vtkSMPTools::For(0, n,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          order[i] = subset[positions[i]];
+        }
+      });
+  }
+  else
+  {
+    this->RadixSorter->Sort(keys, static_cast<size_t>(n), this->Order);
+  }
   if (this->BlockReversal > 1)
   {
     for (size_t b = 0; b < this->Order.size(); b += this->BlockReversal)
@@ -96,16 +130,25 @@ bool vtkHAVSFaceSorter::Sort(vtkHAVSFaceSet* faces, const double modelToWorld[16
   this->LastEye = eye;
   this->LastDirection = direction;
   this->LastParallel = parallelProjection;
+  this->LastSubsetVersion = this->SubsetVersion;
   this->LastSortSeconds = vtkTimerLog::GetUniversalTime() - start;
   ++this->NumberOfSorts;
   return true;
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSFaceSorter::SetFaceSubset(const std::vector<uint32_t>* faces, vtkMTimeType version)
+{
+  this->Subset = faces;
+  this->SubsetVersion = faces ? version : 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSFaceSorter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Faces in order: " << this->Order.size() << "\n";
+  os << indent << "Faces in order: " << this->Order.size()
+     << (this->Subset ? " (a subset)" : " (every face)") << "\n";
   os << indent << "NumberOfSorts: " << this->NumberOfSorts << "\n";
   os << indent << "LastSortSeconds: " << this->LastSortSeconds << "\n";
   os << indent << "BlockReversal: " << this->BlockReversal << "\n";

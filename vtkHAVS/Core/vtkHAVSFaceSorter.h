@@ -58,6 +58,18 @@ public:
   /// Face indices, nearest first.
   const std::vector<uint32_t>& GetOrder() const { return this->Order; }
 
+  /**
+   * Sort only these faces (indices into the face set, ascending), e.g. those
+   * of the cells a frame can see; nullptr (the default) sorts every face.
+   * The faces left out get no key and are not in GetOrder(). `version`
+   * changes whenever the list does (Sort() sorts again then). The radix sort
+   * is stable, so the order equals the full order with the other faces taken
+   * out. The list is not copied: it must outlive the next Sort().
+   */
+  void SetFaceSubset(const std::vector<uint32_t>* faces, vtkMTimeType version);
+  /// Faces in the last order (the subset's size, or every face).
+  vtkIdType GetNumberOfSortedFaces() const { return static_cast<vtkIdType>(this->Order.size()); }
+
   ///@{
   /// Wall time of the last real sort, and how many real sorts ran.
   vtkGetMacro(LastSortSeconds, double);
@@ -86,6 +98,10 @@ private:
   vtkNew<vtkHAVSRadixSorter> RadixSorter;
   std::vector<float> Keys;
   std::vector<uint32_t> Order;
+  std::vector<uint32_t> SubsetOrder;
+  const std::vector<uint32_t>* Subset = nullptr;
+  vtkMTimeType SubsetVersion = 0;
+  vtkMTimeType LastSubsetVersion = 0;
   bool Valid = false;
   vtkMTimeType LastFaceBuildTime = 0;
   vtkMTimeType LastSortMTime = 0;

@@ -40,6 +40,7 @@ void vtkHAVSFrameStatistics::Reset()
   this->SaturatedPixels = -1;
   this->ShadedFragments = -1;
   this->FacesDrawn = 0;
+  this->FacesOrdered = 0;
   this->MeshUpdate = 0;
   this->MeshSeconds = 0.0;
   this->TableRebuilt = false;
@@ -102,8 +103,9 @@ void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tagging: " << this->Tagging << ", planes " << this->PlaneCount
      << ", section triangles " << this->SectionTriangles << " (" << this->SectionSeconds << " s)\n";
   os << indent << "OrderViolations: " << this->OrderViolations << ", fragments " << this->Fragments
-     << ", faces drawn " << this->FacesDrawn << ", saturated pixels " << this->SaturatedPixels
-     << ", shaded fragments " << this->ShadedFragments << "\n";
+     << ", faces drawn " << this->FacesDrawn << " (ordered " << this->FacesOrdered << ")"
+     << ", saturated pixels " << this->SaturatedPixels << ", shaded fragments "
+     << this->ShadedFragments << "\n";
   os << indent << "OpaqueGeometry: " << this->OpaqueGeometry << " (depth multisampled "
      << this->OpaqueDepthMultisampled << ", captured " << this->OpaqueDepthCaptured << ")\n";
   os << indent << "Seconds: sort " << this->SortSeconds << " (gather " << this->GatherSeconds

@@ -137,6 +137,10 @@ public:
   /// Faces drawn (internal and boundary).
   vtkSetMacro(FacesDrawn, vtkIdType);
   vtkGetMacro(FacesDrawn, vtkIdType);
+  /// Faces in the face order the frame drew (0 without one): the faces of
+  /// culled cells are not ordered (vtkHAVSVolumeMapper::SkipOffscreenCells).
+  vtkSetMacro(FacesOrdered, vtkIdType);
+  vtkGetMacro(FacesOrdered, vtkIdType);
   ///@}
 
   ///@{
@@ -269,6 +273,7 @@ private:
   vtkIdType SaturatedPixels = -1;
   vtkIdType ShadedFragments = -1;
   vtkIdType FacesDrawn = 0;
+  vtkIdType FacesOrdered = 0;
   double LevelOfDetailFraction = 1.0;
   bool LongSegmentTable = false;
   double RankingSeconds = 0.0;

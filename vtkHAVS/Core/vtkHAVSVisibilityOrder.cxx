@@ -63,6 +63,7 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
   this->FaceCells.clear();
   this->FacePlanes.clear();
   this->CellFaces.clear();
+  this->TetrahedronCells.clear();
   this->Order.clear();
   this->Points.clear();
   this->BoundaryFaces.clear();
@@ -95,6 +96,7 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
 
   this->FaceCells.assign(2 * numberOfFaces, -1);
   this->CellFaces.resize(4 * numberOfTets);
+  this->TetrahedronCells = faces->GetTetrahedronCells();
   std::vector<uint32_t> farPoint(2 * numberOfFaces, 0); // each cell's vertex off the face
   for (size_t t = 0; t < numberOfTets; ++t)
   {
@@ -463,7 +465,23 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
   this->CellOrder.reserve(numberOfTets);
   this->NumberOfCycleBreaks = 0;
   this->NumberOfBoundaryRelations = 0;
+  this->NumberOfSkippedFaces = 0;
   auto side = [&](const double* p) { return EyeSide(p, eye, direction, parallel); };
+
+  // The skipped tetrahedra (SetSkippedCells): visited before the sort starts,
+  // so nothing waits for them and none is ordered.
+  std::vector<uint8_t> skip;
+  if (this->Skipped && this->TetrahedronCells.size() == numberOfTets)
+  {
+    skip.assign(numberOfTets, 0);
+    const std::vector<uint8_t>& cells = *this->Skipped;
+    for (size_t t = 0; t < numberOfTets; ++t)
+    {
+      const uint32_t c = this->TetrahedronCells[t];
+      skip[t] = c < cells.size() && cells[c] != 0;
+    }
+  }
+  auto skipped = [&](int64_t t) { return t >= 0 && !skip.empty() && skip[t] != 0; };
 
   // Each face's back cell: the one the ray enters through it (-1: it leaves
   // the mesh there). cell 1 lies on the positive side of the plane.
@@ -559,12 +577,25 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
   {
     if (back[f] >= 0 && this->FaceCells[2 * f + 1] >= 0)
     {
-      ++waiting[static_cast<size_t>(back[f])];
+      const int64_t front =
+        this->FaceCells[2 * f] == back[f] ? this->FaceCells[2 * f + 1] : this->FaceCells[2 * f];
+      if (!skipped(front))
+      {
+        ++waiting[static_cast<size_t>(back[f])];
+      }
+    }
+    if (!skip.empty() && (this->FaceCells[2 * f] < 0 || skipped(this->FaceCells[2 * f])) &&
+      (this->FaceCells[2 * f + 1] < 0 || skipped(this->FaceCells[2 * f + 1])))
+    {
+      ++this->NumberOfSkippedFaces;
     }
   }
   for (const auto& e : extra)
   {
-    ++waiting[e.second];
+    if (e.first >= numberOfTets || !skipped(e.first))
+    {
+      ++waiting[e.second];
+    }
   }
   // The ready queue: each node enters it once when its last cell in front is
   // visited, or at a cycle break (a plain vector read from the front).
@@ -580,6 +611,11 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
   }
   std::vector<uint8_t> visited(numberOfNodes, 0);
   size_t visitedCount = 0;
+  for (size_t t = 0; t < skip.size(); ++t)
+  {
+    visited[t] = skip[t];
+    visitedCount += skip[t];
+  }
   size_t scan = 0;
   auto release = [&](size_t behind)
   {
@@ -634,9 +670,9 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
       for (int j = 0; j < 4; ++j)
       {
         const uint32_t f = cellFaces[j];
-        if (back[f] < 0)
+        if (back[f] < 0 || (back[f] != static_cast<int32_t>(c) && skipped(back[f])))
         {
-          this->Order.push_back(f);
+          this->Order.push_back(f); // it leaves the mesh, or the cells the frame sees
         }
         else if (back[f] != static_cast<int32_t>(c))
         {
@@ -650,6 +686,14 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
     }
   }
   this->LastSortSeconds = vtkTimerLog::GetUniversalTime() - start;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVisibilityOrder::SetSkippedCells(
+  const std::vector<uint8_t>* skipped, vtkMTimeType version)
+{
+  this->Skipped = skipped;
+  this->SkippedVersion = skipped ? version : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -669,6 +713,8 @@ void vtkHAVSVisibilityOrder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfBoundaryRelations: " << this->NumberOfBoundaryRelations << " ("
      << this->LastBoundaryLayerSeconds << " s)\n";
   os << indent << "NumberOfCycleBreaks: " << this->NumberOfCycleBreaks << "\n";
+  os << indent << "Skipped cells: " << (this->Skipped ? "set" : "none")
+     << ", NumberOfSkippedFaces: " << this->NumberOfSkippedFaces << "\n";
   os << indent << "LastSortSeconds: " << this->LastSortSeconds << "\n";
 }
 
@@ -682,6 +728,7 @@ vtkHAVSVisibilityOrder::ViewKey vtkHAVSVisibilityOrder::MakeViewKey(
   std::copy(view.DirectionGrid, view.DirectionGrid + 3, key.Direction.begin());
   key.Parallel = view.Parallel;
   key.Method = method;
+  key.Skip = this->SkippedVersion;
   if (method == NonConvexBoundaryLayers && !this->MeshConvex)
   {
     // The boundary layers are sampled at this frame's pixels.

@@ -119,11 +119,13 @@ public:
     std::array<double, 16> GridToClip{};
     int Width = 0;
     int Height = 0;
+    vtkMTimeType Skip = 0; // the skipped cells' version (SetSkippedCells)
     bool operator==(const ViewKey& o) const
     {
       return this->Mesh == o.Mesh && this->Eye == o.Eye && this->Direction == o.Direction &&
         this->Parallel == o.Parallel && this->Method == o.Method &&
-        this->GridToClip == o.GridToClip && this->Width == o.Width && this->Height == o.Height;
+        this->GridToClip == o.GridToClip && this->Width == o.Width && this->Height == o.Height &&
+        this->Skip == o.Skip;
     }
   };
   /// The key of a Sort() for `view` with `method`, of the mesh built at `meshTime`.
@@ -134,6 +136,24 @@ public:
    * front to back.
    */
   void Sort(const double eye[3], const double direction[3], bool parallel);
+
+  /**
+   * Cells the next Sort() leaves out (per grid cell id of the face set's
+   * GetTetrahedronCells(), 1 skipped; null: none), and when that set last
+   * changed. Only for cells the frame cannot see because each lies wholly
+   * outside one half-space whose outside is never drawn (vtkHAVSViewCulling:
+   * a frustum plane, or a clipping plane's discarded side). A ray crosses
+   * such a plane once, so the part of every ray that reaches the image runs
+   * through kept cells only, and the relations between kept cells (shared
+   * faces, seams, boundary layers, imaginary cells) order it exactly. Cells
+   * hidden by the transfer function must not be skipped here: the order
+   * across the gaps they leave runs through them. A face between a kept and
+   * a skipped cell is ordered as an exit of the kept one; a face of skipped
+   * cells only is left out of GetOrder() (GetNumberOfSkippedFaces()).
+   */
+  void SetSkippedCells(const std::vector<uint8_t>* skipped, vtkMTimeType version);
+  /// Faces the last Sort() left out: every cell they border was skipped.
+  vtkGetMacro(NumberOfSkippedFaces, vtkIdType);
 
   /// The two tetrahedra of a face (-1: none; a boundary face has only the first).
   void GetFaceTetrahedra(vtkIdType face, vtkIdType cells[2]) const
@@ -192,6 +212,10 @@ private:
   std::vector<int64_t> FaceCells;  // 2 per face: the tetrahedra (-1: none)
   std::vector<double> FacePlanes;  // 4 per face: n, d with n.x + d > 0 on FaceCells[0]'s far side
   std::vector<uint32_t> CellFaces; // 4 per tetrahedron
+  std::vector<uint32_t> TetrahedronCells;        // the grid cell id of each tetrahedron
+  const std::vector<uint8_t>* Skipped = nullptr; // per grid cell id (SetSkippedCells)
+  vtkMTimeType SkippedVersion = 0;
+  vtkIdType NumberOfSkippedFaces = 0;
   std::vector<uint32_t> Order;
   std::vector<uint32_t> CellOrder;
   std::vector<double> Points;                 // the grid's points (3 per point)

@@ -630,6 +630,7 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   stats->SetSaturatedPixels(result.SaturatedPixels);
   stats->SetShadedFragments(result.ShadedFragments);
   stats->SetFacesDrawn(static_cast<vtkIdType>(this->FaceOrder->GetDrawTriangles().size() / 3));
+  stats->SetFacesOrdered(this->FaceOrder->GetLastOrderedFaces());
   stats->SetOpaqueGeometry(request.Opaque);
   stats->SetOpaqueDepthMultisampled(result.OpaqueDepthMultisampled);
   stats->SetOpaqueDepthCaptured(result.OpaqueDepthCaptured);
