@@ -210,9 +210,10 @@ public:
   /**
    * Skip the cells the frame cannot see (default on; vtkHAVSViewCulling): a
    * cell whose points all lie outside one plane of the view frustum (a
-   * zoomed-in view) or on the discarded side of a clipping plane is not
-   * drawn. None of its fragments would reach the image, so it stays the same.
-   * The frame statistics count them (GetCulledCells()).
+   * zoomed-in view) or on the discarded side of a clipping plane is neither
+   * ordered (centroid or exact order) nor drawn. None of its fragments would
+   * reach the image, so it stays the same. The frame statistics count them
+   * (GetCulledCells(), GetFacesOrdered()).
    */
   vtkSetMacro(SkipOffscreenCells, bool);
   vtkGetMacro(SkipOffscreenCells, bool);
