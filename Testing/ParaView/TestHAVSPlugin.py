@@ -4,7 +4,8 @@
 Loads the plugin, shows the LOX post (post.vtk, tetrahedralized) as "HAVS Volume",
 checks that the representation renders with vtkHAVSVolumeMapper, that k set from Python
 reaches the mapper (on every rank), compares the screenshot with the exact reference
-(vtkHAVSReferenceRenderer, RMSE bound), with a baseline (regression, tolerance) and, under
+(vtkHAVSReferenceRenderer, RMSE bound), with a baseline (regression, tolerance); serial:
+the same with the ray caster ("HAVS Ray Cast"; control: one peeling pass) and, under
 MPI, checks that both ranks rendered non-empty, disjoint pieces and that the composited
 image equals the serial one (written by the serial run) within a tolerance.
 
@@ -137,6 +138,50 @@ if rank == 0:
               % (args.mode, label, rmse, bound))
 
 if args.mode == "serial":
+    # The ray caster (issue 21) as the representation's mapper: "HAVS Ray Cast", the
+    # settings that apply to it forwarded, the same scene against the same exact
+    # reference; control: one depth-peeling pass (the post's hole makes the rays
+    # re-enter), which must fail the same bound.
+    RAY_BOUND = 0.003
+    check(display.HAVSMapper == "HAVS", "default: the HAVS mapper")
+    display.HAVSMapper = "HAVS Ray Cast"
+    Render(view)
+    caster = rep.GetActiveVolumeMapper()
+    check(caster.GetClassName() == "vtkOpenGLHAVSRayCastMapper"
+          and caster.IsA("vtkHAVSRayCastMapper"),
+          "HAVS Ray Cast: the active mapper is %s" % caster.GetClassName())
+    check(caster.GetEarlyRayTerminationOpacity() == 1.0
+          and caster.GetTableScalarResolution() == 128
+          and caster.GetTableLengthResolution() == 128 and caster.GetMaximumPeelPasses() == 0,
+          "HAVS Ray Cast: early ray termination (%g), table (%d) and peeling limit (%d) "
+          "reached it" % (caster.GetEarlyRayTerminationOpacity(),
+                          caster.GetTableScalarResolution(), caster.GetMaximumPeelPasses()))
+    ray_name = os.path.join(args.out, "havs_plugin_raycast.png")
+    SaveScreenshot(ray_name, view, ImageResolution=[SIZE, SIZE])
+    display.UpdatePropertyInformation()
+    passes = display.GetProperty("HAVSLastPeelPasses").GetElement(0)
+    rmse, worst = compare(png_rgb(ray_name), exact)
+    print("ray cast image vs exact reference: RMSE %.5f, max %.4f, %d peeling passes, "
+          "%d rays, %d cells crossed" % (rmse, worst, passes, caster.GetLastRaysStarted(),
+                                         caster.GetLastCellsCrossed()))
+    # A tighter bound than HAVS's 0.01 (the 8-bit screenshot's rounding alone is at most
+    # 1/255/sqrt(12) = 0.0011 RMSE), so that the control below fails it by a wide margin.
+    check(rmse < RAY_BOUND, "ray cast image matches the exact reference (RMSE %.5f < %g)"
+          % (rmse, RAY_BOUND))
+    check(passes >= 2 and passes == caster.GetLastPeelPasses(),
+          "ray cast: the rays re-enter, %d peeling passes (information property)" % passes)
+    display.HAVSMaximumPeelPasses = 1
+    Render(view)
+    SaveScreenshot(ray_name, view, ImageResolution=[SIZE, SIZE])
+    one_pass, _ = compare(png_rgb(ray_name), exact)
+    print("control, the ray caster with one peeling pass: RMSE %.5f" % one_pass)
+    check(caster.GetLastPeelPasses() == 1 and one_pass > 3 * RAY_BOUND and one_pass > 5 * rmse,
+          "negative control: one peeling pass fails the bound (RMSE %.5f)" % one_pass)
+    display.HAVSMaximumPeelPasses = 0
+    display.HAVSMapper = "HAVS"
+    Render(view)
+    check(rep.GetActiveVolumeMapper() is mapper, "back to HAVS")
+
     # The face-order settings of the panel reach the mapper, and the violation count
     # comes back as an information property.
     def violations():
