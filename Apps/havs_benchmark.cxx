@@ -45,7 +45,8 @@
 // the timed configurations; always run first), cellproj (vtkHAVSCellProjectionMapper:
 // the exact MPVO cell order, boundary layers; cellproj-convex: the convexification),
 // tetraycast (vtkHAVSRayCastMapper: GPU ray casting through the tetrahedra, re-entries
-// by depth peeling), and
+// by depth peeling; its rows add the peeling passes, cells crossed per ray and
+// the screen tiles used, medians over the views), and
 // VTK's vtkProjectedTetrahedraMapper, vtkUnstructuredGridVolumeZSweepMapper and
 // vtkUnstructuredGridVolumeRayCastMapper (ImageSampleDistance 1,
 // AutoAdjustSampleDistances off, vtkUnstructuredGridLinearRayIntegrator).
@@ -377,6 +378,10 @@ int RunWorker(const Options& o)
   std::vector<double> lodFractions, lodTrace;
   double rankingSeconds = 0.0, rankingMB = 0.0, lodWithin = 0.0, lodStill = -1.0;
   double lodTarget = 0.0; // havs-lod-rotate-<ms>: the frame budget (s)
+  // tetraycast, per view: the depth-peeling passes, the cells crossed per ray,
+  // the share of the screen tiles in which rays started and their mean passes
+  // (vtkHAVSRayCastMapper's last-frame counters).
+  std::vector<double> peelPasses, cellsPerRay, tilesUsed, tilePasses;
   if (config == "reference")
   {
     // The exact images of every view, computed once and cached before any
@@ -711,10 +716,24 @@ int RunWorker(const Options& o)
           sort.push_back(0.0); // (no order)
           draw.push_back(1000.0 * tetRayCast->GetLastDrawSeconds());
           const double rays = static_cast<double>(tetRayCast->GetLastRaysStarted());
-          std::fprintf(stderr,
-            "tetraycast %s view %d: %d peel passes, %.0f rays, %.1f cells crossed per ray\n",
-            dataset.c_str(), view, tetRayCast->GetLastPeelPasses(), rays,
+          const std::vector<int>& perTile = tetRayCast->GetLastTilePasses();
+          double used = 0.0, passesInUsed = 0.0;
+          for (int passes : perTile)
+          {
+            used += passes > 0 ? 1.0 : 0.0;
+            passesInUsed += passes;
+          }
+          peelPasses.push_back(tetRayCast->GetLastPeelPasses());
+          cellsPerRay.push_back(
             rays > 0 ? static_cast<double>(tetRayCast->GetLastCellsCrossed()) / rays : 0.0);
+          tilesUsed.push_back(perTile.empty() ? NAN : used / perTile.size());
+          tilePasses.push_back(used > 0 ? passesInUsed / used : NAN);
+          std::fprintf(stderr,
+            "tetraycast %s view %d: %d peel passes, %.0f rays, %.1f cells crossed per ray, "
+            "tiles %d x %d: %.0f with rays, %.2f passes per such tile\n",
+            dataset.c_str(), view, tetRayCast->GetLastPeelPasses(), rays, cellsPerRay.back(),
+            tetRayCast->GetLastTileGrid()[0], tetRayCast->GetLastTileGrid()[1], used,
+            tilePasses.back());
         }
       }
       if (config != "raster-bound")
@@ -761,13 +780,13 @@ int RunWorker(const Options& o)
   {
     maxError = NAN;
   }
-  std::printf(
-    "RESULT dataset=%s config=%s size=%d tets=%lld views=%d frames=%zu ms_median=%.3f "
-    "ms_min=%.3f ms_max=%.3f sort_ms=%.3f gather_ms=%.3f draw_ms=%.3f flush_ms=%.3f "
-    "composite_ms=%.3f upload_ms=%.3f readback_ms=%.3f layers_ms=%.3f rmse=%.6f max=%.6f "
-    "over1=%.6f peak_mb=%.1f smp=%s threads=%d table=%s skipped=%lld culled=%lld lod_fraction=%.4f "
-    "ranking_s=%.3f ranking_mb=%.1f lod_target_ms=%.0f lod_within25=%.3f lod_still=%.3f "
-    "lod_trace=%s\n",
+  std::printf("RESULT dataset=%s config=%s size=%d tets=%lld views=%d frames=%zu ms_median=%.3f "
+              "ms_min=%.3f ms_max=%.3f sort_ms=%.3f gather_ms=%.3f draw_ms=%.3f flush_ms=%.3f "
+              "composite_ms=%.3f upload_ms=%.3f readback_ms=%.3f layers_ms=%.3f rmse=%.6f max=%.6f "
+              "over1=%.6f peak_mb=%.1f smp=%s threads=%d table=%s skipped=%lld culled=%lld "
+              "lod_fraction=%.4f ranking_s=%.3f ranking_mb=%.1f lod_target_ms=%.0f "
+              "lod_within25=%.3f lod_still=%.3f lod_trace=%s peel_passes=%.1f cells_per_ray=%.2f "
+              "tiles_used=%.4f tile_passes=%.3f\n",
     dataset.c_str(), config.c_str(), o.Size, static_cast<long long>(tets), viewsDone, frame.size(),
     Median(frame), frame.empty() ? NAN : *std::min_element(frame.begin(), frame.end()),
     frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort),
@@ -775,7 +794,8 @@ int RunWorker(const Options& o)
     Median(readback), Median(layers), rmse, maxError, pixels > 0 ? over1 / pixels : NAN,
     PeakMegabytes(), vtkSMPTools::GetBackend(), vtkSMPTools::GetEstimatedNumberOfThreads(),
     tableText.c_str(), skipped, culled, Median(lodFractions), rankingSeconds, rankingMB,
-    1000.0 * lodTarget, lodWithin, lodStill, TraceText(lodTrace).c_str());
+    1000.0 * lodTarget, lodWithin, lodStill, TraceText(lodTrace).c_str(), Median(peelPasses),
+    Median(cellsPerRay), Median(tilesUsed), Median(tilePasses));
   return EXIT_SUCCESS;
 }
 
@@ -801,7 +821,8 @@ const char* const kColumns[] = { "dataset", "config", "size", "tets", "views", "
   "ms_median", "ms_min", "ms_max", "sort_ms", "gather_ms", "draw_ms", "flush_ms", "composite_ms",
   "upload_ms", "readback_ms", "layers_ms", "mtets_per_s", "rmse", "max", "over1", "peak_mb", "smp",
   "threads", "table", "skipped", "culled", "lod_fraction", "ranking_s", "ranking_mb",
-  "lod_target_ms", "lod_within25", "lod_still", "lod_trace", "command" };
+  "lod_target_ms", "lod_within25", "lod_still", "lod_trace", "peel_passes", "cells_per_ray",
+  "tiles_used", "tile_passes", "command" };
 
 /// A CSV field, quoted where it holds a comma or a quote.
 std::string CsvField(const std::string& text)
@@ -1419,7 +1440,11 @@ std::string Report(const std::vector<Row>& allRows, const Options& o, const std:
         const Row& r = *row;
         md << "\nGPU ray casting (tetraycast, re-entries by depth peeling): "
            << Cell(r, "ms_median", "%.1f") << " ms (draw " << Cell(r, "draw_ms", "%.1f")
-           << "), RMSE " << Cell(r, "rmse", "%.5f") << ", max " << Cell(r, "max", "%.4f");
+           << "), RMSE " << Cell(r, "rmse", "%.5f") << ", max " << Cell(r, "max", "%.4f")
+           << "; per view (medians) " << Cell(r, "peel_passes", "%.0f") << " peeling passes, "
+           << Cell(r, "cells_per_ray", "%.1f") << " cells crossed per ray, rays in "
+           << Cell(r, "tiles_used", "%.2f") << " of the screen tiles with "
+           << Cell(r, "tile_passes", "%.2f") << " passes each on average";
         for (const char* other : { "havs-default", "cellproj", "pt", "raster-bound" })
         {
           if (ms.count(other))

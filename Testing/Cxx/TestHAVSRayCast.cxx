@@ -36,16 +36,22 @@
 // faces: the ray leaves and re-enters at the same point; one pass fails).
 // Scenes "inside-box", "inside-bluntfin": the camera inside the mesh, the rays
 // starting on the near plane's section (control: without it).
+// Scenes "mirror-<mesh>": the volume's matrix mirrored (determinant < 0),
+// perspective and parallel, against the reference under the same matrix
+// (controls: the reference without the mirror, a broken neighbour table,
+// one peeling pass); HAVS and the cell projection on the same scenes.
 //
 // Usage: TestHAVSRayCast <scene> [size] [views]
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
 #include "havsTestScenes.h"
 
+#include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSStandardViews.h"
+#include "vtkHAVSVolumeMapper.h"
 
 #include "vtkAppendFilter.h"
 #include "vtkCamera.h"
@@ -55,6 +61,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
@@ -430,6 +437,114 @@ int InsideScene(const std::string& mesh, int size)
     !Exact(control) && control.RMSE > 10.0 * d.RMSE, mesh + ": negative control, no section fails");
   return havstest::Result();
 }
+
+/// The volume's matrix mirrored (a negative scale on x, determinant < 0: the
+/// triangles' winding flips on screen), on a non-convex mesh, perspective and
+/// parallel: against the reference of the grid under the same matrix
+/// (vtkHAVSReferenceRenderer::SetVolumeMatrix). Controls: the reference
+/// without the mirror, a broken neighbour table and one peeling pass (the
+/// rays re-enter) must fail. HAVS (MPVO, k = 2) and the cell projection on the
+/// same scenes against the same references.
+int MirrorScene(const std::string& mesh, int size)
+{
+  auto grid = vtkHAVSDataSets::Load(mesh);
+  if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "scene " + mesh + " loads"))
+  {
+    return EXIT_FAILURE;
+  }
+  auto property = havstest::MakeRampPropertyFor(grid);
+  auto mirrored = [](vtkTransform* t, double sx)
+  {
+    t->Translate(0.2, -0.1, 0.05);
+    t->RotateWXYZ(25.0, 0.3, 1.0, 0.2);
+    t->Scale(sx, 1.2, 0.9);
+  };
+  vtkNew<vtkTransform> mirror, unmirrored;
+  mirrored(mirror, -1.1);
+  mirrored(unmirrored, 1.1);
+  const bool flipped = mirror->GetMatrix()->Determinant() < 0.0;
+  vtkNew<vtkTransformFilter> moved;
+  moved->SetInputData(grid);
+  moved->SetTransform(mirror);
+  moved->Update();
+  auto movedGrid = vtkUnstructuredGrid::SafeDownCast(moved->GetOutput());
+
+  vtkNew<vtkHAVSRayCastMapper> mapper;
+  mapper->KeepFloatResultOn();
+  auto s = havstest::MakeScene(grid, mapper, property, size, size);
+  s.Volume->SetUserTransform(mirror);
+  vtkCamera* camera = s.Renderer->GetActiveCamera();
+  vtkNew<vtkHAVSVolumeMapper> havs;
+  havs->KeepFloatResultOn();
+  havs->SetInputData(grid);
+  vtkNew<vtkHAVSCellProjectionMapper> projection;
+  projection->KeepFloatResultOn();
+  projection->SetInputData(grid);
+  auto reference = [&](vtkMatrix4x4* matrix)
+  {
+    vtkNew<vtkHAVSReferenceRenderer> r;
+    r->SetInputData(grid);
+    r->SetProperty(property);
+    r->SetCamera(camera);
+    r->SetVolumeMatrix(matrix);
+    r->SetSize(size, size);
+    r->Render();
+    vtkFloatArray* image = r->GetImage();
+    return std::vector<float>(image->GetPointer(0), image->GetPointer(0) + 4 * size * size);
+  };
+  const size_t edgePixels = static_cast<size_t>(size) * size / 2000;
+  std::printf("mirror, %s: %lld cells, %d^2, matrix determinant %.3f\n", mesh.c_str(),
+    static_cast<long long>(grid->GetNumberOfCells()), size, mirror->GetMatrix()->Determinant());
+  havstest::Check(flipped, "the matrix mirrors (determinant < 0)");
+  for (bool parallel : { false, true })
+  {
+    vtkHAVSStandardViews::PlaceCamera(camera, movedGrid, 1);
+    camera->SetParallelProjection(parallel ? 1 : 0);
+    camera->Azimuth(parallel ? 11.0 : 7.0);
+    camera->Elevation(parallel ? 7.0 : 5.0);
+    camera->OrthogonalizeViewUp();
+    s.Renderer->ResetCamera();
+    s.Renderer->ResetCameraClippingRange();
+    const std::string name = parallel ? "mirrored, parallel" : "mirrored, perspective";
+    const auto exact = reference(s.Volume->GetMatrix());
+    s.Volume->SetMapper(mapper);
+    s.Window->Render();
+    const auto d = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
+    Print(name, d);
+    PrintCounts(mapper, size);
+    havstest::Check(Exact(d), name + ": exact");
+    havstest::Check(mapper->GetLastPeelPasses() >= 2, name + ": the rays re-enter");
+    const auto control = havstest::Compare(
+      havstest::FloatResult(mapper), reference(unmirrored->GetMatrix()), edgePixels);
+    Print(name + ": control, the reference without the mirror", control);
+    havstest::Check(!Exact(control) && control.RMSE > 10.0 * d.RMSE,
+      name + ": negative control, the mirror matters");
+    mapper->SetBrokenNeighboursForTesting(true);
+    s.Window->Render();
+    const auto broken = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
+    Print(name + ": control, a broken neighbour table", broken);
+    havstest::Check(!Exact(broken), name + ": negative control, a broken neighbour table fails");
+    mapper->SetBrokenNeighboursForTesting(false);
+    mapper->SetMaximumPeelPasses(1);
+    s.Window->Render();
+    const auto one = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
+    Print(name + ": control, one peeling pass", one);
+    havstest::Check(!Exact(one), name + ": negative control, one peeling pass fails");
+    mapper->SetMaximumPeelPasses(0);
+    // HAVS and the cell projection under the same matrix, the same reference.
+    s.Volume->SetMapper(havs);
+    s.Window->Render();
+    const auto h = havstest::Compare(havstest::FloatResult(havs), exact, edgePixels);
+    Print(name + ": HAVS (MPVO, k = 2)", h);
+    havstest::Check(Exact(h), name + ": HAVS exact");
+    s.Volume->SetMapper(projection);
+    s.Window->Render();
+    const auto c = havstest::Compare(havstest::FloatResult(projection), exact, edgePixels);
+    Print(name + ": cell projection", c);
+    havstest::Check(Exact(c), name + ": cell projection exact");
+  }
+  return havstest::Result();
+}
 }
 
 int TestHAVSRayCast(int argc, char* argv[])
@@ -440,6 +555,10 @@ int TestHAVSRayCast(int argc, char* argv[])
   if (scene == "opaque")
   {
     return OpaqueScene(size);
+  }
+  if (scene.rfind("mirror-", 0) == 0)
+  {
+    return MirrorScene(scene.substr(7), size);
   }
   if (scene == "clip" || scene == "clip-all")
   {

@@ -6,7 +6,8 @@ tetrahedra in others, interleaved in depth with gaps -- carrying a cell array, s
 "HAVS Volume" coloured by that cell array. The screenshot is compared with the exact
 reference (vtkHAVSReferenceRenderer) of the blocks appended, split into tetrahedra, with
 cell scalars (RMSE bound as the other plugin tests); control: the reference of the same
-data smoothed to points must be further off.
+data smoothed to points must be further off. The same again with the ray caster
+("HAVS Ray Cast").
 
 Arguments: --plugin PATH --out DIR
 Run under Xvfb (Debian's ParaView is GLX-only).
@@ -158,7 +159,8 @@ appended.Update()
 grid = appended.GetOutput()
 grid.GetCellData().SetActiveScalars("c")
 vtk_camera = view.GetRenderer().GetActiveCamera()
-rmse, worst = compare(shot, reference_rgb(grid, lut, pwf, 0.15, vtk_camera))
+exact = reference_rgb(grid, lut, pwf, 0.15, vtk_camera)
+rmse, worst = compare(shot, exact)
 print("mixed multiblock coloured by a cell array vs exact reference: RMSE %.5f, max %.4f"
       % (rmse, worst))
 check(rmse < 0.01, "the image matches the exact reference with cell scalars (RMSE %.5f)" % rmse)
@@ -170,10 +172,34 @@ smoothed = vtkUnstructuredGrid()
 smoothed.ShallowCopy(smooth.GetOutput())
 smoothed.GetCellData().Initialize()
 smoothed.GetPointData().SetActiveScalars("c")
-control, _ = compare(shot, reference_rgb(smoothed, lut, pwf, 0.15, vtk_camera))
+smoothed_exact = reference_rgb(smoothed, lut, pwf, 0.15, vtk_camera)
+control, _ = compare(shot, smoothed_exact)
 print("control, the reference of the data smoothed to points: RMSE %.5f" % control)
 check(control > 3 * rmse and control > 0.01,
       "control: the smoothed field's reference is further off (RMSE %.5f)" % control)
+
+# The same through the ray caster (issue 21): "HAVS Ray Cast", the cell array reaching it,
+# against the same references.
+display.HAVSMapper = "HAVS Ray Cast"
+Render(view)
+caster = rep.GetActiveVolumeMapper()
+check(caster is not None and caster.IsA("vtkHAVSRayCastMapper")
+      and caster.GetScalarMode() in (2, 4) and caster.GetArrayName() == "c",
+      "HAVS Ray Cast: the active mapper is %s, the cell array reached it"
+      % (caster.GetClassName() if caster else None))
+ray_name = os.path.join(args.out, "havs_plugin_cells_raycast.png")
+SaveScreenshot(ray_name, view, ImageResolution=[SIZE, SIZE])
+ray_shot = png_rgb(ray_name)
+ray_rmse, ray_worst = compare(ray_shot, exact)
+ray_control, _ = compare(ray_shot, smoothed_exact)
+print("ray caster vs exact reference: RMSE %.5f, max %.4f, %d peeling passes; control, the "
+      "smoothed field's reference: RMSE %.5f"
+      % (ray_rmse, ray_worst, caster.GetLastPeelPasses(), ray_control))
+check(ray_rmse < 0.01, "ray caster: matches the exact reference with cell scalars (RMSE %.5f)"
+      % ray_rmse)
+check(ray_control > 3 * ray_rmse and ray_control > 0.01,
+      "ray caster: control, the smoothed field's reference is further off (RMSE %.5f)"
+      % ray_control)
 
 print("PASSED" if not failures else "FAILED", flush=True)
 sys.stdout.flush()

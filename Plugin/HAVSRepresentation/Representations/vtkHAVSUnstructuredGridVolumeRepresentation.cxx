@@ -13,6 +13,7 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkDataSet.h"
 #include "vtkHAVSFrameStatistics.h"
+#include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
@@ -51,6 +52,13 @@ vtkHAVSUnstructuredGridVolumeRepresentation::vtkHAVSUnstructuredGridVolumeRepres
                     "LD_PRELOAD=<vtkHAVS>/lib/libvtkHAVSExpatFix.so (see the vtkHAVS user guide).");
   }
   this->AddVolumeMapper("HAVS", this->HAVSMapper);
+  // nullptr without the graphics layer's override (vtkHAVS::OpenGL), which
+  // this module links: then only "HAVS" is offered.
+  this->RayCastMapper = vtkHAVSRayCastMapper::New();
+  if (this->RayCastMapper)
+  {
+    this->AddVolumeMapper("HAVS Ray Cast", this->RayCastMapper);
+  }
   this->SetActiveVolumeMapper("HAVS");
 }
 
@@ -58,12 +66,47 @@ vtkHAVSUnstructuredGridVolumeRepresentation::vtkHAVSUnstructuredGridVolumeRepres
 vtkHAVSUnstructuredGridVolumeRepresentation::~vtkHAVSUnstructuredGridVolumeRepresentation()
 {
   this->HAVSMapper->Delete();
+  if (this->RayCastMapper)
+  {
+    this->RayCastMapper->Delete();
+  }
 }
 
 //------------------------------------------------------------------------------
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetActiveVolumeMapper(const char*)
 {
-  this->Superclass::SetActiveVolumeMapper("HAVS");
+  this->Superclass::SetActiveVolumeMapper(this->HAVSMapperName.c_str());
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSMapper(const char* name)
+{
+  const std::string wanted = name ? name : "";
+  if (wanted != "HAVS" && !(wanted == "HAVS Ray Cast" && this->RayCastMapper))
+  {
+    vtkErrorMacro("Unknown HAVS mapper \"" << wanted << "\" (\"HAVS\" or \"HAVS Ray Cast\").");
+    return;
+  }
+  if (wanted != this->HAVSMapperName)
+  {
+    this->HAVSMapperName = wanted;
+    this->Superclass::SetActiveVolumeMapper(this->HAVSMapperName.c_str());
+    this->Modified();
+  }
+}
+
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSMaximumPeelPasses(int passes)
+{
+  if (this->RayCastMapper)
+  {
+    this->RayCastMapper->SetMaximumPeelPasses(passes);
+  }
+  this->Modified();
+}
+
+int vtkHAVSUnstructuredGridVolumeRepresentation::GetHAVSLastPeelPasses()
+{
+  return this->RayCastMapper ? this->RayCastMapper->GetLastPeelPasses() : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -90,6 +133,10 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::GetHAVSActiveKBufferSize()
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSEarlyRayTerminationOpacity(double opacity)
 {
   this->HAVSMapper->SetEarlyRayTerminationOpacity(opacity);
+  if (this->RayCastMapper)
+  {
+    this->RayCastMapper->SetEarlyRayTerminationOpacity(opacity);
+  }
   this->Modified();
 }
 
@@ -97,6 +144,11 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSTableResolution(int res
 {
   this->HAVSMapper->SetTableScalarResolution(resolution);
   this->HAVSMapper->SetTableLengthResolution(resolution);
+  if (this->RayCastMapper)
+  {
+    this->RayCastMapper->SetTableScalarResolution(resolution);
+    this->RayCastMapper->SetTableLengthResolution(resolution);
+  }
   this->Modified();
 }
 
@@ -170,22 +222,28 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
   {
     return 0;
   }
-  if (request_type == vtkPVView::REQUEST_RENDER() &&
-    this->GetActiveVolumeMapper() == this->HAVSMapper)
+  vtkAbstractVolumeMapper* active = this->GetActiveVolumeMapper();
+  if (request_type != vtkPVView::REQUEST_RENDER() ||
+    (active != this->HAVSMapper && active != this->RayCastMapper))
+  {
+    return 1;
+  }
+  vtkAlgorithmOutput* producer = vtkPVRenderView::GetPieceProducer(inInfo, this);
+  vtkDataSet* piece =
+    producer ? vtkDataSet::SafeDownCast(producer->GetProducer()->GetOutputDataObject(0)) : nullptr;
+  if (!piece || piece->GetNumberOfCells() == 0)
+  {
+    this->Actor->SetMapper(nullptr); // an empty piece of a parallel run: nothing to draw
+    return 1;
+  }
+  if (active == this->HAVSMapper)
   {
     // HAVS's own level of detail instead of ParaView's LOD geometry: keep the
     // volume while interacting, with a subset of the internal faces that fits
     // the interactive target time and fewer k-buffer entries; every face when
-    // still (an unlimited budget).
-    vtkAlgorithmOutput* producer = vtkPVRenderView::GetPieceProducer(inInfo, this);
-    vtkDataSet* piece = producer
-      ? vtkDataSet::SafeDownCast(producer->GetProducer()->GetOutputDataObject(0))
-      : nullptr;
-    if (!piece || piece->GetNumberOfCells() == 0)
-    {
-      this->Actor->SetMapper(nullptr); // an empty piece of a parallel run: nothing to draw
-      return 1;
-    }
+    // still (an unlimited budget). (The ray caster sorts nothing and has no
+    // level of detail of its own: ParaView's LOD while interacting, as for
+    // the stock mappers.)
     const bool interactive = inInfo->Has(vtkPVRenderView::USE_LOD()) != 0;
     if (!this->InteractiveLOD)
     {
@@ -206,9 +264,14 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
 void vtkHAVSUnstructuredGridVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "HAVSMapper: " << this->HAVSMapperName << "\n";
   os << indent << "KBufferSize: " << this->KBufferSize << "\n";
   os << indent << "InteractiveLOD: " << this->InteractiveLOD << "\n";
   os << indent << "InteractiveKBufferSize: " << this->InteractiveKBufferSize << "\n";
   os << indent << "InteractiveTargetSeconds: " << this->InteractiveTargetSeconds << "\n";
   this->HAVSMapper->PrintSelf(os, indent.GetNextIndent());
+  if (this->RayCastMapper)
+  {
+    this->RayCastMapper->PrintSelf(os, indent.GetNextIndent());
+  }
 }

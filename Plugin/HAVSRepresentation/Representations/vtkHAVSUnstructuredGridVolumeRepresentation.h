@@ -12,8 +12,11 @@
  * @brief   ParaView's unstructured-grid volume representation, rendering with HAVS.
  *
  * A vtkUnstructuredGridVolumeRepresentation whose volume mapper is a
- * vtkHAVSVolumeMapper registered as "HAVS" and active by default (the stock
- * mappers stay registered by the SI class). ParaView's data redistribution,
+ * vtkHAVSVolumeMapper registered as "HAVS" and active by default, or the
+ * GPU ray caster vtkHAVSRayCastMapper registered as "HAVS Ray Cast" (chosen
+ * with SetHAVSMapper; the stock mappers stay registered by the SI class but
+ * are not selected here: ParaView's "Volume" representation offers them).
+ * ParaView's data redistribution,
  * ordered compositing, transfer functions and block selection work as for the
  * stock "Volume" representation; the plugin's XML shows it as the
  * "HAVS Volume" representation type.
@@ -24,7 +27,13 @@
  * InteractiveKBufferSize entries (default 2) until the still render, which
  * uses the full k.
  *
- * The HAVS settings are forwarded to the mapper on every rank.
+ * The ray caster has no level of detail (nothing to drop: it sorts nothing):
+ * while interacting ParaView's own LOD applies to it, as to the stock mappers.
+ *
+ * The HAVS settings are forwarded to the mappers on every rank: the table
+ * size and the early ray termination to both, the others (k, face order,
+ * level of detail, ...) to vtkHAVSVolumeMapper, the peeling limit to the
+ * ray caster.
  */
 #ifndef vtkHAVSUnstructuredGridVolumeRepresentation_h
 #define vtkHAVSUnstructuredGridVolumeRepresentation_h
@@ -32,6 +41,9 @@
 #include "vtkHAVSRepresentationsModule.h" // For export macro
 #include "vtkUnstructuredGridVolumeRepresentation.h"
 
+#include <string> // For std::string
+
+class vtkHAVSRayCastMapper;
 class vtkHAVSVolumeMapper;
 
 class VTKHAVSREPRESENTATIONS_EXPORT vtkHAVSUnstructuredGridVolumeRepresentation
@@ -44,11 +56,36 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
+  /**
+   * Which of vtkHAVS's mappers renders: "HAVS" (vtkHAVSVolumeMapper, the
+   * default) or "HAVS Ray Cast" (vtkHAVSRayCastMapper: GPU ray casting
+   * through the tetrahedra, no sorting). Any other name is an error and
+   * keeps the mapper.
+   */
+  void SetHAVSMapper(const char* name);
+  const char* GetHAVSMapper() { return this->HAVSMapperName.c_str(); }
+  ///@}
+
+  ///@{
+  /// Forwarded to both mappers (see vtkHAVSVolumeMapper, vtkHAVSRayCastMapper).
+  void SetHAVSEarlyRayTerminationOpacity(double opacity);
+  void SetHAVSTableResolution(int resolution);
+  ///@}
+
+  ///@{
+  /// Forwarded to vtkHAVSRayCastMapper (see there): the most depth-peeling
+  /// passes per frame (0: as many as the mesh needs, the default).
+  void SetHAVSMaximumPeelPasses(int passes);
+  ///@}
+
+  /// The depth-peeling passes of the last frame the ray caster drew on this
+  /// rank (0 before one).
+  int GetHAVSLastPeelPasses();
+
+  ///@{
   /// Forwarded to vtkHAVSVolumeMapper (see there).
   void SetHAVSKBufferSize(int k);
   int GetHAVSKBufferSize();
-  void SetHAVSEarlyRayTerminationOpacity(double opacity);
-  void SetHAVSTableResolution(int resolution);
   void SetHAVSHigherOrderSubdivision(int level);
   void SetHAVSAutomaticTable(int automatic);
   void SetHAVSSkipHiddenCells(int skip);
@@ -96,8 +133,9 @@ public:
   int GetHAVSActiveKBufferSize();
 
   /**
-   * This representation always renders with HAVS: any other name (e.g. a
-   * default pushed by an inherited proxy definition) selects HAVS too.
+   * This representation always renders with the mapper SetHAVSMapper chose:
+   * any name (e.g. a default pushed by an inherited proxy definition)
+   * selects that one.
    */
   void SetActiveVolumeMapper(const char* name) override;
 
@@ -114,6 +152,8 @@ private:
   void operator=(const vtkHAVSUnstructuredGridVolumeRepresentation&) = delete;
 
   vtkHAVSVolumeMapper* HAVSMapper;
+  vtkHAVSRayCastMapper* RayCastMapper;
+  std::string HAVSMapperName = "HAVS";
   int KBufferSize = 2;
   int InteractiveKBufferSize = 2;
   bool InteractiveLOD = true;
