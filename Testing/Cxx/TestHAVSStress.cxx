@@ -716,7 +716,7 @@ int BadCells(bool allViews)
 /// camera, finite, the reference covering more than `minCovered` pixels;
 /// control: the reference of the view turned by 25 degrees must differ.
 void CheckView(const std::string& what, const std::vector<float>& image, vtkUnstructuredGrid* grid,
-  vtkVolumeProperty* property, vtkCamera* camera, int size, int minCovered)
+  vtkVolumeProperty* property, vtkCamera* camera, int size, int minCovered, double rmseBound = 5e-4)
 {
   const auto exact = ReferenceImage(grid, property, camera, size, size);
   const size_t covered = CoveredPixels(exact);
@@ -728,8 +728,11 @@ void CheckView(const std::string& what, const std::vector<float>& image, vtkUnst
   Print(what + ": control, the view turned", c);
   std::printf("    %zu pixels covered\n", covered);
   havstest::Check(covered > static_cast<size_t>(minCovered), what + ": the mesh is seen");
-  havstest::Check(Exact(d) && havstest::AllFinite(image), what + ": exact and finite");
-  havstest::Check(!Exact(c), what + ": control, another view fails");
+  auto within = [&](const havstest::ImageDifference& e)
+  { return e.RMSE < rmseBound && e.Max < 0.01; };
+  havstest::Check(within(d) && havstest::AllFinite(image),
+    what + ": within RMSE " + std::to_string(rmseBound) + ", max 0.01, and finite");
+  havstest::Check(!within(c), what + ": control, another view fails");
 }
 
 /// Degenerate views (issue 20) of an axis-aligned box of 4^3 cubes (5
@@ -818,27 +821,30 @@ vtkSmartPointer<vtkUnstructuredGrid> MakeElongated(double length)
 
 /// A mesh 1e6 times longer than wide (issue 20): [0, 3e6] x [0, 3] x [0, 3]
 /// in 3^3 boxes of 5 tetrahedra, every cell 1e6 long and 1 wide, points as
-/// double, s = (z + x / 1e6) / 6, seen along its axis orthographically (every
-/// ray through the whole length, a clipping range of 6e6 : 1): HAVS against
-/// the exact reference, finite, no message; control: the reference of the
-/// view turned by 25 degrees. (Before this case the face set dropped every
-/// such cell as degenerate, and the reference renderer's missing image
-/// crashed the test.)
+/// double, s = (z + x / 1e6) / 6. Seen along its axis orthographically (every
+/// ray through the whole length, a clipping range of 6e6 : 1; HAVS only), and
+/// from the side, where rays cross the needles' long faces: the middle from
+/// 10 away in perspective, the middle orthographically 45 degrees off the
+/// axis, and near one end in perspective (unit distance 5; HAVS and the cell
+/// projection). Each against the exact reference, finite, no message; the
+/// axis view exact (RMSE < 5e-4, max < 0.01), the side views within RMSE
+/// 1e-3, max 0.01 (measured: HAVS 4.2e-4 to 6.0e-4, max up to 5.6e-3; the
+/// same views of a slab of unit cubes at the same place give 4.5e-5 to
+/// 1.0e-4: the rest is the float positions across triangles 1e6 long).
+/// Control: the reference of the view turned by 25 degrees. The reference
+/// itself was checked on the middle views: the slab [1.5e6 - 12, 1.5e6 + 12]
+/// x [0, 3] x [0, 3] in unit cubes with the same linear field holds every
+/// ray's part inside the mesh, and its reference image is bit-identical to
+/// the elongated mesh's. (Before this case the face set dropped every such
+/// cell as degenerate, and the reference renderer's missing image crashed the
+/// test. An earlier session measured the side views at RMSE 0.16 and 0.098 and
+/// left them out; which change since made them pass was not traced: the
+/// table's logarithmic length axis and the parallel camera's eye moved near
+/// the volume are the candidates.)
 ///
-/// Limits this mesh shows (issue 20, open; measured, not checked):
-/// - the cell projection along the axis: RMSE 5.8e-3, max 0.14 (on the pixel
-///   diagonals; 0.19 before its parallel-face bound was lowered);
-/// - views from the side and from near one end, where rays cross the
-///   needles' long faces (the middle from 10 away, orthographic 45 degrees
-///   off the axis and in perspective; unit distance 5): the cell projection
-///   is exact up to a length / width of 1e5 (RMSE 3.4e-4), then drifts (3e5:
-///   RMSE 1.3e-2); at 1e6 HAVS and the cell projection draw the same image to
-///   three digits, RMSE 0.16 (middle) and 0.098 (near end) from the
-///   reference. Suspected: the fragments' positions, interpolated in float
-///   across triangles 1e6 long (about 1e-7 of it, 0.1, against cells 1 wide
-///   seen from 10 away); that both mappers agree leaves the reference to be
-///   checked too. The pre-integration table, which put 2.4e4 in the first
-///   step of its length axis, has a logarithmic one there now.
+/// Limit this mesh shows (issue 20, open; measured, not checked): the cell
+/// projection along the axis: RMSE 5.8e-3, max 0.14 (on the pixel
+/// diagonals; 0.19 before its parallel-face bound was lowered).
 int Elongated()
 {
   const double length = 1e6;
@@ -856,9 +862,19 @@ int Elongated()
     double Focal[3];
     double UnitDistance;
     bool CellProjection; // checked for the cell projection too
+    double Far;          // the far clipping plane
+    double RMSEBound;    // against the exact reference (max 0.01 for all)
   };
+  const double m = 1.5e6; // the middle
   const View views[] = {
-    { "along the axis, orthographic", true, { -10.0, 1.5, 1.5 }, { 3e6, 1.5, 1.5 }, length, false },
+    { "along the axis, orthographic", true, { -10.0, 1.5, 1.5 }, { 3e6, 1.5, 1.5 }, length, false,
+      3.1 * length + 20.0, 5e-4 },
+    { "the middle from 10 away, perspective", false, { m, -10.0, 1.5 }, { m, 1.5, 1.5 }, 5.0, true,
+      30.0, 1e-3 },
+    { "the middle, orthographic 45 degrees off the axis", true, { m - 8.0, -8.0, 1.5 },
+      { m, 1.5, 1.5 }, 5.0, true, 30.0, 1e-3 },
+    { "near one end, perspective", false, { -6.0, -8.0, 1.5 }, { 4.0, 1.5, 1.5 }, 5.0, true, 40.0,
+      1e-3 },
   };
 
   const int size = kPairSize;
@@ -882,13 +898,13 @@ int Elongated()
       camera->SetParallelScale(2.0);
       // Explicit: VTK's reset would put the near plane 1e-3 of the far one
       // away, in front of which these views look.
-      camera->SetClippingRange(0.5, 3.1 * length + 20.0);
+      camera->SetClippingRange(0.5, view.Far);
       sc.Window->Render();
       const std::string what = std::string(Name(cells)) + ", elongated, " + view.Name;
       std::printf("  clipping range %.3g .. %.3g\n", camera->GetClippingRange()[0],
         camera->GetClippingRange()[1]);
-      CheckView(
-        what, havstest::FloatResult(mapper), grid, property, camera, size, size * size / 20);
+      CheckView(what, havstest::FloatResult(mapper), grid, property, camera, size, size * size / 20,
+        view.RMSEBound);
       havstest::Check(messages->Errors == 0 && messages->Warnings == 0, what + ": no message");
     }
   }
