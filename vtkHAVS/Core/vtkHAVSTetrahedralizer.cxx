@@ -44,6 +44,7 @@
 namespace
 {
 const char* const kOriginalCell = "vtkHAVSTetrahedralizerOriginalCell";
+const char* const kSourceCell = "vtkHAVSTetrahedralizerSourceCell";
 
 /**
  * VTK's split of every cell but the quadratic tetrahedra, which get the
@@ -242,7 +243,8 @@ enum Family
   NotRefined,
   HexahedronFamily,
   TetrahedronFamily,
-  WedgeFamily
+  WedgeFamily,
+  PyramidFamily
 };
 
 Family FamilyOf(int type)
@@ -265,6 +267,9 @@ Family FamilyOf(int type)
     case VTK_LAGRANGE_WEDGE:
     case VTK_BEZIER_WEDGE:
       return WedgeFamily;
+    case VTK_QUADRATIC_PYRAMID:
+    case VTK_TRIQUADRATIC_PYRAMID:
+      return PyramidFamily;
     default:
       return NotRefined;
   }
@@ -272,7 +277,7 @@ Family FamilyOf(int type)
 
 int CornersOf(Family f)
 {
-  return f == HexahedronFamily ? 8 : f == TetrahedronFamily ? 4 : 6;
+  return f == HexahedronFamily ? 8 : f == TetrahedronFamily ? 4 : f == PyramidFamily ? 5 : 6;
 }
 
 /// A lattice point's identity: the parent's corner ids (sorted) with their
@@ -355,9 +360,173 @@ void GetCell(vtkUnstructuredGrid* input, vtkIdType c, vtkGenericCell* cell)
   }
 }
 
+/**
+ * Refines a non-linear pyramid (any thread). The lattice: layer k = 0 … N
+ * (the apex's integer weight k, scale N) holds the (m + 1)^2 points (i, j),
+ * m = N - k, 0 <= i, j <= m, whose corner weights are those of the linear
+ * pyramid at the parametric point (i / m, j / m, k / N): the base corners
+ * (m - i)(m - j) / (m N) … and the apex k / N. On the base they are the
+ * bilinear weights of a hexahedron's refined face, on a triangular face the
+ * barycentric ones of a tetrahedron's (or a wedge's): the keys, and so the
+ * points, are the same from both sides. The pieces between layers k and k + 1
+ * (the tetrahedral-octahedral lattice): an upright pyramid on every base
+ * square, an inverted one under every square of the layer above, and a
+ * tetrahedron across every inner edge of the layer below; their quadrilaterals
+ * are split later by the ordered triangulator (the same diagonal from both
+ * sides), their triangular faces on the cell's faces are the face's unique
+ * lattice triangulation.
+ */
+void RefinePyramid(vtkCell* cell, int level, int split, RefinedCell& r)
+{
+  const int n = 1 << level;
+  const int side = n + 1;
+  const int nodes = static_cast<int>(cell->GetNumberOfPoints());
+  const double* nodePcoords = cell->GetParametricCoords();
+  r.Kind = PyramidFamily;
+  r.NodeIds.assign(nodes, 0);
+  for (int i = 0; i < nodes; ++i)
+  {
+    r.NodeIds[i] = cell->GetPointId(i);
+  }
+  // vtkQuadraticPyramid's parametric space is the collapsed hexahedron (apex
+  // at (0, 0, 1)); VTK 9.2's vtkTriQuadraticPyramid's a pyramid (apex at
+  // (0.5, 0.5, 1)), where a point is the corners' parametric coordinates
+  // weighted as the linear pyramid's.
+  const bool collapsed = nodePcoords[12] < 0.25 && nodePcoords[13] < 0.25;
+  const long long nn = static_cast<long long>(n) * n;
+  auto index = [&](int i, int j, int k) { return i + side * (j + side * k); };
+  r.Lattice.assign(static_cast<size_t>(side) * side * side, -1);
+  std::vector<double> weights(nodes);
+  double x[3];
+  for (int k = 0; k <= n; ++k)
+  {
+    const int m = n - k;
+    for (int j = 0; j <= m; ++j)
+    {
+      for (int i = 0; i <= m; ++i)
+      {
+        PointKey key;
+        double pcoords[3] = { 0.0, 0.0, 1.0 };
+        if (m == 0)
+        {
+          key.emplace_back(r.NodeIds[4], nn * n);
+          std::copy_n(nodePcoords + 12, 3, pcoords);
+        }
+        else
+        {
+          // The corners' weights times m N^3 (they sum to m N^3).
+          const long long num[5] = { (m - i) * static_cast<long long>(m - j) * nn,
+            i * static_cast<long long>(m - j) * nn, i * static_cast<long long>(j) * nn,
+            (m - i) * static_cast<long long>(j) * nn, static_cast<long long>(k) * m * nn };
+          bool divisible = true;
+          for (long long v : num)
+          {
+            divisible = divisible && v % m == 0;
+          }
+          // On the cell's faces the weights are integers at scale N^3, as
+          // every family's; inside, where they need not be, the key keeps
+          // the scale m N^3 and says so (a point inside is this cell's own).
+          for (int c = 0; c < 5; ++c)
+          {
+            if (num[c] != 0)
+            {
+              key.emplace_back(r.NodeIds[c], divisible ? num[c] / m : num[c]);
+            }
+          }
+          if (!divisible)
+          {
+            key.emplace_back(-1, m);
+          }
+          if (collapsed)
+          {
+            pcoords[0] = static_cast<double>(i) / m;
+            pcoords[1] = static_cast<double>(j) / m;
+            pcoords[2] = static_cast<double>(k) / n;
+          }
+          else
+          {
+            pcoords[2] = 0.0;
+            for (int c = 0; c < 5; ++c)
+            {
+              for (int a = 0; a < 3; ++a)
+              {
+                pcoords[a] += static_cast<double>(num[c]) / static_cast<double>(m * nn * n) *
+                  nodePcoords[3 * c + a];
+              }
+            }
+          }
+        }
+        std::sort(key.begin(), key.end());
+        int subId = 0;
+        cell->EvaluateLocation(subId, pcoords, x, weights.data());
+        r.Lattice[index(i, j, k)] = static_cast<int>(r.Keys.size());
+        r.Keys.push_back(std::move(key));
+        r.Positions.insert(r.Positions.end(), x, x + 3);
+        r.Weights.insert(r.Weights.end(), weights.begin(), weights.end());
+      }
+    }
+  }
+  auto at = [&](int i, int j, int k) { return r.Lattice[index(i, j, k)]; };
+  auto addPyramid = [&](std::vector<int> ids)
+  {
+    if (split == vtkHAVSTetrahedralizer::SplitLocalOrder)
+    {
+      // The control: the base split along its local diagonal 0-2.
+      r.Pieces.push_back({ ids[0], ids[1], ids[2], ids[4] });
+      r.Pieces.push_back({ ids[0], ids[2], ids[3], ids[4] });
+      r.PieceTypes.push_back(VTK_TETRA);
+      r.PieceTypes.push_back(VTK_TETRA);
+      return;
+    }
+    r.Pieces.push_back(std::move(ids));
+    r.PieceTypes.push_back(VTK_PYRAMID);
+  };
+  auto addTetrahedron = [&](std::vector<int> ids)
+  {
+    r.Pieces.push_back(std::move(ids));
+    r.PieceTypes.push_back(VTK_TETRA);
+  };
+  for (int k = 0; k < n; ++k)
+  {
+    const int m = n - k;
+    for (int j = 0; j < m; ++j)
+    {
+      for (int i = 0; i < m; ++i)
+      {
+        // Upright: the square (i, j) of layer k, apex the point above its centre.
+        addPyramid(
+          { at(i, j, k), at(i + 1, j, k), at(i + 1, j + 1, k), at(i, j + 1, k), at(i, j, k + 1) });
+        if (i + 1 < m && j + 1 < m)
+        {
+          // Inverted: the square (i, j) of layer k + 1, apex the point below its centre.
+          addPyramid({ at(i, j, k + 1), at(i, j + 1, k + 1), at(i + 1, j + 1, k + 1),
+            at(i + 1, j, k + 1), at(i + 1, j + 1, k) });
+        }
+        if (i + 1 < m)
+        {
+          // Across the inner edge x = i + 1 of the square.
+          addTetrahedron(
+            { at(i + 1, j, k), at(i + 1, j + 1, k), at(i, j, k + 1), at(i + 1, j, k + 1) });
+        }
+        if (j + 1 < m)
+        {
+          // Across the inner edge y = j + 1.
+          addTetrahedron(
+            { at(i, j + 1, k), at(i + 1, j + 1, k), at(i, j, k + 1), at(i, j + 1, k + 1) });
+        }
+      }
+    }
+  }
+}
+
 /// Refines one cell (any thread): fills `r` from `cell` at `level`.
 void RefineCell(vtkCell* cell, Family family, int level, int split, RefinedCell& r)
 {
+  if (family == PyramidFamily)
+  {
+    RefinePyramid(cell, level, split, r);
+    return;
+  }
   const int n = 1 << level;
   const int side = n + 1;
   const int corners = CornersOf(family);
@@ -531,7 +700,7 @@ void RefineCell(vtkCell* cell, Family family, int level, int split, RefinedCell&
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::RefineHigherOrderCells(
-  vtkDataSet* data, int level, Report* report, int split)
+  vtkDataSet* data, int level, Report* report, int split, SourceMap* map)
 {
   Report local;
   Report& rep = report ? *report : local;
@@ -599,6 +768,13 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::RefineHigherOrderCe
   }
   std::map<PointKey, vtkIdType> merged;
   vtkNew<vtkIdList> nodeIds;
+  if (map)
+  {
+    map->InputPoints = inputPoints;
+    map->StencilOffsets.assign(1, 0);
+    map->StencilIds.clear();
+    map->StencilWeights.clear();
+  }
   std::vector<std::vector<vtkIdType>> outputIds(cells.size());
   for (size_t r = 0; r < cells.size(); ++r)
   {
@@ -635,6 +811,13 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::RefineHigherOrderCe
         id = points->InsertNextPoint(&rc.Positions[3 * p]);
         outPD->InterpolatePoint(inPD, id, nodeIds, const_cast<double*>(&rc.Weights[nodes * p]));
         ++rep.AddedPoints;
+        if (map)
+        {
+          map->StencilIds.insert(map->StencilIds.end(), rc.NodeIds.begin(), rc.NodeIds.end());
+          map->StencilWeights.insert(
+            map->StencilWeights.end(), &rc.Weights[nodes * p], &rc.Weights[nodes * p] + nodes);
+          map->StencilOffsets.push_back(static_cast<vtkIdType>(map->StencilIds.size()));
+        }
         if (split != SplitUnmerged)
         {
           merged.emplace(key, id);
@@ -690,6 +873,66 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::RefineHigherOrderCe
 }
 
 //------------------------------------------------------------------------------
+vtkSmartPointer<vtkDataArray> vtkHAVSTetrahedralizer::SourceMap::MapPointArray(
+  vtkDataArray* points) const
+{
+  if (!this->Valid || !points || points->GetNumberOfTuples() != this->InputPoints)
+  {
+    return nullptr;
+  }
+  const vtkIdType added = static_cast<vtkIdType>(this->StencilOffsets.size()) - 1;
+  vtkSmartPointer<vtkDataArray> out;
+  out.TakeReference(points->NewInstance());
+  out->SetName(points->GetName());
+  out->SetNumberOfComponents(points->GetNumberOfComponents());
+  out->SetNumberOfTuples(this->InputPoints + added);
+  for (vtkIdType p = 0; p < this->InputPoints; ++p)
+  {
+    out->SetTuple(p, p, points);
+  }
+  // As vtkPointData::InterpolatePoint does when the cells are refined.
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType q = 0; q < added; ++q)
+  {
+    const vtkIdType begin = this->StencilOffsets[q], end = this->StencilOffsets[q + 1];
+    ids->SetNumberOfIds(end - begin);
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      ids->SetId(i - begin, this->StencilIds[i]);
+    }
+    out->InterpolateTuple(
+      this->InputPoints + q, ids, points, const_cast<double*>(this->StencilWeights.data() + begin));
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkDataArray> vtkHAVSTetrahedralizer::SourceMap::MapCellArray(
+  vtkDataArray* cells) const
+{
+  if (!this->Valid || !cells)
+  {
+    return nullptr;
+  }
+  const vtkIdType count = static_cast<vtkIdType>(this->Cells.size());
+  const vtkIdType inputCells = cells->GetNumberOfTuples();
+  vtkSmartPointer<vtkDataArray> out;
+  out.TakeReference(cells->NewInstance());
+  out->SetName(cells->GetName());
+  out->SetNumberOfComponents(cells->GetNumberOfComponents());
+  out->SetNumberOfTuples(count);
+  for (vtkIdType t = 0; t < count; ++t)
+  {
+    if (this->Cells[t] < 0 || this->Cells[t] >= inputCells)
+    {
+      return nullptr;
+    }
+    out->SetTuple(t, this->Cells[t], cells);
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
 bool vtkHAVSTetrahedralizer::IsTetrahedral(vtkDataSet* data)
 {
   auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
@@ -719,11 +962,15 @@ bool vtkHAVSTetrahedralizer::IsTetrahedral(vtkDataSet* data)
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
-  vtkDataSet* data, Report* report, int higherOrderSubdivision, int split)
+  vtkDataSet* data, Report* report, int higherOrderSubdivision, int split, SourceMap* map)
 {
   Report local;
   Report& r = report ? *report : local;
   r = Report();
+  if (map)
+  {
+    *map = SourceMap();
+  }
   if (!data)
   {
     return nullptr;
@@ -735,6 +982,23 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
     return vtkUnstructuredGrid::SafeDownCast(data);
   }
   const double start = vtkTimerLog::GetUniversalTime();
+  vtkSmartPointer<vtkDataSet> tagged;
+  if (map)
+  {
+    // Every cell's id, carried with the cell data to the tetrahedra it becomes.
+    tagged.TakeReference(data->NewInstance());
+    tagged->ShallowCopy(data);
+    vtkNew<vtkIdTypeArray> source;
+    source->SetName(kSourceCell);
+    source->SetNumberOfTuples(data->GetNumberOfCells());
+    for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
+    {
+      source->SetValue(c, c);
+    }
+    tagged->GetCellData()->AddArray(source);
+    map->InputPoints = data->GetNumberOfPoints();
+    data = tagged;
+  }
   vtkSmartPointer<vtkUnstructuredGrid> valid = WithoutInvalidCells(data, r.InvalidCells);
   if (valid)
   {
@@ -744,7 +1008,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
     std::max(0, std::min(higherOrderSubdivision, static_cast<int>(MaximumHigherOrderSubdivision)));
   // The non-linear cells refined first (counted as the input's cells below).
   vtkSmartPointer<vtkUnstructuredGrid> refined =
-    RefineHigherOrderCells(data, r.HigherOrderSubdivision, &r, split);
+    RefineHigherOrderCells(data, r.HigherOrderSubdivision, &r, split, map);
   if (refined)
   {
     for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
@@ -794,6 +1058,23 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
   }
   r.Tessellated = true;
   r.OutputTetrahedra = grid->GetNumberOfCells();
+  if (map)
+  {
+    auto* source = vtkIdTypeArray::SafeDownCast(grid->GetCellData()->GetArray(kSourceCell));
+    const vtkIdType added = grid->GetNumberOfPoints() - map->InputPoints;
+    if (source && source->GetNumberOfTuples() == grid->GetNumberOfCells() &&
+      (added == 0 || (refined && map->StencilOffsets.size() == static_cast<size_t>(added) + 1)))
+    {
+      map->Cells.assign(source->GetPointer(0), source->GetPointer(0) + source->GetNumberOfTuples());
+      map->StencilOffsets.resize(static_cast<size_t>(added) + 1, 0);
+      map->Valid = true;
+    }
+    grid->GetCellData()->RemoveArray(kSourceCell);
+    if (!map->Valid)
+    {
+      *map = SourceMap();
+    }
+  }
   r.Seconds = vtkTimerLog::GetUniversalTime() - start;
   return grid;
 }
