@@ -48,10 +48,12 @@ const char* const kSourceCell = "vtkHAVSTetrahedralizerSourceCell";
 
 /**
  * VTK's split of every cell but the quadratic tetrahedra, which get the
- * canonical eight tetrahedra. nullptr when VTK's split renumbered the points
+ * canonical eight tetrahedra, and the Lagrange and Bezier tetrahedra, split
+ * on their nodes' lattice. nullptr when VTK's split renumbered the points
  * (then its split is used for all).
  */
-vtkSmartPointer<vtkUnstructuredGrid> SplitWithCanonicalQuadraticTetrahedra(vtkDataSet* data)
+vtkSmartPointer<vtkUnstructuredGrid> SplitWithCanonicalQuadraticTetrahedra(
+  vtkDataSet* data, bool higherOrderLattice)
 {
   auto* input = vtkUnstructuredGrid::SafeDownCast(data);
   if (!input)
@@ -91,10 +93,15 @@ vtkSmartPointer<vtkUnstructuredGrid> SplitWithCanonicalQuadraticTetrahedra(vtkDa
     const vtkIdType cell = out->InsertNextCell(VTK_TETRA, 4, ids);
     outCD->CopyData(input->GetCellData(), source, cell);
   };
+  auto lattice = [higherOrderLattice](int type)
+  {
+    return type == VTK_QUADRATIC_TETRA ||
+      (higherOrderLattice && (type == VTK_LAGRANGE_TETRAHEDRON || type == VTK_BEZIER_TETRAHEDRON));
+  };
   for (vtkIdType t = 0; t < vtkSplit->GetNumberOfCells(); ++t)
   {
     const vtkIdType source = from->GetValue(t);
-    if (input->GetCellType(source) == VTK_QUADRATIC_TETRA)
+    if (lattice(input->GetCellType(source)))
     {
       continue;
     }
@@ -102,6 +109,81 @@ vtkSmartPointer<vtkUnstructuredGrid> SplitWithCanonicalQuadraticTetrahedra(vtkDa
     const vtkIdType* ids = nullptr;
     vtkSplit->GetCellPoints(t, npts, ids);
     insert(ids, source);
+  }
+  // Lagrange and Bezier tetrahedra of order p: their nodes are the lattice
+  // of p segments per edge; it is split by Freudenthal's triangulation of
+  // the cubes of x1 = i + j + k, x2 = j + k, x3 = k (the simplex p >= x1 >=
+  // x2 >= x3 >= 0), whose faces are the regular lattice triangulation, the
+  // same from both sides (and the canonical eight's for p = 2).
+  vtkNew<vtkGenericCell> cell;
+  std::vector<vtkIdType> nodeAt;
+  for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
+  {
+    const int type = input->GetCellType(c);
+    if (!higherOrderLattice || (type != VTK_LAGRANGE_TETRAHEDRON && type != VTK_BEZIER_TETRAHEDRON))
+    {
+      continue;
+    }
+    input->GetCell(c, cell);
+    const int nodes = static_cast<int>(cell->GetNumberOfPoints());
+    int p = 1;
+    while ((p + 1) * (p + 2) * (p + 3) / 6 < nodes)
+    {
+      ++p;
+    }
+    if ((p + 1) * (p + 2) * (p + 3) / 6 != nodes)
+    {
+      continue; // (not a complete tetrahedral lattice: left out)
+    }
+    const double* pc = cell->GetParametricCoords();
+    const int side = p + 1;
+    auto index = [&](int i, int j, int k) { return i + side * (j + side * k); };
+    nodeAt.assign(static_cast<size_t>(side) * side * side, -1);
+    for (int v = 0; v < nodes; ++v)
+    {
+      const int i = static_cast<int>(std::lround(pc[3 * v] * p));
+      const int j = static_cast<int>(std::lround(pc[3 * v + 1] * p));
+      const int k = static_cast<int>(std::lround(pc[3 * v + 2] * p));
+      if (i >= 0 && j >= 0 && k >= 0 && i + j + k <= p)
+      {
+        nodeAt[index(i, j, k)] = cell->GetPointId(v);
+      }
+    }
+    // A lattice point (x1, x2, x3) of the simplex.
+    auto at = [&](int x1, int x2, int x3) -> vtkIdType
+    {
+      if (!(p >= x1 && x1 >= x2 && x2 >= x3 && x3 >= 0))
+      {
+        return -1;
+      }
+      return nodeAt[index(x1 - x2, x2 - x3, x3)];
+    };
+    static const int orders[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 },
+      { 2, 0, 1 }, { 2, 1, 0 } };
+    for (int a = 0; a < p; ++a)
+    {
+      for (int b = 0; b <= a; ++b)
+      {
+        for (int d = 0; d <= b; ++d)
+        {
+          for (const auto& o : orders)
+          {
+            int x[3] = { a, b, d };
+            vtkIdType ids[4];
+            ids[0] = at(x[0], x[1], x[2]);
+            for (int step = 0; step < 3; ++step)
+            {
+              ++x[o[step]];
+              ids[step + 1] = at(x[0], x[1], x[2]);
+            }
+            if (ids[0] >= 0 && ids[1] >= 0 && ids[2] >= 0 && ids[3] >= 0)
+            {
+              insert(ids, c);
+            }
+          }
+        }
+      }
+    }
   }
   // vtkQuadraticTetra's nodes: corners 0-3, then the edges 01, 12, 20, 03, 13, 23.
   for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
@@ -1036,7 +1118,10 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
     else if (type != VTK_TETRA)
     {
       ++r.SplitCells;
-      r.QuadraticTetrahedra += type == VTK_QUADRATIC_TETRA ? 1 : 0;
+      r.QuadraticTetrahedra += type == VTK_QUADRATIC_TETRA || type == VTK_LAGRANGE_TETRAHEDRON ||
+          type == VTK_BEZIER_TETRAHEDRON
+        ? 1
+        : 0;
     }
   }
   vtkSmartPointer<vtkUnstructuredGrid> grid;
@@ -1046,7 +1131,9 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
   }
   else if (r.QuadraticTetrahedra > 0)
   {
-    grid = SplitWithCanonicalQuadraticTetrahedra(data);
+    // (The testing hook SplitLocalOrder leaves Lagrange and Bezier
+    // tetrahedra to VTK's split: the control of their lattice split.)
+    grid = SplitWithCanonicalQuadraticTetrahedra(data, split == SplitOrdered);
   }
   if (!grid)
   {

@@ -24,7 +24,10 @@
  * (measured: cracks between quadratic tetrahedra), so they are cut here
  * into the canonical eight (the four corners and the inner octahedron along
  * one diagonal): every face into its four sub-triangles, the same from both
- * sides. Point and cell data travel with the points and cells, so cell
+ * sides; Lagrange and Bezier tetrahedra of order p likewise (VTK's split of
+ * them cracks too: measured at order 3), on their nodes' lattice of p
+ * segments per edge by Freudenthal's triangulation, whose faces are the
+ * regular lattice triangulation. Point and cell data travel with the points and cells, so cell
  * scalars stay exact per cell. Cells of dimension below 3 are left out and
  * counted.
  *
@@ -68,10 +71,11 @@ public:
   /// What Tetrahedralize() did.
   struct Report
   {
-    bool Tessellated = false;          ///< false: the input was used as it is
-    vtkIdType InputCells = 0;          ///< cells of the input
-    vtkIdType SplitCells = 0;          ///< 3D cells that were not tetrahedra, split
-    vtkIdType QuadraticTetrahedra = 0; ///< of which quadratic tetrahedra (the canonical split)
+    bool Tessellated = false; ///< false: the input was used as it is
+    vtkIdType InputCells = 0; ///< cells of the input
+    vtkIdType SplitCells = 0; ///< 3D cells that were not tetrahedra, split
+    /// of which quadratic, Lagrange or Bezier tetrahedra (split on their nodes' lattice)
+    vtkIdType QuadraticTetrahedra = 0;
     vtkIdType LowerDimensionCells = 0; ///< vertices, lines, polygons: left out
     vtkIdType InvalidCells = 0; ///< cells with a point id out of range: left out before the split
     vtkIdType OutputTetrahedra = 0;
@@ -110,7 +114,8 @@ public:
   /**
    * How refined cells are split (a testing hook; only SplitOrdered is
    * crack-free): SplitLocalOrder cuts every piece into tetrahedra by its
-   * local lattice order (a quadrilateral's diagonal chosen per cell);
+   * local lattice order (a quadrilateral's diagonal chosen per cell) and, at
+   * level 0, leaves Lagrange and Bezier tetrahedra to VTK's own split;
    * SplitUnmerged gives every refined cell its own new points.
    */
   enum SubdivisionSplit
