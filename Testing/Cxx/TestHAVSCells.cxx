@@ -30,8 +30,8 @@
 //              sphere (non-convex: tagging and the boundary layers), the
 //              maximum-intensity blend, a clipping plane (cell and point
 //              scalars; control: without it); control: the same data smoothed
-//              to points (vtkCellDataToPointData) fails. HAVS leaves out 0.15 %
-//              edge pixels here (kEdgeCellScalars says why);
+//              to points (vtkCellDataToPointData) fails. HAVS leaves out the
+//              standard 5 edge pixels here too (kEdgeCellScalars says why);
 //   vector     a 3-component array: the magnitude and component 2 (vector
 //              mode) against the reference of the same scalar stored alone;
 //              control: component 0 against component 2's reference;
@@ -147,15 +147,17 @@ constexpr size_t kEdge = 5; // 0.05 % of 96^2
 // Every view (the `long` variants, argument "full"), or one perspective view
 // and the parallel one (the default suite, for its time).
 bool gEveryView = false;
-// HAVS with cell scalars: 7 pixels (0.076 % of 96^2). Near a projected edge
+// HAVS with cell scalars: the standard 5 (it was 7). Near a projected edge
 // or vertex a ray crosses a chain of faces at nearly one distance, and the
 // fragment that leaves last gives the next segment its cell; the k-buffer
-// keeps the draw order among such internal near-ties (HAVS_CELL_TIE), but a
-// few pixels where a boundary or section fragment is part of the tie remain
-// (measured: at most 7 per view; before the tie rule up to 10 pixels off by
-// up to 0.16). The cell projection, which integrates each cell on its own,
-// needs the standard 5.
-constexpr size_t kEdgeCellScalars = 7;
+// keeps the draw order among such internal near-ties (HAVS_CELL_TIE). The
+// interpolated fragment distances differ by more than 3e-5 (relative) there:
+// with that tie, 1 to 3 interior pixels a view of the box and the warped
+// hexahedra were off by up to 0.17 (none at the silhouette); with 3e-4 none.
+// What remains (1 to 3 pixels a view of the hollow sphere, at k = 2) are
+// ties with a boundary fragment of its cavity, which keep the rank order.
+// The cell projection integrates each cell on its own.
+constexpr size_t kEdgeCellScalars = 5;
 
 /// A view: azimuth, elevation, parallel.
 struct View
