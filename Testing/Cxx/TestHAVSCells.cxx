@@ -152,8 +152,8 @@ bool gEveryView = false;
 // fragment that leaves last gives the next segment its cell; the k-buffer
 // keeps the draw order among such internal near-ties (HAVS_CELL_TIE). The
 // interpolated fragment distances differ by more than 3e-5 (relative) there:
-// with that tie, 1 to 3 interior pixels a view of the box and the warped
-// hexahedra were off by up to 0.17 (none at the silhouette); with 3e-4 none.
+// with that tie, 0 to 3 interior pixels a view of the box of tetrahedra
+// were off by up to 0.17 (none at the silhouette); with 3e-4 none.
 // What remains (1 to 3 pixels a view of the hollow sphere, at k = 2) are
 // ties with a boundary fragment of its cavity, which keep the rank order.
 // The cell projection integrates each cell on its own.

@@ -280,9 +280,9 @@ void havsInsert(
     // entry face before its exit face), and the one that leaves last gives
     // the next segment its cell: rounding must not reorder them (measured on
     // 96^2 views: up to 10 pixels off by up to 0.16 with 2e-6; with 3e-5 still
-    // 1 to 3 interior pixels a view of a box of tetrahedra and of warped
-    // hexahedra, off by up to 0.17: the interpolated distances differ by more;
-    // none with 3e-4, unchanged with 1e-3).
+    // 0 to 3 interior pixels a view of a box of tetrahedra, off by up to 0.17:
+    // the interpolated distances differ by more; none with 3e-4, the same
+    // with 1e-3).
     // At k = 2, the default, the waiting one is the earlier. Boundary
     // fragments keep the rank order below.
     float margin = (nearest == 0 && f.y < 1.5 && E[i].y < 1.5) ? HAVS_CELL_TIE * abs(leavingKey)
