@@ -147,8 +147,8 @@ public:
   /**
    * Subdivision of quadratic and higher-order cells (vtkHAVSTetrahedralizer):
    * 0 (the default) splits them at their nodes only; n >= 1 refines every
-   * non-linear hexahedron, tetrahedron and wedge uniformly in its parametric
-   * space, 2^n segments per edge, points and point data through the cell's
+   * non-linear hexahedron, tetrahedron, wedge and pyramid uniformly in its
+   * parametric space, 2^n segments per edge, points and point data through the cell's
    * own interpolation (curved cells drawn curved), crack-free across
    * neighbours. Linear cells are unaffected. At most 6. A change re-tessellates.
    */

@@ -457,22 +457,43 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   // A new time step on the same mesh (the same points and cells, as a
   // reader gives them for each step: compared by a hash of their contents)
   // keeps the faces, orders and GPU geometry; only the scalars are mapped
-  // again. Not for cell scalars of split cells (their tetrahedra's cells are
-  // not kept), nor when point and cell scalars trade places.
+  // again. On a tessellated mesh (split or refined cells) through the
+  // tessellation's source map: a tetrahedron's cell value is its cell's, a
+  // point added by the refinement interpolates the cell's nodes as it did.
+  // Not when point and cell scalars trade places.
+  vtkSmartPointer<vtkDataArray> stepScalars;
   if (wasValid && this->HashedSource && cellData == hadCellScalars &&
-    !(cellData && this->Tessellation.Tessellated) &&
     selection.VectorMode == previousSelection.VectorMode &&
     selection.HigherOrderSubdivision == previousSelection.HigherOrderSubdivision &&
-    this->Tessellation.AddedPoints == 0 &&
-    this->Grid->GetNumberOfPoints() == data->GetNumberOfPoints() &&
     GeometryHashOf(data) == this->GeometryHash)
+  {
+    if (!this->Tessellation.Tessellated)
+    {
+      stepScalars = scalars; // the grid is the input
+    }
+    else if (this->Sources.Valid && this->Sources.InputPoints == data->GetNumberOfPoints())
+    {
+      if (cellData)
+      {
+        stepScalars = this->Sources.MapCellArray(scalars);
+      }
+      else if (this->Sources.StencilOffsets.size() <= 1)
+      {
+        stepScalars = scalars; // (split cells keep the input's point ids)
+      }
+      else
+      {
+        stepScalars = this->Sources.MapPointArray(scalars);
+      }
+    }
+  }
+  if (stepScalars)
   {
     if (!this->Tessellation.Tessellated)
     {
       this->Grid = vtkUnstructuredGrid::SafeDownCast(data); // the same cells and points
     }
-    // (Split cells keep the input's point ids: point scalars map one to one.)
-    if (!this->MapScalars(scalars, cellData, arrayName))
+    if (!this->MapScalars(stepScalars, cellData, arrayName))
     {
       return false;
     }
@@ -496,8 +517,8 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
 
   // The cells as tetrahedra.
   report(0.0);
-  this->Grid = vtkHAVSTetrahedralizer::Tetrahedralize(
-    data, &this->Tessellation, selection.HigherOrderSubdivision);
+  this->Grid = vtkHAVSTetrahedralizer::Tetrahedralize(data, &this->Tessellation,
+    selection.HigherOrderSubdivision, vtkHAVSTetrahedralizer::SplitOrdered, &this->Sources);
   if (!this->Grid || this->Grid->GetNumberOfCells() == 0)
   {
     std::ostringstream why;
@@ -514,8 +535,8 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   {
     std::ostringstream w;
     w << this->Tessellation.UnrefinedNonLinearCells
-      << " non-linear cells (pyramids) are not refined by the higher-order subdivision: "
-         "they are split at their nodes.";
+      << " non-linear cells (Lagrange or Bezier pyramids) are not refined by the higher-order "
+         "subdivision: they are split at their nodes.";
     this->Warnings.push_back(w.str());
   }
   if (this->Tessellation.LowerDimensionCells > 0)

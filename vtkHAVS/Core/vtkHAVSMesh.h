@@ -200,6 +200,7 @@ private:
   vtkNew<vtkHAVSFaceSet> Faces;
   vtkSmartPointer<vtkUnstructuredGrid> Grid;
   vtkHAVSTetrahedralizer::Report Tessellation;
+  vtkHAVSTetrahedralizer::SourceMap Sources; // a tessellated mesh's, for new time steps
   std::vector<float> Points;
   std::vector<float> Scalars;
   bool CellScalars = false;

@@ -24,13 +24,17 @@
  * (measured: cracks between quadratic tetrahedra), so they are cut here
  * into the canonical eight (the four corners and the inner octahedron along
  * one diagonal): every face into its four sub-triangles, the same from both
- * sides. Point and cell data travel with the points and cells, so cell
+ * sides; Lagrange and Bezier tetrahedra of order p likewise (VTK's split of
+ * them cracks too: measured at order 3), on their nodes' lattice of p
+ * segments per edge by Freudenthal's triangulation, whose faces are the
+ * regular lattice triangulation. Point and cell data travel with the points and cells, so cell
  * scalars stay exact per cell. Cells of dimension below 3 are left out and
  * counted.
  *
  * Higher-order subdivision (level n >= 1; 0, the default, is the split
  * above): every non-linear hexahedron, tetrahedron and wedge (quadratic,
- * bi/triquadratic, Lagrange, Bezier) is first refined uniformly in its
+ * bi/triquadratic, Lagrange, Bezier, any order) and pyramid (quadratic,
+ * triquadratic) is first refined uniformly in its
  * parametric space, 2^n segments along each edge, each new point placed and
  * its point data interpolated through the cell's own interpolation
  * (vtkCell::EvaluateLocation), so curved cells become curved. The pieces are
@@ -39,8 +43,12 @@
  * the same from both sides) and tetrahedra (the canonical eight, recursively:
  * a triangular face has one lattice triangulation). A point on a shared edge
  * or face is the same point from both cells: points are merged by a key of
- * the parent cell's corner ids and their integer lattice weights. Non-linear
- * pyramids are not refined (their nodes are split as at level 0) and counted.
+ * the parent cell's corner ids and their integer lattice weights. Quadratic
+ * and triquadratic pyramids likewise: their lattice is the tetrahedral-
+ * octahedral one (upright and inverted pyramids, tetrahedra between them;
+ * on the base the hexahedron's refined face, on a triangular face the
+ * tetrahedron's). Non-linear pyramids VTK 9.2 has no cell for (Lagrange,
+ * Bezier) are not refined and counted.
  */
 #ifndef vtkHAVSTetrahedralizer_h
 #define vtkHAVSTetrahedralizer_h
@@ -50,8 +58,10 @@
 #include "vtkType.h"           // For vtkIdType
 
 #include <functional> // For std::function
+#include <vector>     // For std::vector
 
 class vtkCompositeDataSet;
+class vtkDataArray;
 class vtkDataSet;
 class vtkUnstructuredGrid;
 
@@ -61,18 +71,41 @@ public:
   /// What Tetrahedralize() did.
   struct Report
   {
-    bool Tessellated = false;          ///< false: the input was used as it is
-    vtkIdType InputCells = 0;          ///< cells of the input
-    vtkIdType SplitCells = 0;          ///< 3D cells that were not tetrahedra, split
-    vtkIdType QuadraticTetrahedra = 0; ///< of which quadratic tetrahedra (the canonical split)
+    bool Tessellated = false; ///< false: the input was used as it is
+    vtkIdType InputCells = 0; ///< cells of the input
+    vtkIdType SplitCells = 0; ///< 3D cells that were not tetrahedra, split
+    /// of which quadratic, Lagrange or Bezier tetrahedra (split on their nodes' lattice)
+    vtkIdType QuadraticTetrahedra = 0;
     vtkIdType LowerDimensionCells = 0; ///< vertices, lines, polygons: left out
     vtkIdType InvalidCells = 0; ///< cells with a point id out of range: left out before the split
     vtkIdType OutputTetrahedra = 0;
     double Seconds = 0.0;
     int HigherOrderSubdivision = 0;        ///< the level used
     vtkIdType RefinedCells = 0;            ///< non-linear cells refined (level >= 1)
-    vtkIdType UnrefinedNonLinearCells = 0; ///< non-linear cells not refined (pyramids)
+    vtkIdType UnrefinedNonLinearCells = 0; ///< non-linear cells not refined
     vtkIdType AddedPoints = 0;             ///< points the refinement added
+  };
+
+  /**
+   * Where the tetrahedral grid's values come from (Tetrahedralize(), when
+   * asked): a new time step on the same mesh maps its scalars through it
+   * instead of splitting the cells again. The grid's first InputPoints points
+   * are the input's, with the same ids; each further point p is the input's
+   * points StencilIds[StencilOffsets[q] …  StencilOffsets[q + 1]) (q = p -
+   * InputPoints) weighted by StencilWeights (the cell's interpolation at the
+   * point); each tetrahedron t lies in the input's cell Cells[t].
+   */
+  struct SourceMap
+  {
+    bool Valid = false;
+    vtkIdType InputPoints = 0;
+    std::vector<vtkIdType> StencilOffsets; ///< one per added point, and the end
+    std::vector<vtkIdType> StencilIds;
+    std::vector<double> StencilWeights;
+    std::vector<vtkIdType> Cells;
+    /// The grid's point values of the input's `points` array, or cell values of its `cells` array.
+    vtkSmartPointer<vtkDataArray> MapPointArray(vtkDataArray* points) const;
+    vtkSmartPointer<vtkDataArray> MapCellArray(vtkDataArray* cells) const;
   };
 
   /// The largest subdivision level (2^6 = 64 segments per edge).
@@ -81,7 +114,8 @@ public:
   /**
    * How refined cells are split (a testing hook; only SplitOrdered is
    * crack-free): SplitLocalOrder cuts every piece into tetrahedra by its
-   * local lattice order (a quadrilateral's diagonal chosen per cell);
+   * local lattice order (a quadrilateral's diagonal chosen per cell) and, at
+   * level 0, leaves Lagrange and Bezier tetrahedra to VTK's own split;
    * SplitUnmerged gives every refined cell its own new points.
    */
   enum SubdivisionSplit
@@ -97,10 +131,12 @@ public:
   /**
    * The tetrahedral grid of `data` (the input itself when IsTetrahedral()).
    * nullptr for a null input. `higherOrderSubdivision` (clamped to 0 …
-   * MaximumHigherOrderSubdivision): see the class description.
+   * MaximumHigherOrderSubdivision): see the class description. `map`
+   * (optional) is filled when the input was tessellated (Valid stays false
+   * when it was used as it is).
    */
-  static vtkSmartPointer<vtkUnstructuredGrid> Tetrahedralize(
-    vtkDataSet* data, Report* report, int higherOrderSubdivision = 0, int split = SplitOrdered);
+  static vtkSmartPointer<vtkUnstructuredGrid> Tetrahedralize(vtkDataSet* data, Report* report,
+    int higherOrderSubdivision = 0, int split = SplitOrdered, SourceMap* map = nullptr);
 
   /**
    * The non-linear 3D cells of `data` refined at `level` into linear
@@ -109,8 +145,8 @@ public:
    * nullptr when `data` is not an unstructured grid, `level` < 1 or no cell
    * was refined.
    */
-  static vtkSmartPointer<vtkUnstructuredGrid> RefineHigherOrderCells(
-    vtkDataSet* data, int level, Report* report, int split = SplitOrdered);
+  static vtkSmartPointer<vtkUnstructuredGrid> RefineHigherOrderCells(vtkDataSet* data, int level,
+    Report* report, int split = SplitOrdered, SourceMap* map = nullptr);
 
   /**
    * The leaves of a multiblock or partitioned data set as one unstructured
