@@ -378,6 +378,21 @@ struct RefinedCell
   std::vector<vtkIdType> NodeIds;       ///< the cell's point ids
   std::vector<std::vector<int>> Pieces; ///< local points of each linear piece
   std::vector<int> PieceTypes;
+
+  /// A new local point at lattice index `index`: the cell evaluated at
+  /// `pcoords` (position and weights), `key` sorted and stored.
+  void AddPoint(
+    vtkCell* cell, int index, PointKey key, double pcoords[3], std::vector<double>& weights)
+  {
+    std::sort(key.begin(), key.end());
+    int subId = 0;
+    double x[3];
+    cell->EvaluateLocation(subId, pcoords, x, weights.data());
+    this->Lattice[index] = static_cast<int>(this->Keys.size());
+    this->Keys.push_back(std::move(key));
+    this->Positions.insert(this->Positions.end(), x, x + 3);
+    this->Weights.insert(this->Weights.end(), weights.begin(), weights.end());
+  }
 };
 
 /// The recursive canonical split of a lattice tetrahedron (corners as
@@ -479,7 +494,6 @@ void RefinePyramid(vtkCell* cell, int level, int split, RefinedCell& r)
   auto index = [&](int i, int j, int k) { return i + side * (j + side * k); };
   r.Lattice.assign(static_cast<size_t>(side) * side * side, -1);
   std::vector<double> weights(nodes);
-  double x[3];
   for (int k = 0; k <= n; ++k)
   {
     const int m = n - k;
@@ -538,13 +552,7 @@ void RefinePyramid(vtkCell* cell, int level, int split, RefinedCell& r)
             }
           }
         }
-        std::sort(key.begin(), key.end());
-        int subId = 0;
-        cell->EvaluateLocation(subId, pcoords, x, weights.data());
-        r.Lattice[index(i, j, k)] = static_cast<int>(r.Keys.size());
-        r.Keys.push_back(std::move(key));
-        r.Positions.insert(r.Positions.end(), x, x + 3);
-        r.Weights.insert(r.Weights.end(), weights.begin(), weights.end());
+        r.AddPoint(cell, index(i, j, k), std::move(key), pcoords, weights);
       }
     }
   }
@@ -665,7 +673,6 @@ void RefineCell(vtkCell* cell, Family family, int level, int split, RefinedCell&
   auto index = [&](int i, int j, int k) { return i + side * (j + side * k); };
   r.Lattice.assign(static_cast<size_t>(side) * side * side, -1);
   std::vector<double> weights(nodes);
-  double x[3];
   for (int k = 0; k <= n; ++k)
   {
     for (int j = 0; j <= n; ++j)
@@ -691,13 +698,7 @@ void RefineCell(vtkCell* cell, Family family, int level, int split, RefinedCell&
             }
           }
         }
-        std::sort(key.begin(), key.end());
-        int subId = 0;
-        cell->EvaluateLocation(subId, pcoords, x, weights.data());
-        r.Lattice[index(i, j, k)] = static_cast<int>(r.Keys.size());
-        r.Keys.push_back(std::move(key));
-        r.Positions.insert(r.Positions.end(), x, x + 3);
-        r.Weights.insert(r.Weights.end(), weights.begin(), weights.end());
+        r.AddPoint(cell, index(i, j, k), std::move(key), pcoords, weights);
       }
     }
   }
