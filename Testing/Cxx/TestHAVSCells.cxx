@@ -1346,6 +1346,30 @@ double Quadratic(const double* x)
   return x[0] * x[0] - 2.0 * x[1] * x[2] + 0.5 * x[2] * x[2] + x[0] * x[1] + x[1];
 }
 
+/// The straight cells' test: the curved shell's points mapped back onto its
+/// parameters (the cylinder undone) and sheared, a box of volume 0.865 (the
+/// shear's determinant); point scalars "q" = `field`.
+constexpr double kShearedVolume = 0.865;
+void ShearBack(vtkUnstructuredGrid* grid, double (*field)(const double*))
+{
+  vtkNew<vtkDoubleArray> q;
+  q->SetName("q");
+  q->SetNumberOfTuples(grid->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    grid->GetPoint(i, x);
+    const double a = (std::sqrt(x[0] * x[0] + x[1] * x[1]) - kInner) / (kOuter - kInner);
+    const double b = std::atan2(x[1], x[0]) / kQuarter;
+    const double c = x[2] / kHeight;
+    const double y[3] = { a + 0.3 * b, 0.8 * b - 0.2 * c, 1.1 * c + 0.25 * a };
+    grid->GetPoints()->SetPoint(i, y);
+    grid->GetPoint(i, x); // as stored
+    q->SetValue(i, field(x));
+  }
+  grid->GetPointData()->SetScalars(q);
+}
+
 /// The largest difference between the active point scalars of `grid`'s
 /// points from `first` on and `field` at their positions.
 double FieldError(vtkDataSet* grid, vtkIdType first, double (*field)(const double*))
@@ -2179,28 +2203,9 @@ int Pyramids()
   for (bool triquadratic : { false, true })
   {
     auto grid = PyramidShell(m, triquadratic, false);
-    // The parameters back onto a sheared box: undo the cylinder, shear.
-    for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
-    {
-      double x[3];
-      grid->GetPoint(i, x);
-      const double a = (std::sqrt(x[0] * x[0] + x[1] * x[1]) - kInner) / (kOuter - kInner);
-      const double b = std::atan2(x[1], x[0]) / kQuarter;
-      const double c = x[2] / kHeight;
-      grid->GetPoints()->SetPoint(i, a + 0.3 * b, 0.8 * b - 0.2 * c, 1.1 * c + 0.25 * a);
-    }
-    const double volume = 0.865; // the shear's determinant
     double (*field)(const double*) = triquadratic ? Quadratic : Linear;
-    vtkNew<vtkDoubleArray> q;
-    q->SetName("q");
-    q->SetNumberOfTuples(grid->GetNumberOfPoints());
-    for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
-    {
-      double x[3];
-      grid->GetPoint(i, x);
-      q->SetValue(i, field(x));
-    }
-    grid->GetPointData()->SetScalars(q);
+    ShearBack(grid, field);
+    const double volume = kShearedVolume;
     for (int level = 0; level <= 2; ++level)
     {
       vtkHAVSTetrahedralizer::Report report;
@@ -2373,27 +2378,9 @@ int HigherOrder()
     for (bool tetrahedra : { false, true })
     {
       auto grid = HigherOrderShell(m, 3, tetrahedra, bezier);
-      for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
-      {
-        double x[3];
-        grid->GetPoint(i, x);
-        const double a = (std::sqrt(x[0] * x[0] + x[1] * x[1]) - kInner) / (kOuter - kInner);
-        const double b = std::atan2(x[1], x[0]) / kQuarter;
-        const double c = x[2] / kHeight;
-        grid->GetPoints()->SetPoint(i, a + 0.3 * b, 0.8 * b - 0.2 * c, 1.1 * c + 0.25 * a);
-      }
-      const double volume = 0.865; // the shear's determinant
       double (*field)(const double*) = bezier ? Linear : Cubic;
-      vtkNew<vtkDoubleArray> q;
-      q->SetName("q");
-      q->SetNumberOfTuples(grid->GetNumberOfPoints());
-      for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
-      {
-        double x[3];
-        grid->GetPoint(i, x);
-        q->SetValue(i, field(x));
-      }
-      grid->GetPointData()->SetScalars(q);
+      ShearBack(grid, field);
+      const double volume = kShearedVolume;
       vtkHAVSTetrahedralizer::Report report;
       auto tets = vtkHAVSTetrahedralizer::Tetrahedralize(grid, &report, 2);
       const double error = std::fabs(TetrahedraVolume(tets) - volume) / volume;
