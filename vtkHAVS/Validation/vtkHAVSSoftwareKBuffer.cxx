@@ -106,7 +106,8 @@ private:
 
   void Advance(const Entry& p)
   {
-    if (this->HaveFront && !this->Front.Exit)
+    // As the GPU's k-buffer: a segment from an exit or to an entry is outside.
+    if (this->HaveFront && !this->Front.Exit && !p.Entering)
     {
       const double length = p.Distance - this->Front.Distance;
       if (length > 0.0)
