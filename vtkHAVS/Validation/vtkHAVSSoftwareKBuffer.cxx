@@ -106,8 +106,7 @@ private:
 
   void Advance(const Entry& p)
   {
-    // As the GPU's k-buffer: a segment from an exit or to an entry is outside.
-    if (this->HaveFront && !this->Front.Exit && !p.Entering)
+    if (this->HaveFront && !this->Front.Exit)
     {
       const double length = p.Distance - this->Front.Distance;
       if (length > 0.0)
@@ -121,7 +120,12 @@ private:
         }
       }
     }
+    // As the GPU's k-buffer (HAVS_GRAZE): an internal fragment a hair after
+    // an exit takes the exit's role.
+    const bool stray = this->HaveFront && this->Front.Exit && !p.Exit && !p.Entering &&
+      p.Distance - this->Front.Distance < 1.0e-3 * std::fabs(this->Front.Distance);
     this->Front = p;
+    this->Front.Exit = this->Front.Exit || stray;
     this->HaveFront = true;
   }
 
