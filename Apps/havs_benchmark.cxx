@@ -111,7 +111,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -849,32 +848,13 @@ int RunWorker(const Options& o)
         }
         // MISSION.md's "exact" is about the float result, not the 8-bit window:
         // the project's mappers draw the view once more (not timed) keeping it.
-        std::function<bool(vtkFloatArray*, int*)> floatResult;
-        std::function<void(bool)> keep;
-        if (havs)
+        auto measureFloat = [&](auto* mapper)
         {
-          floatResult = [havs](vtkFloatArray* a, int* s) { return havs->GetFloatResult(a, s); };
-          keep = [havs](bool on) { havs->SetKeepFloatResult(on); };
-        }
-        else if (cellProjection)
-        {
-          floatResult = [cellProjection](vtkFloatArray* a, int* s)
-          { return cellProjection->GetFloatResult(a, s); };
-          keep = [cellProjection](bool on) { cellProjection->SetKeepFloatResult(on); };
-        }
-        else if (tetRayCast)
-        {
-          floatResult = [tetRayCast](vtkFloatArray* a, int* s)
-          { return tetRayCast->GetFloatResult(a, s); };
-          keep = [tetRayCast](bool on) { tetRayCast->SetKeepFloatResult(on); };
-        }
-        if (floatResult)
-        {
-          keep(true);
+          mapper->SetKeepFloatResult(true);
           window->Render();
           vtkNew<vtkFloatArray> premultiplied;
           int resultSize[2] = { 0, 0 };
-          if (floatResult(premultiplied, resultSize) && resultSize[0] == o.Size &&
+          if (mapper->GetFloatResult(premultiplied, resultSize) && resultSize[0] == o.Size &&
             resultSize[1] == o.Size)
           {
             for (size_t p = 0; p < static_cast<size_t>(o.Size) * o.Size; ++p)
@@ -893,7 +873,19 @@ int RunWorker(const Options& o)
               floatPixels += 1;
             }
           }
-          keep(false);
+          mapper->SetKeepFloatResult(false);
+        };
+        if (havs)
+        {
+          measureFloat(havs);
+        }
+        else if (cellProjection)
+        {
+          measureFloat(cellProjection);
+        }
+        else if (tetRayCast)
+        {
+          measureFloat(tetRayCast);
         }
       }
       ++viewsDone;

@@ -27,6 +27,10 @@ namespace
 {
 using Fragment = vtkHAVSReferenceRenderer::Fragment;
 
+/// How close (relative) after an exit an internal fragment takes the exit's
+/// role: HAVS_GRAZE in vtkHAVSKBufferLib.glsl.
+constexpr double kGraze = 1.0e-3;
+
 /// One k-buffer entry, as on the GPU.
 struct Entry
 {
@@ -123,7 +127,7 @@ private:
     // As the GPU's k-buffer (HAVS_GRAZE): an internal fragment a hair after
     // an exit takes the exit's role.
     const bool stray = this->HaveFront && this->Front.Exit && !p.Exit && !p.Entering &&
-      p.Distance - this->Front.Distance < 1.0e-3 * std::fabs(this->Front.Distance);
+      p.Distance - this->Front.Distance < kGraze * std::fabs(this->Front.Distance);
     this->Front = p;
     this->Front.Exit = this->Front.Exit || stray;
     this->HaveFront = true;
