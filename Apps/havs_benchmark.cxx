@@ -12,7 +12,9 @@
 //   havs_benchmark [--quick] [--size N | --sizes a,b] [--views N] [--repeats N]
 //                  [--datasets a,b,...] [--configs a,b,...] [--output-dir DIR]
 //                  [--cache-dir DIR] [--budget SECONDS] [--from-csv FILE]
-//                  [--dump-case DIR]
+//                  [--dump-case DIR] [--rounds N]
+// (--rounds N: every configuration N times, round-robin, each time the median
+// over the rounds: this machine's slow drifts hit every configuration alike.)
 // (--dump-case DIR: only write view 0 of each data set, drawn by the default
 // mapper, as a frame case for Apps/GPUBench/havs_gpu_bench.)
 // (--from-csv a.csv,b.csv: only make the report again from earlier runs' CSVs;
@@ -130,6 +132,7 @@ struct Options
   std::vector<int> Sizes; // the coordinator's sizes (default: Size)
   int Views = 14;
   int Repeats = 2;
+  int Rounds = 1; // --rounds N: every configuration N times, interleaved round-robin
   double Budget = 600.0;
   std::vector<std::string> DataSets;
   std::vector<std::string> Configs;
@@ -963,7 +966,8 @@ const char* const kColumns[] = { "dataset", "config", "size", "tets", "views", "
   "upload_ms", "readback_ms", "layers_ms", "mtets_per_s", "rmse", "max", "over1", "peak_mb", "smp",
   "threads", "table", "skipped", "culled", "lod_fraction", "ranking_s", "ranking_mb",
   "lod_target_ms", "lod_within25", "lod_still", "lod_trace", "peel_passes", "cells_per_ray",
-  "tiles_used", "tile_passes", "float_rmse", "float_max", "floor_rmse", "folded_px", "command" };
+  "tiles_used", "tile_passes", "float_rmse", "float_max", "floor_rmse", "folded_px", "rounds",
+  "command" };
 
 /// A CSV field, quoted where it holds a comma or a quote.
 std::string CsvField(const std::string& text)
@@ -1027,6 +1031,70 @@ Row RunChild(const std::string& command)
     pclose(pipe);
   }
   return result.empty() ? Row() : ParseResult(result);
+}
+
+/// One row from a configuration's rounds (--rounds): each time is the median
+/// over the rounds of the per-round medians (min and max over all), the peak
+/// memory the largest; errors and counts are the first round's (the images do
+/// not change between rounds). Interleaving the rounds spreads this machine's
+/// slow drifts over every configuration alike.
+Row MergeRounds(const std::vector<Row>& rounds)
+{
+  Row merged = rounds.front();
+  merged["rounds"] = std::to_string(rounds.size());
+  if (rounds.size() < 2)
+  {
+    return merged;
+  }
+  auto values = [&](const char* key)
+  {
+    std::vector<double> v;
+    for (const Row& r : rounds)
+    {
+      const auto it = r.find(key);
+      const double x = it == r.end() ? NAN : std::atof(it->second.c_str());
+      if (std::isfinite(x))
+      {
+        v.push_back(x);
+      }
+    }
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  auto text = [](double x)
+  {
+    char buffer[64];
+    std::snprintf(buffer, sizeof(buffer), "%.3f", x);
+    return std::string(buffer);
+  };
+  for (const char* key : { "ms_median", "sort_ms", "gather_ms", "draw_ms", "flush_ms",
+         "composite_ms", "upload_ms", "readback_ms", "layers_ms" })
+  {
+    const std::vector<double> v = values(key);
+    if (!v.empty())
+    {
+      merged[key] = text(v.size() % 2 ? v[v.size() / 2]
+                                      : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
+    }
+  }
+  const std::vector<double> lows = values("ms_min"), highs = values("ms_max"),
+                            peaks = values("peak_mb"), frames = values("frames");
+  if (!lows.empty())
+  {
+    merged["ms_min"] = text(lows.front());
+    merged["ms_max"] = text(highs.back());
+  }
+  if (!peaks.empty())
+  {
+    merged["peak_mb"] = text(peaks.back());
+  }
+  double total = 0.0;
+  for (double f : frames)
+  {
+    total += f;
+  }
+  merged["frames"] = std::to_string(static_cast<long long>(total));
+  return merged;
 }
 
 void WriteCsv(const std::vector<Row>& rows, const std::string& path)
@@ -1360,7 +1428,10 @@ std::string Report(const std::vector<Row>& allRows, const Options& o, const std:
      << "Each configuration ran in its own process over the fixed viewpoints (the 6 axis "
         "directions and the 8 cube diagonals, after two warm-up frames, one for ZSweep and "
         "RayCast, which run on the CPU). Times are ms per frame "
-        "with the GPU work finished (median, min, max); HAVS's stages are medians. Error: the "
+        "with the GPU work finished (median, min, max); HAVS's stages are medians. Rows with "
+        "a rounds column above 1 ran that many times, every configuration once a round, "
+        "round-robin: their times are the medians over the rounds (min and max over all). "
+        "Error: the "
         "colour seen in the window (8 bits a channel) against the exact reference "
         "(vtkHAVSReferenceRenderer); float RMSE / float max: the project's mappers' float "
         "result (each view drawn once more, untimed), on which MISSION.md defines exact "
@@ -1688,6 +1759,8 @@ int main(int argc, char* argv[])
       o.Views = std::min(14, std::max(1, std::atoi(next().c_str())));
     else if (a == "--repeats")
       o.Repeats = std::max(1, std::atoi(next().c_str()));
+    else if (a == "--rounds")
+      o.Rounds = std::max(1, std::atoi(next().c_str()));
     else if (a == "--budget")
       o.Budget = std::atof(next().c_str());
     else if (a == "--datasets")
@@ -1707,7 +1780,7 @@ int main(int argc, char* argv[])
       std::cout
         << "usage: havs_benchmark [--quick] [--size N | --sizes a,b] [--views N] [--repeats N] "
            "[--datasets a,b] [--configs a,b] [--output-dir DIR] [--cache-dir DIR] "
-           "[--budget SECONDS] [--from-csv FILE] [--dump-case DIR]\n";
+           "[--budget SECONDS] [--from-csv FILE] [--dump-case DIR] [--rounds N]\n";
       return a == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
     }
   }
@@ -1794,25 +1867,52 @@ int main(int argc, char* argv[])
         {
           configs.insert(configs.begin(), "reference");
         }
-        for (const std::string& config : configs)
+        // Each round runs every configuration once (the reference only in
+        // the first); the rows are merged over the rounds (MergeRounds).
+        const size_t first = rows.size();
+        std::map<std::string, std::vector<Row>> rounds;
+        for (int round = 0; round < o.Rounds; ++round)
         {
-          std::ostringstream cmd;
-          cmd << "'" << o.Self << "' --worker --datasets " << dataset << " --configs " << config
-              << " --size " << size << " --views " << o.Views << " --repeats " << o.Repeats
-              << " --budget " << o.Budget << " --cache-dir '" << o.CacheDir << "' 2>/dev/null";
-          std::cerr << "havs_benchmark: " << dataset << " / " << config << std::endl;
-          Row r = RunChild(cmd.str());
-          if (r.empty())
+          for (const std::string& config : configs)
           {
-            std::cerr << "havs_benchmark: " << dataset << " / " << config << " failed" << std::endl;
-            continue;
+            if (round > 0 && config == "reference")
+            {
+              continue;
+            }
+            std::ostringstream cmd;
+            cmd << "'" << o.Self << "' --worker --datasets " << dataset << " --configs " << config
+                << " --size " << size << " --views " << o.Views << " --repeats " << o.Repeats
+                << " --budget " << o.Budget << " --cache-dir '" << o.CacheDir << "' 2>/dev/null";
+            std::cerr << "havs_benchmark: " << dataset << " / " << config;
+            if (o.Rounds > 1)
+            {
+              std::cerr << " (round " << round + 1 << " of " << o.Rounds << ")";
+            }
+            std::cerr << std::endl;
+            Row r = RunChild(cmd.str());
+            if (r.empty())
+            {
+              std::cerr << "havs_benchmark: " << dataset << " / " << config << " failed"
+                        << std::endl;
+              continue;
+            }
+            r["command"] = command;
+            rounds[config].push_back(r);
+            // After every row: a long run keeps what it measured.
+            rows.resize(first);
+            for (const std::string& c : configs)
+            {
+              if (rounds.count(c))
+              {
+                Row m = MergeRounds(rounds[c]);
+                const double ms = std::atof(m["ms_median"].c_str());
+                m["mtets_per_s"] =
+                  std::to_string(ms > 0 ? std::atof(m["tets"].c_str()) / (ms * 1000.0) : NAN);
+                rows.push_back(m);
+              }
+            }
+            WriteCsv(rows, csvPath);
           }
-          const double ms = std::atof(r["ms_median"].c_str());
-          r["mtets_per_s"] =
-            std::to_string(ms > 0 ? std::atof(r["tets"].c_str()) / (ms * 1000.0) : NAN);
-          r["command"] = command;
-          rows.push_back(r);
-          WriteCsv(rows, csvPath); // after every row: a long run keeps what it measured
         }
       }
     }

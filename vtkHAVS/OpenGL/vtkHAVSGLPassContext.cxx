@@ -61,6 +61,7 @@ vtkHAVSKBufferShaders::Features vtkHAVSGLPassContext::ShaderFeatures() const
   f.Opaque = this->Request.Opaque;
   f.CellScalars = this->Request.CellScalars;
   f.Clipping = this->Request.Planes && this->Request.Planes->GetNumberOfPlanes() > 0;
+  f.Projection = this->Request.View ? (this->Request.View->Parallel ? 1 : 0) : -1;
   return f;
 }
 

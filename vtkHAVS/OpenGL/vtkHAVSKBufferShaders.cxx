@@ -55,7 +55,8 @@ std::string Compose(const char* templ, int k, int pixelStride,
           << "#define HAVS_TAGGING " << (features.Tagging ? 1 : 0) << "\n"
           << "#define HAVS_OPAQUE " << (features.Opaque ? 1 : 0) << "\n"
           << "#define HAVS_CELL_SCALARS " << (features.CellScalars ? 1 : 0) << "\n"
-          << "#define HAVS_CLIPPING " << (features.Clipping ? 1 : 0) << "\n";
+          << "#define HAVS_CLIPPING " << (features.Clipping ? 1 : 0) << "\n"
+          << "#define HAVS_PROJECTION " << features.Projection << "\n";
   Replace(source, "//HAVS::Defines", defines.str());
   Replace(source, "//HAVS::KBufferLib", vtkHAVSKBufferLib);
   return source;
