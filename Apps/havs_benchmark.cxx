@@ -1073,8 +1073,8 @@ Row MergeRounds(const std::vector<Row>& rounds)
     const std::vector<double> v = values(key);
     if (!v.empty())
     {
-      merged[key] = text(v.size() % 2 ? v[v.size() / 2]
-                                      : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
+      merged[key] =
+        text(v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
     }
   }
   const std::vector<double> lows = values("ms_min"), highs = values("ms_max"),
