@@ -3,7 +3,9 @@
 
 - benchmark_time_error.png: time against RMSE, one panel per data set (at one image size:
   512 where measured, else the largest), one marker and colour per mapper family, the Pareto
-  front, the face-raster bound as a vertical line;
+  front, the face-raster bound as a vertical line; the error is the float result's where the
+  row has one (the project's mappers), else the 8-bit window's (VTK's mappers, hollow
+  markers), with the window's rounding floor as a grey line;
 - benchmark_stages.png: HAVS's frame stages as stacked bars, one panel per data set;
 - benchmark_time_tets.png, benchmark_time_pixels.png: time against tets and pixels;
 - benchmark_lod.png (when the CSV has havs-lod-* rows): the level of detail, time and RMSE
@@ -19,6 +21,7 @@ try:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.ticker import FuncFormatter
 except ImportError:
     print("havs_benchmark_plots: matplotlib is not installed (python3-matplotlib); no plots")
     sys.exit(0)
@@ -55,6 +58,7 @@ FAMILIES = [
     ("VTK ZSweep", "v", "tab:brown"),
     ("VTK RayCast", "X", "tab:gray"),
     ("cell projection (MPVO cell order)", "h", "tab:cyan"),
+    ("GPU ray caster (tetraycast)", "p", "tab:pink"),
 ]
 
 
@@ -71,6 +75,8 @@ def family(config):
         return FAMILIES[1]
     if config.startswith("cellproj"):
         return FAMILIES[8]
+    if config.startswith("tetraycast"):
+        return FAMILIES[9]
     return {"pt": FAMILIES[5], "zsweep": FAMILIES[6], "raycast": FAMILIES[7]}.get(config)
 
 
@@ -99,13 +105,20 @@ for index, dataset in enumerate(datasets):
     size = plot_size(dataset)
     here = [r for r in rows if r["dataset"] == dataset and number(r.get("size")) == size]
     points = []
+    floors = []
     for r in here:
-        f, t, e = family(r["config"]), number(r["ms_median"]), number(r["rmse"])
+        f, t = family(r["config"]), number(r["ms_median"])
+        e, window = number(r.get("float_rmse")), False
+        if e is None:
+            e, window = number(r["rmse"]), True
+        if number(r.get("floor_rmse")) is not None:
+            floors.append(number(r.get("floor_rmse")))
         if f and t and e is not None:
             e = max(e, 1e-6)  # an exact zero on log axes
             points.append((t, e))
-            h = ax.scatter([t], [e], marker=f[1], color=f[2], s=60 if f[1] == "*" else 30,
-                           edgecolors="black", linewidths=0.3, zorder=3)
+            h = ax.scatter([t], [e], marker=f[1], s=60 if f[1] == "*" else 30,
+                           color="none" if window else f[2], edgecolors=f[2] if window else "black",
+                           linewidths=1.0 if window else 0.3, zorder=3)
             handles.setdefault(f[0], h)
     front, best = [], math.inf
     for t, e in sorted(points):
@@ -121,21 +134,31 @@ for index, dataset in enumerate(datasets):
             h = ax.axvline(number(r["ms_median"]), color="tab:cyan", linewidth=1.2, zorder=1)
             handles.setdefault("face-raster bound", h)
     ax.axhline(5e-4, color="tab:red", linewidth=0.6, linestyle=":", zorder=1)
+    if floors:
+        h = ax.axhline(max(floors), color="gray", linewidth=0.8, linestyle="-.", zorder=1)
+        handles.setdefault("8-bit rounding floor (window errors)", h)
     ax.set_xscale("log")
     ax.set_yscale("log")
+    # Plain numbers at 1, 2, 3, 5 x 10^n only: narrow ranges otherwise crowd the axis.
+    plain = FuncFormatter(lambda v, _: f"{v:g}" if round(v / 10 ** math.floor(math.log10(v)), 6)
+                          in (1, 2, 3, 5) else "")
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_formatter(plain)
+        axis.set_minor_formatter(plain)
     tets = here[0]["tets"] if here else "?"
     ax.set_title(f"{dataset} ({tets} tets, {int(size) if size else '?'}²)", fontsize=9)
     ax.set_xlabel("ms per frame (median)", fontsize=8)
-    ax.set_ylabel("RMSE against the exact reference", fontsize=8)
-    ax.tick_params(labelsize=7)
+    ax.set_ylabel("RMSE against the exact reference (float result)", fontsize=8)
+    ax.tick_params(which="both", labelsize=7)
 for index in range(len(datasets), nrows * ncols):
     axes[index // ncols][index % ncols].axis("off")
-order = [f[0] for f in FAMILIES] + ["Pareto front", "face-raster bound"]
+order = [f[0] for f in FAMILIES] + ["Pareto front", "face-raster bound",
+                                    "8-bit rounding floor (window errors)"]
 labels = [name for name in order if name in handles]
 fig.legend([handles[n] for n in labels], labels, loc="lower center", ncol=min(5, len(labels)),
            fontsize=8, frameon=False)
-fig.suptitle("vtkHAVS benchmark: time against error (dotted red: the exact bound, RMSE 5e-4)",
-             fontsize=10)
+fig.suptitle("vtkHAVS benchmark: time against error (dotted red: the exact bound, RMSE 5e-4; "
+             "hollow markers: measured in the 8-bit window)", fontsize=10)
 fig.tight_layout(rect=(0, 0.07, 1, 0.96))
 fig.savefig(f"{out}/benchmark_time_error.png", dpi=110)
 
