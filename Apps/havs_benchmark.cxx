@@ -1074,8 +1074,7 @@ Row MergeRounds(const std::vector<Row>& rounds)
     const std::vector<double> v = values(key);
     if (!v.empty())
     {
-      merged[key] =
-        text(v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
+      merged[key] = text(Median(v));
     }
   }
   const std::vector<double> lows = values("ms_min"), highs = values("ms_max"),
@@ -1159,6 +1158,12 @@ double Value(const Row& r, const char* key)
   return it == r.end() ? NAN : std::atof(it->second.c_str());
 }
 
+/// MISSION.md's exact: RMSE < 5e-4 and max < 0.01 (on the float result).
+bool IsExact(double rmse, double max)
+{
+  return rmse < 5e-4 && max < 0.01;
+}
+
 /// A row's error and whether it is exact (MISSION.md: RMSE < 5e-4 and max <
 /// 0.01 on the float result). Rows with a float result (the project's mappers,
 /// runs from this version on) are judged on it and also give the 8-bit
@@ -1179,7 +1184,7 @@ std::string ErrorText(const Row& r)
   {
     text = "RMSE " + Cell(r, "rmse", "%.5f") + ", max " + Cell(r, "max", "%.4f");
   }
-  text += rmse < 5e-4 && max < 0.01 ? " (exact" : " (not exact";
+  text += IsExact(rmse, max) ? " (exact" : " (not exact";
   text += hasFloat ? ": RMSE < 5e-4 and max < 0.01 on the float result)"
                    : ": RMSE < 5e-4 and max < 0.01, on the 8-bit window)";
   if (std::isfinite(Value(r, "folded_px")) && Value(r, "folded_px") > 0)
@@ -1676,7 +1681,7 @@ std::string Report(const std::vector<Row>& allRows, const Options& o, const std:
         for (const Row* r : plain ? rowsOf(name) : std::vector<const Row*>())
         {
           const double e = Value(*r, "float_rmse"), m = Value(*r, "float_max");
-          if (std::isfinite(e) && e < 5e-4 && m < 0.01 &&
+          if (std::isfinite(e) && IsExact(e, m) &&
             (!centroid || Value(*r, "ms_median") < Value(*centroid, "ms_median")))
           {
             centroid = r;

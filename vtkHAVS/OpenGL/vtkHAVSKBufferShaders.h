@@ -36,8 +36,7 @@ struct vtkHAVSKBufferShaderFeatures
   bool Opaque = true;          ///< opaque geometry may end the rays (a per-fragment depth fetch)
   bool CellScalars = false;    ///< a fragment carries the scalar of the cell behind it
   bool Clipping = true;        ///< clipping or near planes cut the mesh (a loop over them)
-  int Projection =
-    -1; ///< 0 perspective, 1 parallel (compiled in), -1 chosen per frame by a uniform
+  int Projection = -1;         ///< 0 perspective, 1 parallel, -1 per frame (a uniform)
 };
 
 class VTKHAVSOPENGL_EXPORT vtkHAVSKBufferShaders
