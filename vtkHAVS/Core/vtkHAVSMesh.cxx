@@ -535,8 +535,16 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   {
     std::ostringstream w;
     w << this->Tessellation.UnrefinedNonLinearCells
-      << " non-linear cells (Lagrange or Bezier pyramids) are not refined by the higher-order "
-         "subdivision: they are split at their nodes.";
+      << " non-linear cells of types the higher-order subdivision does not know are not "
+         "refined: they are split at their nodes by VTK.";
+    this->Warnings.push_back(w.str());
+  }
+  if (this->Tessellation.CornerPyramids > 0)
+  {
+    std::ostringstream w;
+    w << this->Tessellation.CornerPyramids
+      << " Lagrange or Bezier pyramids are drawn as the linear pyramids of their five corners "
+         "(this VTK has no cell class to interpolate them).";
     this->Warnings.push_back(w.str());
   }
   if (this->Tessellation.LowerDimensionCells > 0)

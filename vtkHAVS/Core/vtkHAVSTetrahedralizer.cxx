@@ -28,6 +28,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkPyramid.h"
 #include "vtkSMPThreadLocalObject.h"
 #include "vtkSMPTools.h"
 #include "vtkTimerLog.h"
@@ -265,7 +266,24 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::AppendBlocks(
 
 namespace
 {
-/// An unstructured grid's cells whose point ids are all in range; nullptr
+/// Lagrange and Bezier pyramids: VTK 9.2 has no cell class for them (its
+/// vtkGenericCell makes them empty cells), so their shape functions are not
+/// available; they are taken as the linear pyramid of their corners (the
+/// first five nodes, as VTK orders every higher-order cell's).
+bool IsCornerPyramid(int type)
+{
+  return type == VTK_LAGRANGE_PYRAMID || type == VTK_BEZIER_PYRAMID;
+}
+
+/// A cell type's dimension (vtkCellTypes::GetDimension asks a vtkGenericCell,
+/// which says 0, and logs an error, for the pyramids above).
+int CellDimension(int type)
+{
+  return IsCornerPyramid(type) ? 3 : vtkCellTypes::GetDimension(type);
+}
+
+/// An unstructured grid's cells whose point ids are all in range (and
+/// Lagrange and Bezier pyramids with their five corners at least); nullptr
 /// when every cell is (then the input is used as it is). VTK's split reads a
 /// cell's points by id: a corrupt file's id must never reach it.
 vtkSmartPointer<vtkUnstructuredGrid> WithoutInvalidCells(vtkDataSet* data, vtkIdType& invalid)
@@ -284,6 +302,12 @@ vtkSmartPointer<vtkUnstructuredGrid> WithoutInvalidCells(vtkDataSet* data, vtkId
   for (vtkIdType c = 0; c < numberOfCells; ++c)
   {
     cells->GetCellAtId(c, ids);
+    if (IsCornerPyramid(grid->GetCellType(c)) && ids->GetNumberOfIds() < 5)
+    {
+      valid[c] = 0;
+      ++invalid;
+      continue;
+    }
     for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
     {
       const vtkIdType id = ids->GetId(i);
@@ -314,6 +338,85 @@ vtkSmartPointer<vtkUnstructuredGrid> WithoutInvalidCells(vtkDataSet* data, vtkId
     }
   }
   return kept;
+}
+
+/**
+ * Level 0's pyramids on their nodes: the 19-node (triquadratic) pyramids of
+ * `data` replaced by the linear pieces of their nodes' lattice of two
+ * segments per edge (level 1's lattice of the subdivision, which uses 14 of
+ * the 19 nodes: the corners, the edges' middles, the base's middle), and the
+ * Lagrange and Bezier pyramids by the linear pyramid of their corners; the
+ * other cells, the points and the point and cell data as they are; nullptr
+ * when there is no such pyramid. VTK's split of the 19 nodes cuts each
+ * triangular face around its middle node, and the base by local point order:
+ * neighbours (a quadratic tetrahedron's four sub-triangles, another pyramid's
+ * base) need not agree, and they crack (measured: 576 of 832 boundary
+ * triangles inside a shell). Here a triangular face is cut into the four
+ * sub-triangles of its edges' middles (as the canonical quadratic
+ * tetrahedron's) and the base into four quadrilaterals that the ordered
+ * triangulator splits by global point ids, the same from both sides. The
+ * pieces, as in RefinePyramid at n = 2: an upright pyramid on each base
+ * quarter and on the middle layer, one inverted under the middle layer, four
+ * tetrahedra across the base's inner edges.
+ */
+vtkSmartPointer<vtkUnstructuredGrid> WithPyramidsOnTheirNodes(
+  vtkDataSet* data, vtkIdType& triquadratic, vtkIdType& corners)
+{
+  triquadratic = corners = 0;
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
+  if (!grid)
+  {
+    return nullptr;
+  }
+  const vtkIdType numberOfCells = grid->GetNumberOfCells();
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  {
+    triquadratic += grid->GetCellType(c) == VTK_TRIQUADRATIC_PYRAMID ? 1 : 0;
+    corners += IsCornerPyramid(grid->GetCellType(c)) ? 1 : 0;
+  }
+  if (triquadratic + corners == 0)
+  {
+    return nullptr;
+  }
+  static const int kPieces[10][5] = { { 0, 5, 13, 8, 9 }, { 5, 1, 6, 13, 10 }, { 8, 13, 7, 3, 12 },
+    { 13, 6, 2, 7, 11 }, { 9, 10, 11, 12, 4 }, { 9, 12, 11, 10, 13 }, { 5, 13, 9, 10, -1 },
+    { 8, 13, 9, 12, -1 }, { 13, 6, 10, 11, -1 }, { 13, 7, 12, 11, -1 } };
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->SetPoints(grid->GetPoints());
+  out->GetPointData()->PassData(grid->GetPointData());
+  vtkCellData* outCD = out->GetCellData();
+  const vtkIdType outCells = numberOfCells + 9 * triquadratic;
+  outCD->CopyAllocate(grid->GetCellData(), outCells);
+  out->Allocate(outCells);
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  {
+    grid->GetCellPoints(c, ids);
+    const int type = grid->GetCellType(c);
+    if (IsCornerPyramid(type))
+    {
+      ids->SetNumberOfIds(5); // (five at least: WithoutInvalidCells)
+      outCD->CopyData(grid->GetCellData(), c, out->InsertNextCell(VTK_PYRAMID, ids));
+      continue;
+    }
+    if (type != VTK_TRIQUADRATIC_PYRAMID || ids->GetNumberOfIds() < 14)
+    {
+      outCD->CopyData(grid->GetCellData(), c, out->InsertNextCell(type, ids));
+      continue;
+    }
+    for (const auto& piece : kPieces)
+    {
+      const int n = piece[4] < 0 ? 4 : 5;
+      vtkIdType pts[5];
+      for (int i = 0; i < n; ++i)
+      {
+        pts[i] = ids->GetId(piece[i]);
+      }
+      const vtkIdType id = out->InsertNextCell(n == 4 ? VTK_TETRA : VTK_PYRAMID, n, pts);
+      outCD->CopyData(grid->GetCellData(), c, id);
+    }
+  }
+  return out;
 }
 }
 
@@ -351,6 +454,8 @@ Family FamilyOf(int type)
       return WedgeFamily;
     case VTK_QUADRATIC_PYRAMID:
     case VTK_TRIQUADRATIC_PYRAMID:
+    case VTK_LAGRANGE_PYRAMID: // (as the linear pyramid of their corners: see CornerPyramid)
+    case VTK_BEZIER_PYRAMID:
       return PyramidFamily;
     default:
       return NotRefined;
@@ -454,6 +559,24 @@ void GetCell(vtkUnstructuredGrid* input, vtkIdType c, vtkGenericCell* cell)
     {
       bw->SetRationalWeightsFromPointData(input->GetPointData(), npts);
     }
+  }
+}
+
+/// Cell `c` of `input` (a Lagrange or Bezier pyramid) as the linear pyramid
+/// of its corners, into `pyramid`.
+void CornerPyramid(vtkUnstructuredGrid* input, vtkIdType c, vtkPyramid* pyramid)
+{
+  vtkIdType npts = 0;
+  const vtkIdType* ids = nullptr;
+  vtkNew<vtkIdList> scratch;
+  input->GetCellPoints(c, npts, ids, scratch);
+  for (int i = 0; i < 5; ++i)
+  {
+    const vtkIdType id = ids[i]; // (five at least: WithoutInvalidCells)
+    double x[3];
+    input->GetPoint(id, x);
+    pyramid->GetPointIds()->SetId(i, id);
+    pyramid->GetPoints()->SetPoint(i, x);
   }
 }
 
@@ -798,13 +921,14 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::RefineHigherOrderCe
   for (vtkIdType c = 0; c < numberOfCells; ++c)
   {
     const int type = input->GetCellType(c);
-    if (vtkCellTypes::GetDimension(type) != 3 || vtkCellTypes::IsLinear(type))
+    if (CellDimension(type) != 3 || vtkCellTypes::IsLinear(type))
     {
       continue;
     }
     if (FamilyOf(type) != NotRefined)
     {
       refined.push_back(c);
+      rep.CornerPyramids += IsCornerPyramid(type) ? 1 : 0;
     }
     else
     {
@@ -820,18 +944,34 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::RefineHigherOrderCe
   // Each cell's lattice (in parallel: the cells are independent).
   std::vector<RefinedCell> cells(refined.size());
   {
-    vtkNew<vtkGenericCell> first; // a first GetCell on this thread, before the parallel ones
-    GetCell(input, refined[0], first);
+    // A first GetCell on this thread, before the parallel ones (not of a
+    // pyramid taken as its corners: VTK has no cell for it).
+    const auto first = std::find_if(refined.begin(), refined.end(),
+      [input](vtkIdType c) { return !IsCornerPyramid(input->GetCellType(c)); });
+    if (first != refined.end())
+    {
+      vtkNew<vtkGenericCell> cell;
+      GetCell(input, *first, cell);
+    }
   }
   vtkSMPThreadLocalObject<vtkGenericCell> threadCell;
+  vtkSMPThreadLocalObject<vtkPyramid> threadPyramid;
   vtkSMPTools::For(0, static_cast<vtkIdType>(refined.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
       vtkGenericCell* cell = threadCell.Local();
+      vtkPyramid* corners = threadPyramid.Local();
       for (vtkIdType r = begin; r < end; ++r)
       {
+        const int type = input->GetCellType(refined[r]);
+        if (IsCornerPyramid(type))
+        {
+          CornerPyramid(input, refined[r], corners);
+          RefineCell(corners, PyramidFamily, level, split, cells[r]);
+          continue;
+        }
         GetCell(input, refined[r], cell);
-        RefineCell(cell, FamilyOf(input->GetCellType(refined[r])), level, split, cells[r]);
+        RefineCell(cell, FamilyOf(type), level, split, cells[r]);
       }
     });
 
@@ -1082,6 +1222,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
     map->InputPoints = data->GetNumberOfPoints();
     data = tagged;
   }
+  vtkSmartPointer<vtkUnstructuredGrid> pyramidsOnNodes;
   vtkSmartPointer<vtkUnstructuredGrid> valid = WithoutInvalidCells(data, r.InvalidCells);
   if (valid)
   {
@@ -1097,7 +1238,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
     for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
     {
       const int type = data->GetCellType(c);
-      if (vtkCellTypes::GetDimension(type) < 3)
+      if (CellDimension(type) < 3)
       {
         ++r.LowerDimensionCells;
       }
@@ -1111,7 +1252,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
   for (vtkIdType c = 0; !refined && c < data->GetNumberOfCells(); ++c)
   {
     const int type = data->GetCellType(c);
-    const int dimension = vtkCellTypes::GetDimension(type);
+    const int dimension = CellDimension(type);
     if (dimension < 3)
     {
       ++r.LowerDimensionCells;
@@ -1123,6 +1264,18 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
           type == VTK_BEZIER_TETRAHEDRON
         ? 1
         : 0;
+    }
+  }
+  if (!refined && split == SplitOrdered)
+  {
+    // Level 0: the 19-node pyramids on their nodes' lattice (VTK's split
+    // cracks; the testing hook SplitLocalOrder keeps it: the control), the
+    // Lagrange and Bezier pyramids as their corners' pyramid.
+    vtkIdType triquadratic = 0;
+    if (auto onNodes = WithPyramidsOnTheirNodes(data, triquadratic, r.CornerPyramids))
+    {
+      pyramidsOnNodes = onNodes;
+      data = pyramidsOnNodes;
     }
   }
   vtkSmartPointer<vtkUnstructuredGrid> grid;

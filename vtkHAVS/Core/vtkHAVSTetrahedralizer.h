@@ -27,7 +27,11 @@
  * sides; Lagrange and Bezier tetrahedra of order p likewise (VTK's split of
  * them cracks too: measured at order 3), on their nodes' lattice of p
  * segments per edge by Freudenthal's triangulation, whose faces are the
- * regular lattice triangulation. Point and cell data travel with the points and cells, so cell
+ * regular lattice triangulation; 19-node pyramids likewise (VTK's split
+ * cracks too: measured), on the lattice of two segments per edge of their
+ * corners, edges' and base's middle nodes (the faces' middle nodes and the
+ * centre unused): a triangular face into the quadratic tetrahedron's four
+ * sub-triangles. Point and cell data travel with the points and cells, so cell
  * scalars stay exact per cell. Cells of dimension below 3 are left out and
  * counted.
  *
@@ -47,8 +51,11 @@
  * and triquadratic pyramids likewise: their lattice is the tetrahedral-
  * octahedral one (upright and inverted pyramids, tetrahedra between them;
  * on the base the hexahedron's refined face, on a triangular face the
- * tetrahedron's). Non-linear pyramids VTK 9.2 has no cell for (Lagrange,
- * Bezier) are not refined and counted.
+ * tetrahedron's). Lagrange and Bezier pyramids, which VTK 9.2 has no cell
+ * class for (no shape functions: vtkGenericCell makes them empty cells), are
+ * taken as the linear pyramid of their five corners, counted: at level 0 as
+ * it is, at levels n >= 1 refined on the same lattice (so their faces'
+ * points are their refined neighbours', no cracks), flat.
  */
 #ifndef vtkHAVSTetrahedralizer_h
 #define vtkHAVSTetrahedralizer_h
@@ -83,7 +90,9 @@ public:
     int HigherOrderSubdivision = 0;        ///< the level used
     vtkIdType RefinedCells = 0;            ///< non-linear cells refined (level >= 1)
     vtkIdType UnrefinedNonLinearCells = 0; ///< non-linear cells not refined
-    vtkIdType AddedPoints = 0;             ///< points the refinement added
+    /// Lagrange and Bezier pyramids, taken as the linear pyramid of their corners
+    vtkIdType CornerPyramids = 0;
+    vtkIdType AddedPoints = 0; ///< points the refinement added
   };
 
   /**
@@ -115,7 +124,8 @@ public:
    * How refined cells are split (a testing hook; only SplitOrdered is
    * crack-free): SplitLocalOrder cuts every piece into tetrahedra by its
    * local lattice order (a quadrilateral's diagonal chosen per cell) and, at
-   * level 0, leaves Lagrange and Bezier tetrahedra to VTK's own split;
+   * level 0, leaves Lagrange and Bezier tetrahedra and 19-node pyramids to
+   * VTK's own split;
    * SplitUnmerged gives every refined cell its own new points.
    */
   enum SubdivisionSplit
