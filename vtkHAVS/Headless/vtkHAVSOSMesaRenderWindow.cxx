@@ -16,7 +16,9 @@
 
 // After the GL loader's header: osmesa.h's own #include <GL/gl.h> is then a
 // no-op. Only its types and constants are used; the functions come from
-// dlsym (see OSMesaLibrary). GLEW undefines gl.h's GLAPI and GLAPIENTRY.
+// dlsym (see OSMesaLibrary). GLEW undefines gl.h's GLAPI, GLAPIENTRY and
+// APIENTRY (Mesa 22's osmesa.h, Debian 12, uses GLAPIENTRY; Mesa 24's,
+// Debian 13, APIENTRY).
 #ifndef GLAPI
 #define GLAPI extern
 #define HAVS_UNDEF_GLAPI
@@ -25,12 +27,19 @@
 #define GLAPIENTRY
 #define HAVS_UNDEF_GLAPIENTRY
 #endif
+#ifndef APIENTRY
+#define APIENTRY
+#define HAVS_UNDEF_APIENTRY
+#endif
 #include <GL/osmesa.h>
 #ifdef HAVS_UNDEF_GLAPI
 #undef GLAPI
 #endif
 #ifdef HAVS_UNDEF_GLAPIENTRY
 #undef GLAPIENTRY
+#endif
+#ifdef HAVS_UNDEF_APIENTRY
+#undef APIENTRY
 #endif
 
 #include <EGL/egl.h>
