@@ -47,6 +47,10 @@ OpticalSample Evaluate(vtkVolumeProperty* property, int component, double s)
   return out;
 }
 
+/// Below this transmittance the table's quadrature stops: what lies behind
+/// changes an entry by less than this times the largest colour.
+constexpr double OpaqueTransmittance = 1e-12;
+
 /// Composites one sub-step of length h between samples a and b: extinction
 /// and colour linear inside, attenuation exact for the mean extinction.
 inline void CompositeStep(const OpticalSample& a, const OpticalSample& b, double attenuation,
@@ -351,11 +355,18 @@ bool vtkHAVSPreIntegrationTable::Build(
             unitAttenuation[j] =
               logarithmic ? meanTau * share : std::exp(-meanTau * lengthStep * share);
           }
+          // Early termination: once the transmittance is below
+          // OpaqueTransmittance the sub-steps behind it add less than that
+          // (times the largest colour) to any channel. The transmittance
+          // after sub-step j only falls as the length grows, so a sub-step
+          // cut at one layer is cut at every longer one: `active` only
+          // shrinks, and the attenuations beyond it are never needed again.
+          int active = steps;
           for (int l = 1; l < nl; ++l)
           {
             double color[3] = { 0, 0, 0 };
             double transmittance = 1.0;
-            for (int j = 0; j < steps; ++j)
+            for (int j = 0; j < active; ++j)
             {
               if (logarithmic)
               {
@@ -366,6 +377,11 @@ bool vtkHAVSPreIntegrationTable::Build(
                 attenuation[j] *= unitAttenuation[j];
               }
               CompositeStep(sample(j), sample(j + 1), attenuation[j], color, transmittance);
+              if (transmittance < OpaqueTransmittance)
+              {
+                active = j + 1;
+                break;
+              }
             }
             float* out = entry(f, b, l);
             out[0] = static_cast<float>(color[0]);

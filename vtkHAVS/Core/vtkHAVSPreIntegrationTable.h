@@ -31,6 +31,9 @@
  * a second-order quadrature whose error shrinks with the square of
  * SubdivisionsPerInterval. ExactIntegration integrates each entry adaptively
  * from the functions instead (IntegrateSegment, error <= 1e-6; slow).
+ * An entry's quadrature stops where the transmittance falls below 1e-12
+ * (what lies behind changes it by less than that times the largest colour):
+ * long, opaque segments cost a few sub-steps, not all of them.
  * Rows are filled in parallel (vtkSMPTools).
  *
  * The length axis is linear (L = u MaxLength) unless the longest segment
