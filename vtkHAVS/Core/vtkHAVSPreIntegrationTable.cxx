@@ -47,18 +47,55 @@ OpticalSample Evaluate(vtkVolumeProperty* property, int component, double s)
   return out;
 }
 
-/// Composites one sub-step of length h between samples a and b: extinction
-/// and colour linear inside, attenuation exact for the mean extinction.
-inline void CompositeStep(const OpticalSample& a, const OpticalSample& b, double attenuation,
-  double color[3], double& transmittance)
+/// Below this transmittance the table's quadrature stops: what lies behind
+/// changes an entry by less than this times the largest colour.
+constexpr double OpaqueTransmittance = 1e-12;
+
+/// Composites one sub-step between samples a and b of optical depth `depth`
+/// (its mean extinction times its length; attenuation = exp(-depth);
+/// inverseDepth = 1 / depth, from the callers' reciprocals: a multiplication
+/// here, not a division).
+/// Extinction and colour are linear inside; the attenuation is exact for
+/// the mean extinction kappa. Within the sub-step the light emitted at
+/// depth t kappa is seen through exp(-kappa t); with the emission tau c
+/// linear, that weighs the ends by tau_a ca and tau_b cb, where
+///   ca = 1 - (1 - A) / x,   cb = (1 - A) / x - A   (x = depth, A = attenuation)
+/// are kappa times the integrals of (1 - t/h) exp(-kappa t) and
+/// (t/h) exp(-kappa t) over the sub-step (ca + cb = 1 - A). The colour is the
+/// weighted mean of the ends' colours, times the sub-step's opacity 1 - A:
+/// exact for a constant colour and for an opaque sub-step (its front
+/// colour), the tau-weighted mean of the trapezoid rule for a thin one.
+/// (The unnormalized closed form (tau_a c_a ca + tau_b c_b cb) / kappa tends
+/// to c_a tau_a / kappa for an opaque sub-step: wrong by the extinction's
+/// change across it, and black where tau_a = 0.)
+inline void CompositeStep(const OpticalSample& a, const OpticalSample& b, double depth,
+  double inverseDepth, double attenuation, double color[3], double& transmittance)
 {
   const double stepAlpha = 1.0 - attenuation;
-  const double w = a.Tau + b.Tau;
+  // ca / x and cb / x: their series below x = 1e-3 (where 1 - (1 - A) / x
+  // cancels; truncation < 2e-14 relative), else the closed form.
+  double wa, wb;
+  const double x = depth;
+  if (x < 1e-3)
+  {
+    wa = 0.5 - x * (1.0 / 6 - x * (1.0 / 24 - x * (1.0 / 120)));
+    wb = 0.5 - x * (1.0 / 3 - x * (1.0 / 8 - x * (1.0 / 30)));
+  }
+  else
+  {
+    const double r = stepAlpha * inverseDepth;
+    wa = 1.0 - r;
+    wb = r - attenuation;
+  }
+  wa *= a.Tau;
+  wb *= b.Tau;
+  const double w = wa + wb;
   if (w > 0.0)
   {
+    const double k = transmittance * stepAlpha / w;
     for (int c = 0; c < 3; ++c)
     {
-      color[c] += transmittance * stepAlpha * (a.Color[c] * a.Tau + b.Color[c] * b.Tau) / w;
+      color[c] += k * (wa * a.Color[c] + wb * b.Color[c]);
     }
   }
   transmittance *= attenuation;
@@ -75,7 +112,9 @@ void IntegrateSteps(vtkVolumeProperty* property, int component, double sf, doubl
   for (int j = 1; j <= n; ++j)
   {
     const OpticalSample b = Evaluate(property, component, sf + (sb - sf) * j / n);
-    CompositeStep(a, b, std::exp(-0.5 * h * (a.Tau + b.Tau)), color, transmittance);
+    const double depth = 0.5 * h * (a.Tau + b.Tau);
+    CompositeStep(
+      a, b, depth, depth > 0.0 ? 1.0 / depth : 0.0, std::exp(-depth), color, transmittance);
     a = b;
   }
   rgba[0] = color[0];
@@ -289,10 +328,11 @@ bool vtkHAVSPreIntegrationTable::Build(
   }
   this->LengthLogScale = maxLength * tauMax > 16.0 ? 4.0 * tauMax : 0.0;
   const bool logarithmic = this->LengthLogScale > 0.0;
-  std::vector<double> layerLength(nl);
+  std::vector<double> layerLength(nl), inverseLayerLength(nl);
   for (int l = 0; l < nl; ++l)
   {
     layerLength[l] = this->LengthAt(static_cast<double>(l) / (nl - 1));
+    inverseLayerLength[l] = layerLength[l] > 0.0 ? 1.0 / layerLength[l] : 0.0;
   }
 
   float* table = this->Table.data();
@@ -327,7 +367,7 @@ bool vtkHAVSPreIntegrationTable::Build(
     vtkSMPTools::For(0, static_cast<vtkIdType>(ns) * ns,
       [&](vtkIdType begin, vtkIdType end)
       {
-        std::vector<double> unitAttenuation, attenuation;
+        std::vector<double> unitDepth, inverseUnitDepth, unitAttenuation, attenuation;
         for (vtkIdType pair = begin; pair < end; ++pair)
         {
           const int f = static_cast<int>(pair % ns), b = static_cast<int>(pair / ns);
@@ -337,6 +377,8 @@ bool vtkHAVSPreIntegrationTable::Build(
           auto at = [&](int j) { return f == b ? first : first + direction * j; };
           auto sample = [&](int j) -> const OpticalSample& { return fine[at(j)]; };
           const double whole = std::fabs(positions[tableSample[b]] - positions[first]);
+          unitDepth.resize(steps);
+          inverseUnitDepth.resize(steps);
           unitAttenuation.resize(steps);
           attenuation.assign(steps, 1.0);
           for (int j = 0; j < steps; ++j)
@@ -344,28 +386,43 @@ bool vtkHAVSPreIntegrationTable::Build(
             // The sub-step's share of the segment's length (its scalar span's share).
             const double share =
               f == b ? 1.0 : std::fabs(positions[at(j + 1)] - positions[at(j)]) / whole;
-            const double meanTau = 0.5 * (sample(j).Tau + sample(j + 1).Tau);
-            // Linear axis: the attenuation per layer, raised by one
-            // multiplication per layer; logarithmic: the extinction per
-            // unit length, exponentiated at each layer's length.
-            unitAttenuation[j] =
-              logarithmic ? meanTau * share : std::exp(-meanTau * lengthStep * share);
+            // The optical depth per unit segment length. Linear axis: the
+            // attenuation per layer too, raised by one multiplication per
+            // layer; logarithmic: exponentiated at each layer's length.
+            unitDepth[j] = 0.5 * (sample(j).Tau + sample(j + 1).Tau) * share;
+            // (0 where the depth is 0: CompositeStep then uses its series.)
+            inverseUnitDepth[j] = unitDepth[j] > 0.0 ? 1.0 / unitDepth[j] : 0.0;
+            unitAttenuation[j] = logarithmic ? 0.0 : std::exp(-unitDepth[j] * lengthStep);
           }
+          // Early termination: once the transmittance is below
+          // OpaqueTransmittance the sub-steps behind it add less than that
+          // (times the largest colour) to any channel. The transmittance
+          // after sub-step j only falls as the length grows, so a sub-step
+          // cut at one layer is cut at every longer one: `active` only
+          // shrinks, and the attenuations beyond it are never needed again.
+          int active = steps;
           for (int l = 1; l < nl; ++l)
           {
             double color[3] = { 0, 0, 0 };
             double transmittance = 1.0;
-            for (int j = 0; j < steps; ++j)
+            for (int j = 0; j < active; ++j)
             {
+              const double depth = unitDepth[j] * layerLength[l];
               if (logarithmic)
               {
-                attenuation[j] = std::exp(-unitAttenuation[j] * layerLength[l]);
+                attenuation[j] = std::exp(-depth);
               }
               else
               {
                 attenuation[j] *= unitAttenuation[j];
               }
-              CompositeStep(sample(j), sample(j + 1), attenuation[j], color, transmittance);
+              CompositeStep(sample(j), sample(j + 1), depth,
+                inverseUnitDepth[j] * inverseLayerLength[l], attenuation[j], color, transmittance);
+              if (transmittance < OpaqueTransmittance)
+              {
+                active = j + 1;
+                break;
+              }
             }
             float* out = entry(f, b, l);
             out[0] = static_cast<float>(color[0]);

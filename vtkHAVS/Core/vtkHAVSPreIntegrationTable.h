@@ -27,10 +27,16 @@
  * functions' own nodes are added (so a spike narrower than a sub-step is
  * integrated, not stepped over). Each entry is then
  * integrated over the fine samples the segment crosses, tau and colour linear
- * in each sub-step, the sub-step's attenuation exact for its mean extinction:
+ * in each sub-step, the sub-step's attenuation exact for its mean extinction
+ * and its colour the mean of its ends' colours weighted by where the light
+ * they emit is seen from (exact for an opaque sub-step: its front colour):
  * a second-order quadrature whose error shrinks with the square of
- * SubdivisionsPerInterval. ExactIntegration integrates each entry adaptively
+ * SubdivisionsPerInterval, and holds for long, optically thick segments
+ * (issue 20). ExactIntegration integrates each entry adaptively
  * from the functions instead (IntegrateSegment, error <= 1e-6; slow).
+ * An entry's quadrature stops where the transmittance falls below 1e-12
+ * (what lies behind changes it by less than that times the largest colour):
+ * long, opaque segments cost a few sub-steps, not all of them.
  * Rows are filled in parallel (vtkSMPTools).
  *
  * The length axis is linear (L = u MaxLength) unless the longest segment
