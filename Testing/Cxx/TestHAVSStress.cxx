@@ -716,7 +716,8 @@ int BadCells(bool allViews)
 /// camera, finite, the reference covering more than `minCovered` pixels;
 /// control: the reference of the view turned by 25 degrees must differ.
 void CheckView(const std::string& what, const std::vector<float>& image, vtkUnstructuredGrid* grid,
-  vtkVolumeProperty* property, vtkCamera* camera, int size, int minCovered, double rmseBound = 5e-4)
+  vtkVolumeProperty* property, vtkCamera* camera, int size, int minCovered, double rmseBound = 5e-4,
+  double maxBound = 0.01)
 {
   const auto exact = ReferenceImage(grid, property, camera, size, size);
   const size_t covered = CoveredPixels(exact);
@@ -729,9 +730,10 @@ void CheckView(const std::string& what, const std::vector<float>& image, vtkUnst
   std::printf("    %zu pixels covered\n", covered);
   havstest::Check(covered > static_cast<size_t>(minCovered), what + ": the mesh is seen");
   auto within = [&](const havstest::ImageDifference& e)
-  { return e.RMSE < rmseBound && e.Max < 0.01; };
+  { return e.RMSE < rmseBound && e.Max < maxBound; };
   havstest::Check(within(d) && havstest::AllFinite(image),
-    what + ": within RMSE " + std::to_string(rmseBound) + ", max 0.01, and finite");
+    what + ": within RMSE " + std::to_string(rmseBound) + ", max " + std::to_string(maxBound) +
+      ", and finite");
   havstest::Check(!within(c), what + ": control, another view fails");
 }
 
@@ -842,9 +844,11 @@ vtkSmartPointer<vtkUnstructuredGrid> MakeElongated(double length)
 /// table's logarithmic length axis and the parallel camera's eye moved near
 /// the volume are the candidates.)
 ///
-/// Limit this mesh shows (issue 20, open; measured, not checked): the cell
-/// projection along the axis: RMSE 5.8e-3, max 0.14 (on the pixel
-/// diagonals; 0.19 before its parallel-face bound was lowered).
+/// Limit this mesh shows: the cell projection along the axis, where rays on
+/// the pixel diagonals run within 1e-6 (relative) of the needles' diagonal
+/// faces over their whole 1e6 length: RMSE 5.8e-3, max 0.14 (0.19 before its
+/// parallel-face bound was lowered). Checked against a stated bound, RMSE
+/// 1e-2 and max 0.2 (the turned view's control: RMSE 0.35, max 0.83).
 int Elongated()
 {
   const double length = 1e6;
@@ -867,7 +871,7 @@ int Elongated()
   };
   const double m = 1.5e6; // the middle
   const View views[] = {
-    { "along the axis, orthographic", true, { -10.0, 1.5, 1.5 }, { 3e6, 1.5, 1.5 }, length, false,
+    { "along the axis, orthographic", true, { -10.0, 1.5, 1.5 }, { 3e6, 1.5, 1.5 }, length, true,
       3.1 * length + 20.0, 5e-4 },
     { "the middle from 10 away, perspective", false, { m, -10.0, 1.5 }, { m, 1.5, 1.5 }, 5.0, true,
       30.0, 1e-3 },
@@ -903,8 +907,10 @@ int Elongated()
       const std::string what = std::string(Name(cells)) + ", elongated, " + view.Name;
       std::printf("  clipping range %.3g .. %.3g\n", camera->GetClippingRange()[0],
         camera->GetClippingRange()[1]);
+      // The cell projection along the axis: a stated bound (see above).
+      const bool axisCells = cells && &view == &views[0];
       CheckView(what, havstest::FloatResult(mapper), grid, property, camera, size, size * size / 20,
-        view.RMSEBound);
+        axisCells ? 1e-2 : view.RMSEBound, axisCells ? 0.2 : 0.01);
       havstest::Check(messages->Errors == 0 && messages->Warnings == 0, what + ": no message");
     }
   }
