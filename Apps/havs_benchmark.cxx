@@ -458,7 +458,7 @@ int RunWorker(const Options& o)
   // tetraycast, per view: the depth-peeling passes, the cells crossed per ray,
   // the share of the screen tiles in which rays started and their mean passes
   // (vtkHAVSRayCastMapper's last-frame counters).
-  std::vector<double> peelPasses, cellsPerRay, tilesUsed, tilePasses;
+  std::vector<double> peelPasses, cellsPerRay, tilesUsed, tilePasses, peelMs, castMs;
   if (config == "reference")
   {
     // The exact images of every view, computed once and cached before any
@@ -802,6 +802,11 @@ int RunWorker(const Options& o)
             passesInUsed += passes;
           }
           peelPasses.push_back(tetRayCast->GetLastPeelPasses());
+          // (GPU time from timestamp queries; NaN where the context has no timer.)
+          const double peelSeconds = tetRayCast->GetLastPeelSeconds();
+          const double castSeconds = tetRayCast->GetLastCastSeconds();
+          peelMs.push_back(peelSeconds >= 0.0 ? 1000.0 * peelSeconds : NAN);
+          castMs.push_back(castSeconds >= 0.0 ? 1000.0 * castSeconds : NAN);
           cellsPerRay.push_back(
             rays > 0 ? static_cast<double>(tetRayCast->GetLastCellsCrossed()) / rays : 0.0);
           tilesUsed.push_back(perTile.empty() ? NAN : used / perTile.size());
@@ -929,7 +934,7 @@ int RunWorker(const Options& o)
               "lod_fraction=%.4f ranking_s=%.3f ranking_mb=%.1f lod_target_ms=%.0f "
               "lod_within25=%.3f lod_still=%.3f lod_trace=%s peel_passes=%.1f cells_per_ray=%.2f "
               "tiles_used=%.4f tile_passes=%.3f float_rmse=%.6f float_max=%.6f floor_rmse=%.6f "
-              "folded_px=%.0f\n",
+              "folded_px=%.0f peel_ms=%.3f cast_ms=%.3f\n",
     dataset.c_str(), config.c_str(), o.Size, static_cast<long long>(tets), viewsDone, frame.size(),
     Median(frame), frame.empty() ? NAN : *std::min_element(frame.begin(), frame.end()),
     frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort),
@@ -939,7 +944,7 @@ int RunWorker(const Options& o)
     tableText.c_str(), skipped, culled, Median(lodFractions), rankingSeconds, rankingMB,
     1000.0 * lodTarget, lodWithin, lodStill, TraceText(lodTrace).c_str(), Median(peelPasses),
     Median(cellsPerRay), Median(tilesUsed), Median(tilePasses), floatRmse, floatMax, floorRmse,
-    foldedPixels);
+    foldedPixels, Median(peelMs), Median(castMs));
   return EXIT_SUCCESS;
 }
 
@@ -966,8 +971,8 @@ const char* const kColumns[] = { "dataset", "config", "size", "tets", "views", "
   "upload_ms", "readback_ms", "layers_ms", "mtets_per_s", "rmse", "max", "over1", "peak_mb", "smp",
   "threads", "table", "skipped", "culled", "lod_fraction", "ranking_s", "ranking_mb",
   "lod_target_ms", "lod_within25", "lod_still", "lod_trace", "peel_passes", "cells_per_ray",
-  "tiles_used", "tile_passes", "float_rmse", "float_max", "floor_rmse", "folded_px", "rounds",
-  "command" };
+  "tiles_used", "tile_passes", "float_rmse", "float_max", "floor_rmse", "folded_px", "peel_ms",
+  "cast_ms", "rounds", "command" };
 
 /// A CSV field, quoted where it holds a comma or a quote.
 std::string CsvField(const std::string& text)
@@ -1069,7 +1074,7 @@ Row MergeRounds(const std::vector<Row>& rounds)
     return std::string(buffer);
   };
   for (const char* key : { "ms_median", "sort_ms", "gather_ms", "draw_ms", "flush_ms",
-         "composite_ms", "upload_ms", "readback_ms", "layers_ms" })
+         "composite_ms", "upload_ms", "readback_ms", "layers_ms", "peel_ms", "cast_ms" })
   {
     const std::vector<double> v = values(key);
     if (!v.empty())
@@ -1728,7 +1733,13 @@ std::string Report(const std::vector<Row>& allRows, const Options& o, const std:
       {
         const Row& r = *row;
         md << "\nGPU ray casting (tetraycast, re-entries by depth peeling): "
-           << Cell(r, "ms_median", "%.1f") << " ms (draw " << Cell(r, "draw_ms", "%.1f") << "), "
+           << Cell(r, "ms_median", "%.1f") << " ms (draw " << Cell(r, "draw_ms", "%.1f");
+        if (std::isfinite(Value(r, "peel_ms")) && std::isfinite(Value(r, "cast_ms")))
+        {
+          md << ": peeling " << Cell(r, "peel_ms", "%.1f") << ", casting "
+             << Cell(r, "cast_ms", "%.1f") << ", GPU timestamps";
+        }
+        md << "), "
            << ErrorText(r) << "; per view (medians) " << Cell(r, "peel_passes", "%.0f")
            << " peeling passes, " << Cell(r, "cells_per_ray", "%.1f")
            << " cells crossed per ray, rays in " << Cell(r, "tiles_used", "%.2f")
@@ -1741,7 +1752,38 @@ std::string Report(const std::vector<Row>& allRows, const Options& o, const std:
             md << "; " << std::setprecision(3) << ms["tetraycast"] / ms[other] << "× " << other;
           }
         }
-        md << ".\n";
+        md << ".";
+        // Which wins, and why: per covered pixel HAVS shades about one
+        // fragment per face its ray crosses, about one per cell crossed (the
+        // cells a ray crosses, plus one per entry); the ray caster takes one
+        // walk step per cell crossed, plus one peeled boundary fragment per
+        // entry. The raster bound is what HAVS's fragments cost with nothing
+        // done in them.
+        if (ms.count("havs-default") && ms.count("raster-bound"))
+        {
+          const double versusHAVS = ms["tetraycast"] / ms["havs-default"];
+          const double versusRaster = ms["tetraycast"] / ms["raster-bound"];
+          md << " " << (versusHAVS < 1.0 ? "The ray caster wins here" : "HAVS wins here")
+             << ": both do about one unit of work per cell a ray crosses ("
+             << Cell(r, "cells_per_ray", "%.1f")
+             << " on average), HAVS a rasterized fragment with a k-buffer insertion, the ray "
+                "caster a walk step (four plane tests, a neighbour, a table look-up) in "
+                "registers; the walk "
+             << (versusRaster < 1.0 ? "costs less than a fragment that does nothing (the ray "
+                                      "caster takes "
+                                    : "costs more than a fragment that does nothing (the ray "
+                                      "caster takes ")
+             << std::setprecision(3) << versusRaster
+             << "× the raster bound, the time HAVS's faces take to rasterize with a trivial "
+                "shader)";
+          if (Value(r, "peel_passes") > 1.0)
+          {
+            md << ", and its " << Cell(r, "peel_passes", "%.0f")
+               << " peeling passes each rasterize the boundary again";
+          }
+          md << ".";
+        }
+        md << "\n";
       }
     }
     if (std::isfinite(havs6) &&

@@ -94,6 +94,7 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastPeelPasses = 0;
   this->LastRaysStarted = 0;
   this->LastCellsCrossed = 0;
+  this->LastPeelSeconds = this->LastCastSeconds = -1.0;
   this->LastSectionTriangles = 0;
   this->LastTileGrid[0] = this->LastTileGrid[1] = 0;
   this->LastTilePasses.clear();
@@ -192,6 +193,8 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     this->LastRaysStarted = static_cast<vtkIdType>(counts.Rays);
     this->LastCellsCrossed = static_cast<vtkIdType>(counts.Cells);
     this->LastDrawSeconds = counts.Seconds;
+    this->LastPeelSeconds = counts.PeelSeconds;
+    this->LastCastSeconds = counts.CastSeconds;
     this->LastTileGrid[0] = counts.TileGrid[0];
     this->LastTileGrid[1] = counts.TileGrid[1];
     this->LastTilePasses.swap(counts.TilePasses);
@@ -219,5 +222,6 @@ void vtkHAVSRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tiles: " << this->Tiles << ", TileSize: " << this->TileSize << "\n";
   os << indent << "Last frame: " << this->LastPeelPasses << " peel passes, "
      << this->LastRaysStarted << " rays, " << this->LastCellsCrossed << " cells crossed, "
-     << this->LastDrawSeconds << " s\n";
+     << this->LastDrawSeconds << " s (peeling " << this->LastPeelSeconds << " s, casting "
+     << this->LastCastSeconds << " s)\n";
 }

@@ -178,13 +178,17 @@ public:
   ///@{
   /**
    * The last frame: depth-peeling passes that started rays, rays started
-   * over all passes, cells crossed over all rays (segments integrated), and
-   * seconds of the draw (with the GPU finished).
+   * over all passes, cells crossed over all rays (segments integrated),
+   * seconds of the draw (with the GPU finished), and of it the GPU's seconds
+   * in the peeling draws and in the ray casts (GL timestamp queries around
+   * each stage of each pass; -1 where the context has no timer).
    */
   vtkGetMacro(LastPeelPasses, int);
   vtkGetMacro(LastRaysStarted, vtkIdType);
   vtkGetMacro(LastCellsCrossed, vtkIdType);
   vtkGetMacro(LastDrawSeconds, double);
+  vtkGetMacro(LastPeelSeconds, double);
+  vtkGetMacro(LastCastSeconds, double);
   ///@}
 
 #ifndef __VTK_WRAP__
@@ -218,6 +222,8 @@ public:
     long long Rays = 0;
     long long Cells = 0;
     double Seconds = 0.0;
+    double PeelSeconds = -1.0; ///< GPU time in the peeling draws (-1: not measured)
+    double CastSeconds = -1.0; ///< GPU time in the casts (-1: not measured)
     int TileGrid[2] = { 0, 0 };
     std::vector<int> TilePasses;
   };
@@ -257,6 +263,8 @@ private:
   vtkIdType LastRaysStarted = 0;
   vtkIdType LastCellsCrossed = 0;
   double LastDrawSeconds = 0.0;
+  double LastPeelSeconds = -1.0;
+  double LastCastSeconds = -1.0;
 
   vtkNew<vtkHAVSMesh> Mesh;
   vtkNew<vtkHAVSPreIntegrationTable> Table;

@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <vector>
 
 vtkStandardNewMacro(vtkOpenGLHAVSRayCastMapper);
 
@@ -351,6 +352,18 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   GLuint started = 0;
   int passes = 0;
   GLuint readBack[2] = { 0, 0 };
+  // The peel and cast split: a GL timestamp before the first peel and after
+  // each pass's peel and cast (read after the frame; the passes already wait
+  // for their counts, so the queries add no stall of their own).
+  std::vector<GLuint> stamps;
+  auto stamp = [&stamps]()
+  {
+    GLuint query = 0;
+    glGenQueries(1, &query);
+    glQueryCounter(query, GL_TIMESTAMP);
+    stamps.push_back(query);
+  };
+  stamp();
   for (int pass = 0; pass<frame.MaximumPasses&& this->BoundaryFaces> 0; ++pass)
   {
     // Peel: the nearest front-facing boundary entry beyond each ray's reach.
@@ -382,6 +395,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     glBindVertexArray(0);
     glFrontFace(GL_CCW);
     state->vtkglDisable(GL_CULL_FACE);
+    stamp();
     // Cast: walk the rays from their entries, the pass's colour under the result.
     cache->ReadyShaderProgram(cast);
     state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -403,6 +417,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     glBindVertexArray(this->TileArray);
     glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles);
     glBindVertexArray(0);
+    stamp();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
       GL_BUFFER_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountBuffer]);
@@ -417,6 +432,27 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   }
   glFinish();
   counts->Seconds = vtkTimerLog::GetUniversalTime() - t0;
+  if (stamps.size() >= 3)
+  {
+    // stamps: start, then per pass (peeled, cast).
+    std::vector<GLuint64> ns(stamps.size(), 0);
+    for (size_t i = 0; i < stamps.size(); ++i)
+    {
+      glGetQueryObjectui64v(stamps[i], GL_QUERY_RESULT, &ns[i]);
+    }
+    double peel = 0.0, castTime = 0.0;
+    for (size_t i = 1; i + 1 < ns.size(); i += 2)
+    {
+      peel += 1e-9 * static_cast<double>(ns[i] - ns[i - 1]);
+      castTime += 1e-9 * static_cast<double>(ns[i + 1] - ns[i]);
+    }
+    counts->PeelSeconds = peel;
+    counts->CastSeconds = castTime;
+  }
+  if (!stamps.empty())
+  {
+    glDeleteQueries(static_cast<GLsizei>(stamps.size()), stamps.data());
+  }
   counts->Passes = passes;
   counts->Rays = readBack[0];
   counts->Cells = readBack[1];
