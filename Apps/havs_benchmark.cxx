@@ -1739,8 +1739,7 @@ std::string Report(const std::vector<Row>& allRows, const Options& o, const std:
           md << ": peeling " << Cell(r, "peel_ms", "%.1f") << ", casting "
              << Cell(r, "cast_ms", "%.1f") << ", GPU timestamps";
         }
-        md << "), "
-           << ErrorText(r) << "; per view (medians) " << Cell(r, "peel_passes", "%.0f")
+        md << "), " << ErrorText(r) << "; per view (medians) " << Cell(r, "peel_passes", "%.0f")
            << " peeling passes, " << Cell(r, "cells_per_ray", "%.1f")
            << " cells crossed per ray, rays in " << Cell(r, "tiles_used", "%.2f")
            << " of the screen tiles with " << Cell(r, "tile_passes", "%.2f")

@@ -200,6 +200,22 @@ void vtkHAVSGLFrameTargets::ReadResult(std::vector<float>& rgba)
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::KeepResult()
+{
+  this->ReadResult(this->KeptResult);
+  this->KeptSize[0] = this->Size[0];
+  this->KeptSize[1] = this->Size[1];
+}
+
+//------------------------------------------------------------------------------
+const std::vector<float>* vtkHAVSGLFrameTargets::GetKeptResult(int size[2]) const
+{
+  size[0] = this->KeptSize[0];
+  size[1] = this->KeptSize[1];
+  return this->KeptResult.empty() ? nullptr : &this->KeptResult;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSGLFrameTargets::ResetViolationCounter()
 {
   const GLuint zero = 0;

@@ -76,6 +76,10 @@ public:
   vtkTextureObject* GetResult() { return this->Result; }
   /// Reads the result back (width * height RGBA floats, bottom row first).
   void ReadResult(std::vector<float>& rgba);
+  /// Reads the result back into the kept copy (the mappers' KeepFloatResult).
+  void KeepResult();
+  /// The kept copy and its size; nullptr before one.
+  const std::vector<float>* GetKeptResult(int size[2]) const;
 
   /// Zeroes the order-violation counter and binds it (binding 3).
   void ResetViolationCounter();
@@ -112,6 +116,8 @@ private:
   bool WarnedUnresolvedDepth = false;
   vtkSmartPointer<vtkTextureObject> Result;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResultFramebuffer;
+  std::vector<float> KeptResult;
+  int KeptSize[2] = { 0, 0 };
   GLuint ViolationCounter = 0;
   GLuint EmptyVertexArray = 0;
 };

@@ -305,9 +305,7 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
     vtkHAVSExtremumPass::ResolveBlend(window, this->Targets, this->GLTable, frame.Blend);
   if (frame.KeepResult)
   {
-    this->Targets->ReadResult(this->KeptResult);
-    this->KeptSize[0] = width;
-    this->KeptSize[1] = height;
+    this->Targets->KeepResult();
   }
   additive->Deactivate();
   table->Deactivate();
@@ -325,9 +323,7 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
 //------------------------------------------------------------------------------
 const std::vector<float>* vtkOpenGLHAVSCellProjectionMapper::GetKeptResult(int size[2])
 {
-  size[0] = this->KeptSize[0];
-  size[1] = this->KeptSize[1];
-  return this->KeptResult.empty() ? nullptr : &this->KeptResult;
+  return this->Targets->GetKeptResult(size);
 }
 
 //------------------------------------------------------------------------------

@@ -77,8 +77,6 @@ private:
   vtkMTimeType UploadedOrder = 0;
   vtkMTimeType UploadedSection = 0;
   size_t UploadedCells = 0; // tetrahedra in the index buffer (12 indices each)
-  std::vector<float> KeptResult;
-  int KeptSize[2] = { 0, 0 };
 };
 
 #endif

@@ -475,9 +475,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   }
   if (frame.KeepResult)
   {
-    this->Targets->ReadResult(this->KeptResult);
-    this->KeptSize[0] = width;
-    this->KeptSize[1] = height;
+    this->Targets->KeepResult();
   }
   additive->Deactivate();
   table->Deactivate();
@@ -495,9 +493,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
 //------------------------------------------------------------------------------
 const std::vector<float>* vtkOpenGLHAVSRayCastMapper::GetKeptResult(int size[2])
 {
-  size[0] = this->KeptSize[0];
-  size[1] = this->KeptSize[1];
-  return this->KeptResult.empty() ? nullptr : &this->KeptResult;
+  return this->Targets->GetKeptResult(size);
 }
 
 //------------------------------------------------------------------------------

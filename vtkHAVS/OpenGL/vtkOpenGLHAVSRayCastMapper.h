@@ -86,8 +86,6 @@ private:
   int Tetrahedra = 0;
   vtkMTimeType UploadedMesh = 0;
   vtkMTimeType UploadedTable = 0;
-  std::vector<float> KeptResult;
-  int KeptSize[2] = { 0, 0 };
 };
 
 #endif

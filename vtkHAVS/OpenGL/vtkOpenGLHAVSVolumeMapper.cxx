@@ -295,9 +295,7 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   }
   if (ok && request.KeepResult)
   {
-    this->Targets->ReadResult(this->KeptResult);
-    this->KeptSize[0] = width;
-    this->KeptSize[1] = height;
+    this->Targets->KeepResult();
   }
   const double t2 = now();
   if (ok && this->CaptureDirectory && !request.RasterBoundOnly && !extremum)
@@ -362,9 +360,7 @@ bool vtkOpenGLHAVSVolumeMapper::CompositeKeptResult(vtkRenderer* renderer)
 //------------------------------------------------------------------------------
 const std::vector<float>* vtkOpenGLHAVSVolumeMapper::GetKeptResult(int size[2])
 {
-  size[0] = this->KeptSize[0];
-  size[1] = this->KeptSize[1];
-  return &this->KeptResult;
+  return this->Targets->GetKeptResult(size);
 }
 
 //------------------------------------------------------------------------------

@@ -117,9 +117,6 @@ private:
     vtkMTimeType Table = 0;
   };
   UploadedVersions Uploaded;
-
-  std::vector<float> KeptResult;
-  int KeptSize[2] = { 0, 0 };
 };
 
 #endif
