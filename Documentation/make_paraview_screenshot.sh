@@ -35,11 +35,15 @@ PY
 mkdir -p "$work/config/ParaView"
 printf '[General]\nGeneralSettings.ShowWelcomeDialog=0\n' > "$work/config/ParaView/ParaView5.11.0.ini"
 display=:$((90 + RANDOM % 9))
-Xvfb "$display" -screen 0 1600x1000x24 -nolisten tcp &
+Xvfb "$display" -screen 0 1600x1400x24 -nolisten tcp &
 xvfb=$!
 trap 'kill $xvfb 2> /dev/null || true; rm -rf "$work"' EXIT
 sleep 2
-DISPLAY=$display XDG_CONFIG_HOME="$work/config" LD_LIBRARY_PATH="$root/build/lib" paraview -geometry 1600x1000+0+0 --script="$work/show.py" &
+# As the user guide says: the expat fix preloaded (Debian 12's expat defers
+# reparsing, which VTK 9.2's XML readers cannot take; the plugin warns otherwise).
+preload=""
+[ -f "$root/build/lib/libvtkHAVSExpatFix.so" ] && preload="$root/build/lib/libvtkHAVSExpatFix.so"
+DISPLAY=$display XDG_CONFIG_HOME="$work/config" LD_LIBRARY_PATH="$root/build/lib" LD_PRELOAD="$preload" paraview -geometry 1600x1400+0+0 --script="$work/show.py" &
 client=$!
 sleep "${HAVS_SCREENSHOT_WAIT:-40}"
 DISPLAY=$display xwd -root -silent > "$work/screen.xwd"
