@@ -6,9 +6,13 @@
 set -u
 for attempt in 1 2 3; do
   log=$(mktemp)
-  xvfb-run -a -s "-screen 0 1280x1024x24 -nolisten tcp" "$@" > >(tee "$log") 2>&1
+  # The output into the log first, then shown: with a tee in a process
+  # substitution the grep below could run before the last lines (a pvserver's
+  # X failure, printed at the end) reached the log, and a lost display was
+  # then taken for the test's failure (seen once: ParaView.PluginServer).
+  xvfb-run -a -s "-screen 0 1280x1024x24 -nolisten tcp" "$@" > "$log" 2>&1
   status=$?
-  sleep 0.2
+  cat "$log"
   if [ $status -eq 0 ] || ! grep -qiE "cannot open display|Could not open display|xvfb-run: error|bad X server connection|failed to connect to X" "$log"; then
     rm -f "$log"
     exit $status
