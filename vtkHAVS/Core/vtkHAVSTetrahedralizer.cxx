@@ -347,8 +347,8 @@ vtkSmartPointer<vtkUnstructuredGrid> WithoutInvalidCells(vtkDataSet* data, vtkId
  * the 19 nodes: the corners, the edges' middles, the base's middle), and the
  * Lagrange and Bezier pyramids by the linear pyramid of their corners; the
  * other cells, the points and the point and cell data as they are; nullptr
- * when there is no such pyramid. VTK's split of the 19 nodes cuts each
- * triangular face around its middle node, and the base by local point order:
+ * when there is no such pyramid (`corners`: the Lagrange and Bezier ones). VTK's split of the 19
+ * nodes cuts each triangular face around its middle node, and the base by local point order:
  * neighbours (a quadratic tetrahedron's four sub-triangles, another pyramid's
  * base) need not agree, and they crack (measured: 576 of 832 boundary
  * triangles inside a shell). Here a triangular face is cut into the four
@@ -359,16 +359,16 @@ vtkSmartPointer<vtkUnstructuredGrid> WithoutInvalidCells(vtkDataSet* data, vtkId
  * quarter and on the middle layer, one inverted under the middle layer, four
  * tetrahedra across the base's inner edges.
  */
-vtkSmartPointer<vtkUnstructuredGrid> WithPyramidsOnTheirNodes(
-  vtkDataSet* data, vtkIdType& triquadratic, vtkIdType& corners)
+vtkSmartPointer<vtkUnstructuredGrid> WithPyramidsOnTheirNodes(vtkDataSet* data, vtkIdType& corners)
 {
-  triquadratic = corners = 0;
+  corners = 0;
   auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
   if (!grid)
   {
     return nullptr;
   }
   const vtkIdType numberOfCells = grid->GetNumberOfCells();
+  vtkIdType triquadratic = 0;
   for (vtkIdType c = 0; c < numberOfCells; ++c)
   {
     triquadratic += grid->GetCellType(c) == VTK_TRIQUADRATIC_PYRAMID ? 1 : 0;
@@ -1271,8 +1271,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
     // Level 0: the 19-node pyramids on their nodes' lattice (VTK's split
     // cracks; the testing hook SplitLocalOrder keeps it: the control), the
     // Lagrange and Bezier pyramids as their corners' pyramid.
-    vtkIdType triquadratic = 0;
-    if (auto onNodes = WithPyramidsOnTheirNodes(data, triquadratic, r.CornerPyramids))
+    if (auto onNodes = WithPyramidsOnTheirNodes(data, r.CornerPyramids))
     {
       pyramidsOnNodes = onNodes;
       data = pyramidsOnNodes;

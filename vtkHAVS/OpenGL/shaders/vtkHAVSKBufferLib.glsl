@@ -366,10 +366,10 @@ void havsInsert(
   // the slots, and with it a later arrival could leave first (measured at k =
   // 6 on the hollow sphere's 96^2 views: 4 to 10 pixels a view off by up to
   // 0.048, RMSE up to 6.2e-4).
-  int slot = havsLeavingSlot(E, f);
   bool full = E[HAVS_K - 1].x < HAVS_EMPTY;
   if (full)
   {
+    int slot = havsLeavingSlot(E, f); // (only when one must leave)
     leaving = slot < HAVS_K ? E[slot] : f;
     for (int i = 1; i < HAVS_K - 1; ++i)
     {
