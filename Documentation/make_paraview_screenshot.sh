@@ -31,11 +31,22 @@ view.ResetCamera()
 SetActiveSource(tets)
 Render()
 PY
-# A fresh settings directory without the welcome dialog.
+# A fresh settings directory without the welcome dialog; with
+# HAVS_SCREENSHOT_ADVANCED=1 the panel's advanced properties shown (the gear
+# button's setting, showAdvancedProperties), written to paraview_havs_advanced.png.
 mkdir -p "$work/config/ParaView"
-printf '[General]\nGeneralSettings.ShowWelcomeDialog=0\n' > "$work/config/ParaView/ParaView5.11.0.ini"
+out=paraview_havs.png
+advanced=false
+if [ "${HAVS_SCREENSHOT_ADVANCED:-0}" = 1 ]; then
+  out=paraview_havs_advanced.png
+  advanced=true
+fi
+printf '[General]\nGeneralSettings.ShowWelcomeDialog=0\nshowAdvancedProperties=%s\n' "$advanced" \
+  > "$work/config/ParaView/ParaView5.11.0.ini"
 display=:$((90 + RANDOM % 9))
-Xvfb "$display" -screen 0 1600x1400x24 -nolisten tcp &
+height=1400
+[ "$advanced" = true ] && height=${HAVS_SCREENSHOT_HEIGHT:-4400}
+Xvfb "$display" -screen 0 1600x${height}x24 -nolisten tcp &
 xvfb=$!
 trap 'kill $xvfb 2> /dev/null || true; rm -rf "$work"' EXIT
 sleep 2
@@ -43,11 +54,15 @@ sleep 2
 # reparsing, which VTK 9.2's XML readers cannot take; the plugin warns otherwise).
 preload=""
 [ -f "$root/build/lib/libvtkHAVSExpatFix.so" ] && preload="$root/build/lib/libvtkHAVSExpatFix.so"
-DISPLAY=$display XDG_CONFIG_HOME="$work/config" LD_LIBRARY_PATH="$root/build/lib" LD_PRELOAD="$preload" paraview -geometry 1600x1400+0+0 --script="$work/show.py" &
+DISPLAY=$display XDG_CONFIG_HOME="$work/config" LD_LIBRARY_PATH="$root/build/lib" LD_PRELOAD="$preload" paraview -geometry 1600x${height}+0+0 --script="$work/show.py" &
 client=$!
 sleep "${HAVS_SCREENSHOT_WAIT:-40}"
 DISPLAY=$display xwd -root -silent > "$work/screen.xwd"
 kill $client 2> /dev/null || true
+# The advanced view: the panel's lower part (the HAVS group at the bottom of a
+# 4400-pixel-high window), 300 x 1100 pixels.
+crop=""
+[ "$advanced" = true ] && crop="0,$((height - 1100)),300,1100"
 pvpython "$root/Documentation/xwd_to_png.py" "$work/screen.xwd" \
-  "$root/Documentation/images/paraview_havs.png"
-echo "wrote Documentation/images/paraview_havs.png"
+  "$root/Documentation/images/$out" $crop
+echo "wrote Documentation/images/$out"

@@ -1,5 +1,7 @@
 # Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
-"""Converts an X window dump (xwd -root, 24/32-bit TrueColor, ZPixmap) to PNG with VTK."""
+"""Converts an X window dump (xwd -root, 24/32-bit TrueColor, ZPixmap) to PNG with VTK.
+
+Usage: xwd_to_png.py IN.xwd OUT.png [X,Y,W,H]  (a crop, Y from the top)."""
 import struct
 import sys
 
@@ -29,5 +31,14 @@ image.SetDimensions(width, height, 1)
 image.GetPointData().SetScalars(pixels)
 writer = vtkPNGWriter()
 writer.SetFileName(sys.argv[2])
-writer.SetInputData(image)
+if len(sys.argv) > 3:
+    from vtkmodules.vtkImagingCore import vtkExtractVOI
+
+    x, y, w, h = (int(v) for v in sys.argv[3].split(","))
+    crop = vtkExtractVOI()
+    crop.SetInputData(image)
+    crop.SetVOI(x, x + w - 1, height - y - h, height - 1 - y, 0, 0)
+    writer.SetInputConnection(crop.GetOutputPort())
+else:
+    writer.SetInputData(image)
 writer.Write()
