@@ -94,6 +94,7 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastPeelPasses = 0;
   this->LastRaysStarted = 0;
   this->LastCellsCrossed = 0;
+  this->LastFoldReentries = 0;
   this->LastPeelSeconds = this->LastCastSeconds = -1.0;
   this->LastSectionTriangles = 0;
   this->LastTileGrid[0] = this->LastTileGrid[1] = 0;
@@ -186,12 +187,14 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.MaximumPasses = this->MaximumPeelPasses > 0 ? this->MaximumPeelPasses : 1024;
   frame.TileSize = this->Tiles ? this->TileSize : 0;
   frame.Blend = this->BlendMode;
+  frame.FoldReentries = this->FoldReentries;
   RayCounts counts;
   if (this->DrawRays(renderer, frame, &counts))
   {
     this->LastPeelPasses = counts.Passes;
     this->LastRaysStarted = static_cast<vtkIdType>(counts.Rays);
     this->LastCellsCrossed = static_cast<vtkIdType>(counts.Cells);
+    this->LastFoldReentries = static_cast<vtkIdType>(counts.FoldReentries);
     this->LastDrawSeconds = counts.Seconds;
     this->LastPeelSeconds = counts.PeelSeconds;
     this->LastCastSeconds = counts.CastSeconds;
@@ -218,10 +221,11 @@ void vtkHAVSRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
      << ", MaximumPeelPasses: " << this->MaximumPeelPasses << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult
      << ", BrokenNeighboursForTesting: " << this->BrokenNeighboursForTesting
-     << ", NearPlaneSection: " << this->NearPlaneSection << "\n";
+     << ", NearPlaneSection: " << this->NearPlaneSection
+     << ", FoldReentries: " << this->FoldReentries << "\n";
   os << indent << "Tiles: " << this->Tiles << ", TileSize: " << this->TileSize << "\n";
   os << indent << "Last frame: " << this->LastPeelPasses << " peel passes, "
      << this->LastRaysStarted << " rays, " << this->LastCellsCrossed << " cells crossed, "
-     << this->LastDrawSeconds << " s (peeling " << this->LastPeelSeconds << " s, casting "
-     << this->LastCastSeconds << " s)\n";
+     << this->LastFoldReentries << " fold re-entries, " << this->LastDrawSeconds << " s (peeling "
+     << this->LastPeelSeconds << " s, casting " << this->LastCastSeconds << " s)\n";
 }

@@ -172,6 +172,28 @@ public:
   vtkBooleanMacro(NearPlaneSection, bool);
   ///@}
 
+  ///@{
+  /**
+   * Re-entries across folds of the boundary (on by default; off only as a
+   * negative control). Where the boundary folds (an exit face and an entry
+   * face sharing an edge: a crease), a ray that leaves the mesh may come
+   * back in through the entry face a hair from that edge, where the
+   * rasterizer may not cover its pixel, so that the peeling never finds the
+   * entry and the rest of the ray is lost. On: a ray that leaves through a
+   * boundary face walks around the face's edge nearest the exit point
+   * (through the face neighbours) to the boundary face on the other side
+   * and, if the ray passes through that face's cell beginning within a
+   * thousandth of the eye distance after the exit, goes on there
+   * (GetLastFoldReentries() counts them).
+   */
+  vtkSetMacro(FoldReentries, bool);
+  vtkGetMacro(FoldReentries, bool);
+  vtkBooleanMacro(FoldReentries, bool);
+  ///@}
+
+  /// Rays that went on across a fold of the boundary in the last frame.
+  vtkGetMacro(LastFoldReentries, vtkIdType);
+
   /// Triangles of the near plane's section drawn in the last frame.
   vtkGetMacro(LastSectionTriangles, vtkIdType);
 
@@ -214,6 +236,7 @@ public:
     int MaximumPasses = 1024;
     int TileSize = 16; ///< 0: no tiles
     int Blend = 0;     ///< the blend mode
+    bool FoldReentries = true;
   };
   /// What the graphics layer counted in one frame.
   struct RayCounts
@@ -221,6 +244,7 @@ public:
     int Passes = 0;
     long long Rays = 0;
     long long Cells = 0;
+    long long FoldReentries = 0;
     double Seconds = 0.0;
     double PeelSeconds = -1.0; ///< GPU time in the peeling draws (-1: not measured)
     double CastSeconds = -1.0; ///< GPU time in the casts (-1: not measured)
@@ -252,6 +276,8 @@ private:
   bool KeepFloatResult = false;
   bool BrokenNeighboursForTesting = false;
   bool NearPlaneSection = true;
+  bool FoldReentries = true;
+  vtkIdType LastFoldReentries = 0;
   bool Tiles = true;
   int TileSize = 16;
   int LastTileGrid[2] = { 0, 0 };

@@ -125,7 +125,7 @@ void vtkOpenGLHAVSRayCastMapper::Upload(const RayFrame& frame)
       this->Buffers[CellBuffer], mesh.GetCells().size() * sizeof(float), mesh.GetCells().data());
     storage(this->Buffers[NeighbourBuffer], mesh.GetNeighbours().size() * sizeof(int32_t),
       mesh.GetNeighbours().data());
-    storage(this->Buffers[CountBuffer], 2 * sizeof(uint32_t), nullptr);
+    storage(this->Buffers[CountBuffer], 3 * sizeof(uint32_t), nullptr);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     this->BoundaryFaces = static_cast<int>(mesh.GetNumberOfBoundaryFaces());
     this->Tetrahedra = static_cast<int>(mesh.GetNumberOfTetrahedra());
@@ -321,6 +321,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   cast->SetUniform3f("havsEyeMC", eye);
   cast->SetUniform3f("havsDirectionMC", direction);
   cast->SetUniformi("havsMaxSteps", this->Tetrahedra + 16);
+  cast->SetUniformi("havsFolds", frame.FoldReentries ? 1 : 0);
 
   // Per pixel: no entry yet, the ray has reached nothing, opacity 0.
   const GLuint noKey = 0xffffffffu, noCell = 0;
@@ -331,7 +332,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   glBindImageTexture(0, this->Images[EntryKeyImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   glBindImageTexture(1, this->Images[EntryCellImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   glBindImageTexture(2, this->Images[RayStateImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  const GLuint zeroCounts[2] = { 0, 0 };
+  const GLuint zeroCounts[3] = { 0, 0, 0 };
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountBuffer]);
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(zeroCounts), zeroCounts);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
@@ -351,7 +352,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   const double t0 = vtkTimerLog::GetUniversalTime();
   GLuint started = 0;
   int passes = 0;
-  GLuint readBack[2] = { 0, 0 };
+  GLuint readBack[3] = { 0, 0, 0 };
   // The peel and cast split: a GL timestamp before the first peel and after
   // each pass's peel and cast (read after the frame; the passes already wait
   // for their counts, so the queries add no stall of their own).
@@ -456,6 +457,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   counts->Passes = passes;
   counts->Rays = readBack[0];
   counts->Cells = readBack[1];
+  counts->FoldReentries = readBack[2];
   {
     std::vector<GLuint> last(static_cast<size_t>(tiles), 0u);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[TileBuffer]);

@@ -10,7 +10,8 @@
 // composited front to back into this pass's colour, which blending puts
 // under what the earlier passes left (ONE_MINUS_DST_ALPHA, ONE). The walk
 // ends where the ray leaves the mesh (neighbour -1: the next pass peels the
-// next entry beyond it), at the clipping planes or the opaque surface, or at
+// next entry beyond it, unless it comes back in at once across a fold of
+// the boundary: havsFoldReentry), at the clipping planes or the opaque surface, or at
 // the termination opacity (the ray is then done for every later pass).
 //
 // The order-independent blends (HAVS_CELL_BLEND 1, 2: maximum and minimum
@@ -36,11 +37,12 @@ layout(std430, binding = 6) readonly buffer HAVSNeighbours
 {
   int havsNeighbours[];
 };
-// Counts over the frame: rays started, cells crossed.
+// Counts over the frame: rays started, cells crossed, fold re-entries taken.
 layout(std430, binding = 7) buffer HAVSRayCounts
 {
   uint havsRaysStarted;
   uint havsCellsCrossed;
+  uint havsFoldReentries;
 };
 layout(binding = 0, r32ui) uniform coherent uimage2D havsEntryKey;
 layout(binding = 1, r32ui) uniform coherent uimage2D havsEntryCell;
@@ -51,12 +53,113 @@ uniform mat4 havsMCRC;        // model -> eye-relative world (volume matrix incl
 uniform vec3 havsEyeMC;       // the eye in model coordinates
 uniform vec3 havsDirectionMC; // the direction of projection in model coordinates
 uniform int havsMaxSteps;     // a guard against a cycle in a broken table
+uniform int havsFolds;        // 1: re-enter across a boundary fold (see havsFoldReentry)
 
 layout(location = 0) out vec4 havsPassColor;
 
 float havsKeyDistance(uint k)
 {
   return uintBitsToFloat((k & 0x80000000u) != 0u ? (k & 0x7fffffffu) : ~k);
+}
+
+// The distance from p to the line where planes a and b (unit normals) meet.
+float havsEdgeDistance(vec4 a, vec4 b, vec3 p)
+{
+  float fa = dot(a.xyz, p) + a.w, fb = dot(b.xyz, p) + b.w;
+  float c = dot(a.xyz, b.xyz);
+  float sine2 = max(1.0 - c * c, 1e-12);
+  return sqrt(max(fa * fa + fb * fb - 2.0 * c * fa * fb, 0.0) / sine2);
+}
+
+// A fold of the boundary: the ray has left the mesh through boundary face
+// `face` of `cell` at p (parameter tOut), and the boundary face on the other
+// side of that face's nearest edge, found by walking around the edge through
+// the face neighbours, may be an entry the ray crosses right there (a crease:
+// combustor, 512^2, view 1, pixel (119, 240): out at eye distance 42.057024,
+// in again at 42.057045, 0.00014 px inside the entry face's edge, which the
+// rasterizer then misses, so the peeling never finds that entry and the rest
+// of the ray is lost). Returns the cell the ray re-enters, with where
+// (tNext), or -1: no such cell, or the ray does not pass through it, or it
+// enters it more than `gap` after the exit.
+int havsFoldReentry(int cell, int face, vec3 o, vec3 d, float tOut, float gap,
+  float parallelToRay, out float tNext)
+{
+  tNext = tOut;
+  vec3 p = o + tOut * d;
+  // The exit face's edge nearest to p: the face of `cell` that shares it.
+  vec4 exitPlane = havsCells[5 * cell + face];
+  int side = -1;
+  float nearest = HAVS_EMPTY;
+  for (int j = 0; j < 4; ++j)
+  {
+    float e = j == face ? HAVS_EMPTY : havsEdgeDistance(exitPlane, havsCells[5 * cell + j], p);
+    if (e < nearest)
+    {
+      nearest = e;
+      side = j;
+    }
+  }
+  // Around the edge: into the neighbour across `side`, out through its other
+  // face on the edge (the one whose line with the face come in by lies
+  // nearest p), until a boundary face.
+  int previous = cell;
+  int current = havsNeighbours[4 * cell + side];
+  for (int around = 0; around < 32 && current >= 0 && current != cell; ++around)
+  {
+    int base = 5 * current;
+    int back = -1;
+    for (int j = 0; j < 4; ++j)
+    {
+      back = havsNeighbours[4 * current + j] == previous ? j : back;
+    }
+    if (back < 0)
+    {
+      return -1; // (a broken table)
+    }
+    vec4 backPlane = havsCells[base + back];
+    int leave = -1;
+    nearest = HAVS_EMPTY;
+    for (int j = 0; j < 4; ++j)
+    {
+      float e = j == back ? HAVS_EMPTY : havsEdgeDistance(backPlane, havsCells[base + j], p);
+      if (e < nearest)
+      {
+        nearest = e;
+        leave = j;
+      }
+    }
+    int next = havsNeighbours[4 * current + leave];
+    if (next >= 0)
+    {
+      previous = current;
+      current = next;
+      continue;
+    }
+    // The boundary face on the other side of the edge: the ray's interval in
+    // its cell, which must go on past the exit and begin within `gap` of it.
+    float tIn = -HAVS_EMPTY, tLeave = HAVS_EMPTY;
+    for (int j = 0; j < 4; ++j)
+    {
+      vec4 plane = havsCells[base + j];
+      float towards = dot(plane.xyz, d);
+      float t = -(dot(plane.xyz, o) + plane.w) / towards;
+      if (towards < -parallelToRay)
+      {
+        tIn = max(tIn, t);
+      }
+      else if (towards > parallelToRay)
+      {
+        tLeave = min(tLeave, t);
+      }
+    }
+    if (tIn <= tOut + gap && tLeave > max(tIn, tOut))
+    {
+      tNext = max(tIn, tOut);
+      return current;
+    }
+    return -1;
+  }
+  return -1;
 }
 
 void main()
@@ -203,6 +306,19 @@ void main()
       break;
     }
     int next = havsNeighbours[4 * cell + face];
+    if (next < 0 && havsFolds != 0)
+    {
+      // In again at once across a fold of the boundary (see havsFoldReentry),
+      // within a thousandth of the eye distance.
+      float tNext;
+      next = havsFoldReentry(cell, face, o, d, tOut, 1e-3 * abs(distance0 / distanceRate + tOut),
+        parallelToRay, tNext);
+      if (next >= 0)
+      {
+        atomicAdd(havsFoldReentries, 1u);
+        tIn = tNext;
+      }
+    }
     if (next < 0)
     {
       ++steps;
