@@ -48,7 +48,8 @@
 // the exact MPVO cell order, boundary layers; cellproj-convex: the convexification),
 // tetraycast (vtkHAVSRayCastMapper: GPU ray casting through the tetrahedra, re-entries
 // by depth peeling; its rows add the peeling passes, cells crossed per ray and
-// the screen tiles used, medians over the views), and
+// the screen tiles used, medians over the views; tetraycast-nofolds: without its
+// re-entries across folds of the boundary), and
 // VTK's vtkProjectedTetrahedraMapper, vtkUnstructuredGridVolumeZSweepMapper and
 // vtkUnstructuredGridVolumeRayCastMapper (ImageSampleDistance 1,
 // AutoAdjustSampleDistances off, vtkUnstructuredGridLinearRayIntegrator).
@@ -646,11 +647,13 @@ int RunWorker(const Options& o)
       cellProjection = m;
       mapper = m;
     }
-    else if (config == "tetraycast")
+    else if (config == "tetraycast" || config == "tetraycast-nofolds")
     {
-      // vtkHAVSRayCastMapper (issue 21): GPU ray casting, depth-peeled re-entries.
+      // vtkHAVSRayCastMapper (issue 21): GPU ray casting, depth-peeled re-entries
+      // (-nofolds: without the re-entries across folds of the boundary).
       auto m = vtkSmartPointer<vtkHAVSRayCastMapper>::New();
       m->SetEarlyRayTerminationOpacity(0.999);
+      m->SetFoldReentries(config == "tetraycast");
       tetRayCast = m;
       mapper = m;
     }
@@ -812,9 +815,10 @@ int RunWorker(const Options& o)
           tilesUsed.push_back(perTile.empty() ? NAN : used / perTile.size());
           tilePasses.push_back(used > 0 ? passesInUsed / used : NAN);
           std::fprintf(stderr,
-            "tetraycast %s view %d: %d peel passes, %.0f rays, %.1f cells crossed per ray, "
-            "tiles %d x %d: %.0f with rays, %.2f passes per such tile\n",
-            dataset.c_str(), view, tetRayCast->GetLastPeelPasses(), rays, cellsPerRay.back(),
+            "%s %s view %d: %d peel passes, %.0f rays, %.1f cells crossed per ray, %lld fold "
+            "re-entries, tiles %d x %d: %.0f with rays, %.2f passes per such tile\n",
+            config.c_str(), dataset.c_str(), view, tetRayCast->GetLastPeelPasses(), rays,
+            cellsPerRay.back(), static_cast<long long>(tetRayCast->GetLastFoldReentries()),
             tetRayCast->GetLastTileGrid()[0], tetRayCast->GetLastTileGrid()[1], used,
             tilePasses.back());
         }
