@@ -869,6 +869,7 @@ int RunWorker(const Options& o)
           if (mapper->GetFloatResult(premultiplied, resultSize) && resultSize[0] == o.Size &&
             resultSize[1] == o.Size)
           {
+            double viewSquares = 0.0, viewMax = 0.0, viewPixels = 0.0;
             for (size_t p = 0; p < static_cast<size_t>(o.Size) * o.Size; ++p)
             {
               if (leftOut(p))
@@ -879,11 +880,17 @@ int RunWorker(const Options& o)
               {
                 const double e =
                   std::fabs(double(premultiplied->GetValue(4 * p + c)) - exact[4 * p + c]);
-                floatSquares += e * e;
-                floatMax = std::max(floatMax, e);
+                viewSquares += e * e;
+                viewMax = std::max(viewMax, e);
               }
-              floatPixels += 1;
+              viewPixels += 1;
             }
+            floatSquares += viewSquares;
+            floatMax = std::max(floatMax, viewMax);
+            floatPixels += viewPixels;
+            std::fprintf(stderr, "%s %s view %d: float RMSE %.6f max %.4f\n", config.c_str(),
+              dataset.c_str(), view,
+              viewPixels > 0 ? std::sqrt(viewSquares / (3 * viewPixels)) : 0.0, viewMax);
           }
           mapper->SetKeepFloatResult(false);
         };

@@ -78,10 +78,13 @@ float havsEdgeDistance(vec4 a, vec4 b, vec3 p)
 // combustor, 512^2, view 1, pixel (119, 240): out at eye distance 42.057024,
 // in again at 42.057045, 0.00014 px inside the entry face's edge, which the
 // rasterizer then misses, so the peeling never finds that entry and the rest
-// of the ray is lost). Returns the cell the ray re-enters, with where
-// (tNext), or -1: no such cell, or the ray does not pass through it, or it
-// enters it more than `gap` after the exit.
-int havsFoldReentry(int cell, int face, vec3 o, vec3 d, float tOut, float gap,
+// of the ray is lost). Only where the rasterizer may have missed such an
+// entry: the ray passes within 0.05 px (`near`, model units at the exit) of
+// that edge (snapping moves an edge by about 1/256 px; elsewhere the peeling
+// finds the entry). Returns the cell the ray re-enters, with where (tNext),
+// or -1: no such cell, or the ray does not pass through it, or it enters it
+// more than `gap` after the exit.
+int havsFoldReentry(int cell, int face, vec3 o, vec3 d, float tOut, float gap, float near,
   float parallelToRay, out float tNext)
 {
   tNext = tOut;
@@ -97,6 +100,19 @@ int havsFoldReentry(int cell, int face, vec3 o, vec3 d, float tOut, float gap,
     {
       nearest = e;
       side = j;
+    }
+  }
+  // The ray's distance from the edge's line, across the ray: p lies on the
+  // exit plane, `nearest` from the line, along m (in that plane, across the edge).
+  vec3 u = cross(exitPlane.xyz, havsCells[5 * cell + side].xyz);
+  vec3 across = cross(d, u);
+  float acrossLength = length(across);
+  if (acrossLength > 1e-6 * length(d) * length(u))
+  {
+    vec3 m = normalize(cross(u, exitPlane.xyz));
+    if (nearest * abs(dot(m, across)) > near * acrossLength)
+    {
+      return -1;
     }
   }
   // Around the edge: into the neighbour across `side`, out through its other
@@ -194,6 +210,10 @@ void main()
   vec3 oRC = (havsMCRC * vec4(o, 1.0)).xyz;
   vec3 dRC = mat3(havsMCRC) * d;
   float worldPerT = length(dRC);
+  // The neighbouring pixel's ray (model units apart: pixelApart0 + t pixelApartPerT).
+  vec4 nextMC = havsDCMC * vec4(ndc + vec2(2.0 / havsViewportSize.x, 0.0), -1.0, 1.0);
+  float pixelApart0 = havsParallel != 0 ? length(nextMC.xyz / nextMC.w - o) : 0.0;
+  float pixelApartPerT = havsParallel != 0 ? 0.0 : length(nextMC.xyz / nextMC.w - havsEyeMC - d);
   // The eye distance along the ray is linear in t.
   float distance0 = havsParallel != 0 ? dot(oRC, havsDirectionOfProjection) : 0.0;
   float distanceRate = havsParallel != 0 ? dot(dRC, havsDirectionOfProjection) : worldPerT;
@@ -312,7 +332,7 @@ void main()
       // within a thousandth of the eye distance.
       float tNext;
       next = havsFoldReentry(cell, face, o, d, tOut, 1e-3 * abs(distance0 / distanceRate + tOut),
-        parallelToRay, tNext);
+        0.05 * (pixelApart0 + tOut * pixelApartPerT), parallelToRay, tNext);
       if (next >= 0)
       {
         atomicAdd(havsFoldReentries, 1u);
