@@ -126,8 +126,11 @@ void PrintCounts(vtkHAVSRayCastMapper* mapper, int size)
 
 /// The screen tiles of the frame just drawn: each tile with a covered pixel
 /// took part in a pass, none without one did; the largest per-tile count is
-/// the frame's pass count; without tiles (a full-viewport pass) the image is
-/// the same.
+/// the frame's pass count; without tiles (full-viewport passes) the image is
+/// the same, bit for bit. The peeling from the second pass on draws only in
+/// the tiles where rays left the mesh: the first pass peels as many
+/// fragments as without tiles, the later ones fewer where the frame has
+/// more than one pass (control: without tiles).
 void CheckTiles(vtkHAVSRayCastMapper* mapper, vtkRenderWindow* window, int size)
 {
   const auto tiled = havstest::FloatResult(mapper);
@@ -160,10 +163,33 @@ void CheckTiles(vtkHAVSRayCastMapper* mapper, vtkRenderWindow* window, int size)
       }
     }
   }
+  const std::vector<long long> peeled = mapper->GetLastPeelFragments();
   mapper->TilesOff();
   window->Render();
-  const auto whole = havstest::Compare(havstest::FloatResult(mapper), tiled);
+  const auto untiled = havstest::FloatResult(mapper);
+  const auto whole = havstest::Compare(untiled, tiled);
+  const std::vector<long long> peeledWhole = mapper->GetLastPeelFragments();
   mapper->TilesOn();
+  long long later = 0, laterWhole = 0;
+  for (size_t i = 1; i < peeled.size(); ++i)
+  {
+    later += peeled[i];
+  }
+  for (size_t i = 1; i < peeledWhole.size(); ++i)
+  {
+    laterWhole += peeledWhole[i];
+  }
+  std::printf("    peeled fragments per pass, tiles:");
+  for (long long n : peeled)
+  {
+    std::printf(" %lld", n);
+  }
+  std::printf("; without tiles:");
+  for (long long n : peeledWhole)
+  {
+    std::printf(" %lld", n);
+  }
+  std::printf("\n");
   std::printf("    tiles %d x %d of %d px: %d with rays, %d with covered pixels; tiles by "
               "passes:",
     grid[0], grid[1], tileSize, active, covered);
@@ -176,7 +202,15 @@ void CheckTiles(vtkHAVSRayCastMapper* mapper, vtkRenderWindow* window, int size)
     "tiles: one count per tile, some with rays");
   havstest::Check(wrong == 0, "tiles: every tile with a covered pixel took part");
   havstest::Check(largest == framePasses, "tiles: the largest per-tile pass count is the frame's");
-  havstest::Check(whole.Max < 1e-6, "tiles: the image without tiles is the same");
+  havstest::Check(untiled == tiled, "tiles: the image without tiles is the same, bit for bit");
+  havstest::Check(peeled.size() == peeledWhole.size() && !peeled.empty() &&
+      peeled[0] == peeledWhole[0] && peeled[0] > 0,
+    "tiles: as many peeling passes, the first peels the same fragments");
+  if (framePasses >= 2)
+  {
+    havstest::Check(later < laterWhole,
+      "tiles: the later passes peel fewer fragments than without tiles (the control)");
+  }
 }
 
 /// Clipping planes on the hollow sphere (as TestHAVSCellProjection's clip

@@ -99,6 +99,7 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastSectionTriangles = 0;
   this->LastTileGrid[0] = this->LastTileGrid[1] = 0;
   this->LastTilePasses.clear();
+  this->LastPeelFragments.clear();
   switch (this->BlendMode)
   {
     case COMPOSITE_BLEND:
@@ -201,6 +202,7 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     this->LastTileGrid[0] = counts.TileGrid[0];
     this->LastTileGrid[1] = counts.TileGrid[1];
     this->LastTilePasses.swap(counts.TilePasses);
+    this->LastPeelFragments.swap(counts.PeelFragments);
   }
 }
 

@@ -144,8 +144,11 @@ public:
   /**
    * Screen tiles (the seed's tiling): the ray-casting pass draws only the
    * tiles of TileSize x TileSize pixels in which the pass's peeling found an
-   * entry, and each tile counts its passes (GetLastTilePasses()). On by
-   * default, 16 pixels; off: a full-viewport pass each time (same image).
+   * entry, and each tile counts its passes (GetLastTilePasses()); from the
+   * second pass on, the peeling draws only in the tiles where a ray left the
+   * mesh in the pass before (a stencil of them; no other ray can start
+   * again). On by default, 16 pixels; off: full-viewport passes (the same
+   * image, bit for bit).
    */
   vtkSetMacro(Tiles, bool);
   vtkGetMacro(Tiles, bool);
@@ -162,6 +165,9 @@ public:
    */
   const int* GetLastTileGrid() const { return this->LastTileGrid; }
   const std::vector<int>& GetLastTilePasses() const { return this->LastTilePasses; }
+  /// Per peeling pass drawn (the last, which started no ray, included): the
+  /// boundary's fragments that took part (passed the tiles' stencil).
+  const std::vector<long long>& GetLastPeelFragments() const { return this->LastPeelFragments; }
   ///@}
 
   ///@{
@@ -250,6 +256,7 @@ public:
     double CastSeconds = -1.0; ///< GPU time in the casts (-1: not measured)
     int TileGrid[2] = { 0, 0 };
     std::vector<int> TilePasses;
+    std::vector<long long> PeelFragments; ///< per peeling pass drawn
   };
 
 protected:
@@ -282,6 +289,7 @@ private:
   int TileSize = 16;
   int LastTileGrid[2] = { 0, 0 };
   std::vector<int> LastTilePasses;
+  std::vector<long long> LastPeelFragments;
   vtkIdType LastSectionTriangles = 0;
   int VectorMode = -1;
   int VectorComponent = 0;

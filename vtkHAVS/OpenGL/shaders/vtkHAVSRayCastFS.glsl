@@ -44,6 +44,16 @@ layout(std430, binding = 7) buffer HAVSRayCounts
   uint havsCellsCrossed;
   uint havsFoldReentries;
 };
+// Per screen tile: the next pass (1-based) whose peeling must draw there (a
+// ray left the mesh there in this pass and may come back in).
+layout(std430, binding = 9) buffer HAVSPeelTiles
+{
+  uint havsPeelTiles[];
+};
+uniform int havsTileSize;
+uniform ivec2 havsTileCount;
+uniform int havsPass; // this pass, 1-based
+
 layout(binding = 0, r32ui) uniform coherent uimage2D havsEntryKey;
 layout(binding = 1, r32ui) uniform coherent uimage2D havsEntryCell;
 layout(binding = 2, rgba32f) uniform coherent image2D havsRayState;
@@ -349,6 +359,11 @@ void main()
   atomicAdd(havsCellsCrossed, uint(steps));
   // (Never before the entry the peeling found.)
   float reach = ended ? HAVS_EMPTY : max(distance0 + tIn * distanceRate, keyDistance);
+  if (!ended)
+  {
+    ivec2 tile = pixel / havsTileSize;
+    havsPeelTiles[tile.y * havsTileCount.x + tile.x] = uint(havsPass + 1);
+  }
   imageStore(
     havsRayState, pixel, vec4(reach, before + (1.0 - before) * color.a, keyDistance, 0.0));
 #if HAVS_CELL_BLEND != 0
