@@ -48,7 +48,8 @@
 // the exact MPVO cell order, boundary layers; cellproj-convex: the convexification),
 // tetraycast (vtkHAVSRayCastMapper: GPU ray casting through the tetrahedra, re-entries
 // by depth peeling; its rows add the peeling passes, cells crossed per ray and
-// the screen tiles used, medians over the views), and
+// the screen tiles used, medians over the views; tetraycast-nofolds: without its
+// re-entries across folds of the boundary), and
 // VTK's vtkProjectedTetrahedraMapper, vtkUnstructuredGridVolumeZSweepMapper and
 // vtkUnstructuredGridVolumeRayCastMapper (ImageSampleDistance 1,
 // AutoAdjustSampleDistances off, vtkUnstructuredGridLinearRayIntegrator).
@@ -646,11 +647,13 @@ int RunWorker(const Options& o)
       cellProjection = m;
       mapper = m;
     }
-    else if (config == "tetraycast")
+    else if (config == "tetraycast" || config == "tetraycast-nofolds")
     {
-      // vtkHAVSRayCastMapper (issue 21): GPU ray casting, depth-peeled re-entries.
+      // vtkHAVSRayCastMapper (issue 21): GPU ray casting, depth-peeled re-entries
+      // (-nofolds: without the re-entries across folds of the boundary).
       auto m = vtkSmartPointer<vtkHAVSRayCastMapper>::New();
       m->SetEarlyRayTerminationOpacity(0.999);
+      m->SetFoldReentries(config == "tetraycast");
       tetRayCast = m;
       mapper = m;
     }
@@ -812,9 +815,10 @@ int RunWorker(const Options& o)
           tilesUsed.push_back(perTile.empty() ? NAN : used / perTile.size());
           tilePasses.push_back(used > 0 ? passesInUsed / used : NAN);
           std::fprintf(stderr,
-            "tetraycast %s view %d: %d peel passes, %.0f rays, %.1f cells crossed per ray, "
-            "tiles %d x %d: %.0f with rays, %.2f passes per such tile\n",
-            dataset.c_str(), view, tetRayCast->GetLastPeelPasses(), rays, cellsPerRay.back(),
+            "%s %s view %d: %d peel passes, %.0f rays, %.1f cells crossed per ray, %lld fold "
+            "re-entries, tiles %d x %d: %.0f with rays, %.2f passes per such tile\n",
+            config.c_str(), dataset.c_str(), view, tetRayCast->GetLastPeelPasses(), rays,
+            cellsPerRay.back(), static_cast<long long>(tetRayCast->GetLastFoldReentries()),
             tetRayCast->GetLastTileGrid()[0], tetRayCast->GetLastTileGrid()[1], used,
             tilePasses.back());
         }
@@ -865,6 +869,7 @@ int RunWorker(const Options& o)
           if (mapper->GetFloatResult(premultiplied, resultSize) && resultSize[0] == o.Size &&
             resultSize[1] == o.Size)
           {
+            double viewSquares = 0.0, viewMax = 0.0, viewPixels = 0.0;
             for (size_t p = 0; p < static_cast<size_t>(o.Size) * o.Size; ++p)
             {
               if (leftOut(p))
@@ -875,11 +880,17 @@ int RunWorker(const Options& o)
               {
                 const double e =
                   std::fabs(double(premultiplied->GetValue(4 * p + c)) - exact[4 * p + c]);
-                floatSquares += e * e;
-                floatMax = std::max(floatMax, e);
+                viewSquares += e * e;
+                viewMax = std::max(viewMax, e);
               }
-              floatPixels += 1;
+              viewPixels += 1;
             }
+            floatSquares += viewSquares;
+            floatMax = std::max(floatMax, viewMax);
+            floatPixels += viewPixels;
+            std::fprintf(stderr, "%s %s view %d: float RMSE %.6f max %.4f\n", config.c_str(),
+              dataset.c_str(), view,
+              viewPixels > 0 ? std::sqrt(viewSquares / (3 * viewPixels)) : 0.0, viewMax);
           }
           mapper->SetKeepFloatResult(false);
         };

@@ -94,10 +94,12 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastPeelPasses = 0;
   this->LastRaysStarted = 0;
   this->LastCellsCrossed = 0;
+  this->LastFoldReentries = 0;
   this->LastPeelSeconds = this->LastCastSeconds = -1.0;
   this->LastSectionTriangles = 0;
   this->LastTileGrid[0] = this->LastTileGrid[1] = 0;
   this->LastTilePasses.clear();
+  this->LastPeelFragments.clear();
   switch (this->BlendMode)
   {
     case COMPOSITE_BLEND:
@@ -186,18 +188,21 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.MaximumPasses = this->MaximumPeelPasses > 0 ? this->MaximumPeelPasses : 1024;
   frame.TileSize = this->Tiles ? this->TileSize : 0;
   frame.Blend = this->BlendMode;
+  frame.FoldReentries = this->FoldReentries;
   RayCounts counts;
   if (this->DrawRays(renderer, frame, &counts))
   {
     this->LastPeelPasses = counts.Passes;
     this->LastRaysStarted = static_cast<vtkIdType>(counts.Rays);
     this->LastCellsCrossed = static_cast<vtkIdType>(counts.Cells);
+    this->LastFoldReentries = static_cast<vtkIdType>(counts.FoldReentries);
     this->LastDrawSeconds = counts.Seconds;
     this->LastPeelSeconds = counts.PeelSeconds;
     this->LastCastSeconds = counts.CastSeconds;
     this->LastTileGrid[0] = counts.TileGrid[0];
     this->LastTileGrid[1] = counts.TileGrid[1];
     this->LastTilePasses.swap(counts.TilePasses);
+    this->LastPeelFragments.swap(counts.PeelFragments);
   }
 }
 
@@ -218,10 +223,11 @@ void vtkHAVSRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
      << ", MaximumPeelPasses: " << this->MaximumPeelPasses << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult
      << ", BrokenNeighboursForTesting: " << this->BrokenNeighboursForTesting
-     << ", NearPlaneSection: " << this->NearPlaneSection << "\n";
+     << ", NearPlaneSection: " << this->NearPlaneSection
+     << ", FoldReentries: " << this->FoldReentries << "\n";
   os << indent << "Tiles: " << this->Tiles << ", TileSize: " << this->TileSize << "\n";
   os << indent << "Last frame: " << this->LastPeelPasses << " peel passes, "
      << this->LastRaysStarted << " rays, " << this->LastCellsCrossed << " cells crossed, "
-     << this->LastDrawSeconds << " s (peeling " << this->LastPeelSeconds << " s, casting "
-     << this->LastCastSeconds << " s)\n";
+     << this->LastFoldReentries << " fold re-entries, " << this->LastDrawSeconds << " s (peeling "
+     << this->LastPeelSeconds << " s, casting " << this->LastCastSeconds << " s)\n";
 }

@@ -144,8 +144,11 @@ public:
   /**
    * Screen tiles (the seed's tiling): the ray-casting pass draws only the
    * tiles of TileSize x TileSize pixels in which the pass's peeling found an
-   * entry, and each tile counts its passes (GetLastTilePasses()). On by
-   * default, 16 pixels; off: a full-viewport pass each time (same image).
+   * entry, and each tile counts its passes (GetLastTilePasses()); from the
+   * second pass on, the peeling draws only in the tiles where a ray left the
+   * mesh in the pass before (a stencil of them; no other ray can start
+   * again). On by default, 16 pixels; off: full-viewport passes (the same
+   * image, bit for bit).
    */
   vtkSetMacro(Tiles, bool);
   vtkGetMacro(Tiles, bool);
@@ -162,6 +165,9 @@ public:
    */
   const int* GetLastTileGrid() const { return this->LastTileGrid; }
   const std::vector<int>& GetLastTilePasses() const { return this->LastTilePasses; }
+  /// Per peeling pass drawn (the last, which started no ray, included): the
+  /// boundary's fragments that took part (passed the tiles' stencil).
+  const std::vector<long long>& GetLastPeelFragments() const { return this->LastPeelFragments; }
   ///@}
 
   ///@{
@@ -171,6 +177,28 @@ public:
   vtkGetMacro(NearPlaneSection, bool);
   vtkBooleanMacro(NearPlaneSection, bool);
   ///@}
+
+  ///@{
+  /**
+   * Re-entries across folds of the boundary (on by default; off only as a
+   * negative control). Where the boundary folds (an exit face and an entry
+   * face sharing an edge: a crease), a ray that leaves the mesh may come
+   * back in through the entry face a hair from that edge, where the
+   * rasterizer may not cover its pixel, so that the peeling never finds the
+   * entry and the rest of the ray is lost. On: a ray that leaves through a
+   * boundary face walks around the face's edge nearest the exit point
+   * (through the face neighbours) to the boundary face on the other side
+   * and, if the ray passes through that face's cell beginning within a
+   * thousandth of the eye distance after the exit, goes on there
+   * (GetLastFoldReentries() counts them).
+   */
+  vtkSetMacro(FoldReentries, bool);
+  vtkGetMacro(FoldReentries, bool);
+  vtkBooleanMacro(FoldReentries, bool);
+  ///@}
+
+  /// Rays that went on across a fold of the boundary in the last frame.
+  vtkGetMacro(LastFoldReentries, vtkIdType);
 
   /// Triangles of the near plane's section drawn in the last frame.
   vtkGetMacro(LastSectionTriangles, vtkIdType);
@@ -214,6 +242,7 @@ public:
     int MaximumPasses = 1024;
     int TileSize = 16; ///< 0: no tiles
     int Blend = 0;     ///< the blend mode
+    bool FoldReentries = true;
   };
   /// What the graphics layer counted in one frame.
   struct RayCounts
@@ -221,11 +250,13 @@ public:
     int Passes = 0;
     long long Rays = 0;
     long long Cells = 0;
+    long long FoldReentries = 0;
     double Seconds = 0.0;
     double PeelSeconds = -1.0; ///< GPU time in the peeling draws (-1: not measured)
     double CastSeconds = -1.0; ///< GPU time in the casts (-1: not measured)
     int TileGrid[2] = { 0, 0 };
     std::vector<int> TilePasses;
+    std::vector<long long> PeelFragments; ///< per peeling pass drawn
   };
 
 protected:
@@ -252,10 +283,13 @@ private:
   bool KeepFloatResult = false;
   bool BrokenNeighboursForTesting = false;
   bool NearPlaneSection = true;
+  bool FoldReentries = true;
+  vtkIdType LastFoldReentries = 0;
   bool Tiles = true;
   int TileSize = 16;
   int LastTileGrid[2] = { 0, 0 };
   std::vector<int> LastTilePasses;
+  std::vector<long long> LastPeelFragments;
   vtkIdType LastSectionTriangles = 0;
   int VectorMode = -1;
   int VectorComponent = 0;

@@ -49,6 +49,7 @@ enum BufferIndex
   NeighbourBuffer,
   CountBuffer,
   TileBuffer,
+  PeelTileBuffer,
   NumberOfBuffers
 };
 enum ImageIndex
@@ -125,7 +126,7 @@ void vtkOpenGLHAVSRayCastMapper::Upload(const RayFrame& frame)
       this->Buffers[CellBuffer], mesh.GetCells().size() * sizeof(float), mesh.GetCells().data());
     storage(this->Buffers[NeighbourBuffer], mesh.GetNeighbours().size() * sizeof(int32_t),
       mesh.GetNeighbours().data());
-    storage(this->Buffers[CountBuffer], 2 * sizeof(uint32_t), nullptr);
+    storage(this->Buffers[CountBuffer], 3 * sizeof(uint32_t), nullptr);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     this->BoundaryFaces = static_cast<int>(mesh.GetNumberOfBoundaryFaces());
     this->Tetrahedra = static_cast<int>(mesh.GetNumberOfTetrahedra());
@@ -182,6 +183,8 @@ void vtkOpenGLHAVSRayCastMapper::ResizeImages(int width, int height)
     return;
   }
   this->ReleaseImages();
+  GLint drawn = 0; // (the draw framebuffer VTK's state has bound, put back below)
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawn);
   glGenTextures(3, this->Images);
   const GLenum formats[3] = { GL_R32UI, GL_R32UI, GL_RGBA32F };
   for (int i = 0; i < 3; ++i)
@@ -190,6 +193,17 @@ void vtkOpenGLHAVSRayCastMapper::ResizeImages(int width, int height)
     glTexStorage2D(GL_TEXTURE_2D, 1, formats[i], width, height);
   }
   glBindTexture(GL_TEXTURE_2D, 0);
+  // (Only a stencil: the peeling writes no colour, reads no depth.)
+  glGenRenderbuffers(1, &this->PeelStencil);
+  glBindRenderbuffer(GL_RENDERBUFFER, this->PeelStencil);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  glGenFramebuffers(1, &this->PeelFramebuffer);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->PeelFramebuffer);
+  glFramebufferRenderbuffer(
+    GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, this->PeelStencil);
+  glDrawBuffer(GL_NONE);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawn));
   this->ImageSize[0] = width;
   this->ImageSize[1] = height;
 }
@@ -200,6 +214,12 @@ void vtkOpenGLHAVSRayCastMapper::ReleaseImages()
   {
     glDeleteTextures(3, this->Images);
     std::fill(this->Images, this->Images + 3, 0u);
+  }
+  if (this->PeelFramebuffer)
+  {
+    glDeleteFramebuffers(1, &this->PeelFramebuffer);
+    glDeleteRenderbuffers(1, &this->PeelStencil);
+    this->PeelFramebuffer = this->PeelStencil = 0;
   }
   this->ImageSize[0] = this->ImageSize[1] = 0;
 }
@@ -238,7 +258,16 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     ? cache->ReadyShaderProgram(vtkHAVSKBufferShaders::RayCastTileVertexShader().c_str(),
         vtkHAVSKBufferShaders::RayCastShader(frame.Opaque, frame.Blend).c_str(), "")
     : nullptr;
-  if (!cast || !cast->GetCompiled())
+  // The tiles a peeling pass draws (a stencil of them): the tile vertex
+  // shader with no colour.
+  static const char* const maskFS = "#version 430 core\n"
+                                    "layout(location = 0) out vec4 havsUnused;\n"
+                                    "void main() { havsUnused = vec4(0.0); }\n";
+  vtkShaderProgram* mask = cast && cast->GetCompiled()
+    ? cache->ReadyShaderProgram(
+        vtkHAVSKBufferShaders::RayCastTileVertexShader().c_str(), maskFS, "")
+    : nullptr;
+  if (!cast || !cast->GetCompiled() || !mask || !mask->GetCompiled())
   {
     vtkErrorMacro("The ray-casting shaders could not be built; see the shader log above.");
     return false;
@@ -293,12 +322,17 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   const int tiles = tileCount[0] * tileCount[1];
   {
     const std::vector<GLuint> none(static_cast<size_t>(tiles), 0u);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[TileBuffer]);
-    glBufferData(
-      GL_SHADER_STORAGE_BUFFER, none.size() * sizeof(GLuint), none.data(), GL_STREAM_DRAW);
+    for (int buffer : { TileBuffer, PeelTileBuffer })
+    {
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[buffer]);
+      glBufferData(
+        GL_SHADER_STORAGE_BUFFER, none.size() * sizeof(GLuint), none.data(), GL_STREAM_DRAW);
+    }
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   }
-  for (vtkShaderProgram* program : { peel, cast })
+  cache->ReadyShaderProgram(mask);
+  mask->SetUniform2f("havsViewportSize", viewport);
+  for (vtkShaderProgram* program : { peel, cast, mask })
   {
     cache->ReadyShaderProgram(program);
     program->SetUniform2i("havsTileCount", tileCount);
@@ -321,6 +355,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   cast->SetUniform3f("havsEyeMC", eye);
   cast->SetUniform3f("havsDirectionMC", direction);
   cast->SetUniformi("havsMaxSteps", this->Tetrahedra + 16);
+  cast->SetUniformi("havsFolds", frame.FoldReentries ? 1 : 0);
 
   // Per pixel: no entry yet, the ray has reached nothing, opacity 0.
   const GLuint noKey = 0xffffffffu, noCell = 0;
@@ -331,7 +366,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   glBindImageTexture(0, this->Images[EntryKeyImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   glBindImageTexture(1, this->Images[EntryCellImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   glBindImageTexture(2, this->Images[RayStateImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  const GLuint zeroCounts[2] = { 0, 0 };
+  const GLuint zeroCounts[3] = { 0, 0, 0 };
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountBuffer]);
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(zeroCounts), zeroCounts);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
@@ -340,6 +375,21 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, this->Buffers[NeighbourBuffer]);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, this->Buffers[CountBuffer]);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, this->Buffers[TileBuffer]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, this->Buffers[PeelTileBuffer]);
+  // The stencil state VTK's state holds, put back after the frame.
+  vtkOpenGLState::ScopedglEnableDisable stencilTest(state, GL_STENCIL_TEST);
+  GLint stencil[7] = { GL_ALWAYS, 0, -1, GL_KEEP, GL_KEEP, GL_KEEP, -1 };
+  {
+    const GLenum names[7] = { GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK,
+      GL_STENCIL_FAIL, GL_STENCIL_PASS_DEPTH_FAIL, GL_STENCIL_PASS_DEPTH_PASS,
+      GL_STENCIL_WRITEMASK };
+    for (int i = 0; i < 7; ++i)
+    {
+      glGetIntegerv(names[i], &stencil[i]);
+    }
+  }
+  // Peeled fragments per pass (stage 0: those that passed the stencil).
+  std::vector<GLuint> fragmentQueries;
 
   state->PushFramebufferBindings();
   this->Targets->BindResult();
@@ -351,7 +401,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   const double t0 = vtkTimerLog::GetUniversalTime();
   GLuint started = 0;
   int passes = 0;
-  GLuint readBack[2] = { 0, 0 };
+  GLuint readBack[3] = { 0, 0, 0 };
   // The peel and cast split: a GL timestamp before the first peel and after
   // each pass's peel and cast (read after the frame; the passes already wait
   // for their counts, so the queries add no stall of their own).
@@ -367,16 +417,50 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   for (int pass = 0; pass<frame.MaximumPasses&& this->BoundaryFaces> 0; ++pass)
   {
     // Peel: the nearest front-facing boundary entry beyond each ray's reach.
-    cache->ReadyShaderProgram(peel);
-    peel->SetUniformi("havsPass", pass + 1);
+    state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->PeelFramebuffer);
     state->vtkglDisable(GL_BLEND);
     state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    const bool masked = pass > 0 && frame.TileSize > 0;
+    if (masked)
+    {
+      // From the second pass on, only the tiles where a ray left the mesh in
+      // the last pass (the others have no ray to start): a stencil of them.
+      state->vtkglEnable(GL_STENCIL_TEST);
+      state->vtkglStencilMask(0xff);
+      const GLint none = 0;
+      glClearBufferiv(GL_STENCIL, 0, &none);
+      state->vtkglStencilFunc(GL_ALWAYS, 1, 0xff);
+      state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+      cache->ReadyShaderProgram(mask);
+      mask->SetUniformi("havsPass", pass + 1);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, this->Buffers[PeelTileBuffer]);
+      glBindVertexArray(this->TileArray);
+      glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles);
+      glBindVertexArray(0);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, this->Buffers[TileBuffer]);
+      state->vtkglStencilFunc(GL_EQUAL, 1, 0xff);
+      state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+      state->vtkglStencilMask(0);
+    }
+    else
+    {
+      state->vtkglDisable(GL_STENCIL_TEST);
+    }
+    cache->ReadyShaderProgram(peel);
+    peel->SetUniformi("havsPass", pass + 1);
     state->vtkglEnable(GL_CULL_FACE);
     state->vtkglCullFace(GL_BACK);
     glFrontFace(view.FlipFacing ? GL_CW : GL_CCW);
     for (int stage = 0; stage < 2; ++stage)
     {
       peel->SetUniformi("havsPeelStage", stage);
+      if (stage == 0)
+      {
+        GLuint query = 0;
+        glGenQueries(1, &query);
+        glBeginQuery(GL_SAMPLES_PASSED, query);
+        fragmentQueries.push_back(query);
+      }
       state->vtkglEnable(GL_CULL_FACE);
       glBindVertexArray(this->VertexArray);
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->Buffers[FaceCellBuffer]);
@@ -390,11 +474,17 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->SectionBuffers[1]);
         glDrawArrays(GL_TRIANGLES, 0, 3 * sectionTriangles);
       }
+      if (stage == 0)
+      {
+        glEndQuery(GL_SAMPLES_PASSED);
+      }
       glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
     glBindVertexArray(0);
     glFrontFace(GL_CCW);
     state->vtkglDisable(GL_CULL_FACE);
+    state->vtkglDisable(GL_STENCIL_TEST);
+    this->Targets->BindResult();
     stamp();
     // Cast: walk the rays from their entries, the pass's colour under the result.
     cache->ReadyShaderProgram(cast);
@@ -453,9 +543,24 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   {
     glDeleteQueries(static_cast<GLsizei>(stamps.size()), stamps.data());
   }
+  counts->PeelFragments.clear();
+  for (GLuint query : fragmentQueries)
+  {
+    GLuint64 samples = 0;
+    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samples);
+    counts->PeelFragments.push_back(static_cast<long long>(samples));
+  }
+  if (!fragmentQueries.empty())
+  {
+    glDeleteQueries(static_cast<GLsizei>(fragmentQueries.size()), fragmentQueries.data());
+  }
+  state->vtkglStencilFunc(stencil[0], stencil[1], static_cast<GLuint>(stencil[2]));
+  state->vtkglStencilOp(stencil[3], stencil[4], stencil[5]);
+  state->vtkglStencilMask(static_cast<GLuint>(stencil[6]));
   counts->Passes = passes;
   counts->Rays = readBack[0];
   counts->Cells = readBack[1];
+  counts->FoldReentries = readBack[2];
   {
     std::vector<GLuint> last(static_cast<size_t>(tiles), 0u);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[TileBuffer]);

@@ -74,10 +74,14 @@ private:
   vtkNew<vtkHAVSGLTable> GLTable;
   vtkNew<vtkHAVSGLFrameTargets> Targets;
   unsigned int VertexArray = 0;
-  unsigned int Buffers[7] = {}; // points, faces, face cells, cells, neighbours, counts, tiles
+  unsigned int Buffers[8] = {}; // points, faces, face cells, cells, neighbours, counts, tiles,
+                                // the tiles the next peel draws
   unsigned int TileArray = 0;   // (no attributes: the tiles' corners come from their ids)
   unsigned int Images[3] = { 0, 0, 0 }; // entry key, entry cell, ray state
   int ImageSize[2] = { 0, 0 };
+  // The peeling's framebuffer: a stencil only (the tiles a pass peels).
+  unsigned int PeelFramebuffer = 0;
+  unsigned int PeelStencil = 0;
   unsigned int SectionArray = 0;
   unsigned int SectionBuffers[2] = { 0, 0 }; // points, cells
   int SectionTriangles = 0;

@@ -10,7 +10,8 @@
 // composited front to back into this pass's colour, which blending puts
 // under what the earlier passes left (ONE_MINUS_DST_ALPHA, ONE). The walk
 // ends where the ray leaves the mesh (neighbour -1: the next pass peels the
-// next entry beyond it), at the clipping planes or the opaque surface, or at
+// next entry beyond it, unless it comes back in at once across a fold of
+// the boundary: havsFoldReentry), at the clipping planes or the opaque surface, or at
 // the termination opacity (the ray is then done for every later pass).
 //
 // The order-independent blends (HAVS_CELL_BLEND 1, 2: maximum and minimum
@@ -36,12 +37,23 @@ layout(std430, binding = 6) readonly buffer HAVSNeighbours
 {
   int havsNeighbours[];
 };
-// Counts over the frame: rays started, cells crossed.
+// Counts over the frame: rays started, cells crossed, fold re-entries taken.
 layout(std430, binding = 7) buffer HAVSRayCounts
 {
   uint havsRaysStarted;
   uint havsCellsCrossed;
+  uint havsFoldReentries;
 };
+// Per screen tile: the next pass (1-based) whose peeling must draw there (a
+// ray left the mesh there in this pass and may come back in).
+layout(std430, binding = 9) buffer HAVSPeelTiles
+{
+  uint havsPeelTiles[];
+};
+uniform int havsTileSize;
+uniform ivec2 havsTileCount;
+uniform int havsPass; // this pass, 1-based
+
 layout(binding = 0, r32ui) uniform coherent uimage2D havsEntryKey;
 layout(binding = 1, r32ui) uniform coherent uimage2D havsEntryCell;
 layout(binding = 2, rgba32f) uniform coherent image2D havsRayState;
@@ -51,12 +63,129 @@ uniform mat4 havsMCRC;        // model -> eye-relative world (volume matrix incl
 uniform vec3 havsEyeMC;       // the eye in model coordinates
 uniform vec3 havsDirectionMC; // the direction of projection in model coordinates
 uniform int havsMaxSteps;     // a guard against a cycle in a broken table
+uniform int havsFolds;        // 1: re-enter across a boundary fold (see havsFoldReentry)
 
 layout(location = 0) out vec4 havsPassColor;
 
 float havsKeyDistance(uint k)
 {
   return uintBitsToFloat((k & 0x80000000u) != 0u ? (k & 0x7fffffffu) : ~k);
+}
+
+// The distance from p to the line where planes a and b (unit normals) meet.
+float havsEdgeDistance(vec4 a, vec4 b, vec3 p)
+{
+  float fa = dot(a.xyz, p) + a.w, fb = dot(b.xyz, p) + b.w;
+  float c = dot(a.xyz, b.xyz);
+  float sine2 = max(1.0 - c * c, 1e-12);
+  return sqrt(max(fa * fa + fb * fb - 2.0 * c * fa * fb, 0.0) / sine2);
+}
+
+// A fold of the boundary: the ray has left the mesh through boundary face
+// `face` of `cell` at p (parameter tOut), and the boundary face on the other
+// side of that face's nearest edge, found by walking around the edge through
+// the face neighbours, may be an entry the ray crosses right there (a crease:
+// combustor, 512^2, view 1, pixel (119, 240): out at eye distance 42.057024,
+// in again at 42.057045, 0.00014 px inside the entry face's edge, which the
+// rasterizer then misses, so the peeling never finds that entry and the rest
+// of the ray is lost). Only where the rasterizer may have missed such an
+// entry: the ray passes within 0.05 px (`near`, model units at the exit) of
+// that edge (snapping moves an edge by about 1/256 px; elsewhere the peeling
+// finds the entry). Returns the cell the ray re-enters, with where (tNext),
+// or -1: no such cell, or the ray does not pass through it, or it enters it
+// more than `gap` after the exit.
+int havsFoldReentry(int cell, int face, vec3 o, vec3 d, float tOut, float gap, float near,
+  float parallelToRay, out float tNext)
+{
+  tNext = tOut;
+  vec3 p = o + tOut * d;
+  // The exit face's edge nearest to p: the face of `cell` that shares it.
+  vec4 exitPlane = havsCells[5 * cell + face];
+  int side = -1;
+  float nearest = HAVS_EMPTY;
+  for (int j = 0; j < 4; ++j)
+  {
+    float e = j == face ? HAVS_EMPTY : havsEdgeDistance(exitPlane, havsCells[5 * cell + j], p);
+    if (e < nearest)
+    {
+      nearest = e;
+      side = j;
+    }
+  }
+  // The ray's distance from the edge's line, across the ray: p lies on the
+  // exit plane, `nearest` from the line, along m (in that plane, across the edge).
+  vec3 u = cross(exitPlane.xyz, havsCells[5 * cell + side].xyz);
+  vec3 across = cross(d, u);
+  float acrossLength = length(across);
+  if (acrossLength > 1e-6 * length(d) * length(u))
+  {
+    vec3 m = normalize(cross(u, exitPlane.xyz));
+    if (nearest * abs(dot(m, across)) > near * acrossLength)
+    {
+      return -1;
+    }
+  }
+  // Around the edge: into the neighbour across `side`, out through its other
+  // face on the edge (the one whose line with the face come in by lies
+  // nearest p), until a boundary face.
+  int previous = cell;
+  int current = havsNeighbours[4 * cell + side];
+  for (int around = 0; around < 32 && current >= 0 && current != cell; ++around)
+  {
+    int base = 5 * current;
+    int back = -1;
+    for (int j = 0; j < 4; ++j)
+    {
+      back = havsNeighbours[4 * current + j] == previous ? j : back;
+    }
+    if (back < 0)
+    {
+      return -1; // (a broken table)
+    }
+    vec4 backPlane = havsCells[base + back];
+    int leave = -1;
+    nearest = HAVS_EMPTY;
+    for (int j = 0; j < 4; ++j)
+    {
+      float e = j == back ? HAVS_EMPTY : havsEdgeDistance(backPlane, havsCells[base + j], p);
+      if (e < nearest)
+      {
+        nearest = e;
+        leave = j;
+      }
+    }
+    int next = havsNeighbours[4 * current + leave];
+    if (next >= 0)
+    {
+      previous = current;
+      current = next;
+      continue;
+    }
+    // The boundary face on the other side of the edge: the ray's interval in
+    // its cell, which must go on past the exit and begin within `gap` of it.
+    float tIn = -HAVS_EMPTY, tLeave = HAVS_EMPTY;
+    for (int j = 0; j < 4; ++j)
+    {
+      vec4 plane = havsCells[base + j];
+      float towards = dot(plane.xyz, d);
+      float t = -(dot(plane.xyz, o) + plane.w) / towards;
+      if (towards < -parallelToRay)
+      {
+        tIn = max(tIn, t);
+      }
+      else if (towards > parallelToRay)
+      {
+        tLeave = min(tLeave, t);
+      }
+    }
+    if (tIn <= tOut + gap && tLeave > max(tIn, tOut))
+    {
+      tNext = max(tIn, tOut);
+      return current;
+    }
+    return -1;
+  }
+  return -1;
 }
 
 void main()
@@ -91,6 +220,10 @@ void main()
   vec3 oRC = (havsMCRC * vec4(o, 1.0)).xyz;
   vec3 dRC = mat3(havsMCRC) * d;
   float worldPerT = length(dRC);
+  // The neighbouring pixel's ray (model units apart: pixelApart0 + t pixelApartPerT).
+  vec4 nextMC = havsDCMC * vec4(ndc + vec2(2.0 / havsViewportSize.x, 0.0), -1.0, 1.0);
+  float pixelApart0 = havsParallel != 0 ? length(nextMC.xyz / nextMC.w - o) : 0.0;
+  float pixelApartPerT = havsParallel != 0 ? 0.0 : length(nextMC.xyz / nextMC.w - havsEyeMC - d);
   // The eye distance along the ray is linear in t.
   float distance0 = havsParallel != 0 ? dot(oRC, havsDirectionOfProjection) : 0.0;
   float distanceRate = havsParallel != 0 ? dot(dRC, havsDirectionOfProjection) : worldPerT;
@@ -203,6 +336,19 @@ void main()
       break;
     }
     int next = havsNeighbours[4 * cell + face];
+    if (next < 0 && havsFolds != 0)
+    {
+      // In again at once across a fold of the boundary (see havsFoldReentry),
+      // within a thousandth of the eye distance.
+      float tNext;
+      next = havsFoldReentry(cell, face, o, d, tOut, 1e-3 * abs(distance0 / distanceRate + tOut),
+        0.05 * (pixelApart0 + tOut * pixelApartPerT), parallelToRay, tNext);
+      if (next >= 0)
+      {
+        atomicAdd(havsFoldReentries, 1u);
+        tIn = tNext;
+      }
+    }
     if (next < 0)
     {
       ++steps;
@@ -213,6 +359,11 @@ void main()
   atomicAdd(havsCellsCrossed, uint(steps));
   // (Never before the entry the peeling found.)
   float reach = ended ? HAVS_EMPTY : max(distance0 + tIn * distanceRate, keyDistance);
+  if (!ended)
+  {
+    ivec2 tile = pixel / havsTileSize;
+    havsPeelTiles[tile.y * havsTileCount.x + tile.x] = uint(havsPass + 1);
+  }
   imageStore(
     havsRayState, pixel, vec4(reach, before + (1.0 - before) * color.a, keyDistance, 0.0));
 #if HAVS_CELL_BLEND != 0

@@ -11,6 +11,11 @@
 //HAVS::Defines
 //HAVS::KBufferLib
 
+// The stencil test first: from the second pass on, only the tiles where a ray
+// left the mesh in the last pass pass it (vtkOpenGLHAVSRayCastMapper), and a
+// fragment that fails it must not touch the images.
+layout(early_fragment_tests) in;
+
 in vec3 havsPositionMC;
 in vec3 havsPositionRC;
 

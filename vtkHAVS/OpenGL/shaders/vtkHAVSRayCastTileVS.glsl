@@ -4,7 +4,9 @@
 // et al. 2005, seed 002). One instance per tile, two triangles each
 // (gl_VertexID 0..5); a tile in which the peeling found no entry this pass
 // collapses to a point (no fragment): the ray-casting pass works only where
-// the mesh projects and rays are still going. No vertex buffer.
+// the mesh projects and rays are still going. No vertex buffer. Also the
+// stencil of the tiles a later peeling pass draws (the buffer at binding 8
+// then holds, per tile, the pass that must peel there).
 layout(std430, binding = 8) readonly buffer HAVSTiles
 {
   uint havsTiles[]; // per tile: the last pass (1-based) in which a ray started there
