@@ -38,6 +38,7 @@
 // marked long in CMake, which pass their names).
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
+#include "havsTestProperties.h"
 #include "havsTestScenes.h"
 
 #include "vtkHAVSDataSets.h"
@@ -51,7 +52,6 @@
 #include "vtkActor.h"
 #include "vtkAppendFilter.h"
 #include "vtkCamera.h"
-#include "vtkColorTransferFunction.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkExtractCells.h"
 #include "vtkFloatArray.h"
@@ -346,22 +346,7 @@ void TestGrazingExit()
   }
   const int size = 1024, x0 = 524 - 24, y0 = 363 - 24, w = 48;
   // havs_benchmark's transfer function (the scene where the pixel was found).
-  double r[2];
-  grid->GetPointData()->GetScalars()->GetRange(r);
-  const double span = r[1] - r[0];
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(r[0], 0.1, 0.2, 1.0);
-  color->AddRGBPoint(r[0] + 0.3 * span, 0.16, 0.68, 0.58);
-  color->AddRGBPoint(r[0] + 0.5 * span, 0.2, 1.0, 0.3);
-  color->AddRGBPoint(r[1], 1.0, 0.3, 0.1);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(r[0], 0.0);
-  opacity->AddPoint(r[0] + 0.3 * span, 0.1);
-  opacity->AddPoint(r[1], 0.8);
-  vtkNew<vtkVolumeProperty> property;
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(grid->GetLength() / 8.0);
+  auto property = havstest::MakeBenchmarkPropertyFor(grid);
   vtkNew<vtkHAVSVolumeMapper> mapper; // the defaults
   mapper->KeepFloatResultOn();
   auto scene = havstest::MakeScene(grid, mapper, property, size, size);

@@ -44,6 +44,7 @@
 // Usage: TestHAVSRayCast <scene> [size] [views]
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
+#include "havsTestProperties.h"
 #include "havsTestScenes.h"
 
 #include "vtkHAVSCellProjectionMapper.h"
@@ -59,7 +60,6 @@
 #include "vtkCamera.h"
 #include "vtkCell.h"
 #include "vtkCellData.h"
-#include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -600,23 +600,7 @@ int FoldScene(int size)
     return EXIT_FAILURE;
   }
   // havs_benchmark's transfer function (where the pixels were found).
-  double r[2];
-  grid->GetPointData()->GetScalars()->GetRange(r);
-  const double span = r[1] - r[0];
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(r[0], 0.1, 0.2, 1.0);
-  color->AddRGBPoint(r[0] + 0.3 * span, 0.16, 0.68, 0.58);
-  color->AddRGBPoint(r[0] + 0.5 * span, 0.2, 1.0, 0.3);
-  color->AddRGBPoint(r[1], 1.0, 0.3, 0.1);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(r[0], 0.0);
-  opacity->AddPoint(r[0] + 0.3 * span, 0.1);
-  opacity->AddPoint(r[1], 0.8);
-  vtkNew<vtkVolumeProperty> property;
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(grid->GetLength() / 8.0);
-  property->ShadeOff();
+  auto property = havstest::MakeBenchmarkPropertyFor(grid);
   vtkNew<vtkHAVSRayCastMapper> mapper;
   mapper->KeepFloatResultOn();
   auto s = havstest::MakeScene(grid, mapper, property, size, size);

@@ -68,4 +68,17 @@ vtkSmartPointer<vtkVolumeProperty> MakeRampPropertyFor(vtkUnstructuredGrid* grid
   return MakeRampProperty(range[0], range[1], 0.8, grid->GetLength() / 8.0);
 }
 
+vtkSmartPointer<vtkVolumeProperty> MakeBenchmarkPropertyFor(vtkUnstructuredGrid* grid)
+{
+  double range[2];
+  grid->GetPointData()->GetScalars()->GetRange(range);
+  auto property = MakeRampProperty(range[0], range[1], 0.8, grid->GetLength() / 8.0);
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity();
+  opacity->RemoveAllPoints();
+  opacity->AddPoint(range[0], 0.0);
+  opacity->AddPoint(range[0] + 0.3 * (range[1] - range[0]), 0.1);
+  opacity->AddPoint(range[1], 0.8);
+  return property;
+}
+
 }

@@ -34,6 +34,11 @@ vtkSmartPointer<vtkVolumeProperty> MakeRampProperty(
 /// unit distance an eighth of the bounds' diagonal.
 vtkSmartPointer<vtkVolumeProperty> MakeRampPropertyFor(vtkUnstructuredGrid* grid);
 
+/// havs_benchmark's default transfer function over the grid's scalar range
+/// (the colour nodes of MakeRampProperty; opacity 0, 0.1 at 30 %, 0.8 at the
+/// top; unit distance an eighth of the diagonal): for scenes found there.
+vtkSmartPointer<vtkVolumeProperty> MakeBenchmarkPropertyFor(vtkUnstructuredGrid* grid);
+
 }
 
 #endif

@@ -280,6 +280,30 @@ bool vtkHAVSGLFrameTargets::Composite(int originX, int originY)
 }
 
 //------------------------------------------------------------------------------
+bool vtkHAVSGLFrameTargets::EndFrame(bool resolved, bool keep,
+  std::initializer_list<vtkTextureObject*> textures, int originX, int originY, vtkObject* reporter)
+{
+  if (keep)
+  {
+    this->KeepResult();
+  }
+  for (vtkTextureObject* t : textures)
+  {
+    t->Deactivate();
+  }
+  vtkOpenGLState* state = this->Window->GetState();
+  state->PopFramebufferBindings();
+  state->vtkglViewport(originX, originY, this->Size[0], this->Size[1]);
+  if (!resolved)
+  {
+    vtkErrorWithObjectMacro(
+      reporter, "The resolve shader could not be built; see the shader log above.");
+    return false;
+  }
+  return this->Composite(originX, originY);
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSGLFrameTargets::DrawFullViewport()
 {
   if (!this->EmptyVertexArray)

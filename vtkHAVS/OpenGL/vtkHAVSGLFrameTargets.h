@@ -29,8 +29,9 @@
 #include "vtkSmartPointer.h"  // For vtkSmartPointer
 #include "vtkTextureObject.h" // For vtkSmartPointer<vtkTextureObject>
 
-#include <cstdint> // For std::uint64_t
-#include <vector>  // For std::vector
+#include <cstdint>          // For std::uint64_t
+#include <initializer_list> // For std::initializer_list
+#include <vector>           // For std::vector
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
@@ -88,6 +89,18 @@ public:
 
   /// Composites the result over VTK's framebuffer (viewport set by the caller).
   bool Composite(int originX, int originY);
+
+  /**
+   * The end of a cell-projection or ray-cast frame, after its draw and its
+   * blend's resolve (`resolved`: whether the resolve's program could be
+   * built): the float result kept when `keep`, `textures` deactivated, the
+   * framebuffer bindings the frame pushed popped, the viewport put back on
+   * (originX, originY) at the targets' size, and the result composited there.
+   * False, with an error from `reporter`, when the resolve failed; false
+   * when the composite did.
+   */
+  bool EndFrame(bool resolved, bool keep, std::initializer_list<vtkTextureObject*> textures,
+    int originX, int originY, vtkObject* reporter);
 
   /// A full-viewport triangle (the vertex shader makes it from gl_VertexID).
   void DrawFullViewport();

@@ -303,21 +303,8 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   state->vtkglBlendEquation(GL_FUNC_ADD);
   const bool resolved =
     vtkHAVSExtremumPass::ResolveBlend(window, this->Targets, this->GLTable, frame.Blend);
-  if (frame.KeepResult)
-  {
-    this->Targets->KeepResult();
-  }
-  additive->Deactivate();
-  table->Deactivate();
-  depth->Deactivate();
-  state->PopFramebufferBindings();
-  state->vtkglViewport(view.OriginX, view.OriginY, width, height);
-  if (!resolved)
-  {
-    vtkErrorMacro("The resolve shader could not be built; see the shader log above.");
-    return false;
-  }
-  return this->Targets->Composite(view.OriginX, view.OriginY);
+  return this->Targets->EndFrame(
+    resolved, frame.KeepResult, { additive, table, depth }, view.OriginX, view.OriginY, this);
 }
 
 //------------------------------------------------------------------------------

@@ -578,21 +578,8 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   {
     glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   }
-  if (frame.KeepResult)
-  {
-    this->Targets->KeepResult();
-  }
-  additive->Deactivate();
-  table->Deactivate();
-  depth->Deactivate();
-  state->PopFramebufferBindings();
-  state->vtkglViewport(view.OriginX, view.OriginY, width, height);
-  if (!resolved)
-  {
-    vtkErrorMacro("The resolve shader could not be built; see the shader log above.");
-    return false;
-  }
-  return this->Targets->Composite(view.OriginX, view.OriginY);
+  return this->Targets->EndFrame(
+    resolved, frame.KeepResult, { additive, table, depth }, view.OriginX, view.OriginY, this);
 }
 
 //------------------------------------------------------------------------------
