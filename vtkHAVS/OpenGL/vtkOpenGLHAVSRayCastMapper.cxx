@@ -259,13 +259,11 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
         vtkHAVSKBufferShaders::RayCastShader(frame.Opaque, frame.Blend).c_str(), "")
     : nullptr;
   // The tiles a peeling pass draws (a stencil of them): the tile vertex
-  // shader with no colour.
-  static const char* const maskFS = "#version 430 core\n"
-                                    "layout(location = 0) out vec4 havsUnused;\n"
-                                    "void main() { havsUnused = vec4(0.0); }\n";
+  // shader with the trivial fragment shader (the peel's framebuffer has no
+  // colour attachment: only the stencil is written).
   vtkShaderProgram* mask = cast && cast->GetCompiled()
-    ? cache->ReadyShaderProgram(
-        vtkHAVSKBufferShaders::RayCastTileVertexShader().c_str(), maskFS, "")
+    ? cache->ReadyShaderProgram(vtkHAVSKBufferShaders::RayCastTileVertexShader().c_str(),
+        vtkHAVSKBufferShaders::TrivialShader().c_str(), "")
     : nullptr;
   if (!cast || !cast->GetCompiled() || !mask || !mask->GetCompiled())
   {

@@ -1,7 +1,8 @@
 #version 430 core
 // Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
-// vtkHAVS benchmark aid: the cheapest fragment shader, to time the faces'
-// rasterization alone (the lower bound of any face-based method).
+// The cheapest fragment shader: a benchmark aid, to time the faces'
+// rasterization alone (the lower bound of any face-based method); and the
+// ray caster's tile stencil (drawn with no colour attachment).
 layout(location = 0) out vec4 havsCount;
 
 void main()
