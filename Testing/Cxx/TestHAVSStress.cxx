@@ -1258,8 +1258,9 @@ int Elongated()
       std::printf("  clipping range %.3g .. %.3g\n", camera->GetClippingRange()[0],
         camera->GetClippingRange()[1]);
       // The cell projection along the axis: a stated bound (see above).
-      const bool axisCells = cells && &view == &views[0];
-      if (Path() == StressPath::CellData && !cells && &view == &views[0])
+      const bool axis = &view == &views[0];
+      const bool axisCells = cells && axis;
+      if (Path() == StressPath::CellData && !cells && axis)
       {
         // Cell scalars, along the axis: rays on the faces that contain the
         // axis direction run along the scalar's jumps (see CheckViewOnJumps).
