@@ -122,6 +122,34 @@ int TestHAVSShaderSources(int, char*[])
             vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true, f),
       "list_resolve" + suffix, "frag");
   }
+  // Cell scalars (vtkHAVSCellOptics: the segments, the extremum resolve and
+  // the additive blend read the cell optics) on every pass that has them.
+  {
+    vtkHAVSKBufferShaders::Features f;
+    f.CellScalars = true;
+    check(vtkHAVSKBufferShaders::ExtremumResolveShader(true), "extremum_resolve_cells", "frag");
+    check(vtkHAVSKBufferShaders::ExtremumDrawShader(f), "extremum_draw_cells", "frag");
+    for (int blend : { 0, 1, 2, 4 })
+    {
+      const std::string suffix = "_cells_blend" + std::to_string(blend);
+      check(vtkHAVSKBufferShaders::CellProjectionShader(true, blend, true),
+        "cell_projection" + suffix, "frag");
+      check(vtkHAVSKBufferShaders::RayCastShader(true, blend, true), "ray_cast" + suffix, "frag");
+    }
+    for (int k : { 2, 6 })
+    {
+      const std::string suffix = "_cells_k" + std::to_string(k);
+      check(vtkHAVSKBufferShaders::InterlockDrawShader(k, vtkHAVSKBufferShaders::InterlockARB, f),
+        "interlock_draw" + suffix, "frag");
+      check(vtkHAVSKBufferShaders::ResolveShader(
+              vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, k, false, f),
+        "fetch_resolve" + suffix, "frag");
+    }
+    check(vtkHAVSKBufferShaders::ListDrawShader(f), "list_draw_cells", "frag");
+    check(vtkHAVSKBufferShaders::ResolveShader(
+            vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true, f),
+      "list_resolve_cells", "frag");
+  }
   // The features left out are really out of the source (no fetch, no atomic).
   vtkHAVSKBufferShaders::Features none;
   none.CountViolations = none.Tagging = none.Opaque = false;

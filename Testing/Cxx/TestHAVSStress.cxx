@@ -652,26 +652,15 @@ int Scalars()
       check(what, p, sc.Grid, ramp, false);
     }
     // The spike (control: the reference without it, empty). On the cell-data
-    // path a known defect, reported and not asserted: a segment of constant
-    // scalar s reads the table's diagonal (s, s) interpolated between bins,
-    // which a spike between two bins misses (measured: RMSE 3.3e-2, max 0.26
-    // against the reference, the image within 2.5e-3 of the empty one).
-    // Exact would need the transfer function evaluated per cell, not read
-    // from the table (Design.md, "Cell scalars").
-    const Pair spiked = render(grid, spike);
-    if (Path() == StressPath::CellData)
-    {
-      const auto d = havstest::Compare(spiked.Image, spiked.Exact, edge);
-      Print(
-        who + ", spike narrower than a table bin: vs reference (KNOWN DEFECT, not asserted)", d);
-      havstest::Check(havstest::AllFinite(spiked.Image), who + ", spike: finite");
-    }
-    else
-    {
-      // Level of detail: its own bound (measured RMSE 2.2e-4, max 3.0e-3; the
-      // control, the empty image, 1.5e-3, 6.7e-3).
-      check("spike narrower than a table bin", spiked, grid, none, false, { 1e-3, 0.01 });
-    }
+    // path a cell's segment takes the transfer function at the cell's value
+    // itself (vtkHAVSCellOptics), which meets the spike exactly; it read the
+    // table's diagonal (s, s) before, interpolated between nodes, and missed
+    // it (RMSE 3.3e-2, max 0.26; the image within 2.5e-3 of the empty one, so
+    // the control below is the one that fails for that defect). Level of
+    // detail: its own bound (measured RMSE 2.2e-4, max 3.0e-3; the control,
+    // the empty image, 1.5e-3, 6.7e-3).
+    check(
+      "spike narrower than a table bin", render(grid, spike), grid, none, false, { 1e-3, 0.01 });
     // Fully transparent: nothing at all (control: the ramp's reference).
     const Pair empty = render(grid, none);
     check("fully transparent", empty, grid, ramp, false);
@@ -1303,10 +1292,6 @@ struct StockScene
   std::function<void(
     vtkSmartPointer<vtkUnstructuredGrid>&, vtkSmartPointer<vtkVolumeProperty>&, vtkCamera*)>
     Make;
-  /// HAVS's row reported, not asserted: the cell-data path's spike (a known
-  /// defect: Design.md, cell scalars; PT, which evaluates the transfer
-  /// function per cell, is exact there).
-  bool KnownDefect = false;
 };
 
 std::vector<StockScene> StockScenes()
@@ -1473,8 +1458,7 @@ std::vector<StockScene> StockScenes()
       o->AddPoint(at + 0.001, 0.0);
       o->AddPoint(1.0, 0.0);
       view(c, g, 30, 20);
-    },
-    true });
+    } });
   auto box = [](vtkSmartPointer<vtkUnstructuredGrid>& g, vtkSmartPointer<vtkVolumeProperty>& p)
   {
     g = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
@@ -1681,13 +1665,7 @@ int Stock()
     {
       const Outcome o = run(static_cast<int>(i), mapper);
       row += " | " + o.Text;
-      if (std::string(mapper) == "HAVS" && scenes[i].KnownDefect)
-      {
-        // Reported, not asserted (StockScene::KnownDefect); it must still run.
-        havstest::Check(o.Ran, std::string(scenes[i].Name) + ": HAVS ran");
-        row += " (known defect)";
-      }
-      else if (std::string(mapper) == "HAVS")
+      if (std::string(mapper) == "HAVS")
       {
         // HAVS through the window's 8-bit colour: within quantization.
         havstest::Check(o.Ran && o.RMSE < 0.004 && o.Max < 0.03,

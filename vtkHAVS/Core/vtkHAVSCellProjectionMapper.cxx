@@ -240,14 +240,14 @@ void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volum
     // A new time step on the same mesh: the cells' fields again, the order kept.
     vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
       this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
-      this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronScalars() : nullptr);
+      this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
     this->FieldTime.Modified();
   }
   else if (state != vtkHAVSMapperInputs::MeshUnchanged || this->Cells.empty())
   {
     vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
       this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
-      this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronScalars() : nullptr);
+      this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
     this->GeometryTime.Modified();
     this->FieldTime.Modified();
     this->OrderBuilt = false;

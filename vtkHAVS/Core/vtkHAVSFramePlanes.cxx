@@ -125,8 +125,8 @@ bool vtkHAVSFramePlanes::Update(
         section.Scalars, &section.Cells);
       if (mesh->HasCellScalars())
       {
-        // A section triangle lies in one tetrahedron: its cell's value.
-        const std::vector<float>& cellValues = mesh->GetTetrahedronScalars();
+        // A section triangle lies in one tetrahedron: its cell's code.
+        const std::vector<float>& cellValues = mesh->GetTetrahedronCodes();
         for (size_t t = 0; t < section.Cells.size(); ++t)
         {
           std::fill_n(&section.Scalars[3 * t], 3, cellValues[section.Cells[t]]);

@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSMapperInputs.h"
 
+#include "vtkHAVSCellOptics.h"
+
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSPreIntegrationTable.h"
@@ -180,6 +182,26 @@ bool vtkHAVSMapperInputs::PrepareTable(vtkAbstractVolumeMapper* mapper, vtkVolum
     }
     *rebuilt = true;
     mapper->UpdateProgress(1.0);
+  }
+  // Cell scalars: the functions at each cell value, for the cells' segments
+  // (vtkHAVSCellOptics); rebuilt with the values or the functions.
+  vtkHAVSCellOptics* optics = table->GetCellOptics();
+  if (mesh->HasCellScalars())
+  {
+    if (optics->NeedsRebuild(property, component, mesh->GetScalarTime()))
+    {
+      if (!optics->Build(property, component, mesh->GetCellValues(), range, mesh->GetScalarTime()))
+      {
+        vtkErrorWithObjectMacro(mapper, "The cells' transfer-function values could not be built.");
+        return false;
+      }
+      *rebuilt = true;
+    }
+  }
+  else if (optics->GetNumberOfValues() > 0)
+  {
+    optics->Clear();
+    *rebuilt = true;
   }
   return true;
 }

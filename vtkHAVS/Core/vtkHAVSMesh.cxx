@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSMesh.h"
 
+#include "vtkHAVSCellOptics.h"
+
 #include "vtkAbstractMapper.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -223,7 +225,7 @@ const std::vector<uint32_t>& vtkHAVSMesh::GetFaceVertexIds() const
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSMesh::BuildCellScalarVertices(const std::vector<float>& cellValues)
+void vtkHAVSMesh::BuildCellScalarVertices(const std::vector<float>& cellCodes)
 {
   const std::vector<uint32_t>& faces = this->Faces->GetFaceVertices();
   const std::vector<uint32_t>& sides = this->Faces->GetFaceCells();
@@ -236,11 +238,11 @@ void vtkHAVSMesh::BuildCellScalarVertices(const std::vector<float>& cellValues)
     {
       for (vtkIdType f = begin; f < end; ++f)
       {
-        // A boundary face has one cell: its value on both sides (the side
+        // A boundary face has one cell: its code on both sides (the side
         // outside is never composited; the extremum blends see the cell).
         const uint32_t front = sides[2 * f], back = sides[2 * f + 1];
-        const float normalSide = cellValues[front != vtkHAVSFaceSet::NoCell ? front : back];
-        const float otherSide = cellValues[back != vtkHAVSFaceSet::NoCell ? back : front];
+        const float normalSide = cellCodes[front != vtkHAVSFaceSet::NoCell ? front : back];
+        const float otherSide = cellCodes[back != vtkHAVSFaceSet::NoCell ? back : front];
         for (int v = 0; v < 3; ++v)
         {
           const size_t vertex = 3 * static_cast<size_t>(f) + v;
@@ -250,6 +252,64 @@ void vtkHAVSMesh::BuildCellScalarVertices(const std::vector<float>& cellValues)
           this->FaceVertexScalars[2 * vertex + 1] = otherSide;
           this->FaceVertexIds[vertex] = static_cast<uint32_t>(vertex);
         }
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSMesh::BuildCellValueCodes(
+  const std::vector<double>& values, const std::vector<uint8_t>& used, std::vector<float>& codes)
+{
+  const size_t n = values.size();
+  std::vector<double>& distinct = this->CellValues;
+  distinct.clear();
+  for (size_t i = 0; i < n; ++i)
+  {
+    if (used[i])
+    {
+      distinct.push_back(values[i]);
+    }
+  }
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  // More distinct values than codes: the values rounded to a grid of
+  // MaximumValues nodes over the range (steps of 4.8e-7 of it).
+  const bool rounded = distinct.size() > vtkHAVSCellOptics::MaximumValues;
+  const double lo = this->ScalarRange[0], span = this->ScalarRange[1] - this->ScalarRange[0];
+  const double steps = vtkHAVSCellOptics::MaximumValues - 1;
+  auto grid = [&](double v)
+  { return std::min(std::max(std::round((v - lo) / span * steps), 0.0), steps); };
+  if (rounded)
+  {
+    std::ostringstream w;
+    w << distinct.size() << " distinct cell values: more than the "
+      << vtkHAVSCellOptics::MaximumValues
+      << " the passes tell apart; each is rounded to the nearest of that many evenly spaced "
+         "values over the range (a step of "
+      << span / steps << ").";
+    this->Warnings.push_back(w.str());
+    for (double& v : distinct)
+    {
+      v = grid(v);
+    }
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    for (double& v : distinct)
+    {
+      v = lo + v / steps * span;
+    }
+  }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (!used[i])
+        {
+          continue;
+        }
+        const double v = rounded ? lo + grid(values[i]) / steps * span : values[i];
+        const auto at = std::lower_bound(distinct.begin(), distinct.end(), v);
+        codes[i] = vtkHAVSCellOptics::CodeOf(static_cast<uint32_t>(at - distinct.begin()));
       }
     });
 }
@@ -354,7 +414,20 @@ bool vtkHAVSMesh::MapScalars(vtkDataArray* scalars, bool cellData, const std::st
         this->Scalars[tets[4 * t + v]] = this->TetrahedronScalars[t];
       }
     }
-    this->BuildCellScalarVertices(normalized);
+    // The cells' values as the passes draw them: each used cell's code
+    // (vtkHAVSCellOptics), the index of its value among the distinct ones.
+    for (double& v : values)
+    {
+      v = std::isfinite(v) ? v : range[0];
+    }
+    std::vector<float> codes(static_cast<size_t>(numValues), 0.0f);
+    this->BuildCellValueCodes(values, used, codes);
+    this->TetrahedronCodes.resize(tetCells.size());
+    for (size_t t = 0; t < tetCells.size(); ++t)
+    {
+      this->TetrahedronCodes[t] = codes[tetCells[t]];
+    }
+    this->BuildCellScalarVertices(codes);
   }
   else
   {
@@ -511,6 +584,8 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   this->HashedSource = nullptr;
   this->CellScalars = false;
   this->TetrahedronScalars.clear();
+  this->TetrahedronCodes.clear();
+  this->CellValues.clear();
   this->FaceVertexPoints.clear();
   this->FaceVertexScalars.clear();
   this->FaceVertexIds.clear();

@@ -24,9 +24,10 @@
  *   infinite values replaced by the lowest finite one.
  * Point scalars are drawn at the shared points, interpolated across faces.
  * Cell scalars are constant in each cell: a segment lies in one cell, so a
- * fragment carries the value of the cell behind it. Each face is then drawn
- * with vertices of its own carrying two values (the cell on its normal's side,
- * the cell on the other), and the fragment picks one by its facing
+ * fragment carries the cell behind it. Each face is then drawn with vertices
+ * of its own carrying two cell codes (the cell on its normal's side, the cell
+ * on the other; a code indexes the cell's value among the distinct ones,
+ * vtkHAVSCellOptics), and the fragment picks one by its facing
  * (GetVertexScalarComponents() is 2).
  * Build() says why when nothing can be rendered (GetError()) and what it
  * changed or left out (GetWarnings()); the mapper reports both.
@@ -154,13 +155,26 @@ public:
 
   ///@{
   /**
+   * Cell scalars as the passes draw them (vtkHAVSCellOptics): the distinct
+   * values of the used cells, sorted (NaN/Inf replaced as in the scalars;
+   * rounded to a grid when there are more than vtkHAVSCellOptics::MaximumValues,
+   * with a warning), and each used tetrahedron's code: the index of its value
+   * among them, as vtkHAVSCellOptics::CodeOf. GetVertexScalars() and the
+   * sections carry these codes.
+   */
+  const std::vector<double>& GetCellValues() const { return this->CellValues; }
+  const std::vector<float>& GetTetrahedronCodes() const { return this->TetrahedronCodes; }
+  ///@}
+
+  ///@{
+  /**
    * What the face passes draw: vertices (3 floats each, as GetPoints()), their
    * scalars (GetVertexScalarComponents() floats each) and the faces as 3
    * vertex ids each, in face order. Point scalars: the points, their scalars,
    * the faces' point ids (1 component). Cell scalars: 3 vertices of its own
-   * per face, each with (the value of the cell on the face's normal side, that
-   * of the cell on the other side); a boundary face has its one cell's value
-   * on both (2 components).
+   * per face, each with (the code of the cell on the face's normal side, that
+   * of the cell on the other side; GetTetrahedronCodes()); a boundary face
+   * has its one cell's code on both (2 components).
    */
   const std::vector<float>& GetVertexPoints() const;
   const std::vector<float>& GetVertexScalars() const;
@@ -192,8 +206,12 @@ private:
   bool Fail(const std::string& why);
   /// The selected scalar of tuple i (component or magnitude).
   double ScalarOf(vtkDataArray* array, vtkIdType i) const;
-  /// The per-face vertices of cell scalars (GetVertexPoints() and the rest).
-  void BuildCellScalarVertices(const std::vector<float>& cellValues);
+  /// The per-face vertices of cell scalars (GetVertexPoints() and the rest),
+  /// from each cell's code.
+  void BuildCellScalarVertices(const std::vector<float>& cellCodes);
+  /// CellValues from the used cells' (finite) values, and each used cell's code.
+  void BuildCellValueCodes(
+    const std::vector<double>& values, const std::vector<uint8_t>& used, std::vector<float>& codes);
   /// Maps `scalars` (of the grid's points or cells) to [0, 1] (the last part of Build()).
   bool MapScalars(vtkDataArray* scalars, bool cellData, const std::string& arrayName);
 
@@ -205,6 +223,8 @@ private:
   std::vector<float> Scalars;
   bool CellScalars = false;
   std::vector<float> TetrahedronScalars;
+  std::vector<float> TetrahedronCodes;
+  std::vector<double> CellValues;
   std::vector<float> FaceVertexPoints;  // cell scalars: 9 floats per face
   std::vector<float> FaceVertexScalars; // cell scalars: 6 floats per face
   std::vector<uint32_t> FaceVertexIds;  // cell scalars: 3f, 3f + 1, 3f + 2

@@ -125,6 +125,15 @@ void IntegrateSteps(vtkVolumeProperty* property, int component, double sf, doubl
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSPreIntegrationTable::EvaluateOptics(
+  vtkVolumeProperty* property, int component, double s, double& tau, double color[3])
+{
+  const OpticalSample sample = Evaluate(property, component, s);
+  tau = sample.Tau;
+  std::copy_n(sample.Color, 3, color);
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSPreIntegrationTable::GetFunctionNodes(
   vtkVolumeProperty* property, int component, std::vector<double>& nodes)
 {

@@ -51,7 +51,9 @@
 #ifndef vtkHAVSPreIntegrationTable_h
 #define vtkHAVSPreIntegrationTable_h
 
+#include "vtkHAVSCellOptics.h" // For vtkNew<vtkHAVSCellOptics>
 #include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkNew.h"            // For vtkNew
 #include "vtkObject.h"
 
 #include <vector> // For std::vector
@@ -102,6 +104,12 @@ public:
     double maxLength) const;
 
   const float* GetTable() const { return this->Table.data(); }
+  /**
+   * Cell scalars: the functions at each distinct cell value, which their
+   * segments read instead of the table's diagonal (built beside the table by
+   * vtkHAVSMapperInputs::PrepareTable; empty for point scalars).
+   */
+  vtkHAVSCellOptics* GetCellOptics() { return this->CellOptics; }
   /// The resolutions the table was last built with (GetTable()'s layout:
   /// RGBA at ((length * n + back) * n + front), n the scalar resolution).
   int GetBuiltScalarResolution() const { return this->BuiltScalarResolution; }
@@ -145,6 +153,13 @@ public:
    * Appends the scalars of the nodes of `property`'s opacity and colour (or
    * grey) functions for `component`: where their pieces meet.
    */
+  /**
+   * The optical model at scalar s: extinction tau = opacity(s) /
+   * ScalarOpacityUnitDistance (>= 0) and colour (grey or RGB), as every entry
+   * is integrated from (vtkHAVSCellOptics evaluates cell values with it).
+   */
+  static void EvaluateOptics(
+    vtkVolumeProperty* property, int component, double s, double& tau, double color[3]);
   static void GetFunctionNodes(
     vtkVolumeProperty* property, int component, std::vector<double>& nodes);
 
@@ -166,6 +181,7 @@ private:
   void operator=(const vtkHAVSPreIntegrationTable&) = delete;
 
   void Zero();
+  vtkNew<vtkHAVSCellOptics> CellOptics;
 
   int ScalarResolution = 128;
   int LengthResolution = 128;

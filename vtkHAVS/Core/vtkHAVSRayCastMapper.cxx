@@ -126,7 +126,7 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   const std::vector<uint32_t>& tets = this->Mesh->GetFaceSet()->GetTetrahedra();
   const std::vector<float>* cellScalars =
-    this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronScalars() : nullptr;
+    this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr;
   // The neighbours are kept for a new time step on the same mesh (the
   // fields again) and for an unchanged one, unless the testing aid changed.
   const bool keepNeighbours = this->RayMesh &&

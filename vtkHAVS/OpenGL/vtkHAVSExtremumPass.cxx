@@ -71,7 +71,7 @@ bool vtkHAVSExtremumPass::ResolveResult(vtkOpenGLRenderWindow* window,
   function->Activate();
   vtkShaderProgram* program =
     window->GetShaderCache()->ReadyShaderProgram(vtkHAVSKBufferShaders::QuadVertexShader().c_str(),
-      vtkHAVSKBufferShaders::ExtremumResolveShader().c_str(), "");
+      vtkHAVSKBufferShaders::ExtremumResolveShader(table->HasCellOptics()).c_str(), "");
   const bool built = program && program->GetCompiled();
   if (built)
   {

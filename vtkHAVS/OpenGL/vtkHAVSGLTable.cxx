@@ -11,9 +11,11 @@
 
 #include <cmath>
 
+#include "vtkHAVSCellOptics.h"
 #include "vtkHAVSOpenGL.h"
 #include "vtkHAVSPreIntegrationTable.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -60,6 +62,21 @@ void vtkHAVSGLTable::Upload(vtkHAVSPreIntegrationTable* table)
   this->Additive1D->SetWrapS(vtkTextureObject::ClampToEdge);
   this->Additive1D->Create1DFromRaw(static_cast<unsigned int>(additive.size() / 2), 2, VTK_FLOAT,
     const_cast<float*>(additive.data()));
+  // Cell optics (2 RGBA texels a value) in a buffer texture, read with
+  // texelFetch; one zero value when there are none.
+  const std::vector<float>& optics = table->GetCellOptics()->GetOptics();
+  this->CellValues = table->GetCellOptics()->GetNumberOfValues();
+  static const std::vector<float> placeholder(vtkHAVSCellOptics::FloatsPerValue, 0.0f);
+  const std::vector<float>& cellData = this->CellValues > 0 ? optics : placeholder;
+  if (!this->CellOptics)
+  {
+    this->CellOptics = vtkSmartPointer<vtkTextureObject>::New();
+    this->CellOptics->SetContext(this->Window);
+    this->CellOpticsBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  }
+  this->CellOpticsBuffer->Upload(cellData, vtkOpenGLBufferObject::TextureBuffer);
+  this->CellOptics->CreateTextureBuffer(
+    static_cast<unsigned int>(cellData.size() / 4), 4, VTK_FLOAT, this->CellOpticsBuffer);
   this->MaxLength = table->GetMaxLength() > 0.0 ? table->GetMaxLength() : 1.0;
   this->LengthLogScale = table->GetLengthLogScale();
 }
@@ -81,6 +98,10 @@ void vtkHAVSGLTable::SetUniforms(vtkShaderProgram* program)
   program->SetUniformf("havsLengthLogScale", static_cast<float>(a));
   program->SetUniformf(
     "havsInvLogRange", a > 0.0 ? static_cast<float>(1.0 / std::log1p(a * this->MaxLength)) : 0.0f);
+  if (this->CellOptics && this->CellOptics->GetTextureUnit() >= 0)
+  {
+    program->SetUniformi("havsCellOptics", this->CellOptics->GetTextureUnit());
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -98,9 +119,17 @@ void vtkHAVSGLTable::ReleaseGraphicsResources(vtkWindow* window)
   {
     this->Additive1D->ReleaseGraphicsResources(window);
   }
+  if (this->CellOptics)
+  {
+    this->CellOptics->ReleaseGraphicsResources(window);
+    this->CellOpticsBuffer->ReleaseGraphicsResources();
+  }
   this->Table = nullptr;
   this->TransferFunction1D = nullptr;
   this->Additive1D = nullptr;
+  this->CellOptics = nullptr;
+  this->CellOpticsBuffer = nullptr;
+  this->CellValues = 0;
 }
 
 //------------------------------------------------------------------------------
@@ -108,5 +137,6 @@ void vtkHAVSGLTable::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Table: " << this->ScalarResolution << "^2 x " << this->LengthResolution
-     << ", max length " << this->MaxLength << ", length log scale " << this->LengthLogScale << "\n";
+     << ", max length " << this->MaxLength << ", length log scale " << this->LengthLogScale
+     << ", cell values " << this->CellValues << "\n";
 }

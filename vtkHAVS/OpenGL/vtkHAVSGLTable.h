@@ -20,8 +20,9 @@
 #define vtkHAVSGLTable_h
 
 #include "vtkObject.h"
-#include "vtkSmartPointer.h"  // For vtkSmartPointer
-#include "vtkTextureObject.h" // For vtkSmartPointer<vtkTextureObject>
+#include "vtkOpenGLBufferObject.h" // For vtkSmartPointer<vtkOpenGLBufferObject>
+#include "vtkSmartPointer.h"       // For vtkSmartPointer
+#include "vtkTextureObject.h"      // For vtkSmartPointer<vtkTextureObject>
 
 class vtkHAVSPreIntegrationTable;
 class vtkOpenGLRenderWindow;
@@ -44,9 +45,18 @@ public:
   vtkTextureObject* GetTransferFunction1D() { return this->TransferFunction1D; }
   /// The additive blend's (g, G) nodes (vtkHAVSPreIntegrationTable::GetAdditive1D).
   vtkTextureObject* GetAdditive1D() { return this->Additive1D; }
+  /**
+   * Cell scalars: the functions at each cell value (vtkHAVSCellOptics, two
+   * RGBA texels a value), a buffer texture; a placeholder of one value when
+   * the table has none, so that a program's havsCellOptics always has one.
+   */
+  vtkTextureObject* GetCellOptics() { return this->CellOptics; }
+  /// Whether the table uploaded last has cell optics (the passes draw cell codes).
+  bool HasCellOptics() const { return this->CellValues > 0; }
 
   /// havsTable, havsScalarTexel, havsLengthTexel, havsInvMaxLength,
-  /// havsLengthLogScale, havsInvLogRange (table active).
+  /// havsLengthLogScale, havsInvLogRange (table active), havsCellOptics
+  /// (when GetCellOptics() is active).
   void SetUniforms(vtkShaderProgram* program);
 
   void ReleaseGraphicsResources(vtkWindow* window);
@@ -63,6 +73,9 @@ private:
   vtkSmartPointer<vtkTextureObject> Table;
   vtkSmartPointer<vtkTextureObject> TransferFunction1D;
   vtkSmartPointer<vtkTextureObject> Additive1D;
+  vtkSmartPointer<vtkTextureObject> CellOptics;
+  vtkSmartPointer<vtkOpenGLBufferObject> CellOpticsBuffer;
+  size_t CellValues = 0;
   int ScalarResolution = 0;
   int LengthResolution = 0;
   double MaxLength = 1.0;

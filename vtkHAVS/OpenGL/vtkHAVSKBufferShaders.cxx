@@ -252,9 +252,12 @@ std::string vtkHAVSKBufferShaders::ExtremumDrawShader(const Features& features)
   return Compose(vtkHAVSExtremumDrawFS, 1, 1, features);
 }
 
-std::string vtkHAVSKBufferShaders::ExtremumResolveShader()
+std::string vtkHAVSKBufferShaders::ExtremumResolveShader(bool cellScalars)
 {
-  return vtkHAVSExtremumResolveFS;
+  std::string source = vtkHAVSExtremumResolveFS;
+  Replace(source, "//HAVS::Defines",
+    std::string("#define HAVS_CELL_SCALARS ") + (cellScalars ? "1" : "0") + "\n");
+  return source;
 }
 
 std::string vtkHAVSKBufferShaders::TrivialShader()
@@ -272,12 +275,13 @@ std::string vtkHAVSKBufferShaders::CellProjectionVertexShader()
   return vtkHAVSCellProjectionVS;
 }
 
-std::string vtkHAVSKBufferShaders::CellProjectionShader(bool opaque, int blend)
+std::string vtkHAVSKBufferShaders::CellProjectionShader(bool opaque, int blend, bool cellScalars)
 {
   Features features;
   features.CountViolations = false;
   features.Tagging = false;
   features.Opaque = opaque;
+  features.CellScalars = cellScalars;
   std::string source = Compose(vtkHAVSCellProjectionFS, 1, 1, features);
   Replace(source, "//HAVS::CellBlend", "#define HAVS_CELL_BLEND " + std::to_string(blend));
   Replace(source, "//HAVS::AdditiveLib", vtkHAVSAdditiveLib);
@@ -293,12 +297,13 @@ std::string vtkHAVSKBufferShaders::RayCastPeelShader()
   return Compose(vtkHAVSRayCastPeelFS, 1, 1, features);
 }
 
-std::string vtkHAVSKBufferShaders::RayCastShader(bool opaque, int blend)
+std::string vtkHAVSKBufferShaders::RayCastShader(bool opaque, int blend, bool cellScalars)
 {
   Features features;
   features.CountViolations = false;
   features.Tagging = false;
   features.Opaque = opaque;
+  features.CellScalars = cellScalars;
   std::string source = Compose(vtkHAVSRayCastFS, 1, 1, features);
   Replace(source, "//HAVS::CellBlend", "#define HAVS_CELL_BLEND " + std::to_string(blend));
   Replace(source, "//HAVS::AdditiveLib", vtkHAVSAdditiveLib);

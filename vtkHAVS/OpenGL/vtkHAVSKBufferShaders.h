@@ -92,7 +92,8 @@ public:
 
   /// Maximum / minimum intensity passes.
   static std::string ExtremumDrawShader(const Features& features = Features());
-  static std::string ExtremumResolveShader();
+  /// (`cellScalars`: the result is a cell code, coloured from the cell optics.)
+  static std::string ExtremumResolveShader(bool cellScalars = false);
 
   /// Benchmark aid: a trivial fragment shader (rasterization cost alone).
   static std::string TrivialShader();
@@ -103,18 +104,19 @@ public:
   /// vtkHAVSCellProjectionMapper: the faces' vertex shader, and the fragment
   /// shader (the k-buffer library's segment look-up; the opaque cut compiled
   /// in with `opaque`; `blend`: vtkHAVSCellProjectionMapper's blend mode:
-  /// composite, maximum, minimum or additive).
+  /// composite, maximum, minimum or additive; `cellScalars`: the cells'
+  /// fields are cell codes, their segments read the cell optics).
   static std::string CellProjectionVertexShader();
-  static std::string CellProjectionShader(bool opaque, int blend = 0);
+  static std::string CellProjectionShader(bool opaque, int blend = 0, bool cellScalars = false);
   ///@}
 
   ///@{
   /// vtkHAVSRayCastMapper: the boundary entries' depth-peeling fragment
   /// shader (with CellProjectionVertexShader), and the ray-casting pass's
   /// (with RayCastTileVertexShader; the opaque cut compiled in with
-  /// `opaque`; `blend` as CellProjectionShader's).
+  /// `opaque`; `blend` and `cellScalars` as CellProjectionShader's).
   static std::string RayCastPeelShader();
-  static std::string RayCastShader(bool opaque, int blend = 0);
+  static std::string RayCastShader(bool opaque, int blend = 0, bool cellScalars = false);
   /// The ray-casting pass's vertex shader: one instance per screen tile.
   static std::string RayCastTileVertexShader();
   ///@}

@@ -190,7 +190,9 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   }
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
     vtkHAVSKBufferShaders::CellProjectionVertexShader().c_str(),
-    vtkHAVSKBufferShaders::CellProjectionShader(opaque, frame.Blend).c_str(), "");
+    vtkHAVSKBufferShaders::CellProjectionShader(opaque, frame.Blend, this->GLTable->HasCellOptics())
+      .c_str(),
+    "");
   if (!program || !program->GetCompiled())
   {
     vtkErrorMacro("The cell-projection shader could not be built; see the shader log above.");
@@ -202,9 +204,11 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   vtkTextureObject* table = this->GLTable->GetTable();
   vtkTextureObject* depth = this->Targets->GetOpaqueDepth();
   vtkTextureObject* additive = this->GLTable->GetAdditive1D();
+  vtkTextureObject* cellOptics = this->GLTable->GetCellOptics();
   table->Activate();
   depth->Activate();
   additive->Activate();
+  cellOptics->Activate();
   this->GLTable->SetUniforms(program);
   program->SetUniformi("havsAdditive", additive->GetTextureUnit());
   float m[16];
@@ -303,8 +307,8 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   state->vtkglBlendEquation(GL_FUNC_ADD);
   const bool resolved =
     vtkHAVSExtremumPass::ResolveBlend(window, this->Targets, this->GLTable, frame.Blend);
-  return this->Targets->EndFrame(
-    resolved, frame.KeepResult, { additive, table, depth }, view.OriginX, view.OriginY, this);
+  return this->Targets->EndFrame(resolved, frame.KeepResult, { cellOptics, additive, table, depth },
+    view.OriginX, view.OriginY, this);
 }
 
 //------------------------------------------------------------------------------

@@ -256,7 +256,10 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
       vtkHAVSKBufferShaders::RayCastPeelShader().c_str(), "");
   vtkShaderProgram* cast = peel && peel->GetCompiled()
     ? cache->ReadyShaderProgram(vtkHAVSKBufferShaders::RayCastTileVertexShader().c_str(),
-        vtkHAVSKBufferShaders::RayCastShader(frame.Opaque, frame.Blend).c_str(), "")
+        vtkHAVSKBufferShaders::RayCastShader(
+          frame.Opaque, frame.Blend, this->GLTable->HasCellOptics())
+          .c_str(),
+        "")
     : nullptr;
   // The tiles a peeling pass draws (a stencil of them): the tile vertex
   // shader with the trivial fragment shader (the peel's framebuffer has no
@@ -276,9 +279,11 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   vtkTextureObject* table = this->GLTable->GetTable();
   vtkTextureObject* depth = this->Targets->GetOpaqueDepth();
   vtkTextureObject* additive = this->GLTable->GetAdditive1D();
+  vtkTextureObject* cellOptics = this->GLTable->GetCellOptics();
   table->Activate();
   depth->Activate();
   additive->Activate();
+  cellOptics->Activate();
 
   // The uniforms both programs read (the view, the planes).
   float m[16];
@@ -576,8 +581,8 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   {
     glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   }
-  return this->Targets->EndFrame(
-    resolved, frame.KeepResult, { additive, table, depth }, view.OriginX, view.OriginY, this);
+  return this->Targets->EndFrame(resolved, frame.KeepResult, { cellOptics, additive, table, depth },
+    view.OriginX, view.OriginY, this);
 }
 
 //------------------------------------------------------------------------------

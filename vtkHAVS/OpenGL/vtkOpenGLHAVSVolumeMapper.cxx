@@ -249,7 +249,8 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   state->vtkglDisable(GL_BLEND);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   state->vtkglViewport(0, 0, width, height);
-  vtkTextureObject* textures[] = { this->GLTable->GetTable(), this->Targets->GetOpaqueDepth() };
+  vtkTextureObject* textures[] = { this->GLTable->GetTable(), this->GLTable->GetCellOptics(),
+    this->Targets->GetOpaqueDepth() };
   for (vtkTextureObject* t : textures)
   {
     t->Activate();

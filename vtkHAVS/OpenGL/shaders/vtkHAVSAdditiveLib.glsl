@@ -22,8 +22,13 @@ float havsAdditiveIntegral(float s, float h, int last)
 }
 
 // The segment's integral of tau(s) s: its length times the mean of g.
+// Cell scalars: both are the cell's code; g at the cell's value
+// (vtkHAVSCellOptics).
 float havsAdditiveSegment(float sFront, float sBack, float len)
 {
+#if HAVS_CELL_SCALARS
+  return texelFetch(havsCellOptics, 2 * havsCellIndex(sFront) + 1).z * len;
+#endif
   int last = textureSize(havsAdditive, 0) - 1;
   float h = 1.0 / float(last);
   float ds = sBack - sFront;

@@ -5,11 +5,18 @@
 // (havsAdditiveResolve, vtkHAVSCellProjectionMapper): the summed integral of
 // tau(s) s, clamped to 1, as grey with opacity 1 where a ray crossed the mesh
 // (VTK's additive blend: vec4(vec3(clamp(sum, 0, 1)), 1)).
+// Cell scalars (HAVS_CELL_SCALARS): the extremum is a cell code
+// (vtkHAVSCellOptics), coloured from the functions at that cell's value.
+//HAVS::Defines
 uniform sampler2D havsExtremumTexture;
 uniform sampler1D havsTransferFunction; // rgb colour, opacity
 uniform vec2 havsScalarTexel;
 uniform int havsMinimum;
 uniform int havsAdditiveResolve;
+#if HAVS_CELL_SCALARS
+uniform samplerBuffer havsCellOptics; // 2 texels a cell value (vtkHAVSCellOptics)
+const float HAVS_CELL_CODES = 2097152.0; // 2^vtkHAVSCellOptics::CodeBits
+#endif
 
 layout(location = 0) out vec4 havsResult;
 
@@ -26,6 +33,12 @@ void main()
     havsResult = vec4(vec3(clamp(e.x, 0.0, 1.0)), 1.0);
     return;
   }
-  vec4 c = texture(havsTransferFunction, (havsMinimum != 0 ? 1.0 - e.x : e.x) * havsScalarTexel.x + havsScalarTexel.y);
+  float s = havsMinimum != 0 ? 1.0 - e.x : e.x;
+#if HAVS_CELL_SCALARS
+  int i = int(s * HAVS_CELL_CODES + 0.5);
+  vec4 c = vec4(texelFetch(havsCellOptics, 2 * i).rgb, texelFetch(havsCellOptics, 2 * i + 1).y);
+#else
+  vec4 c = texture(havsTransferFunction, s * havsScalarTexel.x + havsScalarTexel.y);
+#endif
   havsResult = vec4(c.rgb * c.a, c.a);
 }

@@ -219,6 +219,33 @@ float havsLengthCoordinate(float len)
   return min(u, 1.0);
 }
 
+#if HAVS_CELL_SCALARS
+// Cell scalars: a fragment's scalar is its cell's code, index * 2^-21 (exact
+// in a float, with the tags + 2, + 4 too), the index of the cell's value among
+// the mesh's distinct cell values; havsCellOptics holds the transfer function
+// at each value (vtkHAVSCellOptics): (r, g, b, tau), (s, opacity, tau s, 0).
+uniform samplerBuffer havsCellOptics;
+const float HAVS_CELL_CODES = 2097152.0; // 2^vtkHAVSCellOptics::CodeBits
+
+int havsCellIndex(float code)
+{
+  return int(code * HAVS_CELL_CODES + 0.5);
+}
+
+// The segment of length len in the cell of `code`: the scalar is constant,
+// so the emission-absorption integral is closed: opacity 1 - exp(-tau len),
+// colour the cell's colour times it (the table's model, the function taken
+// at the cell's value itself: a spike of it narrower than a table node
+// spacing is not interpolated away).
+vec4 havsCellSegment(float code, float len)
+{
+  vec4 o = texelFetch(havsCellOptics, 2 * havsCellIndex(code));
+  float x = o.a * len;
+  float alpha = x < 1.0e-3 ? x * (1.0 - 0.5 * x) : 1.0 - exp(-x);
+  return vec4(o.rgb * alpha, alpha);
+}
+#endif
+
 // Premultiplied colour and opacity of the segment from a to b.
 vec4 havsSegment(vec2 a, vec2 b)
 {
@@ -228,14 +255,15 @@ vec4 havsSegment(vec2 a, vec2 b)
     return vec4(0.0);
   }
 #if HAVS_CELL_SCALARS
-  vec3 t = vec3(havsScalarOf(a.y), havsScalarOf(a.y), havsLengthCoordinate(len));
+  // (The segment lies in the cell behind its front fragment.)
+  return havsCellSegment(havsScalarOf(a.y), len);
 #else
   vec3 t = vec3(havsScalarOf(a.y), havsScalarOf(b.y), havsLengthCoordinate(len));
-#endif
   vec3 coord = vec3(t.xy * havsScalarTexel.x + havsScalarTexel.y,
     t.z * havsLengthTexel.x + havsLengthTexel.y);
   // Level 0 named: no derivatives, no level selection (the table has one level).
   return textureLod(havsTable, coord, 0.0);
+#endif
 }
 
 // Moves the front to p (the next fragment in depth order), compositing the
