@@ -147,7 +147,8 @@ void CheckOptics()
       const double expected[8] = { color[0], color[1], color[2], tau, s, opacity, tau * s, 0.0 };
       for (int c = 0; c < 8; ++c)
       {
-        worst = std::max(worst, std::fabs(e[c] - expected[c]) / std::max(1.0, std::fabs(expected[c])));
+        worst =
+          std::max(worst, std::fabs(e[c] - expected[c]) / std::max(1.0, std::fabs(expected[c])));
       }
       // The closed-form segment (havsCellSegment) against the adaptive
       // integral of a constant scalar, and the table's diagonal against it.
@@ -248,8 +249,8 @@ void CheckMesh()
   {
     sorted = sorted && values[i - 1] < values[i];
   }
-  std::printf("box: %zu tetrahedra, %zu distinct cell values\n",
-    mesh->GetTetrahedronCodes().size(), values.size());
+  std::printf("box: %zu tetrahedra, %zu distinct cell values\n", mesh->GetTetrahedronCodes().size(),
+    values.size());
   havstest::Check(values.size() == 13 && sorted, "13 distinct values, sorted");
   havstest::Check(CodesDecode(mesh, grid, false), "every tetrahedron's code is its cell's value");
   // Control: the codes of another grid's values do not decode to these.
@@ -268,7 +269,8 @@ void CheckMesh()
   }
   std::printf("large box: %lld cells, %zu values after rounding to the grid\n",
     static_cast<long long>(many->GetNumberOfCells()), big->GetCellValues().size());
-  havstest::Check(many->GetNumberOfCells() > static_cast<vtkIdType>(vtkHAVSCellOptics::MaximumValues),
+  havstest::Check(
+    many->GetNumberOfCells() > static_cast<vtkIdType>(vtkHAVSCellOptics::MaximumValues),
     "more cells than codes");
   havstest::Check(warned, "rounding the values is warned about");
   havstest::Check(big->GetCellValues().size() <= vtkHAVSCellOptics::MaximumValues,

@@ -96,6 +96,6 @@ bool vtkHAVSCellOptics::Build(vtkVolumeProperty* property, int component,
 void vtkHAVSCellOptics::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Values: " << this->GetNumberOfValues() << " (built in "
-     << this->LastBuildSeconds << " s)\n";
+  os << indent << "Values: " << this->GetNumberOfValues() << " (built in " << this->LastBuildSeconds
+     << " s)\n";
 }

@@ -64,10 +64,21 @@ void vtkHAVSGLTable::Upload(vtkHAVSPreIntegrationTable* table)
     const_cast<float*>(additive.data()));
   // Cell optics (2 RGBA texels a value) in a buffer texture, read with
   // texelFetch; one zero value when there are none.
+  // (The shaders clamp a code's index to the values uploaded.)
   const std::vector<float>& optics = table->GetCellOptics()->GetOptics();
   this->CellValues = table->GetCellOptics()->GetNumberOfValues();
+  GLint largest = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &largest);
+  bool fits = true;
+  if (optics.size() / 4 > static_cast<size_t>(largest))
+  {
+    vtkErrorMacro(<< this->CellValues << " distinct cell values need " << optics.size() / 4
+                  << " texels, more than this context's GL_MAX_TEXTURE_BUFFER_SIZE (" << largest
+                  << "); the cells are drawn transparent.");
+    fits = false;
+  }
   static const std::vector<float> placeholder(vtkHAVSCellOptics::FloatsPerValue, 0.0f);
-  const std::vector<float>& cellData = this->CellValues > 0 ? optics : placeholder;
+  const std::vector<float>& cellData = this->CellValues > 0 && fits ? optics : placeholder;
   if (!this->CellOptics)
   {
     this->CellOptics = vtkSmartPointer<vtkTextureObject>::New();

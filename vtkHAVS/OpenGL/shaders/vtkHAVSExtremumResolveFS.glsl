@@ -35,7 +35,7 @@ void main()
   }
   float s = havsMinimum != 0 ? 1.0 - e.x : e.x;
 #if HAVS_CELL_SCALARS
-  int i = int(s * HAVS_CELL_CODES + 0.5);
+  int i = min(int(s * HAVS_CELL_CODES + 0.5), textureSize(havsCellOptics) / 2 - 1);
   vec4 c = vec4(texelFetch(havsCellOptics, 2 * i).rgb, texelFetch(havsCellOptics, 2 * i + 1).y);
 #else
   vec4 c = texture(havsTransferFunction, s * havsScalarTexel.x + havsScalarTexel.y);

@@ -227,9 +227,11 @@ float havsLengthCoordinate(float len)
 uniform samplerBuffer havsCellOptics;
 const float HAVS_CELL_CODES = 2097152.0; // 2^vtkHAVSCellOptics::CodeBits
 
+// (Clamped to the values uploaded: a placeholder of one transparent value
+// where they do not fit the context, vtkHAVSGLTable.)
 int havsCellIndex(float code)
 {
-  return int(code * HAVS_CELL_CODES + 0.5);
+  return min(int(code * HAVS_CELL_CODES + 0.5), textureSize(havsCellOptics) / 2 - 1);
 }
 
 // The segment of length len in the cell of `code`: the scalar is constant,
