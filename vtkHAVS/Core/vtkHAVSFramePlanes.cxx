@@ -126,10 +126,10 @@ bool vtkHAVSFramePlanes::Update(
       if (mesh->HasCellScalars())
       {
         // A section triangle lies in one tetrahedron: its cell's code.
-        const std::vector<float>& cellValues = mesh->GetTetrahedronCodes();
+        const std::vector<float>& cellCodes = mesh->GetTetrahedronCodes();
         for (size_t t = 0; t < section.Cells.size(); ++t)
         {
-          std::fill_n(&section.Scalars[3 * t], 3, cellValues[section.Cells[t]]);
+          std::fill_n(&section.Scalars[3 * t], 3, cellCodes[section.Cells[t]]);
         }
       }
       this->Sections.push_back(std::move(section));

@@ -273,12 +273,17 @@ void vtkHAVSMesh::BuildCellValueCodes(
   std::sort(distinct.begin(), distinct.end());
   distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
   // More distinct values than codes: the values rounded to a grid of
-  // MaximumValues nodes over the range (steps of 4.8e-7 of it).
+  // MaximumValues nodes over the range (steps of 4.8e-7 of it). `drawn` is a
+  // value as it is drawn: rounded or itself.
   const bool rounded = distinct.size() > vtkHAVSCellOptics::MaximumValues;
   const double lo = this->ScalarRange[0], span = this->ScalarRange[1] - this->ScalarRange[0];
   const double steps = vtkHAVSCellOptics::MaximumValues - 1;
-  auto grid = [&](double v)
-  { return std::min(std::max(std::round((v - lo) / span * steps), 0.0), steps); };
+  auto drawn = [&](double v)
+  {
+    return rounded
+      ? lo + std::min(std::max(std::round((v - lo) / span * steps), 0.0), steps) / steps * span
+      : v;
+  };
   if (rounded)
   {
     std::ostringstream w;
@@ -290,13 +295,9 @@ void vtkHAVSMesh::BuildCellValueCodes(
     this->Warnings.push_back(w.str());
     for (double& v : distinct)
     {
-      v = grid(v);
+      v = drawn(v);
     }
     distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
-    for (double& v : distinct)
-    {
-      v = lo + v / steps * span;
-    }
   }
   vtkSMPTools::For(0, static_cast<vtkIdType>(n),
     [&](vtkIdType begin, vtkIdType end)
@@ -307,8 +308,7 @@ void vtkHAVSMesh::BuildCellValueCodes(
         {
           continue;
         }
-        const double v = rounded ? lo + grid(values[i]) / steps * span : values[i];
-        const auto at = std::lower_bound(distinct.begin(), distinct.end(), v);
+        const auto at = std::lower_bound(distinct.begin(), distinct.end(), drawn(values[i]));
         codes[i] = vtkHAVSCellOptics::CodeOf(static_cast<uint32_t>(at - distinct.begin()));
       }
     });
@@ -397,7 +397,8 @@ bool vtkHAVSMesh::MapScalars(vtkDataArray* scalars, bool cellData, const std::st
   std::vector<float> normalized(static_cast<size_t>(numValues));
   for (vtkIdType i = 0; i < numValues; ++i)
   {
-    const double s = std::isfinite(values[i]) ? values[i] : range[0];
+    double& s = values[i];
+    s = std::isfinite(s) ? s : range[0];
     normalized[i] = span > 0.0 ? static_cast<float>((s - range[0]) / span) : 0.0f;
   }
   if (cellData)
@@ -416,10 +417,6 @@ bool vtkHAVSMesh::MapScalars(vtkDataArray* scalars, bool cellData, const std::st
     }
     // The cells' values as the passes draw them: each used cell's code
     // (vtkHAVSCellOptics), the index of its value among the distinct ones.
-    for (double& v : values)
-    {
-      v = std::isfinite(v) ? v : range[0];
-    }
     std::vector<float> codes(static_cast<size_t>(numValues), 0.0f);
     this->BuildCellValueCodes(values, used, codes);
     this->TetrahedronCodes.resize(tetCells.size());

@@ -150,16 +150,16 @@ public:
   void Lookup(double sf, double sb, double length, double rgba[4]) const;
 
   /**
-   * Appends the scalars of the nodes of `property`'s opacity and colour (or
-   * grey) functions for `component`: where their pieces meet.
-   */
-  /**
    * The optical model at scalar s: extinction tau = opacity(s) /
    * ScalarOpacityUnitDistance (>= 0) and colour (grey or RGB), as every entry
    * is integrated from (vtkHAVSCellOptics evaluates cell values with it).
    */
   static void EvaluateOptics(
     vtkVolumeProperty* property, int component, double s, double& tau, double color[3]);
+  /**
+   * Appends the scalars of the nodes of `property`'s opacity and colour (or
+   * grey) functions for `component`: where their pieces meet.
+   */
   static void GetFunctionNodes(
     vtkVolumeProperty* property, int component, std::vector<double>& nodes);
 

@@ -12,6 +12,8 @@
 #include "vtkHAVSVolumeMapper.h"
 
 #include "vtkHAVSAdditiveLib.h"
+#include "vtkHAVSCellOptics.h"
+#include "vtkHAVSCellOpticsLib.h"
 #include "vtkHAVSCellProjectionFS.h"
 #include "vtkHAVSCellProjectionVS.h"
 #include "vtkHAVSClearFS.h"
@@ -44,6 +46,13 @@ void Replace(std::string& text, const std::string& marker, const std::string& wi
   }
 }
 
+/// The cell-optics library (vtkHAVSCellOpticsLib.glsl) with its code width.
+std::string CellOpticsLib()
+{
+  return "#define HAVS_CELL_CODE_BITS " + std::to_string(vtkHAVSCellOptics::CodeBits) + "\n" +
+    vtkHAVSCellOpticsLib;
+}
+
 /// A fragment-shader template with the defines and the k-buffer library in.
 std::string Compose(const char* templ, int k, int pixelStride,
   const vtkHAVSKBufferShaders::Features& features = vtkHAVSKBufferShaders::Features())
@@ -59,6 +68,7 @@ std::string Compose(const char* templ, int k, int pixelStride,
           << "#define HAVS_PROJECTION " << features.Projection << "\n";
   Replace(source, "//HAVS::Defines", defines.str());
   Replace(source, "//HAVS::KBufferLib", vtkHAVSKBufferLib);
+  Replace(source, "//HAVS::CellOpticsLib", CellOpticsLib());
   return source;
 }
 
@@ -257,6 +267,7 @@ std::string vtkHAVSKBufferShaders::ExtremumResolveShader(bool cellScalars)
   std::string source = vtkHAVSExtremumResolveFS;
   Replace(source, "//HAVS::Defines",
     std::string("#define HAVS_CELL_SCALARS ") + (cellScalars ? "1" : "0") + "\n");
+  Replace(source, "//HAVS::CellOpticsLib", CellOpticsLib());
   return source;
 }
 

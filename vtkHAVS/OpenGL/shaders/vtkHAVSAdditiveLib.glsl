@@ -28,7 +28,7 @@ float havsAdditiveSegment(float sFront, float sBack, float len)
 {
 #if HAVS_CELL_SCALARS
   return texelFetch(havsCellOptics, 2 * havsCellIndex(sFront) + 1).z * len;
-#endif
+#else
   int last = textureSize(havsAdditive, 0) - 1;
   float h = 1.0 / float(last);
   float ds = sBack - sFront;
@@ -45,4 +45,5 @@ float havsAdditiveSegment(float sFront, float sBack, float len)
     mean = mix(havsAdditiveNode(i).x, havsAdditiveNode(i + 1).x, x - float(i));
   }
   return mean * len;
+#endif
 }

@@ -14,8 +14,7 @@ uniform vec2 havsScalarTexel;
 uniform int havsMinimum;
 uniform int havsAdditiveResolve;
 #if HAVS_CELL_SCALARS
-uniform samplerBuffer havsCellOptics; // 2 texels a cell value (vtkHAVSCellOptics)
-const float HAVS_CELL_CODES = 2097152.0; // 2^vtkHAVSCellOptics::CodeBits
+//HAVS::CellOpticsLib
 #endif
 
 layout(location = 0) out vec4 havsResult;
@@ -35,7 +34,7 @@ void main()
   }
   float s = havsMinimum != 0 ? 1.0 - e.x : e.x;
 #if HAVS_CELL_SCALARS
-  int i = min(int(s * HAVS_CELL_CODES + 0.5), textureSize(havsCellOptics) / 2 - 1);
+  int i = havsCellIndex(s);
   vec4 c = vec4(texelFetch(havsCellOptics, 2 * i).rgb, texelFetch(havsCellOptics, 2 * i + 1).y);
 #else
   vec4 c = texture(havsTransferFunction, s * havsScalarTexel.x + havsScalarTexel.y);

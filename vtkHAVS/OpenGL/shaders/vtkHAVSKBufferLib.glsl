@@ -220,19 +220,8 @@ float havsLengthCoordinate(float len)
 }
 
 #if HAVS_CELL_SCALARS
-// Cell scalars: a fragment's scalar is its cell's code, index * 2^-21 (exact
-// in a float, with the tags + 2, + 4 too), the index of the cell's value among
-// the mesh's distinct cell values; havsCellOptics holds the transfer function
-// at each value (vtkHAVSCellOptics): (r, g, b, tau), (s, opacity, tau s, 0).
-uniform samplerBuffer havsCellOptics;
-const float HAVS_CELL_CODES = 2097152.0; // 2^vtkHAVSCellOptics::CodeBits
-
-// (Clamped to the values uploaded: a placeholder of one transparent value
-// where they do not fit the context, vtkHAVSGLTable.)
-int havsCellIndex(float code)
-{
-  return min(int(code * HAVS_CELL_CODES + 0.5), textureSize(havsCellOptics) / 2 - 1);
-}
+// Cell scalars: a fragment's scalar is its cell's code (havsCellIndex).
+//HAVS::CellOpticsLib
 
 // The segment of length len in the cell of `code`: the scalar is constant,
 // so the emission-absorption integral is closed: opacity 1 - exp(-tau len),
