@@ -3,14 +3,17 @@
 # CMakeLists.txt before find_package(VTK).
 #
 # 1. VTK_DIR and ParaView_DIR given by the user win. Otherwise the newest
-#    <libdir>/cmake/paraview-5.* is used (Debian's paraview-dev: 5.11 on
-#    Debian 12, 5.13 on Debian 13) with the VTK inside it (its vtk/), else the
-#    newest standalone vtk-9.* (Debian's libvtk9-dev), without the plugin.
+#    <libdir>/cmake/paraview-* is used (Debian's paraview-dev: 5.11 on
+#    Debian 12, 5.13 on Debian 13, 6.1 on Debian testing) with its VTK: the
+#    one inside it (vtk/, ParaView 5.x) or, for a ParaView built on an
+#    external VTK (6.1 on Debian testing), the newest vtk-9.* beside it
+#    (libvtk9-dev); else the newest standalone vtk-9.*, without the plugin.
 #    The plugin needs the ParaView whose VTK builds the module; with any other
 #    VTK it is switched off (VTKHAVS_BUILD_PARAVIEW_PLUGIN).
 #
-# 2. Debian 13's paraview-dev (5.13.2+dfsg-3) exports its Python extension
-#    modules (VTKPython, ParaViewPython, ParaViewPythonIncubator target files)
+# 2. Debian 13's paraview-dev (5.13.2+dfsg-3) and Debian testing's (6.1.1)
+#    export their Python extension modules (VTKPython, ParaViewPython,
+#    ParaViewPythonIncubator target files; 6.1's own VTK 9.6 is right)
 #    as .../vtkmodules/vtkCommonCore.so while the package ships them renamed
 #    with Python's extension suffix (vtkCommonCore.cpython-313-x86_64-linux-gnu.so),
 #    so the target files stop every find_package(VTK) on their existence check.
@@ -50,10 +53,39 @@ function (vtkhavs_newest_config out glob)
   set("${out}" "${best}" PARENT_SCOPE)
 endfunction ()
 
+# vtkhavs_paraview_vtk(<out> <ParaView dir>): the VTK config directory a
+# ParaView builds with: its own (<dir>/vtk, ParaView 5.x as Debian 12 and 13
+# ship it) or, for a ParaView built on an external VTK (ParaView 6.1 on Debian
+# testing: `_paraview_use_external_vtk ON`), the newest vtk-9.* config beside
+# it (Debian's libvtk9-dev, which paraview-dev does not pull in); "" if none.
+function (vtkhavs_paraview_vtk out pvdir)
+  set(result "")
+  if (EXISTS "${pvdir}/vtk/vtk-config.cmake")
+    set(result "${pvdir}/vtk")
+  elseif (EXISTS "${pvdir}/paraview-config.cmake")
+    file(STRINGS "${pvdir}/paraview-config.cmake" external
+      REGEX "set\\(_paraview_use_external_vtk \"ON\"\\)")
+    if (external)
+      vtkhavs_newest_config(result "vtk-9.*")
+      if (NOT result)
+        message(WARNING "vtkHAVS: ParaView in ${pvdir} is built on an external VTK whose "
+          "development files are not installed (Debian: libvtk9-dev); the ParaView plugin "
+          "is not built")
+      endif ()
+    endif ()
+  endif ()
+  set("${out}" "${result}" PARENT_SCOPE)
+endfunction ()
+
 if (NOT VTK_DIR AND NOT ParaView_DIR)
-  vtkhavs_newest_config(_vtkhavs_paraview_dir "paraview-5.*")
-  if (_vtkhavs_paraview_dir AND EXISTS "${_vtkhavs_paraview_dir}/vtk/vtk-config.cmake")
+  vtkhavs_newest_config(_vtkhavs_paraview_dir "paraview-*")
+  set(_vtkhavs_paraview_vtk_dir "")
+  if (_vtkhavs_paraview_dir)
+    vtkhavs_paraview_vtk(_vtkhavs_paraview_vtk_dir "${_vtkhavs_paraview_dir}")
+  endif ()
+  if (_vtkhavs_paraview_vtk_dir)
     set(ParaView_DIR "${_vtkhavs_paraview_dir}" CACHE PATH "ParaView config directory")
+    set(VTK_DIR "${_vtkhavs_paraview_vtk_dir}" CACHE PATH "VTK config directory")
   else ()
     vtkhavs_newest_config(_vtkhavs_vtk_dir "vtk-9.*")
     if (_vtkhavs_vtk_dir)
@@ -61,8 +93,11 @@ if (NOT VTK_DIR AND NOT ParaView_DIR)
     endif ()
   endif ()
 endif ()
-if (NOT VTK_DIR AND ParaView_DIR AND EXISTS "${ParaView_DIR}/vtk/vtk-config.cmake")
-  set(VTK_DIR "${ParaView_DIR}/vtk" CACHE PATH "VTK config directory")
+if (NOT VTK_DIR AND ParaView_DIR)
+  vtkhavs_paraview_vtk(_vtkhavs_paraview_vtk_dir "${ParaView_DIR}")
+  if (_vtkhavs_paraview_vtk_dir)
+    set(VTK_DIR "${_vtkhavs_paraview_vtk_dir}" CACHE PATH "VTK config directory")
+  endif ()
 endif ()
 if (VTK_DIR AND NOT ParaView_DIR AND EXISTS "${VTK_DIR}/../paraview-config.cmake")
   get_filename_component(_vtkhavs_paraview_dir "${VTK_DIR}/.." ABSOLUTE)
@@ -73,7 +108,10 @@ endif ()
 if (VTK_DIR)
   set(_vtkhavs_paraview_vtk "")
   if (ParaView_DIR)
-    get_filename_component(_vtkhavs_paraview_vtk "${ParaView_DIR}/vtk" REALPATH)
+    vtkhavs_paraview_vtk(_vtkhavs_paraview_vtk "${ParaView_DIR}")
+    if (_vtkhavs_paraview_vtk)
+      get_filename_component(_vtkhavs_paraview_vtk "${_vtkhavs_paraview_vtk}" REALPATH)
+    endif ()
   endif ()
   get_filename_component(_vtkhavs_vtk_real "${VTK_DIR}" REALPATH)
   if (NOT _vtkhavs_paraview_vtk STREQUAL _vtkhavs_vtk_real)

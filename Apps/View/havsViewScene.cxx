@@ -79,7 +79,7 @@ Scene::Scene()
   this->Status->GetTextProperty()->SetVerticalJustificationToTop();
   this->Status->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   this->Status->GetPositionCoordinate()->SetValue(0.01, 0.985);
-  this->Renderer->AddActor2D(this->Status);
+  this->Renderer->AddViewProp(this->Status);
 
   this->Help->GetTextProperty()->SetFontSize(14);
   this->Help->GetTextProperty()->SetColor(0.95, 0.9, 0.6);
@@ -88,7 +88,7 @@ Scene::Scene()
   this->Help->GetPositionCoordinate()->SetValue(0.01, 0.9);
   this->Help->SetInput(Scene::KeyHelp().c_str());
   this->Help->SetVisibility(0);
-  this->Renderer->AddActor2D(this->Help);
+  this->Renderer->AddViewProp(this->Help);
 }
 
 //------------------------------------------------------------------------------

@@ -101,7 +101,7 @@ TransferFunctionEditor::TransferFunctionEditor()
          Layer{ this->Curve, this->CurveActor }, Layer{ this->Nodes, this->NodesActor } })
   {
     layer.Actor->SetMapper(NormalizedViewportMapper(layer.Data, layer.Data == this->ColorBar));
-    this->Renderer->AddActor2D(layer.Actor);
+    this->Renderer->AddViewProp(layer.Actor);
   }
   this->CurveActor->GetProperty()->SetColor(1.0, 1.0, 1.0);
   this->CurveActor->GetProperty()->SetLineWidth(2.0);

@@ -46,6 +46,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 
 namespace
 {

@@ -37,6 +37,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 
 namespace
 {

@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <numeric>
 #include <random>
 #include <set>

@@ -31,6 +31,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <cstdlib>
+#include <iostream>
 
 int TestHAVSOrdering(int, char*[])
 {

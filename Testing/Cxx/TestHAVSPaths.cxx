@@ -34,6 +34,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <cstdlib>
+#include <iostream>
 #include <map>
 #include <string>
 

@@ -44,6 +44,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 
 namespace
 {

@@ -35,6 +35,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 
 namespace
 {

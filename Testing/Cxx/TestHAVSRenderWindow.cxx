@@ -25,6 +25,7 @@
 #include "vtkSphereSource.h"
 
 #include <cstdlib>
+#include <iostream>
 
 namespace
 {

@@ -51,6 +51,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 
 namespace
 {

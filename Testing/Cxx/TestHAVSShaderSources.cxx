@@ -22,6 +22,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 
 namespace
 {

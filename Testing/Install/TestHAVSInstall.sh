@@ -80,7 +80,7 @@ if ldd "$prefix/bin/havs_demo" | grep -q "$build"; then
   fail "havs_demo links the build tree"
 fi
 
-if [ -n "$pvpython" ] && command -v xvfb-run > /dev/null; then
+if [ -n "$pvpython" ] && command -v Xvfb > /dev/null; then
   echo "== ParaView finds the installed plugin through PV_PLUGIN_PATH"
   cat > "$work/plugin.py" <<'PY'
 from paraview.simple import Delaunay3D, Show, Sphere

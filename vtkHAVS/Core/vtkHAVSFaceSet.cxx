@@ -13,6 +13,7 @@
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkHAVSVTKCompat.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkSMPThreadLocal.h"
@@ -600,7 +601,8 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
     table.Status.resize(static_cast<size_t>(numberOfCells));
     vtkSMPThreadLocal<CellCounts> counts;
     vtkUnsignedCharArray* ghostArray = grid->GetCellGhostArray();
-    grid->GetCells()->Visit(ReadCells{}, grid->GetCellTypesArray()->GetPointer(0),
+    havs_vtk::VisitCells(grid->GetCells(), ReadCells{},
+      havs_vtk::CellTypeBytes(grid)->GetPointer(0),
       ghostArray ? ghostArray->GetPointer(0) : nullptr, coordinates.data(), numberOfPoints, table,
       counts);
     for (const CellCounts& local : counts)

@@ -10,6 +10,7 @@
 #include "vtkHAVSMesh.h"
 
 #include "vtkHAVSCellOptics.h"
+#include "vtkHAVSVTKCompat.h"
 
 #include "vtkAbstractMapper.h"
 #include "vtkCellArray.h"
@@ -164,7 +165,7 @@ uint64_t vtkHAVSMesh::GeometryHashOf(vtkDataSet* data)
   {
     mixArray(grid->GetCells() ? grid->GetCells()->GetConnectivityArray() : nullptr);
     mixArray(grid->GetCells() ? grid->GetCells()->GetOffsetsArray() : nullptr);
-    mixArray(grid->GetCellTypesArray());
+    mixArray(havs_vtk::CellTypeBytes(grid));
   }
   else if (!vtkStructuredGrid::SafeDownCast(data) && !vtkImageData::SafeDownCast(data) &&
     !vtkRectilinearGrid::SafeDownCast(data))

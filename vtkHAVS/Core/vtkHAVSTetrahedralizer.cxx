@@ -21,6 +21,7 @@
 #include "vtkDataArray.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkGenericCell.h"
+#include "vtkHAVSVTKCompat.h"
 #include "vtkHigherOrderHexahedron.h"
 #include "vtkHigherOrderWedge.h"
 #include "vtkIdList.h"
@@ -279,7 +280,7 @@ bool IsCornerPyramid(int type)
 /// which says 0, and logs an error, for the pyramids above).
 int CellDimension(int type)
 {
-  return IsCornerPyramid(type) ? 3 : vtkCellTypes::GetDimension(type);
+  return IsCornerPyramid(type) ? 3 : havs_vtk::CellTypeDimension(type);
 }
 
 /// An unstructured grid's cells whose point ids are all in range (and
@@ -921,7 +922,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::RefineHigherOrderCe
   for (vtkIdType c = 0; c < numberOfCells; ++c)
   {
     const int type = input->GetCellType(c);
-    if (CellDimension(type) != 3 || vtkCellTypes::IsLinear(type))
+    if (CellDimension(type) != 3 || havs_vtk::IsLinearCellType(type))
     {
       continue;
     }
@@ -1058,6 +1059,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::RefineHigherOrderCe
   out->Allocate(numberOfCells);
   size_t next = 0;
   vtkNew<vtkIdList> ids;
+  vtkNew<vtkIdList> faceStream;
   for (vtkIdType c = 0; c < numberOfCells; ++c)
   {
     if (next < refined.size() && refined[next] == c)
@@ -1082,11 +1084,12 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::RefineHigherOrderCe
       : out->InsertNextCell(input->GetCellType(c), ids);
     if (id < 0)
     {
-      vtkIdType nfaces = 0;
-      const vtkIdType* faces = nullptr;
-      input->GetFaceStream(c, nfaces, faces);
-      const vtkIdType pid = out->InsertNextCell(
-        VTK_POLYHEDRON, ids->GetNumberOfIds(), ids->GetPointer(0), nfaces, faces);
+      // The face stream (nfaces, n0, ids..., n1, ids...) through the
+      // vtkIdList overload, which every VTK from 9.1 to 9.6 has (the pointer
+      // overload is gone in 9.6).
+      input->GetFaceStream(c, faceStream);
+      const vtkIdType pid = out->InsertNextCell(VTK_POLYHEDRON, ids->GetNumberOfIds(),
+        ids->GetPointer(0), faceStream->GetId(0), faceStream->GetPointer(1));
       outCD->CopyData(inCD, c, pid);
       continue;
     }
@@ -1167,7 +1170,7 @@ bool vtkHAVSTetrahedralizer::IsTetrahedral(vtkDataSet* data)
   {
     return true;
   }
-  vtkUnsignedCharArray* types = grid->GetCellTypesArray();
+  vtkUnsignedCharArray* types = havs_vtk::CellTypeBytes(grid);
   if (!types)
   {
     return false;

@@ -160,7 +160,11 @@ const vtkHAVSEGLRenderWindow::ProbeResult& vtkHAVSEGLRenderWindow::Probe()
         if (eglGetCurrentContext() == EGL_NO_CONTEXT &&
           eglMakeCurrent(internal.Display, EGL_NO_SURFACE, EGL_NO_SURFACE, internal.Context))
         {
-          if (const GLubyte* renderer = glGetString(GL_RENDERER))
+          // Through EGL's loader: with glad (VTK >= 9.4) VTK's gl* entry
+          // points are not loaded before a window's OpenGLInit().
+          using GetStringFunction = const GLubyte* (*)(GLenum);
+          auto getString = reinterpret_cast<GetStringFunction>(eglGetProcAddress("glGetString"));
+          if (const GLubyte* renderer = getString ? getString(GL_RENDERER) : nullptr)
           {
             probe.Report += std::string(", ") + reinterpret_cast<const char*>(renderer);
           }
@@ -266,6 +270,7 @@ void vtkHAVSEGLRenderWindow::Initialize()
   this->MakeCurrent();
   if (!this->Initialized)
   {
+    havs_gl::SetSymbolLoader(this, &eglGetProcAddress);
     this->OpenGLInit();
   }
 }

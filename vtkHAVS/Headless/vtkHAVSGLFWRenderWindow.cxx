@@ -10,6 +10,7 @@
 #include "vtkHAVSGLFWRenderWindow.h"
 
 #include "vtkHAVSHeadlessDispatch.h"
+#include "vtkHAVSOpenGL.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLState.h"
 
@@ -186,6 +187,7 @@ void vtkHAVSGLFWRenderWindow::Initialize()
   this->MakeCurrent();
   if (!this->Initialized)
   {
+    havs_gl::SetSymbolLoader(this, &glfwGetProcAddress);
     this->OpenGLInit();
   }
 }

@@ -475,6 +475,7 @@ void vtkHAVSOSMesaRenderWindow::Initialize()
   this->MakeCurrent();
   if (this->IsCurrent() && !this->Initialized)
   {
+    havs_gl::SetSymbolLoader(this, OSMesa().GetProcAddress);
     this->OpenGLInit();
   }
 }

@@ -109,9 +109,8 @@ std::string DisplayWindowClass()
   return window->GetClassName();
 }
 
-const char* const kOSMesaNotBuilt =
-  "OSMesa (GL/osmesa.h and libOSMesa, Debian: libosmesa6-dev) was not found at configure "
-  "time, and this VTK has no OSMesa window (VTK_OPENGL_HAS_OSMESA is not defined)";
+const char* const kOSMesaNotBuilt = VTKHAVS_OSMESA_NOT_BUILT
+  ", and this VTK has no OSMesa window (VTK_OPENGL_HAS_OSMESA is not defined)";
 }
 
 //------------------------------------------------------------------------------

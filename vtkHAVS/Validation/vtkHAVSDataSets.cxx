@@ -19,6 +19,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkExtractCells.h"
 #include "vtkHAVSTetrahedralizer.h"
+#include "vtkHAVSVTKCompat.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkMultiBlockDataSet.h"
@@ -424,9 +425,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::ReadFile(
   for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
   {
     unknown +=
-      std::strcmp(vtkCellTypes::GetClassNameFromTypeId(data->GetCellType(c)), "UnknownClass") == 0
-      ? 1
-      : 0;
+      std::strcmp(havs_vtk::CellTypeClassName(data->GetCellType(c)), "UnknownClass") == 0 ? 1 : 0;
   }
   if (unknown > 0)
   {
