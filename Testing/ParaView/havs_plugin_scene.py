@@ -7,7 +7,7 @@ import math
 import os
 import subprocess
 
-from paraview.simple import (ColorBy, CreateRenderView, GetColorTransferFunction,
+from paraview.simple import (CreateRenderView, GetColorTransferFunction,
                              GetOpacityTransferFunction, LegacyVTKReader, Show, Tetrahedralize)
 from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkIOImage import vtkPNGReader
@@ -71,10 +71,22 @@ def read_lox_post():
     return grid
 
 
+def color_by_points(display, array):
+    """Colour `display` by the point array `array`, its colour and opacity maps set directly.
+
+    Not ColorBy: under `pvbatch --symmetric` ParaView 6.1's ColorBy asks every rank for the
+    array's range and ranks whose data information differs leave the collective call early
+    ("Could not determine array range" on one rank, MPI_ERR_TRUNCATE on the other, for the
+    stock Volume and Surface representations alike); the ranges here are set explicitly."""
+    display.ColorArrayName = ["POINTS", array]
+    display.LookupTable = GetColorTransferFunction(array)
+    display.ScalarOpacityFunction = GetOpacityTransferFunction(array)
+
+
 def style_havs_volume(display, array, data_range, length):
     """Colour by `array`, opacity ramp 0 -> 0.8 over `data_range`, unit distance length / 8,
     HAVS Volume with k = 14 and no early ray termination. Returns the colour and opacity maps."""
-    ColorBy(display, ("POINTS", array))
+    color_by_points(display, array)
     display.Representation = "HAVS Volume"
     lut = GetColorTransferFunction(array)
     pwf = GetOpacityTransferFunction(array)

@@ -64,7 +64,7 @@ mapper.SelectScalarArray("density")
 mapper.KeepFloatResultOn()  # for the check below; not part of the recipe
 volume.SetMapper(mapper)
 plotter.camera_position = [(2.6, -1.9, 1.7), (0.5, 0.5, 0.5), (0.0, 0.0, 1.0)]
-plotter.render()
+plotter.show(auto_close=False)  # the first render (plotter.render() draws only after show)
 # --- end of the recipe --------------------------------------------------------
 
 window = plotter.render_window
@@ -101,8 +101,11 @@ prop.SetScalarOpacityUnitDistance(unit)
 
 # An opacity edit from PyVista's side redraws at once.
 before = float(np.asarray([result.GetComponent(i, 3) for i in range(result.GetNumberOfTuples())]).sum())
-prop.GetScalarOpacity().AddPoint(float(grid["density"].max()), 0.0)
-plotter.render()
+opacity = prop.GetScalarOpacity()
+opacity.RemoveAllPoints()  # PyVista's 256 nodes replaced by a faint ramp
+opacity.AddPoint(float(grid["density"].min()), 0.0)
+opacity.AddPoint(float(grid["density"].max()), 0.2)
+window.Render()  # VTK's own render call on the plotter's window
 mapper.GetFloatResult(result, size)
 after = float(np.asarray([result.GetComponent(i, 3) for i in range(result.GetNumberOfTuples())]).sum())
 check(after < before, "an opacity edit redraws (total alpha %.3f -> %.3f)" % (before, after))

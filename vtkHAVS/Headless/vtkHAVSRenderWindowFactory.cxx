@@ -306,6 +306,10 @@ vtkRenderWindow* vtkHAVSRenderWindowFactory::CreateRenderWindow(const std::strin
   }
   if (backend == "display")
   {
+    // VTK >= 9.4 chooses its window at run time and makes the X window's GLX
+    // context current inside vtkRenderWindow::New(): the thread must be free
+    // of our EGL and OSMesa contexts already (see below).
+    havs_dispatch::TakeThread(havs_dispatch::kTagGLX);
     vtkRenderWindow* window = vtkRenderWindow::New();
     window->SetMultiSamples(0);
     // Under GLVND libGLX cannot make its context current while an EGL or
