@@ -67,11 +67,6 @@ function (vtkhavs_paraview_vtk out pvdir)
       REGEX "set\\(_paraview_use_external_vtk \"ON\"\\)")
     if (external)
       vtkhavs_newest_config(result "vtk-9.*")
-      if (NOT result)
-        message(WARNING "vtkHAVS: ParaView in ${pvdir} is built on an external VTK whose "
-          "development files are not installed (Debian: libvtk9-dev); the ParaView plugin "
-          "is not built")
-      endif ()
     endif ()
   endif ()
   set("${out}" "${result}" PARENT_SCOPE)
@@ -82,6 +77,11 @@ if (NOT VTK_DIR AND NOT ParaView_DIR)
   set(_vtkhavs_paraview_vtk_dir "")
   if (_vtkhavs_paraview_dir)
     vtkhavs_paraview_vtk(_vtkhavs_paraview_vtk_dir "${_vtkhavs_paraview_dir}")
+  endif ()
+  if (_vtkhavs_paraview_dir AND NOT _vtkhavs_paraview_vtk_dir)
+    message(WARNING "vtkHAVS: the VTK of the ParaView in ${_vtkhavs_paraview_dir} has no "
+      "development files here (neither its own vtk/ nor, for a ParaView built on an external "
+      "VTK, a vtk-9.* config: Debian's libvtk9-dev); the ParaView plugin is not built")
   endif ()
   if (_vtkhavs_paraview_vtk_dir)
     set(ParaView_DIR "${_vtkhavs_paraview_dir}" CACHE PATH "ParaView config directory")
