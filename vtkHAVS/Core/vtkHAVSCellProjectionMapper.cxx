@@ -37,6 +37,7 @@ vtkAbstractObjectFactoryNewMacro(vtkHAVSCellProjectionMapper);
 
 //------------------------------------------------------------------------------
 vtkHAVSCellProjectionMapper::vtkHAVSCellProjectionMapper()
+  : vtkHAVSMapperBase("vtkHAVSCellProjectionMapper")
 {
   // Only the near plane needs a section: where a clipping plane cuts a cell
   // the rasterizer still draws the cell's front face, and the ray starts on
@@ -51,46 +52,6 @@ bool vtkHAVSCellProjectionMapper::DrawCells(vtkRenderer*, const CellFrame&, doub
   vtkErrorMacro("vtkHAVSCellProjectionMapper has no graphics layer: use its OpenGL override "
                 "(vtkOpenGLHAVSCellProjectionMapper, from vtkHAVS::OpenGL).");
   return false;
-}
-
-const std::vector<float>* vtkHAVSCellProjectionMapper::GetKeptResult(int[2])
-{
-  return nullptr;
-}
-
-//------------------------------------------------------------------------------
-void vtkHAVSCellProjectionMapper::SetInputData(vtkDataSet* input)
-{
-  this->SetInputDataInternal(0, input);
-}
-
-//------------------------------------------------------------------------------
-void vtkHAVSCellProjectionMapper::SetInputData(vtkUnstructuredGridBase* input)
-{
-  this->SetInputDataInternal(0, input);
-}
-
-//------------------------------------------------------------------------------
-double* vtkHAVSCellProjectionMapper::GetBounds()
-{
-  if (vtkHAVSMapperInputs::GetCompositeInputBounds(this, this->Bounds))
-  {
-    return this->Bounds;
-  }
-  return this->Superclass::GetBounds();
-}
-
-//------------------------------------------------------------------------------
-int vtkHAVSCellProjectionMapper::FillInputPortInformation(
-  int vtkNotUsed(port), vtkInformation* info)
-{
-  return vtkHAVSMapperInputs::FillInputPortInformation(info);
-}
-
-//------------------------------------------------------------------------------
-void vtkHAVSCellProjectionMapper::WarnOnce(int which, const std::string& message)
-{
-  vtkHAVSMapperInputs::WarnOnceBy(this, this->Warned[which], message);
 }
 
 //------------------------------------------------------------------------------
@@ -202,75 +163,39 @@ const std::vector<uint32_t>* vtkHAVSCellProjectionMapper::MakeOrder(const vtkHAV
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
+void vtkHAVSCellProjectionMapper::ResetLastFrame()
 {
   this->LastCellsDrawn = 0;
   this->LastCycleBreaks = 0;
   this->LastOrderReused = false;
   this->LastSectionTriangles = 0;
-  switch (this->BlendMode)
-  {
-    case COMPOSITE_BLEND:
-    case MAXIMUM_INTENSITY_BLEND:
-    case MINIMUM_INTENSITY_BLEND:
-    case ADDITIVE_BLEND:
-      break;
-    default:
-      vtkErrorMacro("Blend mode " << this->BlendMode
-                                  << " is not supported by vtkHAVSCellProjectionMapper (composite, "
-                                     "maximum, minimum intensity and additive are).");
-      return;
-  }
+}
 
-  // The mesh, the table, the cells' planes and fields: each only when its inputs changed.
-  if (this->GetNumberOfInputConnections(0) > 0)
-  {
-    this->GetInputAlgorithm()->Update();
-  }
-  auto warnOnce = [this](int which, const std::string& m) { this->WarnOnce(which, m); };
-  const auto state =
-    vtkHAVSMapperInputs::PrepareMesh(this, volume, this->Mesh, "vtkHAVSCellProjectionMapper",
-      warnOnce, this->VectorMode, this->VectorComponent, this->HigherOrderSubdivision);
-  if (state == vtkHAVSMapperInputs::MeshFailed)
+//------------------------------------------------------------------------------
+void vtkHAVSCellProjectionMapper::MeshPrepared(int update, bool rebuilt)
+{
+  // The cells' planes and fields: the order is kept for a new time step on
+  // the same mesh, made again for a new mesh.
+  if (update == MeshUnchanged && !this->Cells.empty())
   {
     return;
   }
-  if (state == vtkHAVSMapperInputs::MeshScalarsUpdated && !this->Cells.empty())
+  vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
+    this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
+    this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
+  this->FieldTime.Modified();
+  if (rebuilt || this->GeometryTime.GetMTime() == 0)
   {
-    // A new time step on the same mesh: the cells' fields again, the order kept.
-    vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
-      this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
-      this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
-    this->FieldTime.Modified();
-  }
-  else if (state != vtkHAVSMapperInputs::MeshUnchanged || this->Cells.empty())
-  {
-    vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
-      this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
-      this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
     this->GeometryTime.Modified();
-    this->FieldTime.Modified();
     this->OrderBuilt = false;
     this->OrderKeyValid = false;
   }
-  bool rebuilt = false;
-  if (!vtkHAVSMapperInputs::PrepareTable(this, volume, this->Mesh, this->Table,
-        this->TableScalarResolution, this->TableLengthResolution, "vtkHAVSCellProjectionMapper",
-        warnOnce, &rebuilt))
-  {
-    return;
-  }
-  if (rebuilt)
-  {
-    this->TableBuildTime.Modified();
-  }
+}
 
-  // The view, and the cell order for it.
-  const vtkHAVSViewFrame view = vtkHAVSViewFrame::Make(renderer, volume, this->Mesh->GetShift());
-  if (!view.HasPixels())
-  {
-    return;
-  }
+//------------------------------------------------------------------------------
+void vtkHAVSCellProjectionMapper::RenderView(
+  vtkRenderer* renderer, vtkVolume* vtkNotUsed(volume), const vtkHAVSViewFrame& view)
+{
   // Where the near plane cuts the mesh (the camera inside it) the rays start
   // on its section: the GL near clip removes the front faces there.
   if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, this->NearPlaneSection))
@@ -279,6 +204,8 @@ void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volum
       "More than 6 clipping planes; vtkHAVSCellProjectionMapper uses the first 6.");
   }
   this->LastSectionTriangles = this->Planes->GetNumberOfSectionTriangles();
+
+  // The cell order for the view.
   const double t0 = vtkTimerLog::GetUniversalTime();
   const std::vector<uint32_t>* order = this->MakeOrder(view);
   if (!order)
@@ -287,6 +214,7 @@ void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   }
   this->LastOrderSeconds = vtkTimerLog::GetUniversalTime() - t0;
 
+  // The draw: every cell's front faces in that order.
   CellFrame frame;
   frame.View = &view;
   frame.Mesh = this->Mesh;
@@ -310,24 +238,16 @@ void vtkHAVSCellProjectionMapper::Render(vtkRenderer* renderer, vtkVolume* volum
 }
 
 //------------------------------------------------------------------------------
-bool vtkHAVSCellProjectionMapper::GetFloatResult(vtkFloatArray* rgba, int size[2])
-{
-  return vtkHAVSMapperInputs::CopyResult(this->GetKeptResult(size), size, rgba);
-}
-
-//------------------------------------------------------------------------------
 void vtkHAVSCellProjectionMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "CellOrder: " << (this->CellOrder == CellOrderMPVO ? "MPVO" : "Centroid")
      << ", NonConvexMethod: " << this->NonConvexMethod << "\n";
-  os << indent << "Table: " << this->TableScalarResolution << "^2 x " << this->TableLengthResolution
-     << "\n";
-  os << indent << "BlendMode: " << this->BlendMode
+  os << indent << "NearPlaneSection: " << this->NearPlaneSection
+     << ", MeasureStageTimes: " << this->MeasureStageTimes << "\n";
+  os << indent << "WrongExitForTesting: " << this->WrongExitForTesting
+     << ", ReverseOrderForTesting: " << this->ReverseOrderForTesting
      << ", ShuffleOrderForTesting: " << this->ShuffleOrderForTesting << "\n";
-  os << indent << "HigherOrderSubdivision: " << this->HigherOrderSubdivision << "\n";
-  os << indent << "KeepFloatResult: " << this->KeepFloatResult
-     << ", WrongExitForTesting: " << this->WrongExitForTesting << "\n";
   os << indent << "Last frame: " << this->LastCellsDrawn << " cells, " << this->LastCycleBreaks
      << " cycle breaks, order " << (this->LastOrderReused ? "reused, " : "")
      << this->LastOrderSeconds << " s, draw " << this->LastDrawSeconds << " s\n";

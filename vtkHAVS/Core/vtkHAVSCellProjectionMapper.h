@@ -27,7 +27,8 @@
  * (maximum, minimum intensity, additive) draw the cells unsorted: no per-view
  * CPU work at all.
  *
- * Same inputs, scalars and table as vtkHAVSVolumeMapper (vtkHAVSMapperInputs),
+ * Same inputs, scalars, mesh and table as the other mappers (vtkHAVSMapperBase,
+ * whose Render() calls RenderView()),
  * the volume's matrix, perspective and parallel cameras, opaque geometry in
  * the scene, up to 6 clipping planes (each fragment's segment clipped to
  * them: the ray starts inside a cell where a plane cuts it, no section to
@@ -46,10 +47,9 @@
 
 #include "vtkHAVSCoreModule.h"      // For export macro
 #include "vtkHAVSVisibilityOrder.h" // For ViewKey
-#include "vtkNew.h"                 // For vtkNew
-#include "vtkUnstructuredGridVolumeMapper.h"
+#include "vtkHAVSMapperBase.h"
+#include "vtkNew.h" // For vtkNew
 
-#include <array>   // For std::array
 #include <cstdint> // For uint32_t
 #include <string>  // For std::string
 #include <vector>  // For std::vector
@@ -60,12 +60,12 @@ class vtkHAVSMesh;
 class vtkHAVSPreIntegrationTable;
 class vtkHAVSViewFrame;
 
-class VTKHAVSCORE_EXPORT vtkHAVSCellProjectionMapper : public vtkUnstructuredGridVolumeMapper
+class VTKHAVSCORE_EXPORT vtkHAVSCellProjectionMapper : public vtkHAVSMapperBase
 {
 public:
   /// The graphics layer's override (vtkOpenGLHAVSCellProjectionMapper); nullptr without one.
   static vtkHAVSCellProjectionMapper* New();
-  vtkTypeMacro(vtkHAVSCellProjectionMapper, vtkUnstructuredGridVolumeMapper);
+  vtkTypeMacro(vtkHAVSCellProjectionMapper, vtkHAVSMapperBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum CellOrders
@@ -88,81 +88,15 @@ public:
   vtkGetMacro(NonConvexMethod, int);
   ///@}
 
-  ///@{
-  /**
-   * Blend modes (vtkVolumeMapper's numbering): composite (default, in the
-   * exact cell order), and the order-independent ones, drawn unsorted with no
-   * per-view work on the CPU at all: maximum and minimum intensity (the
-   * extremal scalar along the ray in the mesh, coloured by the transfer
-   * function's colour and opacity, as vtkHAVSVolumeMapper and VTK's ray
-   * casters), and additive (VTK's ADDITIVE_BLEND in the limit of small
-   * samples: the integral of tau(s) s along the ray, s normalized to the
-   * scalar range, clamped to 1, grey with opacity 1 where the ray crosses the
-   * mesh; a sum of per-sample terms, hence order-independent).
-   */
-  static constexpr int MINIMUM_INTENSITY_BLEND = 2;
-  static constexpr int ADDITIVE_BLEND = 4;
-  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
-  void SetBlendModeToAdditive() { this->SetBlendMode(ADDITIVE_BLEND); }
-  ///@}
-
-  ///@{
-  /// Resolutions of the pre-integration table (as vtkHAVSVolumeMapper's; default 128).
-  vtkSetClampMacro(TableScalarResolution, int, 4, 1024);
-  vtkGetMacro(TableScalarResolution, int);
-  vtkSetClampMacro(TableLengthResolution, int, 4, 1024);
-  vtkGetMacro(TableLengthResolution, int);
-  ///@}
-
-  ///@{
-  /**
-   * The input: any vtkDataSet (vtkUnstructuredGridVolumeMapper's
-   * SetInputData(vtkDataSet*) refuses what is not an unstructured grid), or a
-   * composite data set of them (SetInputDataObject or a pipeline connection).
-   */
-  void SetInputData(vtkDataSet* input) override;
-  void SetInputData(vtkUnstructuredGridBase* input) override;
-  ///@}
-
-  ///@{
-  /// The input's bounds, also for a composite input (all its blocks).
-  double* GetBounds() override;
-  void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
-  ///@}
-
-  ///@{
-  /**
-   * How a multi-component array becomes the scalar rendered, as
-   * vtkSmartVolumeMapper::SetVectorMode: -1 (the default) the first component,
-   * 0 the magnitude, 1 the component VectorComponent. The property's first
-   * component's transfer functions colour it.
-   */
-  vtkSetClampMacro(VectorMode, int, -1, 1);
-  vtkGetMacro(VectorMode, int);
-  vtkSetClampMacro(VectorComponent, int, 0, 3);
-  vtkGetMacro(VectorComponent, int);
-  ///@}
-
-  ///@{
-  /**
-   * Subdivision of quadratic and higher-order cells (vtkHAVSTetrahedralizer):
-   * 0 (the default) splits them at their nodes only; n >= 1 refines every
-   * non-linear hexahedron, tetrahedron, wedge and pyramid uniformly in its
-   * parametric space, 2^n segments per edge, points and point data through the cell's
-   * own interpolation (curved cells drawn curved), crack-free across
-   * neighbours. Linear cells are unaffected. At most 6. A change re-tessellates.
-   */
-  vtkSetClampMacro(HigherOrderSubdivision, int, 0, 6);
-  vtkGetMacro(HigherOrderSubdivision, int);
-  ///@}
-
-  ///@{
-  /// Keep the frame's float result (premultiplied RGBA) for GetFloatResult().
-  vtkSetMacro(KeepFloatResult, bool);
-  vtkGetMacro(KeepFloatResult, bool);
-  vtkBooleanMacro(KeepFloatResult, bool);
-  bool GetFloatResult(vtkFloatArray* rgba, int size[2]);
-  ///@}
+  // Blend modes (vtkHAVSMapperBase): composite (default, in the exact cell
+  // order), and the order-independent ones, drawn unsorted with no per-view
+  // work on the CPU at all: maximum and minimum intensity (the extremal
+  // scalar along the ray in the mesh, coloured by the transfer function's
+  // colour and opacity, as vtkHAVSVolumeMapper and VTK's ray casters), and
+  // additive (VTK's ADDITIVE_BLEND in the limit of small samples: the
+  // integral of tau(s) s along the ray, s normalized to the scalar range,
+  // clamped to 1, grey with opacity 1 where the ray crosses the mesh; a sum
+  // of per-sample terms, hence order-independent).
 
   ///@{
   /// Testing aid (a negative control): the ray leaves each cell through the
@@ -214,8 +148,6 @@ public:
   vtkBooleanMacro(MeasureStageTimes, bool);
   ///@}
 
-  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
-
   /// What the graphics layer draws in one frame.
   struct CellFrame
   {
@@ -240,36 +172,27 @@ protected:
   vtkHAVSCellProjectionMapper();
   ~vtkHAVSCellProjectionMapper() override;
 
-  /// Any vtkDataSet: cells that are not tetrahedra are split (vtkHAVSTetrahedralizer);
-  /// or a composite data set, its blocks appended into one grid.
-  int FillInputPortInformation(int port, vtkInformation* info) override;
+  void ResetLastFrame() override;
+  void MeshPrepared(int update, bool rebuilt) override;
+  void RenderView(vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) override;
 
   /// The graphics layer: draws one frame (false, with an error, when it cannot).
   virtual bool DrawCells(vtkRenderer* renderer, const CellFrame& frame, double* drawSeconds);
-  /// The last kept float result (nullptr without one).
-  virtual const std::vector<float>* GetKeptResult(int size[2]);
 
 private:
   vtkHAVSCellProjectionMapper(const vtkHAVSCellProjectionMapper&) = delete;
   void operator=(const vtkHAVSCellProjectionMapper&) = delete;
 
-  void WarnOnce(int which, const std::string& message);
   void CentroidOrder(const vtkHAVSViewFrame& view);
   /// The frame's cell order (made again only when its key changed); nullptr on failure.
   const std::vector<uint32_t>* MakeOrder(const vtkHAVSViewFrame& view);
 
   int CellOrder = CellOrderMPVO;
   int NonConvexMethod = 1; // vtkHAVSVisibilityOrder::NonConvexBoundaryLayers
-  int TableScalarResolution = 128;
-  int TableLengthResolution = 128;
-  bool KeepFloatResult = false;
   bool WrongExitForTesting = false;
   bool ReverseOrderForTesting = false;
   bool ShuffleOrderForTesting = false;
   bool NearPlaneSection = true;
-  int VectorMode = -1;
-  int VectorComponent = 0;
-  int HigherOrderSubdivision = 0;
   vtkIdType LastSectionTriangles = 0;
   bool MeasureStageTimes = false;
   bool LastOrderReused = false;
@@ -278,11 +201,7 @@ private:
   double LastOrderSeconds = 0.0;
   double LastDrawSeconds = 0.0;
 
-  vtkNew<vtkHAVSMesh> Mesh;
-  vtkNew<vtkHAVSPreIntegrationTable> Table;
-  vtkTimeStamp TableBuildTime;
   vtkNew<vtkHAVSVisibilityOrder> Order;
-  vtkNew<vtkHAVSFramePlanes> Planes;
   bool OrderBuilt = false;
   std::vector<float> Cells;
   std::vector<uint32_t> Faces;
@@ -295,7 +214,6 @@ private:
   bool OrderReversed = false;
   vtkIdType KeptCycleBreaks = 0;
   vtkTimeStamp OrderTime;
-  std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
 };
 
 #endif

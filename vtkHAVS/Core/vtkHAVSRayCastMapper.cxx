@@ -28,6 +28,7 @@ vtkAbstractObjectFactoryNewMacro(vtkHAVSRayCastMapper);
 
 //------------------------------------------------------------------------------
 vtkHAVSRayCastMapper::vtkHAVSRayCastMapper()
+  : vtkHAVSMapperBase("vtkHAVSRayCastMapper")
 {
   // Only the near plane would need a section (a ray starts on a clipping
   // plane inside the cell it enters by).
@@ -43,41 +44,6 @@ bool vtkHAVSRayCastMapper::DrawRays(vtkRenderer*, const RayFrame&, RayCounts*)
   return false;
 }
 
-const std::vector<float>* vtkHAVSRayCastMapper::GetKeptResult(int[2])
-{
-  return nullptr;
-}
-
-//------------------------------------------------------------------------------
-void vtkHAVSRayCastMapper::SetInputData(vtkDataSet* input)
-{
-  this->SetInputDataInternal(0, input);
-}
-
-void vtkHAVSRayCastMapper::SetInputData(vtkUnstructuredGridBase* input)
-{
-  this->SetInputDataInternal(0, input);
-}
-
-double* vtkHAVSRayCastMapper::GetBounds()
-{
-  if (vtkHAVSMapperInputs::GetCompositeInputBounds(this, this->Bounds))
-  {
-    return this->Bounds;
-  }
-  return this->Superclass::GetBounds();
-}
-
-int vtkHAVSRayCastMapper::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
-{
-  return vtkHAVSMapperInputs::FillInputPortInformation(info);
-}
-
-void vtkHAVSRayCastMapper::WarnOnce(int which, const std::string& message)
-{
-  vtkHAVSMapperInputs::WarnOnceBy(this, this->Warned[which], message);
-}
-
 //------------------------------------------------------------------------------
 void vtkHAVSRayCastMapper::SetBrokenNeighboursForTesting(bool broken)
 {
@@ -89,7 +55,7 @@ void vtkHAVSRayCastMapper::SetBrokenNeighboursForTesting(bool broken)
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
+void vtkHAVSRayCastMapper::ResetLastFrame()
 {
   this->LastPeelPasses = 0;
   this->LastRaysStarted = 0;
@@ -100,73 +66,42 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastTileGrid[0] = this->LastTileGrid[1] = 0;
   this->LastTilePasses.clear();
   this->LastPeelFragments.clear();
-  switch (this->BlendMode)
-  {
-    case COMPOSITE_BLEND:
-    case MAXIMUM_INTENSITY_BLEND:
-    case MINIMUM_INTENSITY_BLEND:
-    case ADDITIVE_BLEND:
-      break;
-    default:
-      vtkErrorMacro("Blend mode " << this->BlendMode
-                                  << " is not supported by vtkHAVSRayCastMapper (composite, "
-                                     "maximum, minimum intensity and additive are).");
-      return;
-  }
-  if (this->GetNumberOfInputConnections(0) > 0)
-  {
-    this->GetInputAlgorithm()->Update();
-  }
-  auto warnOnce = [this](int which, const std::string& m) { this->WarnOnce(which, m); };
-  const auto state = vtkHAVSMapperInputs::PrepareMesh(this, volume, this->Mesh,
-    "vtkHAVSRayCastMapper", warnOnce, this->VectorMode, this->VectorComponent);
-  if (state == vtkHAVSMapperInputs::MeshFailed)
-  {
-    return;
-  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSRayCastMapper::MeshPrepared(int update, bool rebuilt)
+{
+  // The layout (96 bytes a tetrahedron): its neighbours are kept for a new
+  // time step on the same mesh (the fields again) and for an unchanged one,
+  // unless the testing aid changed.
   const std::vector<uint32_t>& tets = this->Mesh->GetFaceSet()->GetTetrahedra();
   const std::vector<float>* cellScalars =
     this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr;
-  // The neighbours are kept for a new time step on the same mesh (the
-  // fields again) and for an unchanged one, unless the testing aid changed.
-  const bool keepNeighbours = this->RayMesh &&
-    this->RayMeshBroken == this->BrokenNeighboursForTesting &&
-    (state == vtkHAVSMapperInputs::MeshUnchanged ||
-      state == vtkHAVSMapperInputs::MeshScalarsUpdated);
-  if (keepNeighbours && state == vtkHAVSMapperInputs::MeshScalarsUpdated)
+  if (this->RayMesh && !rebuilt && this->RayMeshBroken == this->BrokenNeighboursForTesting)
   {
-    this->RayMesh->UpdateFields(
-      this->Mesh->GetPoints(), this->Mesh->GetScalars(), tets, cellScalars);
-    this->RayMeshTime.Modified();
-  }
-  else if (!keepNeighbours)
-  {
-    this->RayMesh.reset(new vtkHAVSRayCastMesh);
-    this->RayMesh->Build(this->Mesh->GetPoints(), this->Mesh->GetScalars(), tets, cellScalars);
-    if (this->BrokenNeighboursForTesting)
+    if (update != MeshUnchanged)
     {
-      this->RayMesh->BreakNeighboursForTesting();
+      this->RayMesh->UpdateFields(
+        this->Mesh->GetPoints(), this->Mesh->GetScalars(), tets, cellScalars);
+      this->RayMeshTime.Modified();
     }
-    this->RayMeshBroken = this->BrokenNeighboursForTesting;
-    this->RayMeshTime.Modified();
-  }
-  bool rebuilt = false;
-  if (!vtkHAVSMapperInputs::PrepareTable(this, volume, this->Mesh, this->Table,
-        this->TableScalarResolution, this->TableLengthResolution, "vtkHAVSRayCastMapper", warnOnce,
-        &rebuilt))
-  {
     return;
   }
-  if (rebuilt)
+  this->RayMesh.reset(new vtkHAVSRayCastMesh);
+  this->RayMesh->Build(this->Mesh->GetPoints(), this->Mesh->GetScalars(), tets, cellScalars);
+  if (this->BrokenNeighboursForTesting)
   {
-    this->TableBuildTime.Modified();
+    this->RayMesh->BreakNeighboursForTesting();
   }
+  this->RayMeshBroken = this->BrokenNeighboursForTesting;
+  this->RayMeshTime.Modified();
+}
 
-  const vtkHAVSViewFrame view = vtkHAVSViewFrame::Make(renderer, volume, this->Mesh->GetShift());
-  if (!view.HasPixels())
-  {
-    return;
-  }
+//------------------------------------------------------------------------------
+void vtkHAVSRayCastMapper::RenderView(
+  vtkRenderer* renderer, vtkVolume* vtkNotUsed(volume), const vtkHAVSViewFrame& view)
+{
+  // The near and clipping planes (the near plane's section where the camera is inside).
   if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, this->NearPlaneSection))
   {
     this->WarnOnce(vtkHAVSMapperInputs::WarnPlanes,
@@ -174,6 +109,7 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   this->LastSectionTriangles = this->Planes->GetNumberOfSectionTriangles();
 
+  // The draw: peel the entries, cast, per tile.
   RayFrame frame;
   frame.View = &view;
   frame.Mesh = this->Mesh;
@@ -190,39 +126,30 @@ void vtkHAVSRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.Blend = this->BlendMode;
   frame.FoldReentries = this->FoldReentries;
   RayCounts counts;
-  if (this->DrawRays(renderer, frame, &counts))
+  if (!this->DrawRays(renderer, frame, &counts))
   {
-    this->LastPeelPasses = counts.Passes;
-    this->LastRaysStarted = static_cast<vtkIdType>(counts.Rays);
-    this->LastCellsCrossed = static_cast<vtkIdType>(counts.Cells);
-    this->LastFoldReentries = static_cast<vtkIdType>(counts.FoldReentries);
-    this->LastDrawSeconds = counts.Seconds;
-    this->LastPeelSeconds = counts.PeelSeconds;
-    this->LastCastSeconds = counts.CastSeconds;
-    this->LastTileGrid[0] = counts.TileGrid[0];
-    this->LastTileGrid[1] = counts.TileGrid[1];
-    this->LastTilePasses.swap(counts.TilePasses);
-    this->LastPeelFragments.swap(counts.PeelFragments);
+    return;
   }
-}
-
-//------------------------------------------------------------------------------
-bool vtkHAVSRayCastMapper::GetFloatResult(vtkFloatArray* rgba, int size[2])
-{
-  return vtkHAVSMapperInputs::CopyResult(this->GetKeptResult(size), size, rgba);
+  this->LastPeelPasses = counts.Passes;
+  this->LastRaysStarted = static_cast<vtkIdType>(counts.Rays);
+  this->LastCellsCrossed = static_cast<vtkIdType>(counts.Cells);
+  this->LastFoldReentries = static_cast<vtkIdType>(counts.FoldReentries);
+  this->LastDrawSeconds = counts.Seconds;
+  this->LastPeelSeconds = counts.PeelSeconds;
+  this->LastCastSeconds = counts.CastSeconds;
+  this->LastTileGrid[0] = counts.TileGrid[0];
+  this->LastTileGrid[1] = counts.TileGrid[1];
+  this->LastTilePasses.swap(counts.TilePasses);
+  this->LastPeelFragments.swap(counts.PeelFragments);
 }
 
 //------------------------------------------------------------------------------
 void vtkHAVSRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Table: " << this->TableScalarResolution << "^2 x " << this->TableLengthResolution
-     << "\n";
-  os << indent << "BlendMode: " << this->BlendMode << "\n";
   os << indent << "EarlyRayTerminationOpacity: " << this->EarlyRayTerminationOpacity
      << ", MaximumPeelPasses: " << this->MaximumPeelPasses << "\n";
-  os << indent << "KeepFloatResult: " << this->KeepFloatResult
-     << ", BrokenNeighboursForTesting: " << this->BrokenNeighboursForTesting
+  os << indent << "BrokenNeighboursForTesting: " << this->BrokenNeighboursForTesting
      << ", NearPlaneSection: " << this->NearPlaneSection
      << ", FoldReentries: " << this->FoldReentries << "\n";
   os << indent << "Tiles: " << this->Tiles << ", TileSize: " << this->TileSize << "\n";

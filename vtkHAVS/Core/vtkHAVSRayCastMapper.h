@@ -30,8 +30,8 @@
  * of them, counted: GetLastPeelPasses()); MaximumPeelPasses limits them (a
  * negative control: one pass on a mesh that needs more).
  *
- * Same inputs, scalars and table as vtkHAVSVolumeMapper
- * (vtkHAVSMapperInputs), the volume's matrix, perspective and parallel
+ * Same inputs, scalars, mesh and table as the other mappers
+ * (vtkHAVSMapperBase, whose Render() calls RenderView()), the volume's matrix, perspective and parallel
  * cameras, opaque geometry, up to 6 clipping planes (each ray clipped to
  * them). The camera inside the mesh: where the near plane cuts it (the GL
  * near clip removes the entry faces there) the rays start on the near
@@ -49,10 +49,8 @@
 #define vtkHAVSRayCastMapper_h
 
 #include "vtkHAVSCoreModule.h" // For export macro
-#include "vtkNew.h"            // For vtkNew
-#include "vtkUnstructuredGridVolumeMapper.h"
+#include "vtkHAVSMapperBase.h"
 
-#include <array>  // For std::array
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
 #include <vector> // For std::vector
@@ -64,34 +62,18 @@ class vtkHAVSPreIntegrationTable;
 class vtkHAVSRayCastMesh;
 class vtkHAVSViewFrame;
 
-class VTKHAVSCORE_EXPORT vtkHAVSRayCastMapper : public vtkUnstructuredGridVolumeMapper
+class VTKHAVSCORE_EXPORT vtkHAVSRayCastMapper : public vtkHAVSMapperBase
 {
 public:
   /// The graphics layer's override (vtkOpenGLHAVSRayCastMapper); nullptr without one.
   static vtkHAVSRayCastMapper* New();
-  vtkTypeMacro(vtkHAVSRayCastMapper, vtkUnstructuredGridVolumeMapper);
+  vtkTypeMacro(vtkHAVSRayCastMapper, vtkHAVSMapperBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
-  /**
-   * Blend modes (vtkVolumeMapper's numbering): composite (default), maximum
-   * and minimum intensity, additive, as vtkHAVSCellProjectionMapper's (the
-   * extremal scalar along the ray in the mesh coloured by the transfer
-   * function; VTK's additive: the integral of tau(s) s, clamped to 1, grey).
-   */
-  static constexpr int MINIMUM_INTENSITY_BLEND = 2;
-  static constexpr int ADDITIVE_BLEND = 4;
-  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
-  void SetBlendModeToAdditive() { this->SetBlendMode(ADDITIVE_BLEND); }
-  ///@}
-
-  ///@{
-  /// Resolutions of the pre-integration table (as vtkHAVSVolumeMapper's; default 128).
-  vtkSetClampMacro(TableScalarResolution, int, 4, 1024);
-  vtkGetMacro(TableScalarResolution, int);
-  vtkSetClampMacro(TableLengthResolution, int, 4, 1024);
-  vtkGetMacro(TableLengthResolution, int);
-  ///@}
+  // Blend modes (vtkHAVSMapperBase): composite (default), maximum and
+  // minimum intensity (the extremal scalar along the ray in the mesh coloured
+  // by the transfer function), additive (VTK's: the integral of tau(s) s,
+  // clamped to 1, grey).
 
   ///@{
   /// A ray stops once its opacity reaches this (default 0.999, as vtkHAVSVolumeMapper).
@@ -107,30 +89,6 @@ public:
    */
   vtkSetClampMacro(MaximumPeelPasses, int, 0, 1024);
   vtkGetMacro(MaximumPeelPasses, int);
-  ///@}
-
-  ///@{
-  /// The input: any vtkDataSet, or a composite data set of them (as vtkHAVSCellProjectionMapper).
-  void SetInputData(vtkDataSet* input) override;
-  void SetInputData(vtkUnstructuredGridBase* input) override;
-  double* GetBounds() override;
-  void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
-  ///@}
-
-  ///@{
-  /// How a multi-component array becomes the scalar (as vtkSmartVolumeMapper::SetVectorMode).
-  vtkSetClampMacro(VectorMode, int, -1, 1);
-  vtkGetMacro(VectorMode, int);
-  vtkSetClampMacro(VectorComponent, int, 0, 3);
-  vtkGetMacro(VectorComponent, int);
-  ///@}
-
-  ///@{
-  /// Keep the frame's float result (premultiplied RGBA) for GetFloatResult().
-  vtkSetMacro(KeepFloatResult, bool);
-  vtkGetMacro(KeepFloatResult, bool);
-  vtkBooleanMacro(KeepFloatResult, bool);
-  bool GetFloatResult(vtkFloatArray* rgba, int size[2]);
   ///@}
 
   ///@{
@@ -224,8 +182,6 @@ public:
   const vtkHAVSRayCastMesh* GetRayCastMesh() const { return this->RayMesh.get(); }
 #endif
 
-  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
-
   /// What the graphics layer draws in one frame.
   struct RayFrame
   {
@@ -263,24 +219,19 @@ protected:
   vtkHAVSRayCastMapper();
   ~vtkHAVSRayCastMapper() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
+  void ResetLastFrame() override;
+  void MeshPrepared(int update, bool rebuilt) override;
+  void RenderView(vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) override;
 
   /// The graphics layer: draws one frame (false, with an error, when it cannot).
   virtual bool DrawRays(vtkRenderer* renderer, const RayFrame& frame, RayCounts* counts);
-  /// The last kept float result (nullptr without one).
-  virtual const std::vector<float>* GetKeptResult(int size[2]);
 
 private:
   vtkHAVSRayCastMapper(const vtkHAVSRayCastMapper&) = delete;
   void operator=(const vtkHAVSRayCastMapper&) = delete;
 
-  void WarnOnce(int which, const std::string& message);
-
-  int TableScalarResolution = 128;
-  int TableLengthResolution = 128;
   double EarlyRayTerminationOpacity = 0.999;
   int MaximumPeelPasses = 0;
-  bool KeepFloatResult = false;
   bool BrokenNeighboursForTesting = false;
   bool NearPlaneSection = true;
   bool FoldReentries = true;
@@ -291,8 +242,6 @@ private:
   std::vector<int> LastTilePasses;
   std::vector<long long> LastPeelFragments;
   vtkIdType LastSectionTriangles = 0;
-  int VectorMode = -1;
-  int VectorComponent = 0;
   int LastPeelPasses = 0;
   vtkIdType LastRaysStarted = 0;
   vtkIdType LastCellsCrossed = 0;
@@ -300,14 +249,9 @@ private:
   double LastPeelSeconds = -1.0;
   double LastCastSeconds = -1.0;
 
-  vtkNew<vtkHAVSMesh> Mesh;
-  vtkNew<vtkHAVSPreIntegrationTable> Table;
-  vtkTimeStamp TableBuildTime;
-  vtkNew<vtkHAVSFramePlanes> Planes;
   std::unique_ptr<vtkHAVSRayCastMesh> RayMesh;
   vtkTimeStamp RayMeshTime;
-  bool RayMeshBroken = false;   // the layout holds the broken table
-  std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
+  bool RayMeshBroken = false; // the layout holds the broken table
 };
 
 #endif

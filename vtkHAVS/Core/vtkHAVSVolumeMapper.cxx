@@ -55,7 +55,10 @@ const int WarnPath = Inputs::WarnPath, WarnK = Inputs::WarnK, WarnPlanes = Input
 }
 
 //------------------------------------------------------------------------------
-vtkHAVSVolumeMapper::vtkHAVSVolumeMapper() = default;
+vtkHAVSVolumeMapper::vtkHAVSVolumeMapper()
+  : vtkHAVSMapperBase("vtkHAVSVolumeMapper")
+{
+}
 vtkHAVSVolumeMapper::~vtkHAVSVolumeMapper() = default;
 
 //------------------------------------------------------------------------------
@@ -93,6 +96,13 @@ void vtkHAVSVolumeMapper::SetNonConvexMethodToConvexification()
 }
 
 //------------------------------------------------------------------------------
+bool vtkHAVSVolumeMapper::IsBlendModeSupported(int mode)
+{
+  return mode == COMPOSITE_BLEND || mode == MAXIMUM_INTENSITY_BLEND ||
+    mode == MINIMUM_INTENSITY_BLEND;
+}
+
+//------------------------------------------------------------------------------
 // The graphics layer's hooks: without one (this class alone), nothing draws.
 bool vtkHAVSVolumeMapper::IsKBufferPathSupported(vtkRenderWindow*, int)
 {
@@ -121,84 +131,45 @@ bool vtkHAVSVolumeMapper::CompositeKeptResult(vtkRenderer*)
   return false;
 }
 
-const std::vector<float>* vtkHAVSVolumeMapper::GetKeptResult(int[2])
+//------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::ResetLastFrame()
 {
-  return nullptr;
+  this->LastFrame->Reset();
+  this->DrawnFraction = -1.0;
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSVolumeMapper::WarnOnce(int which, const std::string& message)
+void vtkHAVSVolumeMapper::MeshPrepared(int update, bool rebuilt)
 {
-  vtkHAVSMapperInputs::WarnOnceBy(this, this->Warned[which], message);
-}
-
-//------------------------------------------------------------------------------
-void vtkHAVSVolumeMapper::SetInputData(vtkDataSet* input)
-{
-  this->SetInputDataInternal(0, input);
-}
-
-//------------------------------------------------------------------------------
-void vtkHAVSVolumeMapper::SetInputData(vtkUnstructuredGridBase* input)
-{
-  this->SetInputDataInternal(0, input);
-}
-
-//------------------------------------------------------------------------------
-double* vtkHAVSVolumeMapper::GetBounds()
-{
-  if (vtkHAVSMapperInputs::GetCompositeInputBounds(this, this->Bounds))
-  {
-    return this->Bounds;
-  }
-  return this->Superclass::GetBounds();
-}
-
-//------------------------------------------------------------------------------
-int vtkHAVSVolumeMapper::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
-{
-  return vtkHAVSMapperInputs::FillInputPortInformation(info);
-}
-
-//------------------------------------------------------------------------------
-bool vtkHAVSVolumeMapper::PrepareMesh(vtkVolume* volume)
-{
-  const auto state = vtkHAVSMapperInputs::PrepareMesh(
-    this, volume, this->Mesh, "vtkHAVSVolumeMapper",
-    [this](int which, const std::string& m) { this->WarnOnce(which, m); }, this->VectorMode,
-    this->VectorComponent, this->HigherOrderSubdivision);
-  if (state == vtkHAVSMapperInputs::MeshRebuilt)
+  if (rebuilt)
   {
     this->LevelOfDetailControl->Reset();
     this->FaceOrder->Invalidate();
   }
-  if (state == vtkHAVSMapperInputs::MeshRebuilt || state == vtkHAVSMapperInputs::MeshScalarsUpdated)
+  if (update == MeshBuilt || update == MeshScalarsMapped)
   {
     this->LastFrame->SetMeshUpdate(this->Mesh->GetLastUpdate());
     this->LastFrame->SetMeshSeconds(this->Mesh->GetLastUpdateSeconds());
   }
-  return state != vtkHAVSMapperInputs::MeshFailed;
 }
 
 //------------------------------------------------------------------------------
 bool vtkHAVSVolumeMapper::PrepareTable(vtkVolume* volume)
 {
-  bool rebuilt = false;
   const bool ok = vtkHAVSMapperInputs::PrepareTable(
     this, volume, this->Mesh, this->Table, this->TableScalarResolution, this->TableLengthResolution,
     "vtkHAVSVolumeMapper", [this](int which, const std::string& m) { this->WarnOnce(which, m); },
-    &rebuilt, this->AutomaticTableResolution ? this->TableChooser.Get() : nullptr);
-  if (rebuilt)
+    &this->TableRebuilt, this->AutomaticTableResolution ? this->TableChooser.Get() : nullptr);
+  // A table built at the fixed size is not the chooser's: with the
+  // automatic choice back on, it chooses again.
+  if (this->TableRebuilt && !this->AutomaticTableResolution)
   {
-    // A table built at the fixed size is not the chooser's: with the
-    // automatic choice back on, it chooses again.
-    if (!this->AutomaticTableResolution)
-    {
-      this->TableChooser->Modified();
-    }
-    this->TableBuildTime.Modified();
+    this->TableChooser->Modified();
   }
-  this->LastFrame->SetTableRebuilt(rebuilt);
+  this->LastFrame->SetTableRebuilt(this->TableRebuilt);
+  this->LastFrame->SetTableSeconds(this->AutomaticTableResolution
+      ? this->TableChooser->GetLastSeconds()
+      : this->Table->GetLastBuildSeconds());
   return ok;
 }
 
@@ -413,41 +384,18 @@ vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
+void vtkHAVSVolumeMapper::RenderView(
+  vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view)
 {
-  const double frameStart = vtkTimerLog::GetUniversalTime();
+  // (1-3, the mesh, the table and the view: vtkHAVSMapperBase::Render.)
   vtkHAVSFrameStatistics* stats = this->LastFrame;
-  stats->Reset();
-  switch (this->BlendMode)
-  {
-    case COMPOSITE_BLEND:
-    case MAXIMUM_INTENSITY_BLEND:
-    case MINIMUM_INTENSITY_BLEND:
-      break;
-    default:
-      vtkErrorMacro("Blend mode " << this->BlendMode
-                                  << " is not supported by vtkHAVSVolumeMapper (composite, "
-                                     "maximum and minimum intensity are).");
-      return;
-  }
+  const bool composite = this->BlendMode == COMPOSITE_BLEND;
 
-  // 1. The mesh and 2. the table, each only when its inputs changed.
-  if (this->GetNumberOfInputConnections(0) > 0)
-  {
-    this->GetInputAlgorithm()->Update();
-  }
-  if (!this->PrepareMesh(volume) || !this->PrepareTable(volume))
-  {
-    return;
-  }
-  stats->SetTableSeconds(this->AutomaticTableResolution ? this->TableChooser->GetLastSeconds()
-                                                        : this->Table->GetLastBuildSeconds());
-
-  // 2b. The cells the transfer function hides (composite blend: the extremum
+  // 4. The cells the transfer function hides (composite blend: the extremum
   // modes look at every scalar); recomputed only for a new table or mesh. The
   // raster-bound mode draws the same faces as HAVS would.
   this->SkippingCells = false;
-  if (this->SkipInvisibleCells && this->BlendMode == COMPOSITE_BLEND)
+  if (this->SkipInvisibleCells && composite)
   {
     const double visibilityStart = vtkTimerLog::GetUniversalTime();
     const vtkMTimeType before = this->Visibility->GetVisibilityVersion();
@@ -463,14 +411,7 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     this->SkippingCells ? &this->Visibility->GetVisible() : nullptr,
     this->Visibility->GetVisibilityVersion());
 
-  // 3. The view: every coordinate frame, once.
-  const vtkHAVSViewFrame view = vtkHAVSViewFrame::Make(renderer, volume, this->Mesh->GetShift());
-  if (!view.HasPixels())
-  {
-    return;
-  }
-
-  // The k-buffer: the path the window runs, and k within its reach.
+  // 5. The k-buffer: the path the window runs, and k within its reach.
   const int path = this->ChooseKBufferPath(renderer, this->KBufferPath);
   if (path == 0)
   {
@@ -496,16 +437,15 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   FrameRequest request =
     this->MakeRequest(view, path, k, vtkHAVSMapperInputs::RendererHasOpaqueGeometry(renderer));
-  const bool composite = this->BlendMode == COMPOSITE_BLEND;
 
-  // 4. The near and clipping planes, and the mesh's sections with them.
+  // 6. The near and clipping planes, and the mesh's sections with them.
   if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, this->PlaneSections))
   {
     this->WarnOnce(
       WarnPlanes, "More than 6 clipping planes; vtkHAVSVolumeMapper uses the first 6.");
   }
 
-  // 4b. The cells outside the view frustum or cut away by a clipping plane.
+  // 7. The cells outside the view frustum or cut away by a clipping plane.
   this->FaceOrder->SetCellCulling(nullptr, 0);
   if (this->SkipOffscreenCells)
   {
@@ -524,20 +464,33 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     }
   }
 
-  // 4c. The level of detail: every boundary face and the most important
+  // 8. The level of detail: every boundary face and the most important
   // internal faces, as many as the time allocated allows.
   const double fraction = this->ChooseLevelOfDetail(volume, view, request);
   stats->SetLevelOfDetailFraction(fraction);
   request.Finish = this->LevelOfDetail;
 
-  // 5. The face order, and 6. the draw: Automatic's probe may ask for a
-  // second draw in the exact order.
+  // 9. The face order and the draw, 10. the frame's statistics.
+  FrameResult result;
+  if (this->DrawOrdered(renderer, view, path, maxK, request, result))
+  {
+    this->RecordStatistics(path, request, result);
+    this->DrawnFraction = fraction;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSVolumeMapper::DrawOrdered(vtkRenderer* renderer, const vtkHAVSViewFrame& view,
+  int path, int maxK, FrameRequest& request, FrameResult& result)
+{
+  // Automatic's probe may ask for a second draw in the exact order; the
+  // automatic k searches with counted draws when the view moved far enough.
+  const bool composite = this->BlendMode == COMPOSITE_BLEND;
   this->FaceOrder->SetVisibilityOrder(this->VisibilityOrder);
   this->FaceOrder->SetNonConvexMethod(this->NonConvexMethod);
   vtkHAVSFaceOrderPolicy::Plan plan =
-    this->FaceOrder->Begin(this->Mesh, k, path, composite, !this->FaceRasterBoundMode);
+    this->FaceOrder->Begin(this->Mesh, request.K, path, composite, !this->FaceRasterBoundMode);
   vtkUnstructuredGrid* grid = this->Mesh->GetGrid();
-  FrameResult result;
   for (;;)
   {
     if (!this->FaceOrder->Prepare(plan, this->Mesh, grid, view))
@@ -551,20 +504,14 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     request.CountViolations = composite && (this->CountOrderViolations || plan.Probe);
     if (!plan.Probe && composite && this->AutomaticKBufferSize && !this->FaceRasterBoundMode)
     {
-      // Automatic k: searched again when the view moved far enough.
       if (this->NeedsKSearch(view, this->FaceOrder->GetLastOrder(), path))
       {
         bool kept = false;
         FrameResult last;
         this->FoundK = this->SearchK(renderer, request, maxK, kept, last);
-        stats->SetAutomaticKDraws(this->KSearchDraws);
+        this->LastFrame->SetAutomaticKDraws(this->KSearchDraws);
         // (The first draw of the search uploads what changed; later ones nothing.)
-        stats->SetGeometryUploaded(
-          stats->GetGeometryUploaded() || this->KSearchUploads.GeometryUploaded);
-        stats->SetScalarsUploaded(
-          stats->GetScalarsUploaded() || this->KSearchUploads.ScalarsUploaded);
-        stats->SetTableUploaded(stats->GetTableUploaded() || this->KSearchUploads.TableUploaded);
-        stats->SetOrderUploaded(stats->GetOrderUploaded() || this->KSearchUploads.OrderUploaded);
+        this->RecordUploads(this->KSearchUploads);
         if (kept)
         {
           // The search's last draw was at the k found: it is the frame.
@@ -574,43 +521,47 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
           {
             request.CountViolations = false;
           }
-          if (!this->CompositeKeptResult(renderer))
-          {
-            return;
-          }
-          break;
+          return this->CompositeKeptResult(renderer);
         }
       }
       request.K = this->FoundK;
     }
     result = FrameResult();
     const bool drawn = this->DrawFrame(renderer, request, result);
-    // Uploads of every draw of the frame (Automatic's probe may draw twice).
-    stats->SetGeometryUploaded(stats->GetGeometryUploaded() || result.GeometryUploaded);
-    stats->SetScalarsUploaded(stats->GetScalarsUploaded() || result.ScalarsUploaded);
-    stats->SetOrderUploaded(stats->GetOrderUploaded() || result.OrderUploaded);
-    stats->SetTableUploaded(stats->GetTableUploaded() || result.TableUploaded);
+    this->RecordUploads(result);
     if (!drawn)
     {
-      return;
+      return false;
     }
     if (!plan.Probe)
     {
-      break;
+      return true;
     }
     plan = this->FaceOrder->ProbeResult(result.Violations);
     if (plan.Order < 0)
     {
       // The probe was exact: it is the frame.
-      if (!this->CompositeKeptResult(renderer))
-      {
-        return;
-      }
-      break;
+      return this->CompositeKeptResult(renderer);
     }
   }
+}
 
-  // 7. The frame's statistics.
+//------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::RecordUploads(const FrameResult& result)
+{
+  vtkHAVSFrameStatistics* stats = this->LastFrame;
+  stats->SetGeometryUploaded(stats->GetGeometryUploaded() || result.GeometryUploaded);
+  stats->SetScalarsUploaded(stats->GetScalarsUploaded() || result.ScalarsUploaded);
+  stats->SetOrderUploaded(stats->GetOrderUploaded() || result.OrderUploaded);
+  stats->SetTableUploaded(stats->GetTableUploaded() || result.TableUploaded);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::RecordStatistics(
+  int path, const FrameRequest& request, const FrameResult& result)
+{
+  vtkHAVSFrameStatistics* stats = this->LastFrame;
+  const bool composite = this->BlendMode == COMPOSITE_BLEND;
   stats->SetKBufferPath(path);
   stats->SetKBufferSize(composite ? request.K : 0);
   stats->SetVisibilityOrder(this->FaceOrder->GetLastOrder());
@@ -639,20 +590,22 @@ void vtkHAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   stats->SetDrawSeconds(result.DrawSeconds);
   stats->SetFlushSeconds(result.FlushSeconds);
   stats->SetCompositeSeconds(result.CompositeSeconds);
-
-  // 8. The frame's time: VTK's (TimeToDraw) and the level of detail's.
-  this->TimeToDraw = vtkTimerLog::GetUniversalTime() - frameStart;
-  stats->SetFrameSeconds(this->TimeToDraw);
-  if (this->LevelOfDetail)
-  {
-    this->LevelOfDetailControl->FrameDrawn(fraction, this->TimeToDraw);
-  }
 }
 
 //------------------------------------------------------------------------------
-bool vtkHAVSVolumeMapper::GetFloatResult(vtkFloatArray* rgba, int size[2])
+void vtkHAVSVolumeMapper::FrameFinished(double seconds)
 {
-  return vtkHAVSMapperInputs::CopyResult(this->GetKeptResult(size), size, rgba);
+  // The frame's time (TimeToDraw, set by the base) for the statistics and,
+  // after a drawn frame, the level of detail's controller.
+  if (this->DrawnFraction < 0.0)
+  {
+    return;
+  }
+  this->LastFrame->SetFrameSeconds(seconds);
+  if (this->LevelOfDetail)
+  {
+    this->LevelOfDetailControl->FrameDrawn(this->DrawnFraction, seconds);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -771,11 +724,10 @@ vtkHAVSPreIntegrationTable* vtkHAVSVolumeMapper::GetPreIntegrationTable()
 void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "KBufferSize: " << this->KBufferSize << "\n";
+  os << indent << "KBufferSize: " << this->KBufferSize
+     << ", AutomaticKBufferSize: " << this->AutomaticKBufferSize << "\n";
   os << indent << "KBufferPath (requested): " << GetKBufferPathName(this->KBufferPath) << "\n";
   os << indent << "EarlyRayTerminationOpacity: " << this->EarlyRayTerminationOpacity << "\n";
-  os << indent << "Table: " << this->TableScalarResolution << " x " << this->TableScalarResolution
-     << " x " << this->TableLengthResolution << "\n";
   os << indent << "AutomaticTableResolution: " << this->AutomaticTableResolution << " (error bound "
      << this->TableChooser->GetErrorBound() << ")\n";
   os << indent << "SkipOffscreenCells: " << this->SkipOffscreenCells << "\n";
@@ -783,11 +735,11 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << " (opacity "
      << this->Visibility->GetOpacityThreshold() << ")\n";
   os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";
-  os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
   os << indent << "FaceRasterBoundMode: " << this->FaceRasterBoundMode << "\n";
-  os << indent << "VectorMode: " << this->VectorMode << " (component " << this->VectorComponent
-     << ")\n";
-  os << indent << "HigherOrderSubdivision: " << this->HigherOrderSubdivision << "\n";
+  os << indent << "LevelOfDetail: " << this->LevelOfDetail
+     << ", LevelOfDetailFraction: " << this->LevelOfDetailFraction
+     << ", LevelOfDetailStrategy: " << this->LevelOfDetailStrategy
+     << ", LevelOfDetailTargetSeconds: " << this->LevelOfDetailTargetSeconds << "\n";
   const char* orders[] = { "Centroid", "MPVO", "Automatic" };
   const char* methods[] = { "Ignore", "BoundaryLayers", "Convexification" };
   os << indent << "VisibilityOrder: " << orders[this->VisibilityOrder] << "\n";
@@ -796,7 +748,7 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   static const char* const boundaryModes[] = { "Automatic", "Tagging", "Ignore", "GapLength" };
   os << indent << "BoundaryMode: " << boundaryModes[this->BoundaryMode] << "\n";
   os << indent << "PlaneSections: " << this->PlaneSections << "\n";
-  os << indent << "Mesh:\n";
+  os << indent << "Mesh data:\n";
   this->Mesh->PrintSelf(os, indent.GetNextIndent());
   os << indent << "LastFrame:\n";
   this->LastFrame->PrintSelf(os, indent.GetNextIndent());

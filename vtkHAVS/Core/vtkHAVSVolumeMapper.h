@@ -26,14 +26,16 @@
  * times extinction, scalar linear along each segment, lengths in world space
  * after the volume's matrix.
  *
- * Input: a vtkUnstructuredGrid of tetrahedra with point scalars (chosen with
- * SetScalarMode / SelectScalarArray). Other cells are skipped with a warning;
- * cell scalars are not supported yet (error). Blend modes: composite, maximum
- * and minimum intensity (these need no face order).
+ * Input, scalars, mesh and table: as the other two mappers
+ * (vtkHAVSMapperBase): any vtkDataSet or composite data set, every cell type
+ * (split into tetrahedra, vtkHAVSTetrahedralizer), point or cell scalars
+ * (chosen with SetScalarMode / SelectScalarArray). Blend modes: composite,
+ * maximum and minimum intensity (these need no face order).
  *
  * This class is GL-free: it holds every setting and runs the algorithm of a
- * frame (Render): prepare the mesh (vtkHAVSMesh), prepare the table
- * (vtkHAVSPreIntegrationTable), the view (vtkHAVSViewFrame), the planes
+ * frame (vtkHAVSMapperBase::Render, then RenderView): prepare the mesh
+ * (vtkHAVSMesh), prepare the table (vtkHAVSPreIntegrationTable), the view
+ * (vtkHAVSViewFrame), the cells the transfer function hides, the planes
  * (vtkHAVSFramePlanes), the face order (vtkHAVSFaceOrderPolicy), draw, and
  * the frame's statistics (vtkHAVSFrameStatistics). Drawing is the graphics
  * layer's: New() returns the object-factory override, vtkOpenGLHAVSVolumeMapper
@@ -51,10 +53,9 @@
 #define vtkHAVSVolumeMapper_h
 
 #include "vtkHAVSCoreModule.h" // For export macro
-#include "vtkNew.h"            // For vtkNew
-#include "vtkUnstructuredGridVolumeMapper.h"
+#include "vtkHAVSMapperBase.h"
+#include "vtkNew.h" // For vtkNew
 
-#include <array>   // For std::array
 #include <cstdint> // For uint32_t
 #include <string>  // For std::string
 #include <vector>  // For std::vector
@@ -74,12 +75,12 @@ class vtkHAVSViewCulling;
 class vtkHAVSViewFrame;
 class vtkRenderWindow;
 
-class VTKHAVSCORE_EXPORT vtkHAVSVolumeMapper : public vtkUnstructuredGridVolumeMapper
+class VTKHAVSCORE_EXPORT vtkHAVSVolumeMapper : public vtkHAVSMapperBase
 {
 public:
   /// The graphics layer's override (vtkOpenGLHAVSVolumeMapper); nullptr without one.
   static vtkHAVSVolumeMapper* New();
-  vtkTypeMacro(vtkHAVSVolumeMapper, vtkUnstructuredGridVolumeMapper);
+  vtkTypeMacro(vtkHAVSVolumeMapper, vtkHAVSMapperBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum KBufferPaths
@@ -92,12 +93,8 @@ public:
   /// "Automatic", "FramebufferFetch", "FragmentShaderInterlock", "FragmentLists"; "None" else.
   static const char* GetKBufferPathName(int path);
 
-  /**
-   * Minimum intensity projection (the superclass has composite and maximum
-   * intensity): the same value as vtkVolumeMapper's.
-   */
-  static constexpr int MINIMUM_INTENSITY_BLEND = 2;
-  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
+  /// Composite, maximum and minimum intensity (not additive).
+  bool IsBlendModeSupported(int mode) override;
 
   ///@{
   /**
@@ -164,17 +161,8 @@ public:
   vtkGetMacro(EarlyRayTerminationOpacity, double);
   ///@}
 
-  ///@{
-  /**
-   * Size of the pre-integrated table: entries along the front and back
-   * scalar axes (default 128) and along the segment length (default 128).
-   * With AutomaticTableResolution these are the largest allowed.
-   */
-  vtkSetClampMacro(TableScalarResolution, int, 2, 1024);
-  vtkGetMacro(TableScalarResolution, int);
-  vtkSetClampMacro(TableLengthResolution, int, 2, 1024);
-  vtkGetMacro(TableLengthResolution, int);
-  ///@}
+  // The table's resolutions (vtkHAVSMapperBase): with
+  // AutomaticTableResolution they are the largest allowed.
 
   ///@{
   /**
@@ -445,64 +433,6 @@ public:
   vtkBooleanMacro(PlaneSections, bool);
   ///@}
 
-  ///@{
-  /**
-   * The input: any vtkDataSet (vtkUnstructuredGridVolumeMapper's
-   * SetInputData(vtkDataSet*) refuses what is not an unstructured grid), or a
-   * composite data set of them (SetInputDataObject or a pipeline connection).
-   */
-  void SetInputData(vtkDataSet* input) override;
-  void SetInputData(vtkUnstructuredGridBase* input) override;
-  ///@}
-
-  ///@{
-  /// The input's bounds, also for a composite input (all its blocks).
-  double* GetBounds() override;
-  void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
-  ///@}
-
-  ///@{
-  /**
-   * How a multi-component array becomes the scalar rendered, as
-   * vtkSmartVolumeMapper::SetVectorMode: -1 (the default) the first component,
-   * 0 the magnitude, 1 the component VectorComponent. The property's first
-   * component's transfer functions colour it.
-   */
-  vtkSetClampMacro(VectorMode, int, -1, 1);
-  vtkGetMacro(VectorMode, int);
-  vtkSetClampMacro(VectorComponent, int, 0, 3);
-  vtkGetMacro(VectorComponent, int);
-  ///@}
-
-  ///@{
-  /**
-   * Subdivision of quadratic and higher-order cells (vtkHAVSTetrahedralizer):
-   * 0 (the default) splits them at their nodes only; n >= 1 refines every
-   * non-linear hexahedron, tetrahedron, wedge and pyramid uniformly in its
-   * parametric space, 2^n segments per edge, points and point data through the cell's
-   * own interpolation (curved cells drawn curved), crack-free across
-   * neighbours. Linear cells are unaffected. At most 6. A change re-tessellates.
-   */
-  vtkSetClampMacro(HigherOrderSubdivision, int, 0, 6);
-  vtkGetMacro(HigherOrderSubdivision, int);
-  ///@}
-
-  ///@{
-  /**
-   * When on, each frame's premultiplied float RGBA result (before it is
-   * blended into the window) is kept and can be read with GetFloatResult().
-   */
-  vtkSetMacro(KeepFloatResult, bool);
-  vtkGetMacro(KeepFloatResult, bool);
-  vtkBooleanMacro(KeepFloatResult, bool);
-  ///@}
-
-  /**
-   * The last frame's result (4 components, width*height tuples, bottom row
-   * first, the renderer's viewport). Returns false when none is kept.
-   */
-  bool GetFloatResult(vtkFloatArray* rgba, int size[2]);
-
   /**
    * What the last frame did: path, k, order, violations, counts, times.
    */
@@ -549,11 +479,6 @@ public:
    * k-buffer, which must sample the same table).
    */
   vtkHAVSPreIntegrationTable* GetPreIntegrationTable();
-
-  /**
-   * One frame: mesh, table, view, planes, face order, draw, statistics.
-   */
-  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
 
   // The graphics layer's side (vtkOpenGLHAVSVolumeMapper and its passes read these).
   /**
@@ -613,31 +538,32 @@ protected:
   vtkHAVSVolumeMapper();
   ~vtkHAVSVolumeMapper() override;
 
-  /// Any vtkDataSet: cells that are not tetrahedra are split (vtkHAVSTetrahedralizer);
-  /// or a composite data set, its blocks appended into one grid.
-  int FillInputPortInformation(int port, vtkInformation* info) override;
+  ///@{
+  /// The frame's HAVS part (vtkHAVSMapperBase::Render calls them in order).
+  void ResetLastFrame() override;
+  void MeshPrepared(int update, bool rebuilt) override;
+  bool PrepareTable(vtkVolume* volume) override;
+  void RenderView(vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) override;
+  void FrameFinished(double seconds) override;
+  ///@}
 
   ///@{
   /**
    * The graphics layer (vtkOpenGLHAVSVolumeMapper): the path the window can
    * run for the requested one (0: none), the largest k of a path, one frame
    * drawn (false, with an error, when it could not), the kept result of a
-   * frame drawn without compositing composited now, the last kept float
-   * result.
+   * frame drawn without compositing composited now.
    */
   virtual int ChooseKBufferPath(vtkRenderer* renderer, int requested);
   virtual int GetMaximumK(int path);
   virtual bool DrawFrame(vtkRenderer* renderer, const FrameRequest& request, FrameResult& result);
   virtual bool CompositeKeptResult(vtkRenderer* renderer);
-  virtual const std::vector<float>* GetKeptResult(int size[2]);
   ///@}
 
   int KBufferSize = 2;
   bool AutomaticKBufferSize = false;
   int KBufferPath = KBufferPathAutomatic;
   double EarlyRayTerminationOpacity = 0.999;
-  int TableScalarResolution = 128;
-  int TableLengthResolution = 128;
   bool AutomaticTableResolution = true;
   bool SkipInvisibleCells = true;
   bool SkipOffscreenCells = true;
@@ -647,23 +573,17 @@ protected:
   int LevelOfDetailStrategy = 3; // vtkHAVSInternalFaceRanking::Area
   double LevelOfDetailTargetSeconds = 0.0;
   bool MeasureStageTimes = false;
-  bool KeepFloatResult = false;
   bool FaceRasterBoundMode = false;
   int BoundaryMode = BoundaryAutomatic;
   int VisibilityOrder = VisibilityOrderMPVO;
   int NonConvexMethod = 1; // vtkHAVSVisibilityOrder::NonConvexBoundaryLayers
   bool CountOrderViolations = false;
   bool PlaneSections = true;
-  int VectorMode = -1;
-  int VectorComponent = 0;
-  int HigherOrderSubdivision = 0;
 
 private:
   vtkHAVSVolumeMapper(const vtkHAVSVolumeMapper&) = delete;
   void operator=(const vtkHAVSVolumeMapper&) = delete;
 
-  bool PrepareMesh(vtkVolume* volume);
-  bool PrepareTable(vtkVolume* volume);
   bool PrepareLongSegmentTable(vtkVolume* volume);
   /// Automatic k: whether the view moved far enough from the last search's.
   bool NeedsKSearch(const vtkHAVSViewFrame& view, int order, int path);
@@ -673,13 +593,16 @@ private:
   double ChooseLevelOfDetail(
     vtkVolume* volume, const vtkHAVSViewFrame& view, FrameRequest& request);
   FrameRequest MakeRequest(const vtkHAVSViewFrame& view, int path, int k, bool opaque);
-  void WarnOnce(int which, const std::string& message);
+  /// The frame's draw: the face order and the k-buffer (Automatic's probe and
+  /// the automatic k may draw more than once); false when nothing was drawn.
+  bool DrawOrdered(vtkRenderer* renderer, const vtkHAVSViewFrame& view, int path, int maxK,
+    FrameRequest& request, FrameResult& result);
+  /// Every statistic of a drawn frame, from its request and result.
+  void RecordStatistics(int path, const FrameRequest& request, const FrameResult& result);
+  /// The uploads of one draw added to the frame's (a frame may draw more than once).
+  void RecordUploads(const FrameResult& result);
 
-  vtkNew<vtkHAVSMesh> Mesh;
-  vtkNew<vtkHAVSPreIntegrationTable> Table;
   vtkNew<vtkHAVSTableResolution> TableChooser;
-  vtkTimeStamp TableBuildTime;
-  vtkNew<vtkHAVSFramePlanes> Planes;
   vtkNew<vtkHAVSFaceOrderPolicy> FaceOrder;
   vtkNew<vtkHAVSCellVisibility> Visibility;
   vtkNew<vtkHAVSViewCulling> Culling;
@@ -700,9 +623,9 @@ private:
   int FoundK = 0; // 0: none yet
   int KSearchDraws = 0;
   FrameResult KSearchUploads; // what the search's draws uploaded
-  bool SkippingCells = false; // this frame skips invisible cells
+  bool SkippingCells = false;  // this frame skips invisible cells
+  double DrawnFraction = -1.0; // the level of detail's fraction drawn (-1: nothing drawn)
   vtkNew<vtkHAVSFrameStatistics> LastFrame;
-  std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
 };
 
 #endif

@@ -1,0 +1,257 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSMapperBase.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+#include "vtkHAVSMapperBase.h"
+
+#include "vtkHAVSFramePlanes.h"
+#include "vtkHAVSMapperInputs.h"
+#include "vtkHAVSMesh.h"
+#include "vtkHAVSPreIntegrationTable.h"
+#include "vtkHAVSViewFrame.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkCommand.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTimerLog.h"
+#include "vtkUnstructuredGridBase.h"
+#include "vtkVolume.h"
+
+//------------------------------------------------------------------------------
+vtkHAVSMapperBase::vtkHAVSMapperBase(const char* mapperName)
+  : Mesh(vtkSmartPointer<vtkHAVSMesh>::New())
+  , MapperName(mapperName)
+{
+}
+
+vtkHAVSMapperBase::~vtkHAVSMapperBase() = default;
+
+//------------------------------------------------------------------------------
+bool vtkHAVSMapperBase::IsBlendModeSupported(int mode)
+{
+  switch (mode)
+  {
+    case COMPOSITE_BLEND:
+    case MAXIMUM_INTENSITY_BLEND:
+    case MINIMUM_INTENSITY_BLEND:
+    case ADDITIVE_BLEND:
+      return true;
+    default:
+      return false;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSMapperBase::SetInputData(vtkDataSet* input)
+{
+  this->SetInputDataInternal(0, input);
+}
+
+void vtkHAVSMapperBase::SetInputData(vtkUnstructuredGridBase* input)
+{
+  this->SetInputDataInternal(0, input);
+}
+
+double* vtkHAVSMapperBase::GetBounds()
+{
+  if (vtkHAVSMapperInputs::GetCompositeInputBounds(this, this->Bounds))
+  {
+    return this->Bounds;
+  }
+  return this->Superclass::GetBounds();
+}
+
+int vtkHAVSMapperBase::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
+{
+  return vtkHAVSMapperInputs::FillInputPortInformation(info);
+}
+
+//------------------------------------------------------------------------------
+vtkHAVSMesh* vtkHAVSMapperBase::GetMesh()
+{
+  return this->Mesh;
+}
+
+void vtkHAVSMapperBase::SetMesh(vtkHAVSMesh* mesh)
+{
+  if (mesh && mesh == this->Mesh)
+  {
+    return;
+  }
+  this->Mesh = mesh ? vtkSmartPointer<vtkHAVSMesh>(mesh) : vtkSmartPointer<vtkHAVSMesh>::New();
+  // What this mapper saw of the old mesh says nothing about the new one.
+  this->SeenMeshBuild = this->SeenMeshScalars = 0;
+  this->Modified();
+}
+
+const char* vtkHAVSMapperBase::GetMeshUpdateName(int update)
+{
+  switch (update)
+  {
+    case MeshUnchanged:
+      return "unchanged";
+    case MeshBuilt:
+      return "built";
+    case MeshScalarsMapped:
+      return "scalars mapped";
+    case MeshShared:
+      return "shared (prepared by another mapper)";
+    default:
+      return "not prepared";
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSMapperBase::WarnOnce(int which, const std::string& message)
+{
+  vtkHAVSMapperInputs::WarnOnceBy(this, this->Warned[which], message);
+}
+
+bool vtkHAVSMapperBase::AbortRequested(vtkRenderer* renderer)
+{
+  vtkRenderWindow* window = renderer ? renderer->GetRenderWindow() : nullptr;
+  if (window && window->CheckAbortStatus())
+  {
+    this->LastFrameAborted = true;
+  }
+  return this->LastFrameAborted;
+}
+
+const std::vector<float>* vtkHAVSMapperBase::GetKeptResult(int[2])
+{
+  return nullptr;
+}
+
+bool vtkHAVSMapperBase::GetFloatResult(vtkFloatArray* rgba, int size[2])
+{
+  return vtkHAVSMapperInputs::CopyResult(this->GetKeptResult(size), size, rgba);
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSMapperBase::PrepareMesh(vtkVolume* volume)
+{
+  const auto state = vtkHAVSMapperInputs::PrepareMesh(
+    this, volume, this->Mesh, this->MapperName,
+    [this](int which, const std::string& m) { this->WarnOnce(which, m); }, this->VectorMode,
+    this->VectorComponent, this->HigherOrderSubdivision);
+  if (state == vtkHAVSMapperInputs::MeshFailed)
+  {
+    return false;
+  }
+  // What changed since this mapper last drew: a shared mesh may have been
+  // prepared by another mapper in between.
+  const bool rebuilt = this->Mesh->GetBuildTime() != this->SeenMeshBuild;
+  const bool remapped = this->Mesh->GetScalarTime() != this->SeenMeshScalars;
+  this->SeenMeshBuild = this->Mesh->GetBuildTime();
+  this->SeenMeshScalars = this->Mesh->GetScalarTime();
+  if (state == vtkHAVSMapperInputs::MeshRebuilt)
+  {
+    this->LastMeshUpdate = MeshBuilt;
+  }
+  else if (state == vtkHAVSMapperInputs::MeshScalarsUpdated)
+  {
+    this->LastMeshUpdate = MeshScalarsMapped;
+  }
+  else
+  {
+    this->LastMeshUpdate = rebuilt || remapped ? MeshShared : MeshUnchanged;
+  }
+  if (state != vtkHAVSMapperInputs::MeshUnchanged)
+  {
+    this->LastMeshSeconds = this->Mesh->GetLastUpdateSeconds();
+  }
+  this->MeshPrepared(this->LastMeshUpdate, rebuilt);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSMapperBase::PrepareTable(vtkVolume* volume)
+{
+  return vtkHAVSMapperInputs::PrepareTable(this, volume, this->Mesh, this->Table,
+    this->TableScalarResolution, this->TableLengthResolution, this->MapperName,
+    [this](int which, const std::string& m) { this->WarnOnce(which, m); }, &this->TableRebuilt);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
+{
+  // 1. The frame starts (VTK's volume mapper event).
+  const double start = vtkTimerLog::GetUniversalTime();
+  this->LastMeshUpdate = MeshNotPrepared;
+  this->LastMeshSeconds = 0.0;
+  this->LastFrameAborted = false;
+  this->TableRebuilt = false;
+  this->ResetLastFrame();
+  this->InvokeEvent(vtkCommand::VolumeMapperRenderStartEvent, nullptr);
+  bool viewDrawn = false;
+
+  // 2. A blend mode the mapper draws.
+  if (!this->IsBlendModeSupported(this->BlendMode))
+  {
+    vtkErrorMacro("Blend mode " << this->BlendMode << " is not supported by " << this->MapperName
+                                << ".");
+  }
+  else if (!this->AbortRequested(renderer))
+  {
+    // 3. The input and its mesh, 4. the table: each only when its inputs changed.
+    if (this->GetNumberOfInputConnections(0) > 0)
+    {
+      this->GetInputAlgorithm()->Update();
+    }
+    if (this->PrepareMesh(volume) && !this->AbortRequested(renderer))
+    {
+      const bool tableBuilt = this->PrepareTable(volume);
+      if (this->TableRebuilt)
+      {
+        this->TableBuildTime.Modified();
+      }
+      // 5. The view: every coordinate frame, once; 6. the mapper's own part.
+      if (tableBuilt && !this->AbortRequested(renderer))
+      {
+        const vtkHAVSViewFrame view =
+          vtkHAVSViewFrame::Make(renderer, volume, this->Mesh->GetShift());
+        if (view.HasPixels())
+        {
+          this->RenderView(renderer, volume, view);
+          viewDrawn = true;
+        }
+      }
+    }
+  }
+
+  // 7. The frame's time (vtkVolume's estimate reads it) and 8. its end.
+  this->TimeToDraw = vtkTimerLog::GetUniversalTime() - start;
+  if (viewDrawn)
+  {
+    this->FrameFinished(this->TimeToDraw);
+  }
+  this->InvokeEvent(vtkCommand::VolumeMapperRenderEndEvent, nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MapperName: " << this->MapperName << "\n";
+  os << indent << "BlendMode: " << this->BlendMode << "\n";
+  os << indent << "VectorMode: " << this->VectorMode
+     << ", VectorComponent: " << this->VectorComponent << "\n";
+  os << indent << "HigherOrderSubdivision: " << this->HigherOrderSubdivision << "\n";
+  os << indent << "TableScalarResolution: " << this->TableScalarResolution
+     << ", TableLengthResolution: " << this->TableLengthResolution << "\n";
+  os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
+  os << indent << "Mesh: " << this->Mesh.Get() << " (shared by " << this->Mesh->GetReferenceCount()
+     << " owners)\n";
+  os << indent << "LastMeshUpdate: " << GetMeshUpdateName(this->LastMeshUpdate) << " ("
+     << this->LastMeshSeconds << " s)\n";
+  os << indent << "LastFrameAborted: " << this->LastFrameAborted << "\n";
+  os << indent << "TimeToDraw: " << this->TimeToDraw << "\n";
+}

@@ -1,0 +1,244 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSMapperBase.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSMapperBase
+ * @brief   What the three vtkHAVS mappers share: settings, inputs, mesh, table and one frame's skeleton.
+ *
+ * vtkHAVSVolumeMapper (HAVS: sorted faces, a k-buffer),
+ * vtkHAVSCellProjectionMapper and vtkHAVSRayCastMapper derive from this
+ * class, which holds once what each of them needs the same way:
+ * - the input (any vtkDataSet or a composite data set of them), its bounds,
+ *   the scalar selection (VTK's scalar mode and array, VectorMode,
+ *   VectorComponent) and HigherOrderSubdivision;
+ * - the prepared mesh (vtkHAVSMesh), which several mappers of the same input
+ *   can share (SetMesh: ParaView's representation switches mapper without
+ *   preparing the mesh again; GetLastMeshUpdate() says what a frame did);
+ * - the pre-integration table of the volume's property
+ *   (TableScalarResolution, TableLengthResolution), the near and clipping
+ *   planes (vtkHAVSFramePlanes), the kept float result;
+ * - the frame: Render() is the same for all three and calls one virtual,
+ *   RenderView(), for what is specific:
+ *     1. fire vtkCommand::VolumeMapperRenderStartEvent,
+ *     2. check the blend mode (IsBlendModeSupported),
+ *     3. update the input, prepare the mesh (MeshPrepared() tells the mapper),
+ *     4. prepare the table (PrepareTable(), which HAVS overrides for its
+ *        automatic resolution),
+ *     5. the view (vtkHAVSViewFrame), skipped without pixels,
+ *     6. RenderView(): the mapper's own order and draw,
+ *     7. TimeToDraw (which vtkVolume adds into its estimated render time)
+ *        and FrameFinished(),
+ *     8. fire vtkCommand::VolumeMapperRenderEndEvent.
+ *   Between the steps the render window's abort flag is checked
+ *   (vtkRenderWindow::CheckAbortStatus, as VTK's projected tetrahedra do): an
+ *   aborted frame draws nothing (GetLastFrameAborted()).
+ *
+ * Warnings that should be given once per mapper go through WarnOnce.
+ */
+#ifndef vtkHAVSMapperBase_h
+#define vtkHAVSMapperBase_h
+
+#include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkNew.h"            // For vtkNew
+#include "vtkSmartPointer.h"   // For vtkSmartPointer
+#include "vtkUnstructuredGridVolumeMapper.h"
+
+#include <array>  // For std::array
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+class vtkFloatArray;
+class vtkHAVSFramePlanes;
+class vtkHAVSMesh;
+class vtkHAVSPreIntegrationTable;
+class vtkHAVSViewFrame;
+
+class VTKHAVSCORE_EXPORT vtkHAVSMapperBase : public vtkUnstructuredGridVolumeMapper
+{
+public:
+  vtkTypeMacro(vtkHAVSMapperBase, vtkUnstructuredGridVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Blend modes beyond vtkUnstructuredGridVolumeMapper's composite and
+   * maximum intensity, with vtkVolumeMapper's values: minimum intensity (all
+   * three mappers) and additive (the cell projection and the ray caster).
+   * IsBlendModeSupported() says which a mapper draws; another is an error.
+   */
+  static constexpr int MINIMUM_INTENSITY_BLEND = 2;
+  static constexpr int ADDITIVE_BLEND = 4;
+  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
+  void SetBlendModeToAdditive() { this->SetBlendMode(ADDITIVE_BLEND); }
+  virtual bool IsBlendModeSupported(int mode);
+  ///@}
+
+  ///@{
+  /**
+   * The input: any vtkDataSet (vtkUnstructuredGridVolumeMapper's
+   * SetInputData(vtkDataSet*) refuses what is not an unstructured grid), or a
+   * composite data set of them (SetInputDataObject or a pipeline connection).
+   * Cells that are not tetrahedra are split (vtkHAVSTetrahedralizer).
+   */
+  void SetInputData(vtkDataSet* input) override;
+  void SetInputData(vtkUnstructuredGridBase* input) override;
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
+  ///@}
+
+  ///@{
+  /**
+   * How a multi-component array becomes the scalar rendered, as
+   * vtkSmartVolumeMapper::SetVectorMode: -1 (the default) the first component,
+   * 0 the magnitude, 1 the component VectorComponent. The property's first
+   * component's transfer functions colour it.
+   */
+  vtkSetClampMacro(VectorMode, int, -1, 1);
+  vtkGetMacro(VectorMode, int);
+  vtkSetClampMacro(VectorComponent, int, 0, 3);
+  vtkGetMacro(VectorComponent, int);
+  ///@}
+
+  ///@{
+  /**
+   * Subdivision of quadratic and higher-order cells (vtkHAVSTetrahedralizer):
+   * 0 (the default) splits them at their nodes only; n >= 1 refines every
+   * non-linear hexahedron, tetrahedron, wedge and pyramid uniformly in its
+   * parametric space, 2^n segments per edge, points and point data through
+   * the cell's own interpolation (curved cells drawn curved), crack-free
+   * across neighbours. Linear cells are unaffected. At most 6. A change
+   * re-tessellates.
+   */
+  vtkSetClampMacro(HigherOrderSubdivision, int, 0, 6);
+  vtkGetMacro(HigherOrderSubdivision, int);
+  ///@}
+
+  ///@{
+  /**
+   * Size of the pre-integrated table: entries along the front and back
+   * scalar axes (default 128) and along the segment length (default 128),
+   * 2 to 1024. HAVS's automatic resolution takes these as the largest allowed.
+   */
+  vtkSetClampMacro(TableScalarResolution, int, 2, 1024);
+  vtkGetMacro(TableScalarResolution, int);
+  vtkSetClampMacro(TableLengthResolution, int, 2, 1024);
+  vtkGetMacro(TableLengthResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * When on, each frame's premultiplied float RGBA result (before it is
+   * blended into the window) is kept; GetFloatResult() copies it (4
+   * components, width*height tuples, bottom row first, the renderer's
+   * viewport) and returns false when none is kept.
+   */
+  vtkSetMacro(KeepFloatResult, bool);
+  vtkGetMacro(KeepFloatResult, bool);
+  vtkBooleanMacro(KeepFloatResult, bool);
+  bool GetFloatResult(vtkFloatArray* rgba, int size[2]);
+  ///@}
+
+  ///@{
+  /**
+   * The prepared mesh (never null). Mappers of the same input may share one:
+   * `b->SetMesh(a->GetMesh())` makes b use (and keep up to date) a's mesh, so
+   * that switching between them does not prepare it again. Each mapper still
+   * prepares its own layout of it (the ray caster's records, the cell
+   * projection's planes) when the mesh changed since that mapper last drew.
+   * nullptr gives the mapper a mesh of its own again.
+   */
+  vtkHAVSMesh* GetMesh();
+  void SetMesh(vtkHAVSMesh* mesh);
+  ///@}
+
+  /// What preparing the mesh did in the last frame.
+  enum MeshUpdates
+  {
+    MeshNotPrepared = 0, ///< the frame stopped before (no input, error, abort)
+    MeshUnchanged = 1,   ///< as this mapper last drew it
+    MeshBuilt = 2,       ///< built (or rebuilt) by this mapper from the input
+    MeshScalarsMapped = 3, ///< a new time step: only the scalars mapped again
+    MeshShared = 4       ///< prepared by another mapper sharing it since this one drew: no work
+  };
+  ///@{
+  /// The last frame's mesh update (MeshUpdates), its seconds (0 unless built or mapped here).
+  vtkGetMacro(LastMeshUpdate, int);
+  vtkGetMacro(LastMeshSeconds, double);
+  static const char* GetMeshUpdateName(int update);
+  ///@}
+
+  /// Whether the last frame was cut short by the render window's abort flag.
+  vtkGetMacro(LastFrameAborted, bool);
+
+  /**
+   * One frame (see the class description): the same skeleton for the three
+   * mappers; RenderView() is the mapper's own part.
+   */
+  void Render(vtkRenderer* renderer, vtkVolume* volume) final;
+
+protected:
+  vtkHAVSMapperBase(const char* mapperName);
+  ~vtkHAVSMapperBase() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  /// Clears the last frame's statistics (called first in every frame).
+  virtual void ResetLastFrame() {}
+  /**
+   * Called after the mesh was prepared, with what happened to it in this
+   * frame (MeshUpdates) and whether it was built anew since this mapper last
+   * drew (`rebuilt`: the mapper's own layout of it is made again; otherwise
+   * anything but MeshUnchanged means new scalars: its fields only).
+   */
+  virtual void MeshPrepared(int update, bool rebuilt) = 0;
+  /// The table for the volume's property (false, with an error, when it cannot be made).
+  virtual bool PrepareTable(vtkVolume* volume);
+  /// The mapper's own part of the frame: order, draw, statistics.
+  virtual void RenderView(vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) = 0;
+  /// Called with the frame's time (TimeToDraw) after a frame that reached RenderView.
+  virtual void FrameFinished(double vtkNotUsed(seconds)) {}
+  /// The graphics layer's kept float result (nullptr without one).
+  virtual const std::vector<float>* GetKeptResult(int size[2]);
+
+  /// Whether the render window asks to abort the frame (counts LastFrameAborted).
+  bool AbortRequested(vtkRenderer* renderer);
+  /// Warns once per mapper for `which` (vtkHAVSMapperInputs::OnceWarning).
+  void WarnOnce(int which, const std::string& message);
+  /// The mapper's name in messages ("vtkHAVSRayCastMapper", not its GL override's).
+  const char* GetMapperName() const { return this->MapperName; }
+
+  int VectorMode = -1;
+  int VectorComponent = 0;
+  int HigherOrderSubdivision = 0;
+  int TableScalarResolution = 128;
+  int TableLengthResolution = 128;
+  bool KeepFloatResult = false;
+
+  vtkSmartPointer<vtkHAVSMesh> Mesh;
+  vtkNew<vtkHAVSPreIntegrationTable> Table;
+  vtkTimeStamp TableBuildTime; ///< the table's version (changes when it was rebuilt)
+  bool TableRebuilt = false;   ///< this frame rebuilt the table
+  vtkNew<vtkHAVSFramePlanes> Planes;
+
+private:
+  vtkHAVSMapperBase(const vtkHAVSMapperBase&) = delete;
+  void operator=(const vtkHAVSMapperBase&) = delete;
+
+  bool PrepareMesh(vtkVolume* volume);
+
+  const char* MapperName;
+  int LastMeshUpdate = MeshNotPrepared;
+  double LastMeshSeconds = 0.0;
+  bool LastFrameAborted = false;
+  vtkMTimeType SeenMeshBuild = 0;  // the mesh's build and scalar times this mapper last drew
+  vtkMTimeType SeenMeshScalars = 0;
+  std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
+};
+
+#endif
