@@ -183,6 +183,11 @@ if args.mode == "serial":
     check(caster.GetClassName() == "vtkOpenGLHAVSRayCastMapper"
           and caster.IsA("vtkHAVSRayCastMapper"),
           "HAVS Ray Cast: the active mapper is %s" % caster.GetClassName())
+    # The three mappers share one prepared mesh (issue 42): the switch prepares nothing.
+    check(caster.GetMesh() is mapper.GetMesh() and caster.GetLastMeshUpdate() == 4
+          and caster.GetLastMeshSeconds() == 0.0,
+          "HAVS Ray Cast: the mesh HAVS prepared is reused (%s)"
+          % caster.GetMeshUpdateName(caster.GetLastMeshUpdate()))
     check(caster.GetEarlyRayTerminationOpacity() == 1.0
           and caster.GetTableScalarResolution() == 128
           and caster.GetTableLengthResolution() == 128 and caster.GetMaximumPeelPasses() == 0,
@@ -214,6 +219,39 @@ if args.mode == "serial":
     display.HAVSMapper = "HAVS"
     Render(view)
     check(rep.GetActiveVolumeMapper() is mapper, "back to HAVS")
+    check(mapper.GetLastMeshUpdate() == 1, "HAVS: its mesh unchanged (%s)"
+          % mapper.GetMeshUpdateName(mapper.GetLastMeshUpdate()))
+
+    # The third mapper (issue 42), "HAVS Cell Projection": the same scene against the
+    # same exact reference, the shared mesh reused; control: each ray leaving its cell
+    # through the wrong face (WrongExitForTesting) must fail the same bound.
+    display.HAVSMapper = "HAVS Cell Projection"
+    Render(view)
+    projector = rep.GetActiveVolumeMapper()
+    display.UpdatePropertyInformation()
+    update = display.GetProperty("HAVSLastMeshUpdate").GetElement(0)
+    check(projector.IsA("vtkHAVSCellProjectionMapper") and projector.GetLastCellsDrawn() > 0,
+          "HAVS Cell Projection: %s drew %d cells"
+          % (projector.GetClassName(), projector.GetLastCellsDrawn()))
+    check(projector.GetMesh() is mapper.GetMesh() and update == 4,
+          "HAVS Cell Projection: the shared mesh reused (information property: %d)" % update)
+    projection_name = os.path.join(args.out, "havs_plugin_cellprojection.png")
+    SaveScreenshot(projection_name, view, ImageResolution=[SIZE, SIZE])
+    rmse, worst = compare(png_rgb(projection_name), exact)
+    print("cell projection image vs exact reference: RMSE %.5f, max %.4f" % (rmse, worst))
+    check(rmse < RAY_BOUND, "cell projection image matches the exact reference (RMSE %.5f < %g)"
+          % (rmse, RAY_BOUND))
+    projector.SetWrongExitForTesting(True)
+    Render(view)
+    SaveScreenshot(projection_name, view, ImageResolution=[SIZE, SIZE])
+    wrong_exit, _ = compare(png_rgb(projection_name), exact)
+    projector.SetWrongExitForTesting(False)
+    print("control, the cell projection's rays leaving through the wrong face: RMSE %.5f"
+          % wrong_exit)
+    check(wrong_exit > 3 * RAY_BOUND,
+          "negative control: the wrong exit fails the bound (RMSE %.5f)" % wrong_exit)
+    display.HAVSMapper = "HAVS"
+    Render(view)
 
     # The face-order settings of the panel reach the mapper, and the violation count
     # comes back as an information property.

@@ -124,7 +124,15 @@ vtkHAVSMapperInputs::MeshState vtkHAVSMapperInputs::PrepareMesh(vtkAbstractVolum
         "; " + mapperName +
         " renders the first one only (SetVectorMode: the magnitude or another component).");
   }
-  return mesh->GetLastUpdate() == vtkHAVSMesh::UpdateScalars ? MeshScalarsUpdated : MeshRebuilt;
+  switch (mesh->GetLastUpdate())
+  {
+    case vtkHAVSMesh::UpdateScalars:
+      return MeshScalarsUpdated;
+    case vtkHAVSMesh::UpdateNone: // the same mesh and scalars in another data object
+      return MeshUnchanged;
+    default:
+      return MeshRebuilt;
+  }
 }
 
 //------------------------------------------------------------------------------

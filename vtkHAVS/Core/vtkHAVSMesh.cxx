@@ -532,6 +532,22 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   // tessellation's source map: a tetrahedron's cell value is its cell's, a
   // point added by the refinement interpolates the cell's nodes as it did.
   // Not when point and cell scalars trade places.
+  // The same points, cells and scalar array as last time in another data
+  // object around them (a shallow copy: ParaView hands each of its
+  // representation's mappers its own): nothing to map again.
+  if (wasValid && this->HashedSource && cellData == hadCellScalars &&
+    selection == previousSelection && scalars == this->MappedArray.GetPointer() &&
+    scalars->GetMTime() == this->MappedArrayTime && GeometryHashOf(data) == this->GeometryHash)
+  {
+    this->HashedSource = data;
+    this->LastUpdateSeconds = vtkTimerLog::GetUniversalTime() - start;
+    report(1.0);
+    this->Valid = true;
+    return true; // LastUpdate stays UpdateNone
+  }
+  this->MappedArray = scalars;
+  this->MappedArrayTime = scalars->GetMTime();
+
   vtkSmartPointer<vtkDataArray> stepScalars;
   if (wasValid && this->HashedSource && cellData == hadCellScalars &&
     selection.VectorMode == previousSelection.VectorMode &&

@@ -40,6 +40,7 @@
 #include "vtkNew.h"                 // For vtkNew
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
+#include "vtkWeakPointer.h"  // For vtkWeakPointer
 
 #include <cstdint>    // For uint32_t
 #include <functional> // For std::function
@@ -108,7 +109,9 @@ public:
   /// Modified whenever the scalars were mapped (every successful Build()).
   vtkMTimeType GetScalarTime() const { return this->ScalarTime.GetMTime(); }
 
-  /// What the last Build() did: nothing (it failed), the whole mesh, or the scalars only.
+  /// What the last Build() did: the whole mesh, the scalars only, or nothing
+  /// (it failed, or the input was another data object around the same points,
+  /// cells and scalar array).
   enum Updates
   {
     UpdateNone,
@@ -248,6 +251,8 @@ private:
   vtkTimeStamp ScalarTime;
   uint64_t GeometryHash = 0;
   vtkDataSet* HashedSource = nullptr; // identity only: whether GeometryHash is set
+  vtkWeakPointer<vtkDataArray> MappedArray; // the scalar array last mapped, and its time
+  vtkMTimeType MappedArrayTime = 0;
   int LastUpdate = UpdateNone;
   double LastUpdateSeconds = 0.0;
 };

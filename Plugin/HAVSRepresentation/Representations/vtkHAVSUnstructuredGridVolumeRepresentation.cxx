@@ -12,6 +12,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkDataSet.h"
+#include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSVolumeMapper.h"
@@ -51,13 +52,23 @@ vtkHAVSUnstructuredGridVolumeRepresentation::vtkHAVSUnstructuredGridVolumeRepres
                     "redistribution of grids between MPI ranks fail. Start ParaView with "
                     "LD_PRELOAD=<vtkHAVS>/lib/libvtkHAVSExpatFix.so (see the vtkHAVS user guide).");
   }
-  this->AddVolumeMapper("HAVS", this->HAVSMapper);
-  // nullptr without the graphics layer's override (vtkHAVS::OpenGL), which
-  // this module links: then only "HAVS" is offered.
+  // The three mappers, one prepared mesh: switching between them does not
+  // tetrahedralize and index the grid again (GetHAVSLastMeshUpdate says so).
+  // New() gives nullptr without the graphics layer's override
+  // (vtkHAVS::OpenGL, which this module links): then that one is not offered.
   this->RayCastMapper = vtkHAVSRayCastMapper::New();
-  if (this->RayCastMapper)
+  this->CellProjectionMapper = vtkHAVSCellProjectionMapper::New();
+  const std::pair<const char*, vtkHAVSMapperBase*> mappers[] = { { "HAVS", this->HAVSMapper },
+    { "HAVS Ray Cast", this->RayCastMapper },
+    { "HAVS Cell Projection", this->CellProjectionMapper } };
+  for (const auto& named : mappers)
   {
-    this->AddVolumeMapper("HAVS Ray Cast", this->RayCastMapper);
+    if (named.second)
+    {
+      named.second->SetMesh(this->HAVSMapper->GetMesh());
+      this->AddVolumeMapper(named.first, named.second);
+      this->Mappers.emplace_back(named.first, named.second);
+    }
   }
   this->SetActiveVolumeMapper("HAVS");
 }
@@ -65,10 +76,9 @@ vtkHAVSUnstructuredGridVolumeRepresentation::vtkHAVSUnstructuredGridVolumeRepres
 //------------------------------------------------------------------------------
 vtkHAVSUnstructuredGridVolumeRepresentation::~vtkHAVSUnstructuredGridVolumeRepresentation()
 {
-  this->HAVSMapper->Delete();
-  if (this->RayCastMapper)
+  for (const auto& named : this->Mappers)
   {
-    this->RayCastMapper->Delete();
+    named.second->Delete();
   }
 }
 
@@ -82,9 +92,14 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetActiveVolumeMapper(const ch
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSMapper(const char* name)
 {
   const std::string wanted = name ? name : "";
-  if (wanted != "HAVS" && !(wanted == "HAVS Ray Cast" && this->RayCastMapper))
+  if (!this->FindMapper(wanted))
   {
-    vtkErrorMacro("Unknown HAVS mapper \"" << wanted << "\" (\"HAVS\" or \"HAVS Ray Cast\").");
+    std::string known;
+    for (const auto& named : this->Mappers)
+    {
+      known += (known.empty() ? "\"" : ", \"") + named.first + "\"";
+    }
+    vtkErrorMacro("Unknown HAVS mapper \"" << wanted << "\" (" << known << ").");
     return;
   }
   if (wanted != this->HAVSMapperName)
@@ -93,6 +108,25 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSMapper(const char* name
     this->Superclass::SetActiveVolumeMapper(this->HAVSMapperName.c_str());
     this->Modified();
   }
+}
+
+vtkHAVSMapperBase* vtkHAVSUnstructuredGridVolumeRepresentation::FindMapper(
+  const std::string& name) const
+{
+  for (const auto& named : this->Mappers)
+  {
+    if (named.first == name)
+    {
+      return named.second;
+    }
+  }
+  return nullptr;
+}
+
+int vtkHAVSUnstructuredGridVolumeRepresentation::GetHAVSLastMeshUpdate()
+{
+  vtkHAVSMapperBase* active = this->FindMapper(this->HAVSMapperName);
+  return active ? active->GetLastMeshUpdate() : 0;
 }
 
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSMaximumPeelPasses(int passes)
@@ -142,19 +176,20 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSEarlyRayTerminationOpac
 
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSTableResolution(int resolution)
 {
-  this->HAVSMapper->SetTableScalarResolution(resolution);
-  this->HAVSMapper->SetTableLengthResolution(resolution);
-  if (this->RayCastMapper)
+  for (const auto& named : this->Mappers)
   {
-    this->RayCastMapper->SetTableScalarResolution(resolution);
-    this->RayCastMapper->SetTableLengthResolution(resolution);
+    named.second->SetTableScalarResolution(resolution);
+    named.second->SetTableLengthResolution(resolution);
   }
   this->Modified();
 }
 
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSHigherOrderSubdivision(int level)
 {
-  this->HAVSMapper->SetHigherOrderSubdivision(level);
+  for (const auto& named : this->Mappers)
+  {
+    named.second->SetHigherOrderSubdivision(level);
+  }
   this->Modified();
 }
 
@@ -223,8 +258,7 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
     return 0;
   }
   vtkAbstractVolumeMapper* active = this->GetActiveVolumeMapper();
-  if (request_type != vtkPVView::REQUEST_RENDER() ||
-    (active != this->HAVSMapper && active != this->RayCastMapper))
+  if (request_type != vtkPVView::REQUEST_RENDER() || !vtkHAVSMapperBase::SafeDownCast(active))
   {
     return 1;
   }
@@ -241,9 +275,9 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
     // HAVS's own level of detail instead of ParaView's LOD geometry: keep the
     // volume while interacting, with a subset of the internal faces that fits
     // the interactive target time and fewer k-buffer entries; every face when
-    // still (an unlimited budget). (The ray caster sorts nothing and has no
-    // level of detail of its own: ParaView's LOD while interacting, as for
-    // the stock mappers.)
+    // still (an unlimited budget). (The ray caster and the cell projection
+    // have no level of detail of their own: ParaView's LOD while
+    // interacting, as for the stock mappers.)
     const bool interactive = inInfo->Has(vtkPVRenderView::USE_LOD()) != 0;
     if (!this->InteractiveLOD)
     {
@@ -269,9 +303,9 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::PrintSelf(ostream& os, vtkInde
   os << indent << "InteractiveLOD: " << this->InteractiveLOD << "\n";
   os << indent << "InteractiveKBufferSize: " << this->InteractiveKBufferSize << "\n";
   os << indent << "InteractiveTargetSeconds: " << this->InteractiveTargetSeconds << "\n";
-  this->HAVSMapper->PrintSelf(os, indent.GetNextIndent());
-  if (this->RayCastMapper)
+  for (const auto& named : this->Mappers)
   {
-    this->RayCastMapper->PrintSelf(os, indent.GetNextIndent());
+    os << indent << named.first << ":\n";
+    named.second->PrintSelf(os, indent.GetNextIndent());
   }
 }

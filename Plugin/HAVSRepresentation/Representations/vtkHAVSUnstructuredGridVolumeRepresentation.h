@@ -11,29 +11,30 @@
  * @class   vtkHAVSUnstructuredGridVolumeRepresentation
  * @brief   ParaView's unstructured-grid volume representation, rendering with HAVS.
  *
- * A vtkUnstructuredGridVolumeRepresentation whose volume mapper is a
- * vtkHAVSVolumeMapper registered as "HAVS" and active by default, or the
- * GPU ray caster vtkHAVSRayCastMapper registered as "HAVS Ray Cast" (chosen
- * with SetHAVSMapper; the stock mappers stay registered by the SI class but
- * are not selected here: ParaView's "Volume" representation offers them).
- * ParaView's data redistribution,
- * ordered compositing, transfer functions and block selection work as for the
- * stock "Volume" representation; the plugin's XML shows it as the
- * "HAVS Volume" representation type.
+ * A vtkUnstructuredGridVolumeRepresentation that renders with one of the
+ * three vtkHAVS mappers, registered as "HAVS" (vtkHAVSVolumeMapper, active
+ * by default), "HAVS Ray Cast" (vtkHAVSRayCastMapper) and "HAVS Cell
+ * Projection" (vtkHAVSCellProjectionMapper), chosen with SetHAVSMapper (the
+ * stock mappers stay registered by the SI class but are not selected here:
+ * ParaView's "Volume" representation offers them). The three share one
+ * prepared mesh (vtkHAVSMapperBase::SetMesh): switching mapper does not
+ * tetrahedralize the grid again (GetHAVSLastMeshUpdate). ParaView's data
+ * redistribution, ordered compositing, transfer functions and block selection
+ * work as for the stock "Volume" representation; the plugin's XML shows it as
+ * the "HAVS Volume" representation type.
  *
  * Level of detail: while the user interacts ParaView would swap the volume
  * for its LOD geometry (an outline or a surface); HAVS stays interactive
  * instead, so this representation keeps the volume and renders it with
  * InteractiveKBufferSize entries (default 2) until the still render, which
- * uses the full k.
+ * uses the full k. The ray caster and the cell projection have no level of
+ * detail of their own: while interacting ParaView's LOD applies to them, as
+ * to the stock mappers.
  *
- * The ray caster has no level of detail (nothing to drop: it sorts nothing):
- * while interacting ParaView's own LOD applies to it, as to the stock mappers.
- *
- * The HAVS settings are forwarded to the mappers on every rank: the table
- * size and the early ray termination to both, the others (k, face order,
- * level of detail, ...) to vtkHAVSVolumeMapper, the peeling limit to the
- * ray caster.
+ * The settings are forwarded to the mappers on every rank: the shared ones
+ * (table size, higher-order subdivision) to all three, the early ray
+ * termination to HAVS and the ray caster, the others (k, face order, level
+ * of detail, ...) to vtkHAVSVolumeMapper, the peeling limit to the ray caster.
  */
 #ifndef vtkHAVSUnstructuredGridVolumeRepresentation_h
 #define vtkHAVSUnstructuredGridVolumeRepresentation_h
@@ -41,8 +42,12 @@
 #include "vtkHAVSRepresentationsModule.h" // For export macro
 #include "vtkUnstructuredGridVolumeRepresentation.h"
 
-#include <string> // For std::string
+#include <string>  // For std::string
+#include <utility> // For std::pair
+#include <vector>  // For std::vector
 
+class vtkHAVSCellProjectionMapper;
+class vtkHAVSMapperBase;
 class vtkHAVSRayCastMapper;
 class vtkHAVSVolumeMapper;
 
@@ -67,10 +72,18 @@ public:
   ///@}
 
   ///@{
-  /// Forwarded to both mappers (see vtkHAVSVolumeMapper, vtkHAVSRayCastMapper).
-  void SetHAVSEarlyRayTerminationOpacity(double opacity);
+  /// Forwarded to every mapper (vtkHAVSMapperBase's shared settings).
   void SetHAVSTableResolution(int resolution);
+  void SetHAVSHigherOrderSubdivision(int level);
   ///@}
+
+  /// Forwarded to HAVS and the ray caster (the cell projection has no early termination).
+  void SetHAVSEarlyRayTerminationOpacity(double opacity);
+
+  /// What the active mapper's last frame did with the prepared mesh
+  /// (vtkHAVSMapperBase::MeshUpdates: 2 built, 4 shared, prepared by another
+  /// of the representation's mappers; 1 unchanged; 0 before a frame).
+  int GetHAVSLastMeshUpdate();
 
   ///@{
   /// Forwarded to vtkHAVSRayCastMapper (see there): the most depth-peeling
@@ -86,7 +99,6 @@ public:
   /// Forwarded to vtkHAVSVolumeMapper (see there).
   void SetHAVSKBufferSize(int k);
   int GetHAVSKBufferSize();
-  void SetHAVSHigherOrderSubdivision(int level);
   void SetHAVSAutomaticTable(int automatic);
   void SetHAVSSkipHiddenCells(int skip);
   void SetHAVSBoundaryMode(int mode);
@@ -151,8 +163,12 @@ private:
     const vtkHAVSUnstructuredGridVolumeRepresentation&) = delete;
   void operator=(const vtkHAVSUnstructuredGridVolumeRepresentation&) = delete;
 
+  vtkHAVSMapperBase* FindMapper(const std::string& name) const;
+
   vtkHAVSVolumeMapper* HAVSMapper;
   vtkHAVSRayCastMapper* RayCastMapper;
+  vtkHAVSCellProjectionMapper* CellProjectionMapper;
+  std::vector<std::pair<std::string, vtkHAVSMapperBase*>> Mappers; // the offered, by name
   std::string HAVSMapperName = "HAVS";
   int KBufferSize = 2;
   int InteractiveKBufferSize = 2;

@@ -1,0 +1,366 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSMapperContract.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+// What every vtkHAVS mapper owes VTK and its users (issue 42), checked for
+// the three mappers through vtkHAVSMapperBase's interface alone, each check
+// with a control that must fail it:
+// 1. VolumeMapperRenderStartEvent and EndEvent, once each per frame, in order
+//    (control: a mapper that forwards Render to a HAVS mapper without them);
+// 2. TimeToDraw set to the frame's time, which vtkVolume adds into its
+//    estimated render time (control: the same forwarding mapper);
+// 3. the render window's abort flag checked during the frame (an
+//    AbortCheckEvent between the mapper's start and end events) and an
+//    aborted frame drawing nothing: the volume's pixels stay background
+//    (control: the same frame not aborted draws them);
+// 4. the shared settings reach each mapper's mesh: HigherOrderSubdivision
+//    refines a quadratic tetrahedron, VectorMode takes the magnitude
+//    (control: the setting given to another mapper than the one drawn);
+// 5. a mesh shared by two mappers (SetMesh): the second mapper prepares
+//    nothing (GetLastMeshUpdate() == MeshShared), follows a new time step,
+//    and draws the same image as with a mesh of its own (control: the
+//    statistic of a mapper with its own mesh says MeshBuilt).
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestScenes.h"
+
+#include "vtkHAVSCellProjectionMapper.h"
+#include "vtkHAVSDataSets.h"
+#include "vtkHAVSFaceSet.h"
+#include "vtkHAVSMapperBase.h"
+#include "vtkHAVSMesh.h"
+#include "vtkHAVSRayCastMapper.h"
+#include "vtkHAVSVolumeMapper.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+using havstest::Check;
+
+/// The control: a mapper that draws with a HAVS mapper inside but forgets
+/// the contract (no events, no TimeToDraw, no abort check of its own).
+class ForgetfulMapper : public vtkUnstructuredGridVolumeMapper
+{
+public:
+  static ForgetfulMapper* New();
+  vtkTypeMacro(ForgetfulMapper, vtkUnstructuredGridVolumeMapper);
+  void Render(vtkRenderer* renderer, vtkVolume* volume) override
+  {
+    this->Inner->SetInputDataObject(this->GetDataObjectInput());
+    this->Inner->Render(renderer, volume);
+  }
+  vtkNew<vtkHAVSRayCastMapper> Inner;
+
+protected:
+  ForgetfulMapper() = default;
+};
+vtkStandardNewMacro(ForgetfulMapper);
+
+using MakeMapper = std::function<vtkSmartPointer<vtkUnstructuredGridVolumeMapper>()>;
+struct Candidate
+{
+  std::string Name;
+  MakeMapper Make;
+  bool Control;
+};
+
+vtkSmartPointer<vtkUnstructuredGridVolumeMapper> Upcast(vtkUnstructuredGridVolumeMapper* m)
+{
+  return vtkSmartPointer<vtkUnstructuredGridVolumeMapper>::Take(m);
+}
+
+/// Volume pixels: where the window differs from the background by more than 2/255.
+int VolumePixels(const std::vector<float>& rgba)
+{
+  int n = 0;
+  for (size_t i = 0; i + 3 < rgba.size(); i += 4)
+  {
+    if (std::abs(rgba[i]) + std::abs(rgba[i + 1]) + std::abs(rgba[i + 2]) > 2.0 / 255.0)
+    {
+      ++n;
+    }
+  }
+  return n;
+}
+
+/// Checks 1-3 for one mapper; returns how many of them failed.
+int CheckFrameContract(const Candidate& c, vtkUnstructuredGrid* grid, vtkVolumeProperty* property)
+{
+  const int before = havstest::Failures();
+  vtkSmartPointer<vtkUnstructuredGridVolumeMapper> mapper = c.Make();
+  havstest::VolumeScene scene = havstest::MakeScene(grid, mapper, property, 96, 96);
+  vtkRenderWindow* window = scene.Window;
+
+  // 1. The events, and the abort checks seen between them.
+  struct Log
+  {
+    std::vector<std::string> Events;
+    bool Inside = false;
+    int AbortChecks = 0;
+    bool AbortWanted = false;
+    vtkRenderWindow* Window = nullptr;
+  } log;
+  log.Window = window;
+  vtkNew<vtkCallbackCommand> onMapper;
+  onMapper->SetClientData(&log);
+  onMapper->SetCallback([](vtkObject*, unsigned long event, void* data, void*) {
+    auto* l = static_cast<Log*>(data);
+    const bool start = event == vtkCommand::VolumeMapperRenderStartEvent;
+    l->Events.push_back(start ? "start" : "end");
+    l->Inside = start;
+    if (start && l->AbortWanted)
+    {
+      l->Window->SetAbortRender(1);
+    }
+  });
+  mapper->AddObserver(vtkCommand::VolumeMapperRenderStartEvent, onMapper);
+  mapper->AddObserver(vtkCommand::VolumeMapperRenderEndEvent, onMapper);
+  vtkNew<vtkCallbackCommand> onAbortCheck;
+  onAbortCheck->SetClientData(&log);
+  onAbortCheck->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
+    auto* l = static_cast<Log*>(data);
+    l->AbortChecks += l->Inside ? 1 : 0;
+  });
+  window->AddObserver(vtkCommand::AbortCheckEvent, onAbortCheck);
+
+  window->Render();
+  const std::vector<float> drawn = havstest::ReadRGBA(window);
+  Check(log.Events.size() == 2 && log.Events[0] == "start" && log.Events[1] == "end",
+    c.Name + ": one VolumeMapperRenderStartEvent then one EndEvent per frame (seen " +
+      std::to_string(log.Events.size()) + ")");
+  Check(log.AbortChecks > 0,
+    c.Name + ": the window's abort flag is checked during the frame (" +
+      std::to_string(log.AbortChecks) + " checks)");
+
+  // 2. TimeToDraw, and vtkVolume's estimate, which adds it in.
+  const double seconds = mapper->GetTimeToDraw();
+  Check(seconds > 0.0 && seconds < 60.0,
+    c.Name + ": TimeToDraw is the frame's time (" + std::to_string(seconds) + " s)");
+  Check(scene.Volume->GetEstimatedRenderTime() >= seconds && seconds > 0.0,
+    c.Name + ": vtkVolume's estimated render time includes it (" +
+      std::to_string(scene.Volume->GetEstimatedRenderTime()) + " s)");
+
+  // 3. An aborted frame draws nothing (on a fresh window, so that no earlier
+  // frame is left in it), and the same frame not aborted draws the volume.
+  const int volumePixels = VolumePixels(drawn);
+  Check(volumePixels > 500,
+    c.Name + ": the frame draws the volume (" + std::to_string(volumePixels) + " pixels)");
+  vtkSmartPointer<vtkUnstructuredGridVolumeMapper> fresh = c.Make();
+  havstest::VolumeScene aborted = havstest::MakeScene(grid, fresh, property, 96, 96);
+  log.Events.clear();
+  log.AbortWanted = true;
+  log.Window = aborted.Window;
+  fresh->AddObserver(vtkCommand::VolumeMapperRenderStartEvent, onMapper);
+  fresh->AddObserver(vtkCommand::VolumeMapperRenderEndEvent, onMapper);
+  aborted.Window->Render();
+  aborted.Window->SetAbortRender(0);
+  // (The aborted window did not show its frame: show what the renderer drew.)
+  aborted.Window->Frame();
+  const int abortedPixels = VolumePixels(havstest::ReadRGBA(aborted.Window));
+  Check(abortedPixels == 0,
+    c.Name + ": an aborted frame draws nothing of the volume (" + std::to_string(abortedPixels) +
+      " pixels)");
+  if (auto* base = vtkHAVSMapperBase::SafeDownCast(fresh))
+  {
+    Check(base->GetLastFrameAborted(), c.Name + ": GetLastFrameAborted()");
+  }
+  return havstest::Failures() - before;
+}
+
+/// One quadratic tetrahedron with a 3-component point array "v" (the first
+/// component x, the magnitude larger).
+vtkSmartPointer<vtkUnstructuredGrid> MakeQuadraticTetra()
+{
+  const double corner[4][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+  const int edges[6][2] = { { 0, 1 }, { 1, 2 }, { 2, 0 }, { 0, 3 }, { 1, 3 }, { 2, 3 } };
+  vtkNew<vtkPoints> points;
+  for (const auto& p : corner)
+  {
+    points->InsertNextPoint(p);
+  }
+  for (const auto& e : edges)
+  {
+    double m[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      m[i] = 0.5 * (corner[e[0]][i] + corner[e[1]][i]);
+    }
+    points->InsertNextPoint(m);
+  }
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(points);
+  vtkIdType ids[10] = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9 };
+  grid->InsertNextCell(VTK_QUADRATIC_TETRA, 10, ids);
+  vtkNew<vtkDoubleArray> v;
+  v->SetName("v");
+  v->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < 10; ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    const double value[3] = { p[0], 2.0 + p[1], 2.0 + p[2] };
+    v->InsertNextTuple(value);
+  }
+  grid->GetPointData()->SetScalars(v);
+  return grid;
+}
+
+size_t TetsOf(vtkHAVSMapperBase* m)
+{
+  return m->GetMesh()->GetFaceSet()->GetTetrahedra().size() / 4;
+}
+
+/// Check 4: the shared settings reach `drawn`'s mesh when given to `set`.
+bool SettingsReach(const std::string& name, vtkHAVSMapperBase* set, vtkHAVSMapperBase* drawn,
+  vtkVolumeProperty* property, bool expect)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> grid = MakeQuadraticTetra();
+  havstest::VolumeScene scene = havstest::MakeScene(grid, drawn, property, 64, 64);
+  set->SetHigherOrderSubdivision(0);
+  set->SetVectorMode(-1);
+  scene.Window->Render();
+  const size_t coarse = TetsOf(drawn);
+  const double firstRange = drawn->GetMesh()->GetScalarRange()[1];
+  set->SetHigherOrderSubdivision(2);
+  set->SetVectorMode(0);
+  scene.Window->Render();
+  const size_t fine = TetsOf(drawn);
+  const double magnitudeRange = drawn->GetMesh()->GetScalarRange()[1];
+  const bool subdivided = fine > coarse;
+  const bool magnitude = magnitudeRange > firstRange + 1.0;
+  const std::string what = name + (expect ? "" : " (control: set on another mapper)") +
+    ": HigherOrderSubdivision 2 refines the quadratic cell (" + std::to_string(coarse) + " -> " +
+    std::to_string(fine) + " tets), VectorMode 0 takes the magnitude (range top " +
+    std::to_string(firstRange) + " -> " + std::to_string(magnitudeRange) + ")";
+  const bool reached = subdivided && magnitude;
+  if (expect)
+  {
+    Check(reached, what);
+  }
+  else
+  {
+    Check(!subdivided && !magnitude, what + " must not change");
+  }
+  set->SetHigherOrderSubdivision(0);
+  set->SetVectorMode(-1);
+  return reached;
+}
+}
+
+int TestHAVSMapperContract(int, char*[])
+{
+  vtkSmartPointer<vtkUnstructuredGrid> grid = vtkHAVSDataSets::MakeBox(3, 3, 3, 1.0 / 3, 0.0, 1.0);
+  vtkSmartPointer<vtkVolumeProperty> property = havstest::MakeRampPropertyFor(grid);
+
+  const std::vector<Candidate> candidates = {
+    { "vtkHAVSVolumeMapper", [] { return Upcast(vtkHAVSVolumeMapper::New()); }, false },
+    { "vtkHAVSCellProjectionMapper", [] { return Upcast(vtkHAVSCellProjectionMapper::New()); },
+      false },
+    { "vtkHAVSRayCastMapper", [] { return Upcast(vtkHAVSRayCastMapper::New()); }, false },
+    { "ForgetfulMapper (control)", [] { return Upcast(ForgetfulMapper::New()); }, true },
+  };
+  for (const Candidate& c : candidates)
+  {
+    std::cout << "--- " << c.Name
+              << (c.Control ? ": must fail; its CHECK FAILED lines are expected" : "") << "\n";
+    const int failed = CheckFrameContract(c, grid, property);
+    if (c.Control)
+    {
+      // The control must fail the contract; its failures are expected.
+      havstest::Failures() -= failed;
+      Check(failed >= 3,
+        "the control fails the events, TimeToDraw and abort checks (" + std::to_string(failed) +
+          " failed)");
+    }
+  }
+
+  // 4. The shared settings, through the base's interface.
+  std::vector<vtkSmartPointer<vtkHAVSMapperBase>> mappers;
+  mappers.emplace_back(vtkSmartPointer<vtkHAVSVolumeMapper>::New());
+  mappers.emplace_back(vtkSmartPointer<vtkHAVSCellProjectionMapper>::New());
+  mappers.emplace_back(vtkSmartPointer<vtkHAVSRayCastMapper>::New());
+  for (size_t i = 0; i < mappers.size(); ++i)
+  {
+    vtkHAVSMapperBase* m = mappers[i];
+    SettingsReach(m->GetClassName(), m, m, property, true);
+  }
+  {
+    vtkNew<vtkHAVSRayCastMapper> other;
+    vtkNew<vtkHAVSRayCastMapper> drawn;
+    SettingsReach("vtkHAVSRayCastMapper", other, drawn, property, false);
+  }
+
+  // 5. One mesh for two mappers: the second prepares nothing, follows a new
+  // time step, and draws what it draws with a mesh of its own.
+  {
+    vtkSmartPointer<vtkUnstructuredGrid> box = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);
+    vtkNew<vtkHAVSVolumeMapper> havs;
+    vtkNew<vtkHAVSRayCastMapper> sharing;
+    vtkNew<vtkHAVSRayCastMapper> own;
+    sharing->SetMesh(havs->GetMesh());
+    Check(sharing->GetMesh() == havs->GetMesh(), "SetMesh shares the mesh");
+    havstest::VolumeScene a = havstest::MakeScene(box, havs, property, 96, 96);
+    havstest::VolumeScene b = havstest::MakeScene(box, sharing, property, 96, 96);
+    havstest::VolumeScene c = havstest::MakeScene(box, own, property, 96, 96);
+    a.Window->Render();
+    Check(havs->GetLastMeshUpdate() == vtkHAVSMapperBase::MeshBuilt, "the first mapper builds it");
+    b.Window->Render();
+    c.Window->Render();
+    Check(sharing->GetLastMeshUpdate() == vtkHAVSMapperBase::MeshShared,
+      std::string("the second mapper's mesh: ") +
+        vtkHAVSMapperBase::GetMeshUpdateName(sharing->GetLastMeshUpdate()));
+    Check(own->GetLastMeshUpdate() == vtkHAVSMapperBase::MeshBuilt,
+      "control: a mapper with its own mesh builds it");
+    havstest::ImageDifference d =
+      havstest::Compare(havstest::ReadRGBA(b.Window), havstest::ReadRGBA(c.Window));
+    Check(d.Max == 0.0, "the shared mesh draws the same image (max " + std::to_string(d.Max) + ")");
+    b.Window->Render();
+    Check(sharing->GetLastMeshUpdate() == vtkHAVSMapperBase::MeshUnchanged,
+      "then unchanged for it");
+
+    // A new time step: other values of the same array on the same mesh.
+    vtkDataArray* s = box->GetPointData()->GetScalars();
+    for (vtkIdType i = 0; i < s->GetNumberOfTuples(); ++i)
+    {
+      s->SetTuple1(i, 1.0 - s->GetTuple1(i));
+    }
+    s->Modified();
+    a.Window->Render();
+    b.Window->Render();
+    c.Window->Render();
+    Check(havs->GetLastMeshUpdate() == vtkHAVSMapperBase::MeshScalarsMapped,
+      std::string("a new time step maps the scalars: ") +
+        vtkHAVSMapperBase::GetMeshUpdateName(havs->GetLastMeshUpdate()));
+    Check(sharing->GetLastMeshUpdate() == vtkHAVSMapperBase::MeshShared,
+      "the sharing mapper follows it without work");
+    d = havstest::Compare(havstest::ReadRGBA(b.Window), havstest::ReadRGBA(c.Window));
+    Check(d.Max == 0.0,
+      "and draws the new time step as its own mesh does (max " + std::to_string(d.Max) + ")");
+  }
+  return havstest::Result();
+}
