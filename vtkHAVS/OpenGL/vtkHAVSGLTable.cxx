@@ -23,6 +23,18 @@
 vtkStandardNewMacro(vtkHAVSGLTable);
 
 //------------------------------------------------------------------------------
+bool vtkHAVSGLTable::Update(vtkHAVSPreIntegrationTable* table, vtkMTimeType version)
+{
+  if (version != 0 && version == this->UploadedVersion && this->Table)
+  {
+    return false;
+  }
+  this->Upload(table);
+  this->UploadedVersion = version;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSGLTable::Upload(vtkHAVSPreIntegrationTable* table)
 {
   if (!this->Table)
@@ -141,6 +153,7 @@ void vtkHAVSGLTable::ReleaseGraphicsResources(vtkWindow* window)
   this->CellOptics = nullptr;
   this->CellOpticsBuffer = nullptr;
   this->CellValues = 0;
+  this->UploadedVersion = 0;
 }
 
 //------------------------------------------------------------------------------

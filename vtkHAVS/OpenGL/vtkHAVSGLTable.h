@@ -40,6 +40,9 @@ public:
 
   /// Uploads the table, the 1D function and the additive nodes.
   void Upload(vtkHAVSPreIntegrationTable* table);
+  /// Uploads `table` unless its `version` (a modification time) is the one
+  /// uploaded last; returns whether it uploaded.
+  bool Update(vtkHAVSPreIntegrationTable* table, vtkMTimeType version);
 
   vtkTextureObject* GetTable() { return this->Table; }
   vtkTextureObject* GetTransferFunction1D() { return this->TransferFunction1D; }
@@ -76,6 +79,7 @@ private:
   vtkSmartPointer<vtkTextureObject> CellOptics;
   vtkSmartPointer<vtkOpenGLBufferObject> CellOpticsBuffer;
   size_t CellValues = 0;
+  vtkMTimeType UploadedVersion = 0;
   int ScalarResolution = 0;
   int LengthResolution = 0;
   double MaxLength = 1.0;

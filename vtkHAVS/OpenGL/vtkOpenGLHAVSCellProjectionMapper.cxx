@@ -11,8 +11,9 @@
 
 #include "vtkHAVSExtremumPass.h"
 #include "vtkHAVSFramePlanes.h"
-#include "vtkHAVSGLCapabilities.h"
 #include "vtkHAVSGLFrameTargets.h"
+#include "vtkHAVSGLMapperResources.h"
+#include "vtkHAVSGLObjects.h"
 #include "vtkHAVSGLPassContext.h"
 #include "vtkHAVSGLTable.h"
 #include "vtkHAVSKBufferShaders.h"
@@ -20,7 +21,6 @@
 #include "vtkHAVSOpenGL.h"
 #include "vtkHAVSViewFrame.h"
 
-#include "vtkCommand.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -34,8 +34,51 @@
 
 vtkStandardNewMacro(vtkOpenGLHAVSCellProjectionMapper);
 
+namespace
+{
+/// Storage-buffer bindings of the cell-projection shaders (vtkHAVSCellProjectionVS/FS.glsl).
+constexpr GLuint CellBinding = 4;  // the cells' planes and fields (vtkHAVSCellGeometry)
+constexpr GLuint OrderBinding = 5; // the cell of each drawn triangle's position
+/// Segments longer than this contribute nothing: off (the cell projection has no gaps to skip).
+constexpr float NoGapLength = 3.0e38f;
+/// The most planes the shaders take: 6 clipping planes and the near plane.
+constexpr int MaximumPlanes = 7;
+}
+
+/// The mapper's own GPU objects.
+struct vtkOpenGLHAVSCellProjectionMapper::GLObjects
+{
+  vtkHAVSGLVertexArray Cells; // the points, the ordered faces' indices
+  vtkHAVSGLBuffer PointBuffer;
+  vtkHAVSGLBuffer IndexBuffer;
+  vtkHAVSGLBuffer CellBuffer;
+  vtkHAVSGLBuffer OrderBuffer;
+  vtkHAVSGLVertexArray Section; // the near plane's section
+  vtkHAVSGLBuffer SectionPointBuffer;
+  vtkHAVSGLBuffer SectionCellBuffer;
+  int SectionTriangles = 0;
+  size_t UploadedCells = 0; // tetrahedra in the index buffer (12 indices each)
+
+  void Release()
+  {
+    for (vtkHAVSGLBuffer* b : { &this->PointBuffer, &this->IndexBuffer, &this->CellBuffer,
+           &this->OrderBuffer, &this->SectionPointBuffer, &this->SectionCellBuffer })
+    {
+      b->Release();
+    }
+    this->Cells.Release();
+    this->Section.Release();
+    this->SectionTriangles = 0;
+    this->UploadedCells = 0;
+  }
+};
+
 //------------------------------------------------------------------------------
-vtkOpenGLHAVSCellProjectionMapper::vtkOpenGLHAVSCellProjectionMapper() = default;
+vtkOpenGLHAVSCellProjectionMapper::vtkOpenGLHAVSCellProjectionMapper()
+  : GL(new GLObjects)
+{
+  this->Resources->SetReleaseCallback([this](vtkOpenGLRenderWindow*) { this->GL->Release(); });
+}
 
 vtkOpenGLHAVSCellProjectionMapper::~vtkOpenGLHAVSCellProjectionMapper()
 {
@@ -43,69 +86,22 @@ vtkOpenGLHAVSCellProjectionMapper::~vtkOpenGLHAVSCellProjectionMapper()
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLHAVSCellProjectionMapper::PrepareWindow(vtkOpenGLRenderWindow* window)
-{
-  if (this->Window == window)
-  {
-    window->MakeCurrent();
-    return;
-  }
-  this->ReleaseGraphicsResources(this->Window);
-  this->Window = window;
-  this->WindowDeleteObserver = window->AddObserver(
-    vtkCommand::DeleteEvent, this, &vtkOpenGLHAVSCellProjectionMapper::OnWindowDeleted);
-  window->MakeCurrent();
-  this->GLTable->SetContext(window);
-  this->Targets->SetContext(window);
-}
-
-void vtkOpenGLHAVSCellProjectionMapper::OnWindowDeleted(vtkObject* window, unsigned long, void*)
-{
-  this->ReleaseGraphicsResources(vtkWindow::SafeDownCast(window));
-}
-
-//------------------------------------------------------------------------------
 void vtkOpenGLHAVSCellProjectionMapper::Upload(const CellFrame& frame)
 {
-  if (!this->VertexArray)
+  GLObjects& gl = *this->GL;
+  if (gl.PointBuffer.Update(GL_ARRAY_BUFFER, frame.Mesh->GetPoints(), frame.GeometryVersion))
   {
-    glGenVertexArrays(1, &this->VertexArray);
-    GLuint buffers[4];
-    glGenBuffers(4, buffers);
-    this->PointBuffer = buffers[0];
-    this->IndexBuffer = buffers[1];
-    this->CellBuffer = buffers[2];
-    this->OrderBuffer = buffers[3];
+    gl.CellBuffer.Update(GL_SHADER_STORAGE_BUFFER, *frame.Cells, frame.GeometryVersion);
+    gl.Cells.SetBuffers(gl.PointBuffer, &gl.IndexBuffer);
   }
-  glBindVertexArray(this->VertexArray);
-  if (this->UploadedGeometry != frame.GeometryVersion)
-  {
-    const std::vector<float>& points = frame.Mesh->GetPoints();
-    glBindBuffer(GL_ARRAY_BUFFER, this->PointBuffer);
-    glBufferData(GL_ARRAY_BUFFER, points.size() * sizeof(float), points.data(), GL_STATIC_DRAW);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->CellBuffer);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, frame.Cells->size() * sizeof(float), frame.Cells->data(),
-      GL_STATIC_DRAW);
-    this->UploadedGeometry = frame.GeometryVersion;
-  }
-  if (this->UploadedTable != frame.TableVersion)
-  {
-    this->GLTable->Upload(frame.Table);
-    this->UploadedTable = frame.TableVersion;
-  }
+  this->Resources->GetTable()->Update(frame.Table, frame.TableVersion);
   // The faces of the cells in the frame's order, and the cell of each
   // position: only when the order changed (not on a redraw or a
   // transfer-function edit; once per mesh for the unsorted blends).
-  if (this->UploadedOrder == frame.OrderVersion && this->UploadedCells == frame.Order->size())
+  if (gl.OrderBuffer.GetVersion() == frame.OrderVersion && gl.UploadedCells == frame.Order->size())
   {
-    glBindVertexArray(0);
     return;
   }
-  this->UploadedOrder = frame.OrderVersion;
-  this->UploadedCells = frame.Order->size();
   const std::vector<uint32_t>& order = *frame.Order;
   const std::vector<uint32_t>& faces = *frame.Faces;
   std::vector<uint32_t> indices(12 * order.size()); // (only until uploaded)
@@ -113,14 +109,10 @@ void vtkOpenGLHAVSCellProjectionMapper::Upload(const CellFrame& frame)
   {
     std::copy_n(&faces[12 * static_cast<size_t>(order[i])], 12, &indices[12 * i]);
   }
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
-  glBufferData(
-    GL_ELEMENT_ARRAY_BUFFER, indices.size() * sizeof(uint32_t), indices.data(), GL_STREAM_DRAW);
-  glBindVertexArray(0);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->OrderBuffer);
-  glBufferData(
-    GL_SHADER_STORAGE_BUFFER, order.size() * sizeof(uint32_t), order.data(), GL_STREAM_DRAW);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  gl.IndexBuffer.Update(GL_ELEMENT_ARRAY_BUFFER, indices, 0, GL_STREAM_DRAW);
+  gl.OrderBuffer.Update(GL_SHADER_STORAGE_BUFFER, order, frame.OrderVersion, GL_STREAM_DRAW);
+  gl.Cells.SetBuffers(gl.PointBuffer, &gl.IndexBuffer);
+  gl.UploadedCells = order.size();
 }
 
 //------------------------------------------------------------------------------
@@ -131,86 +123,27 @@ int vtkOpenGLHAVSCellProjectionMapper::UploadSection(const CellFrame& frame)
   {
     return 0; // (the camera outside the mesh: nothing cut by the near plane)
   }
+  GLObjects& gl = *this->GL;
   const vtkMTimeType version = frame.Planes->GetSectionsVersion();
-  if (this->SectionArray && this->UploadedSection == version)
-  {
-    return this->SectionTriangles;
-  }
-  if (!this->SectionArray)
-  {
-    glGenVertexArrays(1, &this->SectionArray);
-    GLuint buffers[2];
-    glGenBuffers(2, buffers);
-    this->SectionPointBuffer = buffers[0];
-    this->SectionCellBuffer = buffers[1];
-  }
   const vtkHAVSFramePlanes::Section& section = sections.front(); // the near plane's only
-  glBindVertexArray(this->SectionArray);
-  glBindBuffer(GL_ARRAY_BUFFER, this->SectionPointBuffer);
-  glBufferData(
-    GL_ARRAY_BUFFER, section.Points.size() * sizeof(float), section.Points.data(), GL_STREAM_DRAW);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-  glBindVertexArray(0);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->SectionCellBuffer);
-  glBufferData(GL_SHADER_STORAGE_BUFFER, section.Cells.size() * sizeof(uint32_t),
-    section.Cells.data(), GL_STREAM_DRAW);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  this->UploadedSection = version;
-  this->SectionTriangles = static_cast<int>(section.Cells.size());
-  return this->SectionTriangles;
+  if (gl.SectionPointBuffer.Update(GL_ARRAY_BUFFER, section.Points, version, GL_STREAM_DRAW))
+  {
+    gl.SectionCellBuffer.Update(GL_SHADER_STORAGE_BUFFER, section.Cells, version, GL_STREAM_DRAW);
+    gl.Section.SetBuffers(gl.SectionPointBuffer, nullptr);
+    gl.SectionTriangles = static_cast<int>(section.Cells.size());
+  }
+  return gl.SectionTriangles;
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
-  vtkRenderer* renderer, const CellFrame& frame, double* drawSeconds)
+void vtkOpenGLHAVSCellProjectionMapper::SetUniforms(
+  vtkShaderProgram* program, const CellFrame& frame)
 {
-  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  if (!window)
-  {
-    vtkErrorMacro("vtkHAVSCellProjectionMapper needs an OpenGL render window.");
-    return false;
-  }
-  this->PrepareWindow(window);
-  if (!vtkHAVSGLCapabilities::HasVersion(4, 3))
-  {
-    vtkErrorMacro("vtkHAVSCellProjectionMapper needs OpenGL 4.3 (storage buffers).");
-    return false;
-  }
-  this->Upload(frame);
-  const int sectionTriangles = this->UploadSection(frame);
   const vtkHAVSViewFrame& view = *frame.View;
-  const int width = view.Width, height = view.Height;
-  this->Targets->Resize(width, height);
-  const bool opaque = frame.Opaque;
-  if (opaque)
-  {
-    this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height, this);
-  }
-  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
-    vtkHAVSKBufferShaders::CellProjectionVertexShader().c_str(),
-    vtkHAVSKBufferShaders::CellProjectionShader(opaque, frame.Blend, this->GLTable->HasCellOptics())
-      .c_str(),
-    "");
-  if (!program || !program->GetCompiled())
-  {
-    vtkErrorMacro("The cell-projection shader could not be built; see the shader log above.");
-    return false;
-  }
-
-  vtkOpenGLState* state = window->GetState();
-  vtkHAVSGLScopedPassState passState(state);
-  vtkTextureObject* table = this->GLTable->GetTable();
-  vtkTextureObject* depth = this->Targets->GetOpaqueDepth();
-  vtkTextureObject* additive = this->GLTable->GetAdditive1D();
-  vtkTextureObject* cellOptics = this->GLTable->GetCellOptics();
-  table->Activate();
-  depth->Activate();
-  additive->Activate();
-  cellOptics->Activate();
-  this->GLTable->SetUniforms(program);
-  program->SetUniformi("havsAdditive", additive->GetTextureUnit());
+  this->Resources->GetTable()->SetUniforms(program);
+  program->SetUniformi("havsAdditive", this->Resources->GetTable()->GetAdditive1D()->GetTextureUnit());
+  program->SetUniformi(
+    "havsOpaqueDepth", this->Resources->GetTargets()->GetOpaqueDepth()->GetTextureUnit());
   float m[16];
   vtkHAVSViewFrame::ToColumnMajor(view.ModelToEyeRelative, m);
   program->SetUniformMatrix4x4("havsMCRC", m);
@@ -236,24 +169,75 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   program->SetUniformMatrix3x3("havsModelToWorld", linear);
   program->SetUniformi("havsParallel", view.Parallel ? 1 : 0);
   program->SetUniformi("havsWrongExit", frame.WrongExit ? 1 : 0);
-  program->SetUniformf("havsGapLength", 3.0e38f);
-  program->SetUniformi("havsOpaqueDepth", depth->GetTextureUnit());
-  const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
+  program->SetUniformf("havsGapLength", NoGapLength);
+  const float viewport[2] = { static_cast<float>(view.Width), static_cast<float>(view.Height) };
   program->SetUniform2f("havsViewportSize", viewport);
-  const int planeCount = frame.Planes->GetNumberOfPlanes();
+  const int planeCount = std::min(frame.Planes->GetNumberOfPlanes(), MaximumPlanes);
   program->SetUniformi("havsPlaneCount", planeCount);
   if (planeCount > 0)
   {
-    float planes[7][4];
-    for (int i = 0; i < planeCount && i < 7; ++i)
+    float planes[MaximumPlanes][4];
+    for (int i = 0; i < planeCount; ++i)
     {
       std::copy(frame.Planes->GetPlane(i).begin(), frame.Planes->GetPlane(i).end(), planes[i]);
     }
-    program->SetUniform4fv("havsPlanesRC", std::min(planeCount, 7), planes);
+    program->SetUniform4fv("havsPlanesRC", planeCount, planes);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
+  vtkRenderer* renderer, const CellFrame& frame, double* drawSeconds)
+{
+  // 1. The window, and what changed uploaded.
+  vtkOpenGLRenderWindow* window = this->Resources->Prepare(
+    renderer, this, "vtkHAVSCellProjectionMapper", "storage buffers");
+  if (!window)
+  {
+    return false;
+  }
+  GLObjects& gl = *this->GL;
+  vtkHAVSGLFrameTargets* targets = this->Resources->GetTargets();
+  vtkHAVSGLTable* glTable = this->Resources->GetTable();
+  this->Upload(frame);
+  const int sectionTriangles = this->UploadSection(frame);
+  const vtkHAVSViewFrame& view = *frame.View;
+  const int width = view.Width, height = view.Height;
+  targets->Resize(width, height);
+  const bool opaque = frame.Opaque;
+  if (opaque)
+  {
+    targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height, this);
   }
 
+  // 2. The program, its textures and uniforms.
+  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
+    vtkHAVSKBufferShaders::CellProjectionVertexShader().c_str(),
+    vtkHAVSKBufferShaders::CellProjectionShader(opaque, frame.Blend, glTable->HasCellOptics())
+      .c_str(),
+    "");
+  if (!program || !program->GetCompiled())
+  {
+    vtkErrorMacro("The cell-projection shader could not be built; see the shader log above.");
+    return false;
+  }
+
+  vtkOpenGLState* state = window->GetState();
+  vtkHAVSGLScopedPassState passState(state);
+  vtkTextureObject* table = glTable->GetTable();
+  vtkTextureObject* depth = targets->GetOpaqueDepth();
+  vtkTextureObject* additive = glTable->GetAdditive1D();
+  vtkTextureObject* cellOptics = glTable->GetCellOptics();
+  table->Activate();
+  depth->Activate();
+  additive->Activate();
+  cellOptics->Activate();
+  this->SetUniforms(program, frame);
+
+  // 3. The draw: the near plane's section, then every cell's front faces in
+  // the order, blended front to back (or order-independently).
   state->PushFramebufferBindings();
-  this->Targets->BindResult();
+  targets->BindResult();
   state->vtkglViewport(0, 0, width, height);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   const float zero[4] = { 0, 0, 0, 0 };
@@ -271,7 +255,7 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
     state->vtkglBlendEquation(
       frame.Blend == vtkHAVSCellProjectionMapper::ADDITIVE_BLEND ? GL_FUNC_ADD : GL_MAX);
   }
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, this->CellBuffer);
+  gl.CellBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, CellBinding);
   if (frame.MeasureStages)
   {
     glFinish();
@@ -281,22 +265,22 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   {
     // The near plane's section first: the cells it cuts are the first along
     // their rays (either facing; one triangle per cell entry).
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->SectionCellBuffer);
+    gl.SectionCellBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, OrderBinding);
     program->SetUniformi("havsTrianglesPerCell", 1);
     program->SetUniformi("havsNearSectionDrawn", 1);
-    glBindVertexArray(this->SectionArray);
+    gl.Section.Bind();
     glDrawArrays(GL_TRIANGLES, 0, 3 * sectionTriangles);
   }
   state->vtkglEnable(GL_CULL_FACE);
   state->vtkglCullFace(GL_BACK);
   glFrontFace(view.FlipFacing ? GL_CW : GL_CCW);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->OrderBuffer);
+  gl.OrderBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, OrderBinding);
   program->SetUniformi("havsTrianglesPerCell", 4);
   program->SetUniformi("havsNearSectionDrawn", sectionTriangles > 0 ? 1 : 0);
-  glBindVertexArray(this->VertexArray);
+  gl.Cells.Bind();
   glDrawElements(
-    GL_TRIANGLES, static_cast<GLsizei>(12 * this->UploadedCells), GL_UNSIGNED_INT, nullptr);
-  glBindVertexArray(0);
+    GL_TRIANGLES, static_cast<GLsizei>(12 * gl.UploadedCells), GL_UNSIGNED_INT, nullptr);
+  vtkHAVSGLVertexArray::Unbind();
   if (frame.MeasureStages)
   {
     glFinish();
@@ -305,55 +289,29 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   glFrontFace(GL_CCW);
   state->vtkglDisable(GL_CULL_FACE);
   state->vtkglBlendEquation(GL_FUNC_ADD);
-  const bool resolved =
-    vtkHAVSExtremumPass::ResolveBlend(window, this->Targets, this->GLTable, frame.Blend);
-  return this->Targets->EndFrame(resolved, frame.KeepResult, { cellOptics, additive, table, depth },
+  // 4. The extremum blends' resolve, the result composited into the window.
+  const bool resolved = vtkHAVSExtremumPass::ResolveBlend(window, targets, glTable, frame.Blend);
+  return targets->EndFrame(resolved, frame.KeepResult, { cellOptics, additive, table, depth },
     view.OriginX, view.OriginY, this);
 }
 
 //------------------------------------------------------------------------------
 const std::vector<float>* vtkOpenGLHAVSCellProjectionMapper::GetKeptResult(int size[2])
 {
-  return this->Targets->GetKeptResult(size);
+  return this->Resources->GetTargets()->GetKeptResult(size);
 }
 
 //------------------------------------------------------------------------------
 void vtkOpenGLHAVSCellProjectionMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
-  if (!this->Window || (window && window != this->Window))
-  {
-    return;
-  }
-  vtkOpenGLRenderWindow* home = this->Window;
-  home->MakeCurrent();
-  this->GLTable->ReleaseGraphicsResources(home);
-  this->Targets->ReleaseGraphicsResources(home);
-  if (this->VertexArray)
-  {
-    glDeleteVertexArrays(1, &this->VertexArray);
-    const GLuint buffers[4] = { this->PointBuffer, this->IndexBuffer, this->CellBuffer,
-      this->OrderBuffer };
-    glDeleteBuffers(4, buffers);
-    this->VertexArray = this->PointBuffer = this->IndexBuffer = 0;
-    this->CellBuffer = this->OrderBuffer = 0;
-  }
-  if (this->SectionArray)
-  {
-    glDeleteVertexArrays(1, &this->SectionArray);
-    const GLuint buffers[2] = { this->SectionPointBuffer, this->SectionCellBuffer };
-    glDeleteBuffers(2, buffers);
-    this->SectionArray = this->SectionPointBuffer = this->SectionCellBuffer = 0;
-    this->SectionTriangles = 0;
-  }
-  this->UploadedCells = 0;
-  home->RemoveObserver(this->WindowDeleteObserver);
-  this->Window = nullptr;
-  this->UploadedGeometry = this->UploadedTable = this->UploadedOrder = this->UploadedSection = 0;
+  this->Resources->Release(window);
 }
 
 //------------------------------------------------------------------------------
 void vtkOpenGLHAVSCellProjectionMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Window: " << this->Window << "\n";
+  os << indent << "Cells uploaded: " << this->GL->UploadedCells
+     << ", section triangles: " << this->GL->SectionTriangles << "\n";
+  this->Resources->PrintSelf(os, indent.GetNextIndent());
 }

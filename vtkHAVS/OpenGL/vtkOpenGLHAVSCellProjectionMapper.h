@@ -27,11 +27,11 @@
 #include "vtkHAVSOpenGLModule.h" // For export macro
 #include "vtkNew.h"              // For vtkNew
 
+#include <memory> // For std::unique_ptr
 #include <vector> // For std::vector
 
-class vtkHAVSGLFrameTargets;
-class vtkHAVSGLTable;
-class vtkOpenGLRenderWindow;
+class vtkHAVSGLMapperResources;
+class vtkShaderProgram;
 
 class VTKHAVSOPENGL_EXPORT vtkOpenGLHAVSCellProjectionMapper : public vtkHAVSCellProjectionMapper
 {
@@ -53,30 +53,16 @@ private:
   vtkOpenGLHAVSCellProjectionMapper(const vtkOpenGLHAVSCellProjectionMapper&) = delete;
   void operator=(const vtkOpenGLHAVSCellProjectionMapper&) = delete;
 
-  void PrepareWindow(vtkOpenGLRenderWindow* window);
-  void OnWindowDeleted(vtkObject* window, unsigned long, void*);
+  /// The mesh's points and cells, the order's faces and cells: each when its version changed.
   void Upload(const CellFrame& frame);
   /// The near plane's section (triangles and their cells); returns its triangle count.
   int UploadSection(const CellFrame& frame);
+  /// Every uniform of the frame's program (the view, the planes, the table).
+  void SetUniforms(vtkShaderProgram* program, const CellFrame& frame);
 
-  vtkOpenGLRenderWindow* Window = nullptr;
-  unsigned long WindowDeleteObserver = 0;
-  vtkNew<vtkHAVSGLTable> GLTable;
-  vtkNew<vtkHAVSGLFrameTargets> Targets;
-  unsigned int VertexArray = 0;
-  unsigned int PointBuffer = 0;
-  unsigned int IndexBuffer = 0;
-  unsigned int CellBuffer = 0;
-  unsigned int OrderBuffer = 0;
-  unsigned int SectionArray = 0;
-  unsigned int SectionPointBuffer = 0;
-  unsigned int SectionCellBuffer = 0;
-  int SectionTriangles = 0;
-  vtkMTimeType UploadedGeometry = 0;
-  vtkMTimeType UploadedTable = 0;
-  vtkMTimeType UploadedOrder = 0;
-  vtkMTimeType UploadedSection = 0;
-  size_t UploadedCells = 0; // tetrahedra in the index buffer (12 indices each)
+  vtkNew<vtkHAVSGLMapperResources> Resources; // the window, the table, the targets
+  struct GLObjects;                           // the mapper's own buffers (vtkHAVSGLObjects)
+  std::unique_ptr<GLObjects> GL;
 };
 
 #endif

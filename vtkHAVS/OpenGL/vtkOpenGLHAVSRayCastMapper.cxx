@@ -11,8 +11,9 @@
 
 #include "vtkHAVSExtremumPass.h"
 #include "vtkHAVSFramePlanes.h"
-#include "vtkHAVSGLCapabilities.h"
 #include "vtkHAVSGLFrameTargets.h"
+#include "vtkHAVSGLMapperResources.h"
+#include "vtkHAVSGLObjects.h"
 #include "vtkHAVSGLPassContext.h"
 #include "vtkHAVSGLTable.h"
 #include "vtkHAVSKBufferShaders.h"
@@ -21,7 +22,6 @@
 #include "vtkHAVSRayCastMesh.h"
 #include "vtkHAVSViewFrame.h"
 
-#include "vtkCommand.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -40,28 +40,79 @@ vtkStandardNewMacro(vtkOpenGLHAVSRayCastMapper);
 
 namespace
 {
-enum BufferIndex
+/// Image units of the ray-casting shaders (vtkHAVSRayCastPeelFS/FS.glsl).
+enum ImageUnit : GLuint
 {
-  PointBuffer,
-  FaceBuffer,
-  FaceCellBuffer,
-  CellBuffer,
-  NeighbourBuffer,
-  CountBuffer,
-  TileBuffer,
-  PeelTileBuffer,
-  NumberOfBuffers
+  EntryKeyUnit = 0,  // the nearest entry's depth key found by the peel
+  EntryCellUnit = 1, // its cell
+  RayStateUnit = 2,  // how far the ray got, its opacity
+  NumberOfImageUnits = 3
 };
-enum ImageIndex
+/// Storage-buffer bindings of the ray-casting shaders.
+enum StorageBinding : GLuint
 {
-  EntryKeyImage,
-  EntryCellImage,
-  RayStateImage
+  CellBinding = 4,      // the cells' planes and fields (vtkHAVSRayCastMesh)
+  FaceCellBinding = 5,  // the cell of each boundary face (or section triangle)
+  NeighbourBinding = 6, // each cell's face neighbours
+  CountBinding = 7,     // rays started, cells crossed, fold re-entries
+  TileBinding = 8,      // per tile, the last pass that started a ray there
+  PeelTileBinding = 9   // per tile, whether the next peel draws it
 };
+/// The counters the cast adds to (rays started, cells crossed, fold re-entries).
+constexpr int NumberOfCounts = 3;
+/// The peel's depth tolerance (in the key's units) between a ray's reach and the next entry.
+constexpr float PeelTolerance = 1.0e-5f;
+/// Segments longer than this contribute nothing: off (the rays know the mesh's gaps).
+constexpr float NoGapLength = 3.0e38f;
+/// A ray's walk stops after the mesh's cell count plus this many steps (a broken walk ends).
+constexpr int ExtraSteps = 16;
+/// The most planes the shaders take: 6 clipping planes and the near plane.
+constexpr int MaximumPlanes = 7;
+/// Vertices of one tile (two triangles), drawn instanced per tile.
+constexpr GLsizei TileVertices = 6;
 }
 
+/// The mapper's own GPU objects.
+struct vtkOpenGLHAVSRayCastMapper::GLObjects
+{
+  vtkHAVSGLVertexArray Boundary; // the points, the boundary faces
+  vtkHAVSGLVertexArray Tiles;    // no attributes: the tiles' corners come from their ids
+  vtkHAVSGLBuffer Points, Faces, FaceCells, Cells, Neighbours, Counts, TilePasses, PeelTiles;
+  vtkHAVSGLImage EntryKey, EntryCell, RayState;
+  vtkHAVSGLStencilTarget PeelTarget; // a stencil only: the tiles a pass peels
+  vtkHAVSGLVertexArray Section;      // the near plane's section
+  vtkHAVSGLBuffer SectionPoints, SectionCells;
+  int SectionTriangles = 0;
+  int BoundaryFaces = 0;
+  int Tetrahedra = 0;
+
+  void Release()
+  {
+    for (vtkHAVSGLBuffer* b : { &this->Points, &this->Faces, &this->FaceCells, &this->Cells,
+           &this->Neighbours, &this->Counts, &this->TilePasses, &this->PeelTiles,
+           &this->SectionPoints, &this->SectionCells })
+    {
+      b->Release();
+    }
+    for (vtkHAVSGLVertexArray* v : { &this->Boundary, &this->Tiles, &this->Section })
+    {
+      v->Release();
+    }
+    for (vtkHAVSGLImage* i : { &this->EntryKey, &this->EntryCell, &this->RayState })
+    {
+      i->Release();
+    }
+    this->PeelTarget.Release();
+    this->SectionTriangles = this->BoundaryFaces = this->Tetrahedra = 0;
+  }
+};
+
 //------------------------------------------------------------------------------
-vtkOpenGLHAVSRayCastMapper::vtkOpenGLHAVSRayCastMapper() = default;
+vtkOpenGLHAVSRayCastMapper::vtkOpenGLHAVSRayCastMapper()
+  : GL(new GLObjects)
+{
+  this->Resources->SetReleaseCallback([this](vtkOpenGLRenderWindow*) { this->GL->Release(); });
+}
 
 vtkOpenGLHAVSRayCastMapper::~vtkOpenGLHAVSRayCastMapper()
 {
@@ -69,74 +120,23 @@ vtkOpenGLHAVSRayCastMapper::~vtkOpenGLHAVSRayCastMapper()
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLHAVSRayCastMapper::PrepareWindow(vtkOpenGLRenderWindow* window)
-{
-  if (this->Window == window)
-  {
-    window->MakeCurrent();
-    return;
-  }
-  this->ReleaseGraphicsResources(this->Window);
-  this->Window = window;
-  this->WindowDeleteObserver = window->AddObserver(
-    vtkCommand::DeleteEvent, this, &vtkOpenGLHAVSRayCastMapper::OnWindowDeleted);
-  window->MakeCurrent();
-  this->GLTable->SetContext(window);
-  this->Targets->SetContext(window);
-}
-
-void vtkOpenGLHAVSRayCastMapper::OnWindowDeleted(vtkObject* window, unsigned long, void*)
-{
-  this->ReleaseGraphicsResources(vtkWindow::SafeDownCast(window));
-}
-
-//------------------------------------------------------------------------------
 void vtkOpenGLHAVSRayCastMapper::Upload(const RayFrame& frame)
 {
-  if (!this->VertexArray)
-  {
-    glGenVertexArrays(1, &this->VertexArray);
-    glGenBuffers(NumberOfBuffers, this->Buffers);
-    glGenVertexArrays(1, &this->TileArray);
-  }
-  if (this->UploadedMesh != frame.MeshVersion)
+  GLObjects& gl = *this->GL;
+  const vtkMTimeType version = frame.MeshVersion;
+  if (gl.Points.Update(GL_ARRAY_BUFFER, frame.Mesh->GetPoints(), version))
   {
     const vtkHAVSRayCastMesh& mesh = *frame.RayMesh;
-    const std::vector<float>& points = frame.Mesh->GetPoints();
-    glBindVertexArray(this->VertexArray);
-    glBindBuffer(GL_ARRAY_BUFFER, this->Buffers[PointBuffer]);
-    glBufferData(GL_ARRAY_BUFFER, points.size() * sizeof(float), points.data(), GL_STATIC_DRAW);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->Buffers[FaceBuffer]);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, mesh.GetBoundaryFaces().size() * sizeof(uint32_t),
-      mesh.GetBoundaryFaces().data(), GL_STATIC_DRAW);
-    glBindVertexArray(0);
-    auto storage = [](GLuint buffer, size_t bytes, const void* data)
-    {
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-      // (At least 16 bytes: an empty mesh still binds a buffer.)
-      glBufferData(GL_SHADER_STORAGE_BUFFER, std::max<size_t>(bytes, 16), bytes ? data : nullptr,
-        GL_STATIC_DRAW);
-    };
-    storage(this->Buffers[FaceCellBuffer], mesh.GetBoundaryCells().size() * sizeof(uint32_t),
-      mesh.GetBoundaryCells().data());
-    storage(
-      this->Buffers[CellBuffer], mesh.GetCells().size() * sizeof(float), mesh.GetCells().data());
-    storage(this->Buffers[NeighbourBuffer], mesh.GetNeighbours().size() * sizeof(int32_t),
-      mesh.GetNeighbours().data());
-    storage(this->Buffers[CountBuffer], 3 * sizeof(uint32_t), nullptr);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    this->BoundaryFaces = static_cast<int>(mesh.GetNumberOfBoundaryFaces());
-    this->Tetrahedra = static_cast<int>(mesh.GetNumberOfTetrahedra());
-    this->UploadedMesh = frame.MeshVersion;
+    gl.Faces.Update(GL_ELEMENT_ARRAY_BUFFER, mesh.GetBoundaryFaces(), version);
+    gl.FaceCells.Update(GL_SHADER_STORAGE_BUFFER, mesh.GetBoundaryCells(), version);
+    gl.Cells.Update(GL_SHADER_STORAGE_BUFFER, mesh.GetCells(), version);
+    gl.Neighbours.Update(GL_SHADER_STORAGE_BUFFER, mesh.GetNeighbours(), version);
+    gl.Counts.Update(GL_SHADER_STORAGE_BUFFER, nullptr, NumberOfCounts * sizeof(uint32_t), version);
+    gl.Boundary.SetBuffers(gl.Points, &gl.Faces);
+    gl.BoundaryFaces = static_cast<int>(mesh.GetNumberOfBoundaryFaces());
+    gl.Tetrahedra = static_cast<int>(mesh.GetNumberOfTetrahedra());
   }
-  if (this->UploadedTable != frame.TableVersion)
-  {
-    this->GLTable->Upload(frame.Table);
-    this->UploadedTable = frame.TableVersion;
-  }
+  this->Resources->GetTable()->Update(frame.Table, frame.TableVersion);
 }
 
 //------------------------------------------------------------------------------
@@ -147,145 +147,55 @@ int vtkOpenGLHAVSRayCastMapper::UploadSection(const RayFrame& frame)
   {
     return 0; // (the camera outside the mesh: nothing cut by the near plane)
   }
+  GLObjects& gl = *this->GL;
   const vtkMTimeType version = frame.Planes->GetSectionsVersion();
-  if (this->SectionArray && this->UploadedSection == version)
-  {
-    return this->SectionTriangles;
-  }
-  if (!this->SectionArray)
-  {
-    glGenVertexArrays(1, &this->SectionArray);
-    glGenBuffers(2, this->SectionBuffers);
-  }
   const vtkHAVSFramePlanes::Section& section = sections.front(); // the near plane's only
-  glBindVertexArray(this->SectionArray);
-  glBindBuffer(GL_ARRAY_BUFFER, this->SectionBuffers[0]);
-  glBufferData(
-    GL_ARRAY_BUFFER, section.Points.size() * sizeof(float), section.Points.data(), GL_STREAM_DRAW);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-  glBindVertexArray(0);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->SectionBuffers[1]);
-  glBufferData(GL_SHADER_STORAGE_BUFFER, section.Cells.size() * sizeof(uint32_t),
-    section.Cells.data(), GL_STREAM_DRAW);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  this->UploadedSection = version;
-  this->SectionTriangles = static_cast<int>(section.Cells.size());
-  return this->SectionTriangles;
+  if (gl.SectionPoints.Update(GL_ARRAY_BUFFER, section.Points, version, GL_STREAM_DRAW))
+  {
+    gl.SectionCells.Update(GL_SHADER_STORAGE_BUFFER, section.Cells, version, GL_STREAM_DRAW);
+    gl.Section.SetBuffers(gl.SectionPoints, nullptr);
+    gl.SectionTriangles = static_cast<int>(section.Cells.size());
+  }
+  return gl.SectionTriangles;
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLHAVSRayCastMapper::ResizeImages(int width, int height)
+bool vtkOpenGLHAVSRayCastMapper::MakePrograms(
+  vtkOpenGLRenderWindow* window, const RayFrame& frame, Programs& programs)
 {
-  if (this->Images[0] && this->ImageSize[0] == width && this->ImageSize[1] == height)
-  {
-    return;
-  }
-  this->ReleaseImages();
-  GLint drawn = 0; // (the draw framebuffer VTK's state has bound, put back below)
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawn);
-  glGenTextures(3, this->Images);
-  const GLenum formats[3] = { GL_R32UI, GL_R32UI, GL_RGBA32F };
-  for (int i = 0; i < 3; ++i)
-  {
-    glBindTexture(GL_TEXTURE_2D, this->Images[i]);
-    glTexStorage2D(GL_TEXTURE_2D, 1, formats[i], width, height);
-  }
-  glBindTexture(GL_TEXTURE_2D, 0);
-  // (Only a stencil: the peeling writes no colour, reads no depth.)
-  glGenRenderbuffers(1, &this->PeelStencil);
-  glBindRenderbuffer(GL_RENDERBUFFER, this->PeelStencil);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
-  glBindRenderbuffer(GL_RENDERBUFFER, 0);
-  glGenFramebuffers(1, &this->PeelFramebuffer);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->PeelFramebuffer);
-  glFramebufferRenderbuffer(
-    GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, this->PeelStencil);
-  glDrawBuffer(GL_NONE);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawn));
-  this->ImageSize[0] = width;
-  this->ImageSize[1] = height;
-}
-
-void vtkOpenGLHAVSRayCastMapper::ReleaseImages()
-{
-  if (this->Images[0])
-  {
-    glDeleteTextures(3, this->Images);
-    std::fill(this->Images, this->Images + 3, 0u);
-  }
-  if (this->PeelFramebuffer)
-  {
-    glDeleteFramebuffers(1, &this->PeelFramebuffer);
-    glDeleteRenderbuffers(1, &this->PeelStencil);
-    this->PeelFramebuffer = this->PeelStencil = 0;
-  }
-  this->ImageSize[0] = this->ImageSize[1] = 0;
-}
-
-//------------------------------------------------------------------------------
-bool vtkOpenGLHAVSRayCastMapper::DrawRays(
-  vtkRenderer* renderer, const RayFrame& frame, RayCounts* counts)
-{
-  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  if (!window)
-  {
-    vtkErrorMacro("vtkHAVSRayCastMapper needs an OpenGL render window.");
-    return false;
-  }
-  this->PrepareWindow(window);
-  if (!vtkHAVSGLCapabilities::HasVersion(4, 3))
-  {
-    vtkErrorMacro("vtkHAVSRayCastMapper needs OpenGL 4.3 (storage buffers, images).");
-    return false;
-  }
-  this->Upload(frame);
-  const int sectionTriangles = this->UploadSection(frame);
-  const vtkHAVSViewFrame& view = *frame.View;
-  const int width = view.Width, height = view.Height;
-  this->Targets->Resize(width, height);
-  this->ResizeImages(width, height);
-  if (frame.Opaque)
-  {
-    this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height, this);
-  }
   vtkOpenGLShaderCache* cache = window->GetShaderCache();
-  vtkShaderProgram* peel =
-    cache->ReadyShaderProgram(vtkHAVSKBufferShaders::CellProjectionVertexShader().c_str(),
-      vtkHAVSKBufferShaders::RayCastPeelShader().c_str(), "");
-  vtkShaderProgram* cast = peel && peel->GetCompiled()
+  programs.Peel = cache->ReadyShaderProgram(vtkHAVSKBufferShaders::CellProjectionVertexShader().c_str(),
+    vtkHAVSKBufferShaders::RayCastPeelShader().c_str(), "");
+  programs.Cast = programs.Peel && programs.Peel->GetCompiled()
     ? cache->ReadyShaderProgram(vtkHAVSKBufferShaders::RayCastTileVertexShader().c_str(),
         vtkHAVSKBufferShaders::RayCastShader(
-          frame.Opaque, frame.Blend, this->GLTable->HasCellOptics())
+          frame.Opaque, frame.Blend, this->Resources->GetTable()->HasCellOptics())
           .c_str(),
         "")
     : nullptr;
   // The tiles a peeling pass draws (a stencil of them): the tile vertex
   // shader with the trivial fragment shader (the peel's framebuffer has no
   // colour attachment: only the stencil is written).
-  vtkShaderProgram* mask = cast && cast->GetCompiled()
+  programs.Mask = programs.Cast && programs.Cast->GetCompiled()
     ? cache->ReadyShaderProgram(vtkHAVSKBufferShaders::RayCastTileVertexShader().c_str(),
         vtkHAVSKBufferShaders::TrivialShader().c_str(), "")
     : nullptr;
-  if (!cast || !cast->GetCompiled() || !mask || !mask->GetCompiled())
+  if (!programs.Cast || !programs.Cast->GetCompiled() || !programs.Mask ||
+    !programs.Mask->GetCompiled())
   {
     vtkErrorMacro("The ray-casting shaders could not be built; see the shader log above.");
     return false;
   }
+  return true;
+}
 
-  vtkOpenGLState* state = window->GetState();
-  vtkHAVSGLScopedPassState passState(state);
-  vtkTextureObject* table = this->GLTable->GetTable();
-  vtkTextureObject* depth = this->Targets->GetOpaqueDepth();
-  vtkTextureObject* additive = this->GLTable->GetAdditive1D();
-  vtkTextureObject* cellOptics = this->GLTable->GetCellOptics();
-  table->Activate();
-  depth->Activate();
-  additive->Activate();
-  cellOptics->Activate();
-
-  // The uniforms both programs read (the view, the planes).
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSRayCastMapper::SetUniforms(vtkOpenGLRenderWindow* window,
+  const Programs& programs, const RayFrame& frame, const TileGrid& grid)
+{
+  const vtkHAVSViewFrame& view = *frame.View;
+  vtkOpenGLShaderCache* cache = window->GetShaderCache();
+  // What the peel and the cast both read (the view, the planes).
   float m[16];
   const double* shift = frame.Mesh->GetShift();
   float eye[3], direction[3], directionWorld[3];
@@ -295,14 +205,14 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     direction[i] = static_cast<float>(view.DirectionGrid[i]);
     directionWorld[i] = static_cast<float>(view.DirectionWorld[i]);
   }
-  const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
-  const int planeCount = std::min(frame.Planes->GetNumberOfPlanes(), 7);
-  float planes[7][4] = {};
+  const float viewport[2] = { static_cast<float>(view.Width), static_cast<float>(view.Height) };
+  const int planeCount = std::min(frame.Planes->GetNumberOfPlanes(), MaximumPlanes);
+  float planes[MaximumPlanes][4] = {};
   for (int i = 0; i < planeCount; ++i)
   {
     std::copy(frame.Planes->GetPlane(i).begin(), frame.Planes->GetPlane(i).end(), planes[i]);
   }
-  for (vtkShaderProgram* program : { peel, cast })
+  for (vtkShaderProgram* program : { programs.Peel, programs.Cast })
   {
     cache->ReadyShaderProgram(program);
     vtkHAVSViewFrame::ToColumnMajor(view.ModelToEyeRelative, m);
@@ -318,68 +228,254 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
       program->SetUniform4fv("havsPlanesRC", planeCount, planes);
     }
   }
-  // Screen tiles (without them, one tile covering the viewport).
-  const int tileSize = frame.TileSize > 0 ? frame.TileSize : std::max(width, height);
-  const int tileCount[2] = { (width + tileSize - 1) / tileSize,
-    (height + tileSize - 1) / tileSize };
-  const int tiles = tileCount[0] * tileCount[1];
-  {
-    const std::vector<GLuint> none(static_cast<size_t>(tiles), 0u);
-    for (int buffer : { TileBuffer, PeelTileBuffer })
-    {
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[buffer]);
-      glBufferData(
-        GL_SHADER_STORAGE_BUFFER, none.size() * sizeof(GLuint), none.data(), GL_STREAM_DRAW);
-    }
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  }
-  cache->ReadyShaderProgram(mask);
-  mask->SetUniform2f("havsViewportSize", viewport);
-  for (vtkShaderProgram* program : { peel, cast, mask })
+  cache->ReadyShaderProgram(programs.Mask);
+  programs.Mask->SetUniform2f("havsViewportSize", viewport);
+  for (vtkShaderProgram* program : { programs.Peel, programs.Cast, programs.Mask })
   {
     cache->ReadyShaderProgram(program);
-    program->SetUniform2i("havsTileCount", tileCount);
-    program->SetUniformi("havsTileSize", tileSize);
+    program->SetUniform2i("havsTileCount", grid.Count);
+    program->SetUniformi("havsTileSize", grid.Size);
   }
-  cache->ReadyShaderProgram(peel);
+  // The peel's own.
+  cache->ReadyShaderProgram(programs.Peel);
   vtkHAVSViewFrame::ToColumnMajor(view.ModelToClip, m);
-  peel->SetUniformMatrix4x4("havsMCDC", m);
-  peel->SetUniformf("havsPeelTolerance", 1.0e-5f);
+  programs.Peel->SetUniformMatrix4x4("havsMCDC", m);
+  programs.Peel->SetUniformf("havsPeelTolerance", PeelTolerance);
+  // The cast's own: the table, the opaque depth, the walk.
+  vtkShaderProgram* cast = programs.Cast;
   cache->ReadyShaderProgram(cast);
-  this->GLTable->SetUniforms(cast);
+  vtkHAVSGLTable* table = this->Resources->GetTable();
+  table->SetUniforms(cast);
   cast->SetUniformf("havsTerminationOpacity", frame.TerminationOpacity);
-  cast->SetUniformf("havsGapLength", 3.0e38f);
-  cast->SetUniformi("havsOpaqueDepth", depth->GetTextureUnit());
-  cast->SetUniformi("havsAdditive", additive->GetTextureUnit());
+  cast->SetUniformf("havsGapLength", NoGapLength);
+  cast->SetUniformi(
+    "havsOpaqueDepth", this->Resources->GetTargets()->GetOpaqueDepth()->GetTextureUnit());
+  cast->SetUniformi("havsAdditive", table->GetAdditive1D()->GetTextureUnit());
   double clipToModel[16];
   vtkMatrix4x4::Invert(view.ModelToClip, clipToModel);
   vtkHAVSViewFrame::ToColumnMajor(clipToModel, m);
   cast->SetUniformMatrix4x4("havsDCMC", m);
   cast->SetUniform3f("havsEyeMC", eye);
   cast->SetUniform3f("havsDirectionMC", direction);
-  cast->SetUniformi("havsMaxSteps", this->Tetrahedra + 16);
+  cast->SetUniformi("havsMaxSteps", this->GL->Tetrahedra + ExtraSteps);
   cast->SetUniformi("havsFolds", frame.FoldReentries ? 1 : 0);
+}
 
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSRayCastMapper::ClearRays(const TileGrid& grid)
+{
+  GLObjects& gl = *this->GL;
+  // Per tile: no pass yet.
+  const std::vector<GLuint> none(static_cast<size_t>(grid.Tiles), 0u);
+  gl.TilePasses.Update(GL_SHADER_STORAGE_BUFFER, none, 0, GL_STREAM_DRAW);
+  gl.PeelTiles.Update(GL_SHADER_STORAGE_BUFFER, none, 0, GL_STREAM_DRAW);
   // Per pixel: no entry yet, the ray has reached nothing, opacity 0.
   const GLuint noKey = 0xffffffffu, noCell = 0;
   const float fresh[4] = { -3.0e38f, 0.0f, -3.0e38f, 0.0f };
-  glClearTexImage(this->Images[EntryKeyImage], 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &noKey);
-  glClearTexImage(this->Images[EntryCellImage], 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &noCell);
-  glClearTexImage(this->Images[RayStateImage], 0, GL_RGBA, GL_FLOAT, fresh);
-  glBindImageTexture(0, this->Images[EntryKeyImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-  glBindImageTexture(1, this->Images[EntryCellImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-  glBindImageTexture(2, this->Images[RayStateImage], 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  const GLuint zeroCounts[3] = { 0, 0, 0 };
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountBuffer]);
-  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(zeroCounts), zeroCounts);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, this->Buffers[CellBuffer]);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->Buffers[FaceCellBuffer]);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, this->Buffers[NeighbourBuffer]);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, this->Buffers[CountBuffer]);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, this->Buffers[TileBuffer]);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, this->Buffers[PeelTileBuffer]);
-  // The stencil state VTK's state holds, put back after the frame.
+  gl.EntryKey.Clear(GL_RED_INTEGER, GL_UNSIGNED_INT, &noKey);
+  gl.EntryCell.Clear(GL_RED_INTEGER, GL_UNSIGNED_INT, &noCell);
+  gl.RayState.Clear(GL_RGBA, GL_FLOAT, fresh);
+  gl.EntryKey.BindImage(EntryKeyUnit);
+  gl.EntryCell.BindImage(EntryCellUnit);
+  gl.RayState.BindImage(RayStateUnit);
+  const GLuint zeroCounts[NumberOfCounts] = { 0, 0, 0 };
+  gl.Counts.Write(0, zeroCounts, sizeof(zeroCounts));
+  gl.Cells.BindBase(GL_SHADER_STORAGE_BUFFER, CellBinding);
+  gl.FaceCells.BindBase(GL_SHADER_STORAGE_BUFFER, FaceCellBinding);
+  gl.Neighbours.BindBase(GL_SHADER_STORAGE_BUFFER, NeighbourBinding);
+  gl.Counts.BindBase(GL_SHADER_STORAGE_BUFFER, CountBinding);
+  gl.TilePasses.BindBase(GL_SHADER_STORAGE_BUFFER, TileBinding);
+  gl.PeelTiles.BindBase(GL_SHADER_STORAGE_BUFFER, PeelTileBinding);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSRayCastMapper::Peel(vtkOpenGLRenderWindow* window, const Programs& programs,
+  const RayFrame& frame, const TileGrid& grid, int pass, int sectionTriangles,
+  vtkHAVSGLQueries& queries)
+{
+  GLObjects& gl = *this->GL;
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLShaderCache* cache = window->GetShaderCache();
+  state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, gl.PeelTarget.GetFramebuffer());
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  if (pass > 0 && frame.TileSize > 0)
+  {
+    // From the second pass on, only the tiles where a ray left the mesh in
+    // the last pass (the others have no ray to start): a stencil of them.
+    state->vtkglEnable(GL_STENCIL_TEST);
+    state->vtkglStencilMask(0xff);
+    const GLint none = 0;
+    glClearBufferiv(GL_STENCIL, 0, &none);
+    state->vtkglStencilFunc(GL_ALWAYS, 1, 0xff);
+    state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    cache->ReadyShaderProgram(programs.Mask);
+    programs.Mask->SetUniformi("havsPass", pass + 1);
+    gl.PeelTiles.BindBase(GL_SHADER_STORAGE_BUFFER, TileBinding);
+    gl.Tiles.Bind();
+    glDrawArraysInstanced(GL_TRIANGLES, 0, TileVertices, grid.Tiles);
+    vtkHAVSGLVertexArray::Unbind();
+    gl.TilePasses.BindBase(GL_SHADER_STORAGE_BUFFER, TileBinding);
+    state->vtkglStencilFunc(GL_EQUAL, 1, 0xff);
+    state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    state->vtkglStencilMask(0);
+  }
+  else
+  {
+    state->vtkglDisable(GL_STENCIL_TEST);
+  }
+  vtkShaderProgram* peel = programs.Peel;
+  cache->ReadyShaderProgram(peel);
+  peel->SetUniformi("havsPass", pass + 1);
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(GL_BACK);
+  glFrontFace(frame.View->FlipFacing ? GL_CW : GL_CCW);
+  // Two stages: the nearest entry's key, then its cell (stage 0 counts the
+  // fragments that passed the stencil).
+  for (int stage = 0; stage < 2; ++stage)
+  {
+    peel->SetUniformi("havsPeelStage", stage);
+    if (stage == 0)
+    {
+      queries.BeginSamples();
+    }
+    state->vtkglEnable(GL_CULL_FACE);
+    gl.Boundary.Bind();
+    gl.FaceCells.BindBase(GL_SHADER_STORAGE_BUFFER, FaceCellBinding);
+    glDrawElements(GL_TRIANGLES, 3 * gl.BoundaryFaces, GL_UNSIGNED_INT, nullptr);
+    if (pass == 0 && sectionTriangles > 0)
+    {
+      // The camera inside: the rays start on the near plane's section
+      // (either facing), nearer than any boundary face behind it.
+      state->vtkglDisable(GL_CULL_FACE);
+      gl.Section.Bind();
+      gl.SectionCells.BindBase(GL_SHADER_STORAGE_BUFFER, FaceCellBinding);
+      glDrawArrays(GL_TRIANGLES, 0, 3 * sectionTriangles);
+    }
+    if (stage == 0)
+    {
+      queries.EndSamples();
+    }
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  }
+  vtkHAVSGLVertexArray::Unbind();
+  glFrontFace(GL_CCW);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglDisable(GL_STENCIL_TEST);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSRayCastMapper::Cast(vtkOpenGLRenderWindow* window, const Programs& programs,
+  const RayFrame& frame, const TileGrid& grid, int pass)
+{
+  vtkOpenGLState* state = window->GetState();
+  this->Resources->GetTargets()->BindResult();
+  window->GetShaderCache()->ReadyShaderProgram(programs.Cast);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  state->vtkglEnable(GL_BLEND);
+  if (frame.Blend == vtkHAVSRayCastMapper::COMPOSITE_BLEND)
+  {
+    // Front to back: this pass goes under the earlier ones (premultiplied).
+    state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+  }
+  else
+  {
+    // Order-independent: the largest (of s, or of 1 - s), or the sum.
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+    state->vtkglBlendEquation(
+      frame.Blend == vtkHAVSRayCastMapper::ADDITIVE_BLEND ? GL_FUNC_ADD : GL_MAX);
+  }
+  // (Only the tiles where this pass's peeling found entries.)
+  programs.Cast->SetUniformi("havsPass", pass + 1);
+  this->GL->Tiles.Bind();
+  glDrawArraysInstanced(GL_TRIANGLES, 0, TileVertices, grid.Tiles);
+  vtkHAVSGLVertexArray::Unbind();
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLHAVSRayCastMapper::ReadCounts(
+  const TileGrid& grid, vtkHAVSGLQueries& queries, RayCounts* counts)
+{
+  // The GPU times: stamps at the start, then per pass after the peel and the cast.
+  const std::vector<uint64_t> ns = queries.Timestamps();
+  if (ns.size() >= 3)
+  {
+    double peel = 0.0, cast = 0.0;
+    for (size_t i = 1; i + 1 < ns.size(); i += 2)
+    {
+      peel += 1e-9 * static_cast<double>(ns[i] - ns[i - 1]);
+      cast += 1e-9 * static_cast<double>(ns[i + 1] - ns[i]);
+    }
+    counts->PeelSeconds = peel;
+    counts->CastSeconds = cast;
+  }
+  counts->PeelFragments.clear();
+  for (uint64_t samples : queries.Samples())
+  {
+    counts->PeelFragments.push_back(static_cast<long long>(samples));
+  }
+  std::vector<GLuint> last(static_cast<size_t>(grid.Tiles), 0u);
+  this->GL->TilePasses.Read(0, last.data(), last.size() * sizeof(GLuint));
+  counts->TileGrid[0] = grid.Count[0];
+  counts->TileGrid[1] = grid.Count[1];
+  counts->TilePasses.assign(last.begin(), last.end());
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLHAVSRayCastMapper::DrawRays(
+  vtkRenderer* renderer, const RayFrame& frame, RayCounts* counts)
+{
+  // 1. The window, what changed uploaded, the targets and images at the view's size.
+  vtkOpenGLRenderWindow* window =
+    this->Resources->Prepare(renderer, this, "vtkHAVSRayCastMapper", "storage buffers, images");
+  if (!window)
+  {
+    return false;
+  }
+  GLObjects& gl = *this->GL;
+  vtkHAVSGLFrameTargets* targets = this->Resources->GetTargets();
+  vtkHAVSGLTable* glTable = this->Resources->GetTable();
+  this->Upload(frame);
+  const int sectionTriangles = this->UploadSection(frame);
+  const vtkHAVSViewFrame& view = *frame.View;
+  const int width = view.Width, height = view.Height;
+  targets->Resize(width, height);
+  gl.EntryKey.Resize(GL_R32UI, width, height);
+  gl.EntryCell.Resize(GL_R32UI, width, height);
+  gl.RayState.Resize(GL_RGBA32F, width, height);
+  gl.PeelTarget.Resize(width, height);
+  if (frame.Opaque)
+  {
+    targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height, this);
+  }
+
+  // 2. The programs, the textures, the uniforms; the screen tiles (without
+  // them, one tile covering the viewport).
+  Programs programs;
+  if (!this->MakePrograms(window, frame, programs))
+  {
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  vtkHAVSGLScopedPassState passState(state);
+  vtkTextureObject* table = glTable->GetTable();
+  vtkTextureObject* depth = targets->GetOpaqueDepth();
+  vtkTextureObject* additive = glTable->GetAdditive1D();
+  vtkTextureObject* cellOptics = glTable->GetCellOptics();
+  table->Activate();
+  depth->Activate();
+  additive->Activate();
+  cellOptics->Activate();
+  TileGrid grid;
+  grid.Size = frame.TileSize > 0 ? frame.TileSize : std::max(width, height);
+  grid.Count[0] = (width + grid.Size - 1) / grid.Size;
+  grid.Count[1] = (height + grid.Size - 1) / grid.Size;
+  grid.Tiles = grid.Count[0] * grid.Count[1];
+  this->SetUniforms(window, programs, frame, grid);
+
+  // 3. Every ray unstarted, the result cleared. The stencil state VTK's state
+  // holds is put back after the frame.
+  this->ClearRays(grid);
   vtkOpenGLState::ScopedglEnableDisable stencilTest(state, GL_STENCIL_TEST);
   GLint stencil[7] = { GL_ALWAYS, 0, -1, GL_KEEP, GL_KEEP, GL_KEEP, -1 };
   {
@@ -391,131 +487,32 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
       glGetIntegerv(names[i], &stencil[i]);
     }
   }
-  // Peeled fragments per pass (stage 0: those that passed the stencil).
-  std::vector<GLuint> fragmentQueries;
-
   state->PushFramebufferBindings();
-  this->Targets->BindResult();
+  targets->BindResult();
   state->vtkglViewport(0, 0, width, height);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   const float zero[4] = { 0, 0, 0, 0 };
   glClearBufferfv(GL_COLOR, 0, zero);
   glFinish();
+
+  // 4. The passes: peel the entries, cast from them; until a pass starts no
+  // ray (GL timestamps around each step, read after the frame: the passes
+  // already wait for their counts, so the queries add no stall of their own).
   const double t0 = vtkTimerLog::GetUniversalTime();
+  vtkHAVSGLQueries queries;
   GLuint started = 0;
   int passes = 0;
-  GLuint readBack[3] = { 0, 0, 0 };
-  // The peel and cast split: a GL timestamp before the first peel and after
-  // each pass's peel and cast (read after the frame; the passes already wait
-  // for their counts, so the queries add no stall of their own).
-  std::vector<GLuint> stamps;
-  auto stamp = [&stamps]()
+  GLuint readBack[NumberOfCounts] = { 0, 0, 0 };
+  queries.Timestamp();
+  for (int pass = 0; pass < frame.MaximumPasses && gl.BoundaryFaces > 0; ++pass)
   {
-    GLuint query = 0;
-    glGenQueries(1, &query);
-    glQueryCounter(query, GL_TIMESTAMP);
-    stamps.push_back(query);
-  };
-  stamp();
-  for (int pass = 0; pass<frame.MaximumPasses&& this->BoundaryFaces> 0; ++pass)
-  {
-    // Peel: the nearest front-facing boundary entry beyond each ray's reach.
-    state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->PeelFramebuffer);
-    state->vtkglDisable(GL_BLEND);
-    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    const bool masked = pass > 0 && frame.TileSize > 0;
-    if (masked)
-    {
-      // From the second pass on, only the tiles where a ray left the mesh in
-      // the last pass (the others have no ray to start): a stencil of them.
-      state->vtkglEnable(GL_STENCIL_TEST);
-      state->vtkglStencilMask(0xff);
-      const GLint none = 0;
-      glClearBufferiv(GL_STENCIL, 0, &none);
-      state->vtkglStencilFunc(GL_ALWAYS, 1, 0xff);
-      state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-      cache->ReadyShaderProgram(mask);
-      mask->SetUniformi("havsPass", pass + 1);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, this->Buffers[PeelTileBuffer]);
-      glBindVertexArray(this->TileArray);
-      glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles);
-      glBindVertexArray(0);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, this->Buffers[TileBuffer]);
-      state->vtkglStencilFunc(GL_EQUAL, 1, 0xff);
-      state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-      state->vtkglStencilMask(0);
-    }
-    else
-    {
-      state->vtkglDisable(GL_STENCIL_TEST);
-    }
-    cache->ReadyShaderProgram(peel);
-    peel->SetUniformi("havsPass", pass + 1);
-    state->vtkglEnable(GL_CULL_FACE);
-    state->vtkglCullFace(GL_BACK);
-    glFrontFace(view.FlipFacing ? GL_CW : GL_CCW);
-    for (int stage = 0; stage < 2; ++stage)
-    {
-      peel->SetUniformi("havsPeelStage", stage);
-      if (stage == 0)
-      {
-        GLuint query = 0;
-        glGenQueries(1, &query);
-        glBeginQuery(GL_SAMPLES_PASSED, query);
-        fragmentQueries.push_back(query);
-      }
-      state->vtkglEnable(GL_CULL_FACE);
-      glBindVertexArray(this->VertexArray);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->Buffers[FaceCellBuffer]);
-      glDrawElements(GL_TRIANGLES, 3 * this->BoundaryFaces, GL_UNSIGNED_INT, nullptr);
-      if (pass == 0 && sectionTriangles > 0)
-      {
-        // The camera inside: the rays start on the near plane's section
-        // (either facing), nearer than any boundary face behind it.
-        state->vtkglDisable(GL_CULL_FACE);
-        glBindVertexArray(this->SectionArray);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->SectionBuffers[1]);
-        glDrawArrays(GL_TRIANGLES, 0, 3 * sectionTriangles);
-      }
-      if (stage == 0)
-      {
-        glEndQuery(GL_SAMPLES_PASSED);
-      }
-      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    }
-    glBindVertexArray(0);
-    glFrontFace(GL_CCW);
-    state->vtkglDisable(GL_CULL_FACE);
-    state->vtkglDisable(GL_STENCIL_TEST);
-    this->Targets->BindResult();
-    stamp();
-    // Cast: walk the rays from their entries, the pass's colour under the result.
-    cache->ReadyShaderProgram(cast);
-    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    state->vtkglEnable(GL_BLEND);
-    if (frame.Blend == vtkHAVSRayCastMapper::COMPOSITE_BLEND)
-    {
-      // Front to back: this pass goes under the earlier ones (premultiplied).
-      state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
-    }
-    else
-    {
-      // Order-independent: the largest (of s, or of 1 - s), or the sum.
-      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-      state->vtkglBlendEquation(
-        frame.Blend == vtkHAVSRayCastMapper::ADDITIVE_BLEND ? GL_FUNC_ADD : GL_MAX);
-    }
-    // (Only the tiles where this pass's peeling found entries.)
-    cast->SetUniformi("havsPass", pass + 1);
-    glBindVertexArray(this->TileArray);
-    glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles);
-    glBindVertexArray(0);
-    stamp();
+    this->Peel(window, programs, frame, grid, pass, sectionTriangles, queries);
+    queries.Timestamp();
+    this->Cast(window, programs, frame, grid, pass);
+    queries.Timestamp();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
       GL_BUFFER_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountBuffer]);
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(readBack), readBack);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    gl.Counts.Read(0, readBack, sizeof(readBack));
     if (readBack[0] == started)
     {
       break; // this pass started no ray: every ray is done
@@ -525,110 +522,48 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   }
   glFinish();
   counts->Seconds = vtkTimerLog::GetUniversalTime() - t0;
-  if (stamps.size() >= 3)
-  {
-    // stamps: start, then per pass (peeled, cast).
-    std::vector<GLuint64> ns(stamps.size(), 0);
-    for (size_t i = 0; i < stamps.size(); ++i)
-    {
-      glGetQueryObjectui64v(stamps[i], GL_QUERY_RESULT, &ns[i]);
-    }
-    double peel = 0.0, castTime = 0.0;
-    for (size_t i = 1; i + 1 < ns.size(); i += 2)
-    {
-      peel += 1e-9 * static_cast<double>(ns[i] - ns[i - 1]);
-      castTime += 1e-9 * static_cast<double>(ns[i + 1] - ns[i]);
-    }
-    counts->PeelSeconds = peel;
-    counts->CastSeconds = castTime;
-  }
-  if (!stamps.empty())
-  {
-    glDeleteQueries(static_cast<GLsizei>(stamps.size()), stamps.data());
-  }
-  counts->PeelFragments.clear();
-  for (GLuint query : fragmentQueries)
-  {
-    GLuint64 samples = 0;
-    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samples);
-    counts->PeelFragments.push_back(static_cast<long long>(samples));
-  }
-  if (!fragmentQueries.empty())
-  {
-    glDeleteQueries(static_cast<GLsizei>(fragmentQueries.size()), fragmentQueries.data());
-  }
-  state->vtkglStencilFunc(stencil[0], stencil[1], static_cast<GLuint>(stencil[2]));
-  state->vtkglStencilOp(stencil[3], stencil[4], stencil[5]);
-  state->vtkglStencilMask(static_cast<GLuint>(stencil[6]));
+
+  // 5. The counts, and the state put back.
+  this->ReadCounts(grid, queries, counts);
+  queries.Release();
   counts->Passes = passes;
   counts->Rays = readBack[0];
   counts->Cells = readBack[1];
   counts->FoldReentries = readBack[2];
-  {
-    std::vector<GLuint> last(static_cast<size_t>(tiles), 0u);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[TileBuffer]);
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, last.size() * sizeof(GLuint), last.data());
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    counts->TileGrid[0] = tileCount[0];
-    counts->TileGrid[1] = tileCount[1];
-    counts->TilePasses.assign(last.begin(), last.end());
-  }
+  state->vtkglStencilFunc(stencil[0], stencil[1], static_cast<GLuint>(stencil[2]));
+  state->vtkglStencilOp(stencil[3], stencil[4], stencil[5]);
+  state->vtkglStencilMask(static_cast<GLuint>(stencil[6]));
   state->vtkglDisable(GL_BLEND);
   state->vtkglBlendEquation(GL_FUNC_ADD);
-  const bool resolved =
-    vtkHAVSExtremumPass::ResolveBlend(window, this->Targets, this->GLTable, frame.Blend);
-  for (GLuint unit = 0; unit < 3; ++unit)
+
+  // 6. The extremum blends' resolve, the result composited into the window.
+  const bool resolved = vtkHAVSExtremumPass::ResolveBlend(window, targets, glTable, frame.Blend);
+  for (GLuint unit = 0; unit < NumberOfImageUnits; ++unit)
   {
-    glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    vtkHAVSGLImage::UnbindImage(unit);
   }
-  return this->Targets->EndFrame(resolved, frame.KeepResult, { cellOptics, additive, table, depth },
+  return targets->EndFrame(resolved, frame.KeepResult, { cellOptics, additive, table, depth },
     view.OriginX, view.OriginY, this);
 }
 
 //------------------------------------------------------------------------------
 const std::vector<float>* vtkOpenGLHAVSRayCastMapper::GetKeptResult(int size[2])
 {
-  return this->Targets->GetKeptResult(size);
+  return this->Resources->GetTargets()->GetKeptResult(size);
 }
 
 //------------------------------------------------------------------------------
 void vtkOpenGLHAVSRayCastMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
-  if (!this->Window || (window && window != this->Window))
-  {
-    return;
-  }
-  vtkOpenGLRenderWindow* home = this->Window;
-  home->MakeCurrent();
-  this->GLTable->ReleaseGraphicsResources(home);
-  this->Targets->ReleaseGraphicsResources(home);
-  if (this->VertexArray)
-  {
-    glDeleteVertexArrays(1, &this->VertexArray);
-    glDeleteVertexArrays(1, &this->TileArray);
-    glDeleteBuffers(NumberOfBuffers, this->Buffers);
-    this->VertexArray = this->TileArray = 0;
-    std::fill(this->Buffers, this->Buffers + NumberOfBuffers, 0u);
-  }
-  if (this->SectionArray)
-  {
-    glDeleteVertexArrays(1, &this->SectionArray);
-    glDeleteBuffers(2, this->SectionBuffers);
-    this->SectionArray = 0;
-    this->SectionBuffers[0] = this->SectionBuffers[1] = 0;
-    this->SectionTriangles = 0;
-  }
-  this->UploadedSection = 0;
-  this->ReleaseImages();
-  home->RemoveObserver(this->WindowDeleteObserver);
-  this->Window = nullptr;
-  this->UploadedMesh = this->UploadedTable = 0;
-  this->BoundaryFaces = this->Tetrahedra = 0;
+  this->Resources->Release(window);
 }
 
 //------------------------------------------------------------------------------
 void vtkOpenGLHAVSRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Window: " << this->Window << "\n";
+  os << indent << "Boundary faces: " << this->GL->BoundaryFaces
+     << ", tetrahedra: " << this->GL->Tetrahedra
+     << ", section triangles: " << this->GL->SectionTriangles << "\n";
+  this->Resources->PrintSelf(os, indent.GetNextIndent());
 }

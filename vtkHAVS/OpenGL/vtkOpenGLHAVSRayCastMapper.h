@@ -35,11 +35,13 @@
 #include "vtkHAVSRayCastMapper.h"
 #include "vtkNew.h" // For vtkNew
 
+#include <memory> // For std::unique_ptr
 #include <vector> // For std::vector
 
-class vtkHAVSGLFrameTargets;
-class vtkHAVSGLTable;
+class vtkHAVSGLMapperResources;
+class vtkHAVSGLQueries;
 class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
 
 class VTKHAVSOPENGL_EXPORT vtkOpenGLHAVSRayCastMapper : public vtkHAVSRayCastMapper
 {
@@ -61,35 +63,44 @@ private:
   vtkOpenGLHAVSRayCastMapper(const vtkOpenGLHAVSRayCastMapper&) = delete;
   void operator=(const vtkOpenGLHAVSRayCastMapper&) = delete;
 
-  void PrepareWindow(vtkOpenGLRenderWindow* window);
-  void OnWindowDeleted(vtkObject* window, unsigned long, void*);
+  /// The frame's three programs: the peel, the cast and the tiles' stencil.
+  struct Programs
+  {
+    vtkShaderProgram* Peel = nullptr;
+    vtkShaderProgram* Cast = nullptr;
+    vtkShaderProgram* Mask = nullptr;
+  };
+  /// The screen tiles of a frame (one covering the viewport without tiles).
+  struct TileGrid
+  {
+    int Size = 0;
+    int Count[2] = { 0, 0 };
+    int Tiles = 0;
+  };
+
+  /// The ray mesh and the table: each when its version changed.
   void Upload(const RayFrame& frame);
   /// The near plane's section (triangles and their cells); returns its triangle count.
   int UploadSection(const RayFrame& frame);
-  void ResizeImages(int width, int height);
-  void ReleaseImages();
+  /// The programs (nullptr members, with an error, when one did not build).
+  bool MakePrograms(vtkOpenGLRenderWindow* window, const RayFrame& frame, Programs& programs);
+  /// Every uniform of the three programs for this frame.
+  void SetUniforms(vtkOpenGLRenderWindow* window, const Programs& programs, const RayFrame& frame,
+    const TileGrid& grid);
+  /// Per pixel no entry, no ray, opacity 0; the counts zeroed; the buffers and images bound.
+  void ClearRays(const TileGrid& grid);
+  /// One pass's peel: the nearest front-facing boundary entry beyond each ray's reach.
+  void Peel(vtkOpenGLRenderWindow* window, const Programs& programs, const RayFrame& frame,
+    const TileGrid& grid, int pass, int sectionTriangles, vtkHAVSGLQueries& queries);
+  /// One pass's cast: the rays walked from their entries, the colour under the result.
+  void Cast(vtkOpenGLRenderWindow* window, const Programs& programs, const RayFrame& frame,
+    const TileGrid& grid, int pass);
+  /// The frame's counts: rays, cells, fold re-entries, the tiles' passes, the GPU times.
+  void ReadCounts(const TileGrid& grid, vtkHAVSGLQueries& queries, RayCounts* counts);
 
-  vtkOpenGLRenderWindow* Window = nullptr;
-  unsigned long WindowDeleteObserver = 0;
-  vtkNew<vtkHAVSGLTable> GLTable;
-  vtkNew<vtkHAVSGLFrameTargets> Targets;
-  unsigned int VertexArray = 0;
-  unsigned int Buffers[8] = {}; // points, faces, face cells, cells, neighbours, counts, tiles,
-                                // the tiles the next peel draws
-  unsigned int TileArray = 0;   // (no attributes: the tiles' corners come from their ids)
-  unsigned int Images[3] = { 0, 0, 0 }; // entry key, entry cell, ray state
-  int ImageSize[2] = { 0, 0 };
-  // The peeling's framebuffer: a stencil only (the tiles a pass peels).
-  unsigned int PeelFramebuffer = 0;
-  unsigned int PeelStencil = 0;
-  unsigned int SectionArray = 0;
-  unsigned int SectionBuffers[2] = { 0, 0 }; // points, cells
-  int SectionTriangles = 0;
-  vtkMTimeType UploadedSection = 0;
-  int BoundaryFaces = 0;
-  int Tetrahedra = 0;
-  vtkMTimeType UploadedMesh = 0;
-  vtkMTimeType UploadedTable = 0;
+  vtkNew<vtkHAVSGLMapperResources> Resources; // the window, the table, the targets
+  struct GLObjects;                           // the mapper's own buffers and images
+  std::unique_ptr<GLObjects> GL;
 };
 
 #endif
