@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSGLMesh.h"
 
+#include "vtkHAVSMesh.h"
+
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -301,6 +303,62 @@ void vtkHAVSGLMesh::ReleaseGraphicsResources(vtkWindow* window)
   }
   this->IndexCount = 0;
   this->VertexCapacity = 0;
+  this->GeometryVersion = this->ScalarVersion = this->OrderVersion = this->SectionsVersion = 0;
+  this->OrderTagged = false;
+}
+
+//------------------------------------------------------------------------------
+int vtkHAVSGLMesh::UpdateGeometry(vtkHAVSMesh* mesh)
+{
+  if (this->GeometryVersion != mesh->GetBuildTime())
+  {
+    this->UploadGeometry(
+      mesh->GetVertexPoints(), mesh->GetVertexScalars(), mesh->GetVertexScalarComponents());
+    this->GeometryVersion = mesh->GetBuildTime();
+    this->ScalarVersion = mesh->GetScalarTime();
+    this->OrderVersion = 0;
+    return UploadedGeometry;
+  }
+  if (this->ScalarVersion != mesh->GetScalarTime())
+  {
+    // A new time step on the same mesh: the scalars only (the boundary
+    // vertices' copies with the next face-order upload).
+    this->UploadScalars(mesh->GetVertexScalars());
+    this->ScalarVersion = mesh->GetScalarTime();
+    this->OrderVersion = 0;
+    return UploadedScalars;
+  }
+  return UploadedNothing;
+}
+
+bool vtkHAVSGLMesh::UpdateFaceOrder(const std::vector<uint32_t>& triangles,
+  const std::vector<uint8_t>& boundary, bool tagged, vtkMTimeType version, bool* failed)
+{
+  *failed = false;
+  if (this->OrderVersion == version && this->OrderTagged == tagged)
+  {
+    return false;
+  }
+  if (!this->UploadFaceOrder(triangles, boundary, tagged))
+  {
+    *failed = true;
+    return false;
+  }
+  this->OrderVersion = version;
+  this->OrderTagged = tagged;
+  return true;
+}
+
+bool vtkHAVSGLMesh::UpdateSections(
+  const std::vector<vtkHAVSFramePlanes::Section>& sections, vtkMTimeType version)
+{
+  if (this->SectionsVersion == version)
+  {
+    return false;
+  }
+  this->UploadSections(sections);
+  this->SectionsVersion = version;
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -31,6 +31,7 @@
 #include <functional> // For std::function
 #include <vector>     // For std::vector
 
+class vtkHAVSMesh;
 class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
@@ -69,6 +70,28 @@ public:
   void UploadScalars(const std::vector<float>& scalars);
   /// The sections of the next frames (empty: none).
   void UploadSections(const std::vector<vtkHAVSFramePlanes::Section>& sections);
+
+  ///@{
+  /**
+   * The same, each only when its version (a modification time) is not the
+   * one uploaded last: the mesh's points and scalars (vtkHAVSMesh's build
+   * and scalar times; new scalars only for a new time step), the face order
+   * (and whether it went up tagged), the sections. Each says what it
+   * uploaded; a new geometry or scalars make the next face order upload
+   * (the boundary vertices copy them).
+   */
+  enum GeometryUploads
+  {
+    UploadedNothing = 0,
+    UploadedGeometry = 1,
+    UploadedScalars = 2
+  };
+  int UpdateGeometry(vtkHAVSMesh* mesh);
+  /// False when nothing was uploaded; `failed` when the upload failed.
+  bool UpdateFaceOrder(const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary,
+    bool tagged, vtkMTimeType version, bool* failed);
+  bool UpdateSections(const std::vector<vtkHAVSFramePlanes::Section>& sections, vtkMTimeType version);
+  ///@}
 
   vtkIdType GetNumberOfFaces() const { return this->IndexCount / 3; }
   /// Scalars per vertex (1 point scalars, 2 cell scalars).
@@ -127,6 +150,13 @@ private:
     GLsizei Count;
   };
   std::vector<SectionDraw> SectionDraws;
+
+  // The versions on the GPU (0: none).
+  vtkMTimeType GeometryVersion = 0;
+  vtkMTimeType ScalarVersion = 0;
+  vtkMTimeType OrderVersion = 0;
+  bool OrderTagged = false;
+  vtkMTimeType SectionsVersion = 0;
 };
 
 #endif

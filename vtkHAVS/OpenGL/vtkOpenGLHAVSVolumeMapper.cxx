@@ -15,6 +15,7 @@
 #include "vtkHAVSFramebufferFetchKBuffer.h"
 #include "vtkHAVSGLFrameCapture.h"
 #include "vtkHAVSGLFrameTargets.h"
+#include "vtkHAVSGLMapperResources.h"
 #include "vtkHAVSGLMesh.h"
 #include "vtkHAVSGLPassContext.h"
 #include "vtkHAVSGLTable.h"
@@ -59,7 +60,17 @@ struct KeepLoaded
 }
 
 //------------------------------------------------------------------------------
-vtkOpenGLHAVSVolumeMapper::vtkOpenGLHAVSVolumeMapper() = default;
+vtkOpenGLHAVSVolumeMapper::vtkOpenGLHAVSVolumeMapper()
+{
+  this->Resources->SetReleaseCallback(
+    [this](vtkOpenGLRenderWindow* home)
+    {
+      this->GLMesh->ReleaseGraphicsResources(home);
+      this->FetchKBuffer->ReleaseGraphicsResources(home);
+      this->InterlockKBuffer->ReleaseGraphicsResources(home);
+      this->ListKBuffer->ReleaseGraphicsResources(home);
+    });
+}
 
 vtkOpenGLHAVSVolumeMapper::~vtkOpenGLHAVSVolumeMapper()
 {
@@ -132,75 +143,21 @@ vtkHAVSKBuffer* vtkOpenGLHAVSVolumeMapper::GetKBuffer(int path)
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLHAVSVolumeMapper::PrepareWindow(vtkOpenGLRenderWindow* window)
-{
-  if (this->Window == window)
-  {
-    window->MakeCurrent();
-    return;
-  }
-  this->ReleaseGraphicsResources(this->Window);
-  this->Window = window;
-  // A window that goes away while this mapper is not among its props (so that
-  // it is not told to release) takes the resources with it: watch for that.
-  this->WindowDeleteObserver =
-    window->AddObserver(vtkCommand::DeleteEvent, this, &vtkOpenGLHAVSVolumeMapper::OnWindowDeleted);
-  window->MakeCurrent();
-  this->GLMesh->SetContext(window);
-  this->GLTable->SetContext(window);
-  this->Targets->SetContext(window);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLHAVSVolumeMapper::OnWindowDeleted(vtkObject* window, unsigned long, void*)
-{
-  this->ReleaseGraphicsResources(vtkWindow::SafeDownCast(window));
-}
-
-//------------------------------------------------------------------------------
 bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request, FrameResult& result)
 {
-  vtkHAVSMesh* mesh = request.Mesh;
-  if (this->Uploaded.Geometry != mesh->GetBuildTime())
+  // Each GPU object uploads what changed since its last upload (its versions).
+  const int geometry = this->GLMesh->UpdateGeometry(request.Mesh);
+  result.GeometryUploaded = geometry == vtkHAVSGLMesh::UploadedGeometry;
+  result.ScalarsUploaded = geometry == vtkHAVSGLMesh::UploadedScalars;
+  bool failed = false;
+  result.OrderUploaded = this->GLMesh->UpdateFaceOrder(*request.DrawTriangles,
+    *request.DrawBoundary, request.Tagging, request.DrawOrderVersion, &failed);
+  if (failed)
   {
-    this->GLMesh->UploadGeometry(
-      mesh->GetVertexPoints(), mesh->GetVertexScalars(), mesh->GetVertexScalarComponents());
-    this->Uploaded.Geometry = mesh->GetBuildTime();
-    this->Uploaded.Scalars = mesh->GetScalarTime();
-    this->Uploaded.Order = 0;
-    result.GeometryUploaded = true;
+    return false;
   }
-  else if (this->Uploaded.Scalars != mesh->GetScalarTime())
-  {
-    // A new time step on the same mesh: the scalars only (the boundary
-    // vertices' copies with the next face-order upload).
-    this->GLMesh->UploadScalars(mesh->GetVertexScalars());
-    this->Uploaded.Scalars = mesh->GetScalarTime();
-    this->Uploaded.Order = 0;
-    result.ScalarsUploaded = true;
-  }
-  if (this->Uploaded.Order != request.DrawOrderVersion || this->Uploaded.Tagged != request.Tagging)
-  {
-    if (!this->GLMesh->UploadFaceOrder(
-          *request.DrawTriangles, *request.DrawBoundary, request.Tagging))
-    {
-      return false;
-    }
-    this->Uploaded.Order = request.DrawOrderVersion;
-    this->Uploaded.Tagged = request.Tagging;
-    result.OrderUploaded = true;
-  }
-  if (this->Uploaded.Sections != request.Planes->GetSectionsVersion())
-  {
-    this->GLMesh->UploadSections(request.Planes->GetSections());
-    this->Uploaded.Sections = request.Planes->GetSectionsVersion();
-  }
-  if (this->Uploaded.Table != request.TableVersion)
-  {
-    this->GLTable->Upload(request.Table);
-    this->Uploaded.Table = request.TableVersion;
-    result.TableUploaded = true;
-  }
+  this->GLMesh->UpdateSections(request.Planes->GetSections(), request.Planes->GetSectionsVersion());
+  result.TableUploaded = this->Resources->GetTable()->Update(request.Table, request.TableVersion);
   return true;
 }
 
@@ -208,13 +165,15 @@ bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request, FrameResult&
 bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   vtkRenderer* renderer, const FrameRequest& request, FrameResult& result)
 {
-  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkOpenGLRenderWindow* window =
+    this->Resources->Prepare(renderer, this, "vtkHAVSVolumeMapper", "storage buffers, images");
   if (!window)
   {
-    vtkErrorMacro("vtkHAVSVolumeMapper needs an OpenGL render window.");
     return false;
   }
-  this->PrepareWindow(window);
+  this->GLMesh->SetContext(window);
+  vtkHAVSGLFrameTargets* targets = this->Resources->GetTargets();
+  vtkHAVSGLTable* glTable = this->Resources->GetTable();
   const bool measure = request.MeasureStages;
   auto now = [measure]()
   {
@@ -234,14 +193,14 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   const vtkHAVSViewFrame& view = *request.View;
   const int width = view.Width, height = view.Height;
   vtkOpenGLState* state = window->GetState();
-  this->Targets->Resize(width, height);
+  targets->Resize(width, height);
   if (request.Opaque)
   {
-    this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height, this);
-    result.OpaqueDepthMultisampled = this->Targets->GetLastCaptureMultisampled();
-    result.OpaqueDepthCaptured = this->Targets->GetLastCaptureResolved();
+    targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height, this);
+    result.OpaqueDepthMultisampled = targets->GetLastCaptureMultisampled();
+    result.OpaqueDepthCaptured = targets->GetLastCaptureResolved();
   }
-  vtkHAVSGLPassContext context(window, this->GLMesh, this->GLTable, this->Targets, request);
+  vtkHAVSGLPassContext context(window, this->GLMesh, glTable, targets, request);
   const bool extremum = request.BlendMode != COMPOSITE_BLEND;
   vtkHAVSKBuffer* kbuffer = this->GetKBuffer(request.Path);
 
@@ -249,8 +208,8 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   state->vtkglDisable(GL_BLEND);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   state->vtkglViewport(0, 0, width, height);
-  vtkTextureObject* textures[] = { this->GLTable->GetTable(), this->GLTable->GetCellOptics(),
-    this->Targets->GetOpaqueDepth() };
+  vtkTextureObject* textures[] = { glTable->GetTable(), glTable->GetCellOptics(),
+    targets->GetOpaqueDepth() };
   for (vtkTextureObject* t : textures)
   {
     t->Activate();
@@ -270,7 +229,7 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   }
   else if (kbuffer)
   {
-    this->Targets->ResetViolationCounter();
+    targets->ResetViolationCounter();
     ok = kbuffer->Allocate(context) && kbuffer->Clear(context) && kbuffer->Draw(context);
     result.Fragments = kbuffer->GetLastFragmentCount();
     result.SaturatedPixels = kbuffer->GetLastSaturatedPixels();
@@ -278,7 +237,7 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   const double t1 = now();
   if (ok && !request.RasterBoundOnly)
   {
-    this->Targets->BindResult();
+    targets->BindResult();
     ok = extremum ? this->Extremum->Resolve(context) : kbuffer->Resolve(context);
   }
 
@@ -288,7 +247,7 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   {
     std::uint64_t shaded = 0;
     result.Violations =
-      static_cast<vtkIdType>(this->Targets->ReadViolationCounter(result.ViolationPixels, &shaded));
+      static_cast<vtkIdType>(targets->ReadViolationCounter(result.ViolationPixels, &shaded));
     if (kbuffer->GetPath() != KBufferPathFragmentLists)
     {
       result.ShadedFragments = static_cast<vtkIdType>(shaded);
@@ -296,7 +255,7 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   }
   if (ok && request.KeepResult)
   {
-    this->Targets->KeepResult();
+    targets->KeepResult();
   }
   const double t2 = now();
   if (ok && this->CaptureDirectory && !request.RasterBoundOnly && !extremum)
@@ -320,7 +279,7 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   if (ok && !request.RasterBoundOnly && request.Composite)
   {
     state->vtkglViewport(view.OriginX, view.OriginY, width, height);
-    ok = this->Targets->Composite(view.OriginX, view.OriginY);
+    ok = targets->Composite(view.OriginX, view.OriginY);
   }
   if (request.Finish && !measure)
   {
@@ -344,10 +303,11 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
 bool vtkOpenGLHAVSVolumeMapper::CompositeKeptResult(vtkRenderer* renderer)
 {
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkHAVSGLFrameTargets* targets = this->Resources->GetTargets();
   int width = 0, height = 0, originX = 0, originY = 0;
   renderer->GetTiledSizeAndOrigin(&width, &height, &originX, &originY);
-  if (!window || window != this->Window || !this->Targets->GetResult() ||
-    width != this->Targets->GetSize()[0] || height != this->Targets->GetSize()[1])
+  if (!window || window != this->Resources->GetWindow() || !targets->GetResult() ||
+    width != targets->GetSize()[0] || height != targets->GetSize()[1])
   {
     vtkErrorMacro("CompositeKeptResult needs the last frame's result in this window.");
     return false;
@@ -355,44 +315,29 @@ bool vtkOpenGLHAVSVolumeMapper::CompositeKeptResult(vtkRenderer* renderer)
   vtkOpenGLState* state = window->GetState();
   vtkHAVSGLScopedPassState passState(state);
   state->vtkglViewport(originX, originY, width, height);
-  return this->Targets->Composite(originX, originY);
+  return targets->Composite(originX, originY);
 }
 
 //------------------------------------------------------------------------------
 const std::vector<float>* vtkOpenGLHAVSVolumeMapper::GetKeptResult(int size[2])
 {
-  return this->Targets->GetKeptResult(size);
+  return this->Resources->GetTargets()->GetKeptResult(size);
 }
 
 //------------------------------------------------------------------------------
 void vtkOpenGLHAVSVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
-  if (!this->Window || (window && window != this->Window))
-  {
-    return;
-  }
-  vtkOpenGLRenderWindow* home = this->Window;
-  home->MakeCurrent();
-  this->GLMesh->ReleaseGraphicsResources(home);
-  this->GLTable->ReleaseGraphicsResources(home);
-  this->Targets->ReleaseGraphicsResources(home);
-  this->FetchKBuffer->ReleaseGraphicsResources(home);
-  this->InterlockKBuffer->ReleaseGraphicsResources(home);
-  this->ListKBuffer->ReleaseGraphicsResources(home);
-  home->RemoveObserver(this->WindowDeleteObserver);
-  this->Window = nullptr;
-  this->Uploaded = UploadedVersions();
+  this->Resources->Release(window);
 }
 
 //------------------------------------------------------------------------------
 void vtkOpenGLHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Window: " << this->Window << "\n";
+
   os << indent
      << "CaptureDirectory: " << (this->CaptureDirectory ? this->CaptureDirectory : "(none)")
      << ", last capture " << (this->LastCaptureSucceeded ? "written" : "none") << "\n";
   this->GLMesh->PrintSelf(os, indent.GetNextIndent());
-  this->GLTable->PrintSelf(os, indent.GetNextIndent());
-  this->Targets->PrintSelf(os, indent.GetNextIndent());
+  this->Resources->PrintSelf(os, indent.GetNextIndent());
 }

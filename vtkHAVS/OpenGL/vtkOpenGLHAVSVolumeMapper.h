@@ -42,6 +42,7 @@ class vtkHAVSExtremumPass;
 class vtkHAVSFragmentListKBuffer;
 class vtkHAVSFramebufferFetchKBuffer;
 class vtkHAVSGLFrameTargets;
+class vtkHAVSGLMapperResources;
 class vtkHAVSGLMesh;
 class vtkHAVSGLTable;
 class vtkHAVSInterlockKBuffer;
@@ -86,18 +87,12 @@ private:
   vtkOpenGLHAVSVolumeMapper(const vtkOpenGLHAVSVolumeMapper&) = delete;
   void operator=(const vtkOpenGLHAVSVolumeMapper&) = delete;
 
-  /// Makes `window` the home of every resource (moving them from another).
-  void PrepareWindow(vtkOpenGLRenderWindow* window);
   /// Uploads what changed since the last frame in this window; `result` says what was.
   bool Upload(const FrameRequest& request, FrameResult& result);
   vtkHAVSKBuffer* GetKBuffer(int path);
-  void OnWindowDeleted(vtkObject* window, unsigned long event, void* data);
 
-  vtkOpenGLRenderWindow* Window = nullptr;
-  unsigned long WindowDeleteObserver = 0;
+  vtkNew<vtkHAVSGLMapperResources> Resources; // the window, the table, the targets
   vtkNew<vtkHAVSGLMesh> GLMesh;
-  vtkNew<vtkHAVSGLTable> GLTable;
-  vtkNew<vtkHAVSGLFrameTargets> Targets;
   vtkNew<vtkHAVSFramebufferFetchKBuffer> FetchKBuffer;
   vtkNew<vtkHAVSInterlockKBuffer> InterlockKBuffer;
   vtkNew<vtkHAVSFragmentListKBuffer> ListKBuffer;
@@ -106,17 +101,6 @@ private:
   char* CaptureDirectory = nullptr;
   bool LastCaptureSucceeded = false;
 
-  /// The versions of the request's inputs on the GPU (0: none).
-  struct UploadedVersions
-  {
-    vtkMTimeType Geometry = 0;
-    vtkMTimeType Scalars = 0;
-    vtkMTimeType Order = 0;
-    bool Tagged = false; // the order went up with boundary vertices
-    vtkMTimeType Sections = 0;
-    vtkMTimeType Table = 0;
-  };
-  UploadedVersions Uploaded;
 };
 
 #endif
