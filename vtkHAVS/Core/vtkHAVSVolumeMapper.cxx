@@ -64,20 +64,14 @@ vtkHAVSVolumeMapper::~vtkHAVSVolumeMapper() = default;
 //------------------------------------------------------------------------------
 const char* vtkHAVSVolumeMapper::GetKBufferPathName(int path)
 {
-  switch (path)
-  {
-    case KBufferPathAutomatic:
-      return "Automatic";
-    case KBufferPathFramebufferFetch:
-      return "FramebufferFetch";
-    case KBufferPathFragmentShaderInterlock:
-      return "FragmentShaderInterlock";
-    case KBufferPathFragmentLists:
-      return "FragmentLists";
-    default:
-      return "None";
-  }
+  return vtkHAVSFrameRequest::GetPathName(path);
 }
+static_assert(vtkHAVSVolumeMapper::KBufferPathFramebufferFetch ==
+      vtkHAVSFrameRequest::PathFramebufferFetch &&
+    vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock ==
+      vtkHAVSFrameRequest::PathFragmentShaderInterlock &&
+    vtkHAVSVolumeMapper::KBufferPathFragmentLists == vtkHAVSFrameRequest::PathFragmentLists,
+  "the k-buffer paths of the mapper and of the frame request");
 
 //------------------------------------------------------------------------------
 void vtkHAVSVolumeMapper::SetNonConvexMethodToIgnore()

@@ -52,7 +52,8 @@
 #ifndef vtkHAVSVolumeMapper_h
 #define vtkHAVSVolumeMapper_h
 
-#include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkHAVSCoreModule.h"   // For export macro
+#include "vtkHAVSFrameRequest.h" // For vtkHAVSFrameRequest, vtkHAVSFrameResult
 #include "vtkHAVSMapperBase.h"
 #include "vtkNew.h" // For vtkNew
 
@@ -480,59 +481,11 @@ public:
    */
   vtkHAVSPreIntegrationTable* GetPreIntegrationTable();
 
-  // The graphics layer's side (vtkOpenGLHAVSVolumeMapper and its passes read these).
-  /**
-   * What the graphics layer draws: one frame's settings and inputs. The
-   * inputs carry a version (a modification time) so that the layer uploads
-   * only what changed.
-   */
-  struct FrameRequest
-  {
-    const vtkHAVSViewFrame* View = nullptr;
-    vtkHAVSMesh* Mesh = nullptr;                 ///< points, scalars (GetBuildTime())
-    vtkHAVSPreIntegrationTable* Table = nullptr; ///< the table (TableVersion)
-    vtkMTimeType TableVersion = 0;
-    const std::vector<uint32_t>* DrawTriangles = nullptr; ///< faces in draw order
-    const std::vector<uint8_t>* DrawBoundary = nullptr;
-    vtkMTimeType DrawOrderVersion = 0;
-    vtkHAVSFramePlanes* Planes = nullptr; ///< planes and sections (GetSectionsVersion())
-    int Path = 0;                         ///< KBufferPaths
-    int K = 1;
-    int BlendMode = COMPOSITE_BLEND;
-    float TerminationOpacity = 1.0f;
-    bool Tagging = true;       ///< boundary fragments carry their entry/exit role
-    bool CellScalars = false;  ///< the scalars are the cells' (vtkHAVSMesh::HasCellScalars)
-    bool Opaque = true;        ///< opaque geometry may be in the depth buffer (rays end there)
-    float GapLength = 3.0e38f; ///< segments longer than this contribute nothing (3e38: off)
-    bool Composite = true;     ///< composite the result over the window (else keep it)
-    bool CountViolations = true;
-    bool RasterBoundOnly = false;
-    bool MeasureStages = false;
-    bool KeepResult = false;
-    bool Finish = false;        ///< wait for the draw to finish (the frame time is measured)
-    bool SkipSaturated = false; ///< reject saturated pixels' fragments early (SkipSaturatedPixels)
-  };
-
-  /// What the graphics layer reports of a drawn frame.
-  struct FrameResult
-  {
-    vtkIdType Violations = 0;
-    std::vector<int> ViolationPixels;
-    vtkIdType Fragments = 0;
-    vtkIdType SaturatedPixels = -1; ///< marked by the last saturation pass (-1: not read)
-    vtkIdType ShadedFragments = -1; ///< fragment-shader invocations of the face draw (-1: not read)
-    bool OpaqueDepthMultisampled = false; ///< the opaque depth came from a multisampled framebuffer
-    bool OpaqueDepthCaptured = false;     ///< the opaque depth was read (resolved if multisampled)
-    double UploadSeconds = 0.0;
-    double DrawSeconds = 0.0;
-    double FlushSeconds = 0.0;
-    double CompositeSeconds = 0.0;
-    double ReadbackSeconds = 0.0;
-    bool GeometryUploaded = false; ///< the mesh's points and scalars went to the GPU
-    bool ScalarsUploaded = false;  ///< its scalars only (a new time step)
-    bool OrderUploaded = false;    ///< the face order
-    bool TableUploaded = false;    ///< the pre-integration table
-  };
+#ifndef __VTK_WRAP__
+  /// The graphics layer's side: one frame's request and result (vtkHAVSFrameRequest.h).
+  using FrameRequest = vtkHAVSFrameRequest;
+  using FrameResult = vtkHAVSFrameResult;
+#endif
 
 protected:
   vtkHAVSVolumeMapper();

@@ -51,7 +51,7 @@ bool vtkHAVSExtremumPass::Draw(vtkHAVSGLPassContext& context)
 //------------------------------------------------------------------------------
 bool vtkHAVSExtremumPass::Resolve(vtkHAVSGLPassContext& context)
 {
-  const bool minimum = context.Request.BlendMode == vtkHAVSVolumeMapper::MINIMUM_INTENSITY_BLEND;
+  const bool minimum = context.Request.BlendMode == vtkHAVSFrameRequest::MinimumIntensityBlend;
   return ResolveResult(
     context.Window, context.Targets, context.Table, minimum ? ResolveMinimum : ResolveMaximum);
 }

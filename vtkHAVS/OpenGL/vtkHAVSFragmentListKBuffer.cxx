@@ -37,7 +37,7 @@ bool vtkHAVSFragmentListKBuffer::IsSupported(vtkOpenGLRenderWindow*)
 
 int vtkHAVSFragmentListKBuffer::GetPath() const
 {
-  return vtkHAVSVolumeMapper::KBufferPathFragmentLists;
+  return vtkHAVSFrameRequest::PathFragmentLists;
 }
 
 int vtkHAVSFragmentListKBuffer::GetMaximumK() const
@@ -146,7 +146,7 @@ bool vtkHAVSFragmentListKBuffer::Resolve(vtkHAVSGLPassContext& context)
   glBindImageTexture(0, this->Heads, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->Nodes);
   vtkShaderProgram* program = context.QuadProgram(
-    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists,
+    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSFrameRequest::PathFragmentLists,
       context.Request.K, vote, context.ShaderFeatures()));
   if (program)
   {

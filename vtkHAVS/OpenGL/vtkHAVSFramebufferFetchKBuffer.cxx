@@ -41,7 +41,7 @@ bool vtkHAVSFramebufferFetchKBuffer::IsSupported(vtkOpenGLRenderWindow*)
 
 int vtkHAVSFramebufferFetchKBuffer::GetPath() const
 {
-  return vtkHAVSVolumeMapper::KBufferPathFramebufferFetch;
+  return vtkHAVSFrameRequest::PathFramebufferFetch;
 }
 
 int vtkHAVSFramebufferFetchKBuffer::GetMaximumK() const
@@ -115,7 +115,7 @@ bool vtkHAVSFramebufferFetchKBuffer::Resolve(vtkHAVSGLPassContext& context)
     t->Activate();
   }
   vtkShaderProgram* program = context.QuadProgram(
-    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFramebufferFetch,
+    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSFrameRequest::PathFramebufferFetch,
       context.Request.K, false, context.ShaderFeatures()));
   if (program)
   {

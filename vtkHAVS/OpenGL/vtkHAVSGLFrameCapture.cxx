@@ -127,10 +127,10 @@ bool vtkHAVSGLFrameCapture::Write(
   const std::string& directory, vtkHAVSGLPassContext& context, vtkIdType cells, std::string& error)
 {
   using Shaders = vtkHAVSKBufferShaders;
-  const vtkHAVSVolumeMapper::FrameRequest& request = context.Request;
-  const bool fetch = request.Path == vtkHAVSVolumeMapper::KBufferPathFramebufferFetch;
-  const bool interlock = request.Path == vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock;
-  if ((!fetch && !interlock) || request.BlendMode != vtkHAVSVolumeMapper::COMPOSITE_BLEND ||
+  const vtkHAVSFrameRequest& request = context.Request;
+  const bool fetch = request.Path == vtkHAVSFrameRequest::PathFramebufferFetch;
+  const bool interlock = request.Path == vtkHAVSFrameRequest::PathFragmentShaderInterlock;
+  if ((!fetch && !interlock) || request.BlendMode != vtkHAVSFrameRequest::CompositeBlend ||
     request.RasterBoundOnly)
   {
     error = "only composite frames of the framebuffer-fetch or interlock path are captured";
@@ -193,8 +193,8 @@ bool vtkHAVSGLFrameCapture::Write(
        << "\ninterlock_stride " << Shaders::InterlockPixelStride(k) << "\n"
        << uniforms;
 
-  const int fetchPath = vtkHAVSVolumeMapper::KBufferPathFramebufferFetch;
-  const int interlockPath = vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock;
+  const int fetchPath = vtkHAVSFrameRequest::PathFramebufferFetch;
+  const int interlockPath = vtkHAVSFrameRequest::PathFragmentShaderInterlock;
   bool ok = WriteText(dir + "case.txt", text.str()) && WriteBinary(dir + "points.f32", points) &&
     WriteBinary(dir + "scalars.f32", scalars) && WriteBinary(dir + "indices.u32", indices) &&
     WriteBinary(dir + "table.f32", table) && WriteBinary(dir + "result.f32", result) &&

@@ -26,7 +26,7 @@
 //------------------------------------------------------------------------------
 vtkHAVSGLPassContext::vtkHAVSGLPassContext(vtkOpenGLRenderWindow* window, vtkHAVSGLMesh* mesh,
   vtkHAVSGLTable* table, vtkHAVSGLFrameTargets* targets,
-  const vtkHAVSVolumeMapper::FrameRequest& request)
+  const vtkHAVSFrameRequest& request)
   : Window(window)
   , Mesh(mesh)
   , Table(table)
@@ -93,7 +93,7 @@ vtkShaderProgram* vtkHAVSGLPassContext::QuadProgram(const std::string& fragmentS
 //------------------------------------------------------------------------------
 void vtkHAVSGLPassContext::SetCommonUniforms(vtkShaderProgram* program)
 {
-  const vtkHAVSVolumeMapper::FrameRequest& r = this->Request;
+  const vtkHAVSFrameRequest& r = this->Request;
   this->Table->SetUniforms(program);
   program->SetUniformf("havsTerminationOpacity", r.TerminationOpacity);
   program->SetUniformi("havsOpaqueDepth", this->Targets->GetOpaqueDepth()->GetTextureUnit());
@@ -106,7 +106,7 @@ void vtkHAVSGLPassContext::SetCommonUniforms(vtkShaderProgram* program)
   program->SetUniformMatrix4x4("havsMCRC", this->ModelToEyeRelative);
   program->SetUniformMatrix4x4("havsMCDC", this->ModelToClip);
   program->SetUniformi(
-    "havsMinimum", r.BlendMode == vtkHAVSVolumeMapper::MINIMUM_INTENSITY_BLEND ? 1 : 0);
+    "havsMinimum", r.BlendMode == vtkHAVSFrameRequest::MinimumIntensityBlend ? 1 : 0);
   program->SetUniformf("havsGapLength", r.GapLength);
   program->SetUniformi("havsRole", 0);
   program->SetUniformi("havsOwnPlane", -1);

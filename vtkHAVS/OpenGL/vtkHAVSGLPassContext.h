@@ -22,7 +22,7 @@
 #define vtkHAVSGLPassContext_h
 
 #include "vtkHAVSKBufferShaders.h" // For Features
-#include "vtkHAVSVolumeMapper.h"   // For FrameRequest
+#include "vtkHAVSFrameRequest.h"   // For FrameRequest
 #include "vtkOpenGLState.h"        // For the scoped state savers
 
 #include <string> // For std::string
@@ -37,13 +37,13 @@ class vtkHAVSGLPassContext
 {
 public:
   vtkHAVSGLPassContext(vtkOpenGLRenderWindow* window, vtkHAVSGLMesh* mesh, vtkHAVSGLTable* table,
-    vtkHAVSGLFrameTargets* targets, const vtkHAVSVolumeMapper::FrameRequest& request);
+    vtkHAVSGLFrameTargets* targets, const vtkHAVSFrameRequest& request);
 
   vtkOpenGLRenderWindow* Window;
   vtkHAVSGLMesh* Mesh;
   vtkHAVSGLTable* Table;
   vtkHAVSGLFrameTargets* Targets;
-  const vtkHAVSVolumeMapper::FrameRequest& Request;
+  const vtkHAVSFrameRequest& Request;
 
   int Width() const;
   int Height() const;

@@ -31,7 +31,7 @@ bool vtkHAVSInterlockKBuffer::IsSupported(vtkOpenGLRenderWindow*)
 
 int vtkHAVSInterlockKBuffer::GetPath() const
 {
-  return vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock;
+  return vtkHAVSFrameRequest::PathFragmentShaderInterlock;
 }
 
 int vtkHAVSInterlockKBuffer::GetMaximumK() const
@@ -96,7 +96,7 @@ bool vtkHAVSInterlockKBuffer::Resolve(vtkHAVSGLPassContext& context)
 {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->PixelEntries);
   vtkShaderProgram* program = context.QuadProgram(
-    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock,
+    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSFrameRequest::PathFragmentShaderInterlock,
       context.Request.K, false, context.ShaderFeatures()));
   if (program)
   {

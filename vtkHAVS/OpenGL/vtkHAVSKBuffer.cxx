@@ -11,13 +11,13 @@
 
 #include "vtkHAVSGLPassContext.h"
 #include "vtkHAVSKBufferShaders.h"
-#include "vtkHAVSVolumeMapper.h"
+#include "vtkHAVSFrameRequest.h"
 
 //------------------------------------------------------------------------------
 void vtkHAVSKBuffer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Path: " << vtkHAVSVolumeMapper::GetKBufferPathName(this->GetPath())
+  os << indent << "Path: " << vtkHAVSFrameRequest::GetPathName(this->GetPath())
      << " (k <= " << this->GetMaximumK() << ")\n";
 }
 
@@ -25,7 +25,7 @@ void vtkHAVSKBuffer::PrintSelf(ostream& os, vtkIndent indent)
 void vtkHAVSKBuffer::DrawFaces(
   vtkHAVSGLPassContext& context, vtkShaderProgram* program, bool storageBuffer)
 {
-  const vtkHAVSVolumeMapper::FrameRequest& r = context.Request;
+  const vtkHAVSFrameRequest& r = context.Request;
   const std::string mark = r.SkipSaturated
     ? vtkHAVSKBufferShaders::SaturationMarkShader(this->GetPath(), r.K)
     : std::string();

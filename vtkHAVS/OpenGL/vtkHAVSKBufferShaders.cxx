@@ -9,7 +9,7 @@
 =========================================================================*/
 #include "vtkHAVSKBufferShaders.h"
 
-#include "vtkHAVSVolumeMapper.h"
+#include "vtkHAVSFrameRequest.h"
 
 #include "vtkHAVSAdditiveLib.h"
 #include "vtkHAVSCellOptics.h"
@@ -140,14 +140,14 @@ std::string vtkHAVSKBufferShaders::SaturationMarkShader(int path, int k)
 {
   std::string extension, declarations, load;
   int stride = 1;
-  if (path == vtkHAVSVolumeMapper::KBufferPathFramebufferFetch)
+  if (path == vtkHAVSFrameRequest::PathFramebufferFetch)
   {
     extension = "#extension GL_EXT_shader_framebuffer_fetch : require";
     declarations = "layout(location = 0) inout vec4 havsColor;\n"
                    "layout(location = 1) inout vec4 havsEntries0;";
     load = "color = havsColor;\n  front = havsEntries0.xy;";
   }
-  else if (path == vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock)
+  else if (path == vtkHAVSFrameRequest::PathFragmentShaderInterlock)
   {
     stride = InterlockPixelStride(k);
     declarations = "layout(std430, binding = 0) buffer HAVSPixelEntries\n{\n"
@@ -185,7 +185,7 @@ std::string vtkHAVSKBufferShaders::ResolveShader(
   int stride = 1;
   switch (path)
   {
-    case vtkHAVSVolumeMapper::KBufferPathFramebufferFetch:
+    case vtkHAVSFrameRequest::PathFramebufferFetch:
     {
       std::ostringstream d, l;
       d << "uniform sampler2D havsColorTexture;\n";
@@ -199,7 +199,7 @@ std::string vtkHAVSKBufferShaders::ResolveShader(
       load = l.str() + UnpackEntries("pair", k);
       break;
     }
-    case vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock:
+    case vtkHAVSFrameRequest::PathFragmentShaderInterlock:
       stride = InterlockPixelStride(k);
       declarations =
         "layout(std430, binding = 0) buffer HAVSPixelEntries { vec4 havsPixelData[]; };\n";
@@ -211,7 +211,7 @@ std::string vtkHAVSKBufferShaders::ResolveShader(
              "    E[i] = (i % 2 == 0) ? pair.xy : pair.zw;\n"
              "  }\n";
       break;
-    case vtkHAVSVolumeMapper::KBufferPathFragmentLists:
+    case vtkHAVSFrameRequest::PathFragmentLists:
     {
       // A pixel's list comes out in reverse draw order: it runs back to front
       // through a k-buffer of ListResolveCapacity entries. Where group vote
