@@ -17,7 +17,7 @@
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
 
-#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSVolumeMapper.h"
 
 #include <cstdlib>
@@ -57,48 +57,48 @@ int TestHAVSShaderSources(int, char*[])
     havstest::Check(Validate(source, name, stage), name + " compiles");
     ++checked;
   };
-  check(vtkHAVSKBufferShaders::FaceVertexShader(), "face", "vert");
-  check(vtkHAVSKBufferShaders::QuadVertexShader(), "quad", "vert");
-  check(vtkHAVSKBufferShaders::ListDrawShader(), "list_draw", "frag");
-  check(vtkHAVSKBufferShaders::ExtremumDrawShader(), "extremum_draw", "frag");
-  check(vtkHAVSKBufferShaders::ExtremumResolveShader(), "extremum_resolve", "frag");
-  check(vtkHAVSKBufferShaders::CompositeShader(), "composite", "frag");
-  check(vtkHAVSKBufferShaders::CellProjectionVertexShader(), "cell_projection", "vert");
-  check(vtkHAVSKBufferShaders::CellProjectionShader(false), "cell_projection", "frag");
-  check(vtkHAVSKBufferShaders::CellProjectionShader(true), "cell_projection_opaque", "frag");
-  check(vtkHAVSKBufferShaders::RayCastPeelShader(), "ray_cast_peel", "frag");
-  check(vtkHAVSKBufferShaders::RayCastShader(false), "ray_cast", "frag");
-  check(vtkHAVSKBufferShaders::RayCastShader(true), "ray_cast_opaque", "frag");
+  check(vtkHAVSShaders::FaceVertexShader(), "face", "vert");
+  check(vtkHAVSShaders::QuadVertexShader(), "quad", "vert");
+  check(vtkHAVSShaders::ListDrawShader(), "list_draw", "frag");
+  check(vtkHAVSShaders::ExtremumDrawShader(), "extremum_draw", "frag");
+  check(vtkHAVSShaders::ExtremumResolveShader(), "extremum_resolve", "frag");
+  check(vtkHAVSShaders::CompositeShader(), "composite", "frag");
+  check(vtkHAVSShaders::CellProjectionVertexShader(), "cell_projection", "vert");
+  check(vtkHAVSShaders::CellProjectionShader(false), "cell_projection", "frag");
+  check(vtkHAVSShaders::CellProjectionShader(true), "cell_projection_opaque", "frag");
+  check(vtkHAVSShaders::RayCastPeelShader(), "ray_cast_peel", "frag");
+  check(vtkHAVSShaders::RayCastShader(false), "ray_cast", "frag");
+  check(vtkHAVSShaders::RayCastShader(true), "ray_cast_opaque", "frag");
   for (int blend : { 1, 2, 4 })
   {
-    check(vtkHAVSKBufferShaders::RayCastShader(true, blend),
+    check(vtkHAVSShaders::RayCastShader(true, blend),
       "ray_cast_blend" + std::to_string(blend), "frag");
   }
-  check(vtkHAVSKBufferShaders::RayCastTileVertexShader(), "ray_cast_tile", "vert");
+  check(vtkHAVSShaders::RayCastTileVertexShader(), "ray_cast_tile", "vert");
   for (int blend : { 1, 2, 4 })
   {
-    check(vtkHAVSKBufferShaders::CellProjectionShader(true, blend),
+    check(vtkHAVSShaders::CellProjectionShader(true, blend),
       "cell_projection_blend" + std::to_string(blend), "frag");
   }
   check(
-    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true),
+    vtkHAVSShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true),
     "list_resolve_vote", "frag");
   check(
-    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, false),
+    vtkHAVSShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, false),
     "list_resolve", "frag");
   for (int k : { 1, 2, 3, 6, 13, 14 })
   {
-    check(vtkHAVSKBufferShaders::ResolveShader(
+    check(vtkHAVSShaders::ResolveShader(
             vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, k, false),
       "fetch_resolve_k" + std::to_string(k), "frag");
   }
   for (int k : { 1, 2, 3, 6, 14, 15, 32, 64 })
   {
     const std::string suffix = "_k" + std::to_string(k);
-    check(vtkHAVSKBufferShaders::InterlockDrawShader(k, vtkHAVSKBufferShaders::InterlockARB),
+    check(vtkHAVSShaders::InterlockDrawShader(k, vtkHAVSShaders::InterlockARB),
       "interlock_draw" + suffix, "frag");
-    check(vtkHAVSKBufferShaders::InterlockClearShader(k), "interlock_clear" + suffix, "frag");
-    check(vtkHAVSKBufferShaders::ResolveShader(
+    check(vtkHAVSShaders::InterlockClearShader(k), "interlock_clear" + suffix, "frag");
+    check(vtkHAVSShaders::ResolveShader(
             vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock, k, false),
       "interlock_resolve" + suffix, "frag");
   }
@@ -108,53 +108,53 @@ int TestHAVSShaderSources(int, char*[])
   // EXT_shader_framebuffer_fetch for desktop GLSL; it shares the library).
   for (int mask = 0; mask < 8; ++mask)
   {
-    vtkHAVSKBufferShaders::Features f;
+    vtkHAVSShaders::Features f;
     f.CountViolations = (mask & 1) != 0;
     f.Tagging = (mask & 2) != 0;
     f.Opaque = (mask & 4) != 0;
     const std::string suffix = "_features" + std::to_string(mask);
-    check(vtkHAVSKBufferShaders::ResolveShader(
+    check(vtkHAVSShaders::ResolveShader(
             vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, 2, false, f),
       "fetch_resolve" + suffix, "frag");
-    check(vtkHAVSKBufferShaders::InterlockDrawShader(6, vtkHAVSKBufferShaders::InterlockARB, f),
+    check(vtkHAVSShaders::InterlockDrawShader(6, vtkHAVSShaders::InterlockARB, f),
       "interlock_draw" + suffix, "frag");
-    check(vtkHAVSKBufferShaders::ListDrawShader(f), "list_draw" + suffix, "frag");
-    check(vtkHAVSKBufferShaders::ResolveShader(
+    check(vtkHAVSShaders::ListDrawShader(f), "list_draw" + suffix, "frag");
+    check(vtkHAVSShaders::ResolveShader(
             vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true, f),
       "list_resolve" + suffix, "frag");
   }
   // Cell scalars (vtkHAVSCellOptics: the segments, the extremum resolve and
   // the additive blend read the cell optics) on every pass that has them.
   {
-    vtkHAVSKBufferShaders::Features f;
+    vtkHAVSShaders::Features f;
     f.CellScalars = true;
-    check(vtkHAVSKBufferShaders::ExtremumResolveShader(true), "extremum_resolve_cells", "frag");
-    check(vtkHAVSKBufferShaders::ExtremumDrawShader(f), "extremum_draw_cells", "frag");
+    check(vtkHAVSShaders::ExtremumResolveShader(true), "extremum_resolve_cells", "frag");
+    check(vtkHAVSShaders::ExtremumDrawShader(f), "extremum_draw_cells", "frag");
     for (int blend : { 0, 1, 2, 4 })
     {
       const std::string suffix = "_cells_blend" + std::to_string(blend);
-      check(vtkHAVSKBufferShaders::CellProjectionShader(true, blend, true),
+      check(vtkHAVSShaders::CellProjectionShader(true, blend, true),
         "cell_projection" + suffix, "frag");
-      check(vtkHAVSKBufferShaders::RayCastShader(true, blend, true), "ray_cast" + suffix, "frag");
+      check(vtkHAVSShaders::RayCastShader(true, blend, true), "ray_cast" + suffix, "frag");
     }
     for (int k : { 2, 6 })
     {
       const std::string suffix = "_cells_k" + std::to_string(k);
-      check(vtkHAVSKBufferShaders::InterlockDrawShader(k, vtkHAVSKBufferShaders::InterlockARB, f),
+      check(vtkHAVSShaders::InterlockDrawShader(k, vtkHAVSShaders::InterlockARB, f),
         "interlock_draw" + suffix, "frag");
-      check(vtkHAVSKBufferShaders::ResolveShader(
+      check(vtkHAVSShaders::ResolveShader(
               vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, k, false, f),
         "fetch_resolve" + suffix, "frag");
     }
-    check(vtkHAVSKBufferShaders::ListDrawShader(f), "list_draw_cells", "frag");
-    check(vtkHAVSKBufferShaders::ResolveShader(
+    check(vtkHAVSShaders::ListDrawShader(f), "list_draw_cells", "frag");
+    check(vtkHAVSShaders::ResolveShader(
             vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true, f),
       "list_resolve_cells", "frag");
   }
   // The features left out are really out of the source (no fetch, no atomic).
-  vtkHAVSKBufferShaders::Features none;
+  vtkHAVSShaders::Features none;
   none.CountViolations = none.Tagging = none.Opaque = false;
-  const std::string lean = vtkHAVSKBufferShaders::FetchDrawShader(2, none);
+  const std::string lean = vtkHAVSShaders::FetchDrawShader(2, none);
   havstest::Check(lean.find("#define HAVS_COUNT_VIOLATIONS 0") != std::string::npos &&
       lean.find("#define HAVS_TAGGING 0") != std::string::npos &&
       lean.find("#define HAVS_OPAQUE 0") != std::string::npos,

@@ -14,7 +14,7 @@
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLPassContext.h"
 #include "vtkHAVSGLTable.h"
-#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSOpenGL.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -34,7 +34,7 @@ bool vtkHAVSExtremumPass::Draw(vtkHAVSGLPassContext& context)
   const float zero[4] = { 0, 0, 0, 0 };
   glClearBufferfv(GL_COLOR, 0, zero);
   vtkShaderProgram* program =
-    context.FaceProgram(vtkHAVSKBufferShaders::ExtremumDrawShader(context.ShaderFeatures()));
+    context.FaceProgram(vtkHAVSShaders::ExtremumDrawShader(context.ShaderFeatures()));
   if (!program)
   {
     return false;
@@ -70,8 +70,8 @@ bool vtkHAVSExtremumPass::ResolveResult(vtkOpenGLRenderWindow* window,
   vtkTextureObject* function = table->GetTransferFunction1D();
   function->Activate();
   vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vtkHAVSKBufferShaders::QuadVertexShader().c_str(),
-      vtkHAVSKBufferShaders::ExtremumResolveShader(table->HasCellOptics()).c_str(), "");
+    window->GetShaderCache()->ReadyShaderProgram(vtkHAVSShaders::QuadVertexShader().c_str(),
+      vtkHAVSShaders::ExtremumResolveShader(table->HasCellOptics()).c_str(), "");
   const bool built = program && program->GetCompiled();
   if (built)
   {

@@ -12,7 +12,7 @@
 #include "vtkHAVSGLCapabilities.h"
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLPassContext.h"
-#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSShaders.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -42,7 +42,7 @@ int vtkHAVSFragmentListKBuffer::GetPath() const
 
 int vtkHAVSFragmentListKBuffer::GetMaximumK() const
 {
-  return vtkHAVSKBufferShaders::ListResolveCapacity;
+  return vtkHAVSShaders::ListResolveCapacity;
 }
 
 //------------------------------------------------------------------------------
@@ -115,7 +115,7 @@ bool vtkHAVSFragmentListKBuffer::Draw(vtkHAVSGLPassContext& context)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, this->Counter);
     glBindImageTexture(0, this->Heads, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     vtkShaderProgram* program =
-      context.FaceProgram(vtkHAVSKBufferShaders::ListDrawShader(context.ShaderFeatures()));
+      context.FaceProgram(vtkHAVSShaders::ListDrawShader(context.ShaderFeatures()));
     ok = program != nullptr;
     if (!ok)
     {
@@ -146,7 +146,7 @@ bool vtkHAVSFragmentListKBuffer::Resolve(vtkHAVSGLPassContext& context)
   glBindImageTexture(0, this->Heads, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->Nodes);
   vtkShaderProgram* program = context.QuadProgram(
-    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSFrameRequest::PathFragmentLists,
+    vtkHAVSShaders::ResolveShader(vtkHAVSFrameRequest::PathFragmentLists,
       context.Request.K, vote, context.ShaderFeatures()));
   if (program)
   {

@@ -12,7 +12,7 @@
 #include "vtkHAVSGLCapabilities.h"
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLPassContext.h"
-#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSOpenGL.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -46,7 +46,7 @@ int vtkHAVSFramebufferFetchKBuffer::GetPath() const
 
 int vtkHAVSFramebufferFetchKBuffer::GetMaximumK() const
 {
-  return vtkHAVSKBufferShaders::MaximumFetchK;
+  return vtkHAVSShaders::MaximumFetchK;
 }
 
 //------------------------------------------------------------------------------
@@ -62,7 +62,7 @@ bool vtkHAVSFramebufferFetchKBuffer::Allocate(vtkHAVSGLPassContext& context)
   this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
   this->Framebuffer->SetContext(context.Window);
   this->Framebuffer->Bind();
-  for (int a = 0; a < vtkHAVSKBufferShaders::FetchAttachments(k); ++a)
+  for (int a = 0; a < vtkHAVSShaders::FetchAttachments(k); ++a)
   {
     auto texture = vtkHAVSGLFrameTargets::NewFloatTexture(context.Window, w, h);
     this->Framebuffer->AddColorAttachment(a, texture);
@@ -99,7 +99,7 @@ bool vtkHAVSFramebufferFetchKBuffer::Clear(vtkHAVSGLPassContext& context)
 bool vtkHAVSFramebufferFetchKBuffer::Draw(vtkHAVSGLPassContext& context)
 {
   vtkShaderProgram* program = context.FaceProgram(
-    vtkHAVSKBufferShaders::FetchDrawShader(context.Request.K, context.ShaderFeatures()));
+    vtkHAVSShaders::FetchDrawShader(context.Request.K, context.ShaderFeatures()));
   if (program)
   {
     this->DrawFaces(context, program, false);
@@ -115,7 +115,7 @@ bool vtkHAVSFramebufferFetchKBuffer::Resolve(vtkHAVSGLPassContext& context)
     t->Activate();
   }
   vtkShaderProgram* program = context.QuadProgram(
-    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSFrameRequest::PathFramebufferFetch,
+    vtkHAVSShaders::ResolveShader(vtkHAVSFrameRequest::PathFramebufferFetch,
       context.Request.K, false, context.ShaderFeatures()));
   if (program)
   {

@@ -48,16 +48,16 @@ bool InterlockEmulated()
     std::strstr(renderer, "llvmpipe") != nullptr;
 }
 
-vtkHAVSKBufferShaders::InterlockKind AvailableInterlock()
+vtkHAVSShaders::InterlockKind AvailableInterlock()
 {
   if (HasExtension("GL_ARB_fragment_shader_interlock"))
   {
-    return vtkHAVSKBufferShaders::InterlockARB;
+    return vtkHAVSShaders::InterlockARB;
   }
   if (HasExtension("GL_NV_fragment_shader_interlock"))
   {
-    return vtkHAVSKBufferShaders::InterlockNV;
+    return vtkHAVSShaders::InterlockNV;
   }
-  return vtkHAVSKBufferShaders::InterlockNone;
+  return vtkHAVSShaders::InterlockNone;
 }
 }

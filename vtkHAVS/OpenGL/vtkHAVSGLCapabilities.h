@@ -22,7 +22,7 @@
 #ifndef vtkHAVSGLCapabilities_h
 #define vtkHAVSGLCapabilities_h
 
-#include "vtkHAVSKBufferShaders.h" // For InterlockKind
+#include "vtkHAVSShaders.h" // For InterlockKind
 
 namespace vtkHAVSGLCapabilities
 {
@@ -33,7 +33,7 @@ bool HasVersion(int major, int minor);
 /// Whether HAVS_EMULATE_INTERLOCK=1 asks for the emulated interlock and this is llvmpipe.
 bool InterlockEmulated();
 /// The interlock the context has (ARB, NV), else InterlockNone.
-vtkHAVSKBufferShaders::InterlockKind AvailableInterlock();
+vtkHAVSShaders::InterlockKind AvailableInterlock();
 }
 
 #endif

@@ -14,7 +14,7 @@
 #include "vtkHAVSGLMesh.h"
 #include "vtkHAVSGLPassContext.h"
 #include "vtkHAVSGLTable.h"
-#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSOpenGL.h"
 #include "vtkHAVSViewFrame.h"
 #include "vtkShaderProgram.h"
@@ -126,7 +126,7 @@ std::string UniformLines(GLuint program)
 bool vtkHAVSGLFrameCapture::Write(
   const std::string& directory, vtkHAVSGLPassContext& context, vtkIdType cells, std::string& error)
 {
-  using Shaders = vtkHAVSKBufferShaders;
+  using Shaders = vtkHAVSShaders;
   const vtkHAVSFrameRequest& request = context.Request;
   const bool fetch = request.Path == vtkHAVSFrameRequest::PathFramebufferFetch;
   const bool interlock = request.Path == vtkHAVSFrameRequest::PathFragmentShaderInterlock;

@@ -9,7 +9,7 @@
 =========================================================================*/
 #include "vtkHAVSGLFrameTargets.h"
 
-#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSMapperInputs.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -264,8 +264,8 @@ bool vtkHAVSGLFrameTargets::Composite(int originX, int originY)
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   vtkShaderProgram* program = this->Window->GetShaderCache()->ReadyShaderProgram(
-    vtkHAVSKBufferShaders::QuadVertexShader().c_str(),
-    vtkHAVSKBufferShaders::CompositeShader().c_str(), "");
+    vtkHAVSShaders::QuadVertexShader().c_str(),
+    vtkHAVSShaders::CompositeShader().c_str(), "");
   if (!program || !program->GetCompiled())
   {
     return false;

@@ -13,7 +13,7 @@
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLMesh.h"
 #include "vtkHAVSGLTable.h"
-#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSOpenGL.h"
 #include "vtkHAVSViewFrame.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -53,9 +53,9 @@ int vtkHAVSGLPassContext::Height() const
   return this->Targets->GetSize()[1];
 }
 
-vtkHAVSKBufferShaders::Features vtkHAVSGLPassContext::ShaderFeatures() const
+vtkHAVSShaders::Features vtkHAVSGLPassContext::ShaderFeatures() const
 {
-  vtkHAVSKBufferShaders::Features f;
+  vtkHAVSShaders::Features f;
   f.CountViolations = this->Request.CountViolations;
   f.Tagging = this->Request.Tagging;
   f.Opaque = this->Request.Opaque;
@@ -82,12 +82,12 @@ vtkShaderProgram* vtkHAVSGLPassContext::Program(
 vtkShaderProgram* vtkHAVSGLPassContext::FaceProgram(const std::string& fragmentShader)
 {
   return this->Program(
-    vtkHAVSKBufferShaders::FaceVertexShader(this->Request.CellScalars), fragmentShader);
+    vtkHAVSShaders::FaceVertexShader(this->Request.CellScalars), fragmentShader);
 }
 
 vtkShaderProgram* vtkHAVSGLPassContext::QuadProgram(const std::string& fragmentShader)
 {
-  return this->Program(vtkHAVSKBufferShaders::QuadVertexShader(), fragmentShader);
+  return this->Program(vtkHAVSShaders::QuadVertexShader(), fragmentShader);
 }
 
 //------------------------------------------------------------------------------

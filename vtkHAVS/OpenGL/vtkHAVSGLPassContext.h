@@ -21,7 +21,7 @@
 #ifndef vtkHAVSGLPassContext_h
 #define vtkHAVSGLPassContext_h
 
-#include "vtkHAVSKBufferShaders.h" // For Features
+#include "vtkHAVSShaders.h" // For Features
 #include "vtkHAVSFrameRequest.h"   // For FrameRequest
 #include "vtkOpenGLState.h"        // For the scoped state savers
 
@@ -49,7 +49,7 @@ public:
   int Height() const;
 
   /// What the frame's k-buffer shaders compile in (counter, tagging, opaque cut).
-  vtkHAVSKBufferShaders::Features ShaderFeatures() const;
+  vtkHAVSShaders::Features ShaderFeatures() const;
 
   /// The face vertex shader with `fragmentShader`, common uniforms set; nullptr on failure.
   vtkShaderProgram* FaceProgram(const std::string& fragmentShader);

@@ -12,7 +12,7 @@
 #include "vtkHAVSGLCapabilities.h"
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLPassContext.h"
-#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSShaders.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -36,14 +36,14 @@ int vtkHAVSInterlockKBuffer::GetPath() const
 
 int vtkHAVSInterlockKBuffer::GetMaximumK() const
 {
-  return vtkHAVSKBufferShaders::MaximumInterlockK;
+  return vtkHAVSShaders::MaximumInterlockK;
 }
 
 //------------------------------------------------------------------------------
 bool vtkHAVSInterlockKBuffer::Allocate(vtkHAVSGLPassContext& context)
 {
   const size_t bytes = static_cast<size_t>(context.Width()) * context.Height() *
-    vtkHAVSKBufferShaders::InterlockPixelStride(context.Request.K) * 4 * sizeof(float);
+    vtkHAVSShaders::InterlockPixelStride(context.Request.K) * 4 * sizeof(float);
   if (!this->PixelEntries || this->PixelEntriesBytes != bytes)
   {
     if (!this->PixelEntries)
@@ -64,7 +64,7 @@ bool vtkHAVSInterlockKBuffer::Clear(vtkHAVSGLPassContext& context)
   context.Targets->BindResult();
   context.Window->GetState()->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   vtkShaderProgram* clear =
-    context.QuadProgram(vtkHAVSKBufferShaders::InterlockClearShader(context.Request.K));
+    context.QuadProgram(vtkHAVSShaders::InterlockClearShader(context.Request.K));
   if (clear)
   {
     context.DrawFullViewport();
@@ -80,7 +80,7 @@ bool vtkHAVSInterlockKBuffer::Clear(vtkHAVSGLPassContext& context)
 //------------------------------------------------------------------------------
 bool vtkHAVSInterlockKBuffer::Draw(vtkHAVSGLPassContext& context)
 {
-  vtkShaderProgram* program = context.FaceProgram(vtkHAVSKBufferShaders::InterlockDrawShader(
+  vtkShaderProgram* program = context.FaceProgram(vtkHAVSShaders::InterlockDrawShader(
     context.Request.K, vtkHAVSGLCapabilities::AvailableInterlock(), context.ShaderFeatures()));
   if (program)
   {
@@ -96,7 +96,7 @@ bool vtkHAVSInterlockKBuffer::Resolve(vtkHAVSGLPassContext& context)
 {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->PixelEntries);
   vtkShaderProgram* program = context.QuadProgram(
-    vtkHAVSKBufferShaders::ResolveShader(vtkHAVSFrameRequest::PathFragmentShaderInterlock,
+    vtkHAVSShaders::ResolveShader(vtkHAVSFrameRequest::PathFragmentShaderInterlock,
       context.Request.K, false, context.ShaderFeatures()));
   if (program)
   {

@@ -10,7 +10,7 @@
 #include "vtkHAVSKBuffer.h"
 
 #include "vtkHAVSGLPassContext.h"
-#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSFrameRequest.h"
 
 //------------------------------------------------------------------------------
@@ -27,7 +27,7 @@ void vtkHAVSKBuffer::DrawFaces(
 {
   const vtkHAVSFrameRequest& r = context.Request;
   const std::string mark = r.SkipSaturated
-    ? vtkHAVSKBufferShaders::SaturationMarkShader(this->GetPath(), r.K)
+    ? vtkHAVSShaders::SaturationMarkShader(this->GetPath(), r.K)
     : std::string();
   // Measured only where the frame waits for the GPU anyway.
   const bool measure = r.MeasureStages || r.KeepResult || r.CountViolations;

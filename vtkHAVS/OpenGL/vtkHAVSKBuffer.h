@@ -71,7 +71,7 @@ protected:
 
   /**
    * The faces through `program`, skipping saturated pixels when the frame
-   * asks for it (markShader: the path's vtkHAVSKBufferShaders::
+   * asks for it (markShader: the path's vtkHAVSShaders::
    * SaturationMarkShader) and measuring what vtkHAVSGLSaturationMask measures
    * when the frame waits for the GPU anyway. Call Saturation.Attach() with
    * the draw framebuffer bound before.

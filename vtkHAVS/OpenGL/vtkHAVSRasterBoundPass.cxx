@@ -11,7 +11,7 @@
 
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLPassContext.h"
-#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSOpenGL.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -26,7 +26,7 @@ bool vtkHAVSRasterBoundPass::Draw(vtkHAVSGLPassContext& context)
   context.Targets->BindResult();
   const float zero[4] = { 0, 0, 0, 0 };
   glClearBufferfv(GL_COLOR, 0, zero);
-  vtkShaderProgram* program = context.FaceProgram(vtkHAVSKBufferShaders::TrivialShader());
+  vtkShaderProgram* program = context.FaceProgram(vtkHAVSShaders::TrivialShader());
   if (!program)
   {
     return false;

@@ -16,7 +16,7 @@
 #include "vtkHAVSGLObjects.h"
 #include "vtkHAVSGLPassContext.h"
 #include "vtkHAVSGLTable.h"
-#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSOpenGL.h"
 #include "vtkHAVSViewFrame.h"
@@ -212,8 +212,8 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
 
   // 2. The program, its textures and uniforms.
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
-    vtkHAVSKBufferShaders::CellProjectionVertexShader().c_str(),
-    vtkHAVSKBufferShaders::CellProjectionShader(opaque, frame.Blend, glTable->HasCellOptics())
+    vtkHAVSShaders::CellProjectionVertexShader().c_str(),
+    vtkHAVSShaders::CellProjectionShader(opaque, frame.Blend, glTable->HasCellOptics())
       .c_str(),
     "");
   if (!program || !program->GetCompiled())

@@ -18,7 +18,7 @@
  * blending of premultiplied segments into the float result
  * (vtkHAVSGLFrameTargets, which also captures the opaque depth and
  * composites the result over VTK's framebuffer). The table is vtkHAVSGLTable,
- * the shaders vtkHAVSKBufferShaders::CellProjection*Shader. Needs OpenGL 4.3.
+ * the shaders vtkHAVSShaders::CellProjection*Shader. Needs OpenGL 4.3.
  */
 #ifndef vtkOpenGLHAVSCellProjectionMapper_h
 #define vtkOpenGLHAVSCellProjectionMapper_h

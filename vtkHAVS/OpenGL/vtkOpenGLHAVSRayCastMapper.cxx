@@ -16,7 +16,7 @@
 #include "vtkHAVSGLObjects.h"
 #include "vtkHAVSGLPassContext.h"
 #include "vtkHAVSGLTable.h"
-#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSOpenGL.h"
 #include "vtkHAVSRayCastMesh.h"
@@ -164,11 +164,11 @@ bool vtkOpenGLHAVSRayCastMapper::MakePrograms(
   vtkOpenGLRenderWindow* window, const RayFrame& frame, Programs& programs)
 {
   vtkOpenGLShaderCache* cache = window->GetShaderCache();
-  programs.Peel = cache->ReadyShaderProgram(vtkHAVSKBufferShaders::CellProjectionVertexShader().c_str(),
-    vtkHAVSKBufferShaders::RayCastPeelShader().c_str(), "");
+  programs.Peel = cache->ReadyShaderProgram(vtkHAVSShaders::CellProjectionVertexShader().c_str(),
+    vtkHAVSShaders::RayCastPeelShader().c_str(), "");
   programs.Cast = programs.Peel && programs.Peel->GetCompiled()
-    ? cache->ReadyShaderProgram(vtkHAVSKBufferShaders::RayCastTileVertexShader().c_str(),
-        vtkHAVSKBufferShaders::RayCastShader(
+    ? cache->ReadyShaderProgram(vtkHAVSShaders::RayCastTileVertexShader().c_str(),
+        vtkHAVSShaders::RayCastShader(
           frame.Opaque, frame.Blend, this->Resources->GetTable()->HasCellOptics())
           .c_str(),
         "")
@@ -177,8 +177,8 @@ bool vtkOpenGLHAVSRayCastMapper::MakePrograms(
   // shader with the trivial fragment shader (the peel's framebuffer has no
   // colour attachment: only the stencil is written).
   programs.Mask = programs.Cast && programs.Cast->GetCompiled()
-    ? cache->ReadyShaderProgram(vtkHAVSKBufferShaders::RayCastTileVertexShader().c_str(),
-        vtkHAVSKBufferShaders::TrivialShader().c_str(), "")
+    ? cache->ReadyShaderProgram(vtkHAVSShaders::RayCastTileVertexShader().c_str(),
+        vtkHAVSShaders::TrivialShader().c_str(), "")
     : nullptr;
   if (!programs.Cast || !programs.Cast->GetCompiled() || !programs.Mask ||
     !programs.Mask->GetCompiled())

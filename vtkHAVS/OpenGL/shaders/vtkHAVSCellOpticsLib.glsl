@@ -3,7 +3,7 @@
 // k-buffer library and the extremum resolve (inserted at the CellOpticsLib
 // marker). A cell's scalar is its code, index * 2^-HAVS_CELL_CODE_BITS (exact
 // in a float, with the k-buffer's tags + 2, + 4 too; HAVS_CELL_CODE_BITS is
-// vtkHAVSCellOptics::CodeBits, defined by vtkHAVSKBufferShaders), the index of
+// vtkHAVSCellOptics::CodeBits, defined by vtkHAVSShaders), the index of
 // the cell's value among the mesh's distinct cell values; havsCellOptics
 // holds the transfer function at each value: (r, g, b, tau), (s, opacity,
 // tau s, 0).

@@ -36,7 +36,7 @@
 // goes on inside, and a ray leaving through an edge shared by an internal and
 // a boundary face ends outside.
 
-// Features compiled in or out per frame (vtkHAVSKBufferShaders::Features):
+// Features compiled in or out per frame (vtkHAVSShaders::Features):
 // HAVS_COUNT_VIOLATIONS the order-violation counter and its tie tolerance;
 // HAVS_TAGGING the boundary role of a boundary face's fragment (its facing); HAVS_OPAQUE the opaque surface that ends the rays (a per-fragment
 // depth fetch); HAVS_CLIPPING the clipping and near planes (a loop over

@@ -1,13 +1,13 @@
 /*=========================================================================
 
   Project:   vtkHAVS
-  Module:    vtkHAVSKBufferShaders.cxx
+  Module:    vtkHAVSShaders.cxx
 
   Copyright (c) 2026 the vtkHAVS developers
   SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 
 =========================================================================*/
-#include "vtkHAVSKBufferShaders.h"
+#include "vtkHAVSShaders.h"
 
 #include "vtkHAVSFrameRequest.h"
 
@@ -33,17 +33,16 @@
 #include "vtkHAVSSaturationMarkFS.h"
 #include "vtkHAVSTrivialFS.h"
 
+#include "vtkShaderProgram.h"
+
 #include <sstream>
 
 namespace
 {
+/// The `//HAVS::` tag in `text` replaced by `with` (VTK's substitution of shader tags).
 void Replace(std::string& text, const std::string& marker, const std::string& with)
 {
-  const size_t at = text.find(marker);
-  if (at != std::string::npos)
-  {
-    text.replace(at, marker.size(), with);
-  }
+  vtkShaderProgram::Substitute(text, marker, with, true);
 }
 
 /// The cell-optics library (vtkHAVSCellOpticsLib.glsl) with its code width.
@@ -55,7 +54,7 @@ std::string CellOpticsLib()
 
 /// A fragment-shader template with the defines and the k-buffer library in.
 std::string Compose(const char* templ, int k, int pixelStride,
-  const vtkHAVSKBufferShaders::Features& features = vtkHAVSKBufferShaders::Features())
+  const vtkHAVSShaders::Features& features = vtkHAVSShaders::Features())
 {
   std::string source = templ;
   std::ostringstream defines;
@@ -84,7 +83,7 @@ std::string UnpackEntries(const std::string& pairPrefix, int k)
 }
 }
 
-std::string vtkHAVSKBufferShaders::FaceVertexShader(bool cellScalars)
+std::string vtkHAVSShaders::FaceVertexShader(bool cellScalars)
 {
   std::string source = vtkHAVSFaceVS;
   Replace(source, "//HAVS::Defines",
@@ -92,12 +91,12 @@ std::string vtkHAVSKBufferShaders::FaceVertexShader(bool cellScalars)
   return source;
 }
 
-std::string vtkHAVSKBufferShaders::QuadVertexShader()
+std::string vtkHAVSShaders::QuadVertexShader()
 {
   return vtkHAVSQuadVS;
 }
 
-std::string vtkHAVSKBufferShaders::FetchDrawShader(int k, const Features& features)
+std::string vtkHAVSShaders::FetchDrawShader(int k, const Features& features)
 {
   const int pairs = FetchAttachments(k) - 1;
   std::ostringstream declarations, store;
@@ -117,7 +116,7 @@ std::string vtkHAVSKBufferShaders::FetchDrawShader(int k, const Features& featur
   return source;
 }
 
-std::string vtkHAVSKBufferShaders::InterlockDrawShader(
+std::string vtkHAVSShaders::InterlockDrawShader(
   int k, InterlockKind kind, const Features& features)
 {
   static const char* const extension[] = { "#extension GL_ARB_fragment_shader_interlock : require",
@@ -136,7 +135,7 @@ std::string vtkHAVSKBufferShaders::InterlockDrawShader(
   return source;
 }
 
-std::string vtkHAVSKBufferShaders::SaturationMarkShader(int path, int k)
+std::string vtkHAVSShaders::SaturationMarkShader(int path, int k)
 {
   std::string extension, declarations, load;
   int stride = 1;
@@ -167,17 +166,17 @@ std::string vtkHAVSKBufferShaders::SaturationMarkShader(int path, int k)
   return source;
 }
 
-std::string vtkHAVSKBufferShaders::InterlockClearShader(int k)
+std::string vtkHAVSShaders::InterlockClearShader(int k)
 {
   return Compose(vtkHAVSClearFS, k, InterlockPixelStride(k));
 }
 
-std::string vtkHAVSKBufferShaders::ListDrawShader(const Features& features)
+std::string vtkHAVSShaders::ListDrawShader(const Features& features)
 {
   return Compose(vtkHAVSListDrawFS, 1, 1, features);
 }
 
-std::string vtkHAVSKBufferShaders::ResolveShader(
+std::string vtkHAVSShaders::ResolveShader(
   int path, int k, bool groupVote, const Features& features)
 {
   std::string extension, declarations, load;
@@ -257,12 +256,12 @@ std::string vtkHAVSKBufferShaders::ResolveShader(
   return Compose(source.c_str(), resolveK, stride, features);
 }
 
-std::string vtkHAVSKBufferShaders::ExtremumDrawShader(const Features& features)
+std::string vtkHAVSShaders::ExtremumDrawShader(const Features& features)
 {
   return Compose(vtkHAVSExtremumDrawFS, 1, 1, features);
 }
 
-std::string vtkHAVSKBufferShaders::ExtremumResolveShader(bool cellScalars)
+std::string vtkHAVSShaders::ExtremumResolveShader(bool cellScalars)
 {
   std::string source = vtkHAVSExtremumResolveFS;
   Replace(source, "//HAVS::Defines",
@@ -271,22 +270,22 @@ std::string vtkHAVSKBufferShaders::ExtremumResolveShader(bool cellScalars)
   return source;
 }
 
-std::string vtkHAVSKBufferShaders::TrivialShader()
+std::string vtkHAVSShaders::TrivialShader()
 {
   return vtkHAVSTrivialFS;
 }
 
-std::string vtkHAVSKBufferShaders::CompositeShader()
+std::string vtkHAVSShaders::CompositeShader()
 {
   return vtkHAVSCompositeFS;
 }
 
-std::string vtkHAVSKBufferShaders::CellProjectionVertexShader()
+std::string vtkHAVSShaders::CellProjectionVertexShader()
 {
   return vtkHAVSCellProjectionVS;
 }
 
-std::string vtkHAVSKBufferShaders::CellProjectionShader(bool opaque, int blend, bool cellScalars)
+std::string vtkHAVSShaders::CellProjectionShader(bool opaque, int blend, bool cellScalars)
 {
   Features features;
   features.CountViolations = false;
@@ -299,7 +298,7 @@ std::string vtkHAVSKBufferShaders::CellProjectionShader(bool opaque, int blend, 
   return source;
 }
 
-std::string vtkHAVSKBufferShaders::RayCastPeelShader()
+std::string vtkHAVSShaders::RayCastPeelShader()
 {
   Features features;
   features.CountViolations = false;
@@ -308,7 +307,7 @@ std::string vtkHAVSKBufferShaders::RayCastPeelShader()
   return Compose(vtkHAVSRayCastPeelFS, 1, 1, features);
 }
 
-std::string vtkHAVSKBufferShaders::RayCastShader(bool opaque, int blend, bool cellScalars)
+std::string vtkHAVSShaders::RayCastShader(bool opaque, int blend, bool cellScalars)
 {
   Features features;
   features.CountViolations = false;
@@ -321,7 +320,7 @@ std::string vtkHAVSKBufferShaders::RayCastShader(bool opaque, int blend, bool ce
   return source;
 }
 
-std::string vtkHAVSKBufferShaders::RayCastTileVertexShader()
+std::string vtkHAVSShaders::RayCastTileVertexShader()
 {
   return vtkHAVSRayCastTileVS;
 }

@@ -1,24 +1,26 @@
 /*=========================================================================
 
   Project:   vtkHAVS
-  Module:    vtkHAVSKBufferShaders.h
+  Module:    vtkHAVSShaders.h
 
   Copyright (c) 2026 the vtkHAVS developers
   SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 
 =========================================================================*/
 /**
- * @class   vtkHAVSKBufferShaders
+ * @class   vtkHAVSShaders
  * @brief   The GLSL sources of every vtkHAVS pass, generated for a k and a path.
  *
  * The templates are the `.glsl` files of vtkHAVS/shaders, embedded at build
- * time; `//HAVS::` markers in them are replaced here: the defines (HAVS_K,
- * the per-pixel stride), the shared k-buffer library, the per-path
- * declarations and loads. No OpenGL: the sources can be generated and checked
+ * time; `//HAVS::` tags in them are substituted here, as VTK's own mappers
+ * compose their shaders (vtkShaderProgram::Substitute on named tags): the
+ * defines (HAVS_K, the per-pixel stride), the shared k-buffer library, the
+ * per-path declarations and loads. All three mappers' programs are made here:
+ * HAVS's k-buffer passes, the cell projection's and the ray caster's. No OpenGL: the sources can be generated and checked
  * (e.g. by glslangValidator) on a machine without the matching GPU.
  */
-#ifndef vtkHAVSKBufferShaders_h
-#define vtkHAVSKBufferShaders_h
+#ifndef vtkHAVSShaders_h
+#define vtkHAVSShaders_h
 
 #include "vtkHAVSOpenGLModule.h" // For export macro
 
@@ -39,7 +41,7 @@ struct vtkHAVSKBufferShaderFeatures
   int Projection = -1;         ///< 0 perspective, 1 parallel, -1 per frame (a uniform)
 };
 
-class VTKHAVSOPENGL_EXPORT vtkHAVSKBufferShaders
+class VTKHAVSOPENGL_EXPORT vtkHAVSShaders
 {
 public:
   ///@{
