@@ -1,7 +1,8 @@
 // havs_demo: what HAVS is for, on a real CFD grid. By default it renders the
 // NASA blunt fin (PLOT3D bluntfinxyz.bin + bluntfinq.bin, Density, 187,395
-// tetrahedra) with vtkHAVSVolumeMapper at its exact order (MPVO with the
-// boundary layers across the mesh's gaps, k = 2) and with VTK's
+// tetrahedra) with the project's three mappers -- vtkHAVSVolumeMapper at its
+// exact order (MPVO with the boundary layers across the mesh's gaps, k = 2),
+// vtkHAVSRayCastMapper and vtkHAVSCellProjectionMapper -- and with VTK's
 // vtkProjectedTetrahedraMapper, vtkUnstructuredGridVolumeZSweepMapper and
 // vtkUnstructuredGridVolumeRayCastMapper (ImageSampleDistance 1,
 // AutoAdjustSampleDistances off, vtkUnstructuredGridLinearRayIntegrator) swapped
@@ -16,7 +17,7 @@
 //
 // Output: a Markdown table on stdout (median ms per frame, HAVS's stage times,
 // Mtets/s, RMSE, max error, share of pixels off by more than 1/255, time
-// relative to HAVS) and one PNG: the exact reference and the four mappers'
+// relative to HAVS) and one PNG: the exact reference and the six mappers'
 // first frames in a row, each labelled with its time and error, and under each
 // mapper its error against the exact image in false colour, amplified.
 //
@@ -25,9 +26,11 @@
 // --plot3d pair. Exits non-zero when a file cannot be read, a mapper reports
 // an error or the reference fails.
 #include "havsAppOptions.h"
+#include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSImageMetrics.h"
+#include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSRenderWindowFactory.h"
 #include "vtkHAVSVolumeMapper.h"
@@ -109,7 +112,8 @@ struct Options
   int Table = 256; // pre-integration table resolution (scalar and length axes)
   std::string Order = "mpvo";
   double Amplification = 16.0;
-  std::vector<std::string> Mappers = { "havs", "pt", "zsweep", "raycast" };
+  std::vector<std::string> Mappers = { "havs", "tetraycast", "cellproj", "pt", "zsweep",
+    "raycast" };
   std::string Output = "havs_demo.png";
 };
 
@@ -121,10 +125,12 @@ void PrintUsage()
        "                 [--array name] [--frames N] [--slow-frames N] [--size W H] [--k K]\n"
        "                 [--table N]\n"
        "                 [--order mpvo|centroid|automatic] [--amplify A]\n"
-       "                 [--mappers havs,pt,zsweep,raycast] [--output out.png]\n"
-       "Default: the NASA blunt fin (Density, 187,395 tets) at 384x256, HAVS with the MPVO\n"
-       "order and k = 2 beside VTK's ProjectedTetrahedra, ZSweep and RayCast mappers;\n"
-       "8 timed frames for HAVS and PT, the first 2 of them for ZSweep and RayCast.\n"
+       "                 [--mappers havs,tetraycast,cellproj,pt,zsweep,raycast]\n"
+       "                 [--output out.png]\n"
+       "Default: the NASA blunt fin (Density, 187,395 tets) at 384x256, the project's three\n"
+       "mappers (HAVS with the MPVO order and k = 2, its GPU ray caster, its cell projection)\n"
+       "beside VTK's ProjectedTetrahedra, ZSweep and RayCast mappers; 8 timed frames for the\n"
+       "GPU mappers, the first 2 of them for ZSweep and RayCast.\n"
        "Data directory: --data-dir, else $HAVS_DATA_DIR, else <source>/../shared/data.\n"
        "--amplify A: the error that shows full red in the difference images is 1/A.\n"
        "--table N: HAVS's pre-integration table, N x N x N (default 256: with 128 the blunt\n"
@@ -217,10 +223,11 @@ int ParseArguments(int argc, char* argv[], Options& o)
   }
   for (const std::string& m : o.Mappers)
   {
-    if (m != "havs" && m != "pt" && m != "zsweep" && m != "raycast")
+    if (m != "havs" && m != "tetraycast" && m != "cellproj" && m != "pt" && m != "zsweep" &&
+      m != "raycast")
     {
-      std::cerr << "havs_demo: unknown mapper " << m << " (havs, pt, zsweep, raycast)."
-                << std::endl;
+      std::cerr << "havs_demo: unknown mapper " << m
+                << " (havs, tetraycast, cellproj, pt, zsweep, raycast)." << std::endl;
       return 1;
     }
   }
@@ -694,6 +701,26 @@ vtkSmartPointer<vtkUnstructuredGridVolumeMapper> MakeMapper(
                                           : "centroid order";
     run.Label = Format("vtkHAVSVolumeMapper, %s, k = %d", order, o.K);
     return MakeHAVS(o);
+  }
+  if (key == "tetraycast" || key == "cellproj")
+  {
+    // The project's other two mappers, with HAVS's table size (--table).
+    vtkSmartPointer<vtkHAVSMapperBase> mapper;
+    if (key == "tetraycast")
+    {
+      run.Name = "HAVS RC";
+      run.Label = "vtkHAVSRayCastMapper";
+      mapper.TakeReference(vtkHAVSRayCastMapper::New());
+    }
+    else
+    {
+      run.Name = "HAVS CP";
+      run.Label = "vtkHAVSCellProjectionMapper";
+      mapper.TakeReference(vtkHAVSCellProjectionMapper::New());
+    }
+    mapper->SetTableScalarResolution(o.Table);
+    mapper->SetTableLengthResolution(o.Table);
+    return mapper;
   }
   if (key == "pt")
   {
@@ -1341,11 +1368,15 @@ void PrintSetup(const Scene& scene, const Options& o, const Platform& platform,
         platform.LastOrder.c_str(), platform.OrderViolations);
     }
   }
+  std::printf("HAVS RC = vtkHAVSRayCastMapper (GPU ray casting through the tetrahedra, "
+              "depth-peeled re-entries); HAVS CP = vtkHAVSCellProjectionMapper (the cells in the "
+              "exact MPVO order, each fragment integrating its cell); both with HAVS's %d^3 table.\n",
+    o.Table);
   std::printf("PT = vtkProjectedTetrahedraMapper; ZSweep = vtkUnstructuredGridVolumeZSweepMapper "
               "and RayCast = vtkUnstructuredGridVolumeRayCastMapper with ImageSampleDistance 1, "
               "AutoAdjustSampleDistances off, vtkUnstructuredGridLinearRayIntegrator.\n");
   std::printf("Timing: a first frame (not timed), then an orbit of %d views about the vertical; "
-              "HAVS and PT render all %d, ZSweep and RayCast (CPU) only the first %d.\n",
+              "the GPU mappers render all %d, ZSweep and RayCast (CPU) only the first %d.\n",
     o.Frames, o.Frames, std::min(o.SlowFrames, o.Frames));
   std::printf("Error: the first frame's colour seen in the window (over black) against the exact "
               "reference (vtkHAVSReferenceRenderer, %.1f s).\n\n",
@@ -1372,7 +1403,7 @@ Summary Summarize(
       vtkSMPTools::GetEstimatedNumberOfThreads()),
     Format(
       "HAVS k-buffer path: %s", platform.KBufferPath.empty() ? "-" : platform.KBufferPath.c_str()),
-    "HAVS and PT draw with OpenGL (the window's renderer);",
+    "HAVS, HAVS RC, HAVS CP, PT: OpenGL;",
     "ZSweep and RayCast run on the CPU.",
   };
   summary.ReferenceSeconds = referenceSeconds;
