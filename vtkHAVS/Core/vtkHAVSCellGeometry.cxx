@@ -14,6 +14,8 @@
 
 #include <cmath>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 //------------------------------------------------------------------------------
 void vtkHAVSCellGeometry::Compute(const std::vector<float>& points,
   const std::vector<float>& scalars, const std::vector<uint32_t>& tets, std::vector<float>& cells,
@@ -89,3 +91,5 @@ void vtkHAVSCellGeometry::Compute(const std::vector<float>& points,
       }
     });
 }
+
+VTK_ABI_NAMESPACE_END

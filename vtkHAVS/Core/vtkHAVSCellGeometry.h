@@ -24,10 +24,14 @@
 #ifndef vtkHAVSCellGeometry_h
 #define vtkHAVSCellGeometry_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 
 #include <cstdint> // For uint32_t
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class VTKHAVSCORE_EXPORT vtkHAVSCellGeometry
 {
@@ -45,4 +49,5 @@ public:
     const std::vector<float>* cellScalars = nullptr);
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

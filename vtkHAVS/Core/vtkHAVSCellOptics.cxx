@@ -16,6 +16,8 @@
 
 #include <cmath>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSCellOptics);
 
 //------------------------------------------------------------------------------
@@ -99,3 +101,5 @@ void vtkHAVSCellOptics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Values: " << this->GetNumberOfValues() << " (built in " << this->LastBuildSeconds
      << " s)\n";
 }
+
+VTK_ABI_NAMESPACE_END

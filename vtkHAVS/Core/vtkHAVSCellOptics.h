@@ -33,11 +33,15 @@
 #ifndef vtkHAVSCellOptics_h
 #define vtkHAVSCellOptics_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkObject.h"
 
 #include <cstdint> // For uint32_t
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkVolumeProperty;
 
@@ -90,4 +94,5 @@ private:
   double LastBuildSeconds = 0.0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

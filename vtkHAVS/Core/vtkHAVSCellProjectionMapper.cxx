@@ -33,6 +33,8 @@
 #include <numeric>
 #include <random>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkAbstractObjectFactoryNewMacro(vtkHAVSCellProjectionMapper);
 
 //------------------------------------------------------------------------------
@@ -252,3 +254,5 @@ void vtkHAVSCellProjectionMapper::PrintSelf(ostream& os, vtkIndent indent)
      << " cycle breaks, order " << (this->LastOrderReused ? "reused, " : "")
      << this->LastOrderSeconds << " s, draw " << this->LastDrawSeconds << " s\n";
 }
+
+VTK_ABI_NAMESPACE_END

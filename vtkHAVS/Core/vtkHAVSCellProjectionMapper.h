@@ -45,6 +45,8 @@
 #ifndef vtkHAVSCellProjectionMapper_h
 #define vtkHAVSCellProjectionMapper_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h"      // For export macro
 #include "vtkHAVSVisibilityOrder.h" // For ViewKey
 #include "vtkHAVSMapperBase.h"
@@ -53,6 +55,8 @@
 #include <cstdint> // For uint32_t
 #include <string>  // For std::string
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkFloatArray;
 class vtkHAVSFramePlanes;
@@ -216,4 +220,5 @@ private:
   vtkTimeStamp OrderTime;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

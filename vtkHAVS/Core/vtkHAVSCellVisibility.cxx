@@ -20,6 +20,8 @@
 #include <algorithm>
 #include <cmath>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSCellVisibility);
 
 //------------------------------------------------------------------------------
@@ -146,3 +148,5 @@ void vtkHAVSCellVisibility::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Cells: " << this->NumberOfCells << ", invisible " << this->NumberOfInvisibleCells
      << " (" << this->LastSeconds << " s)\n";
 }
+
+VTK_ABI_NAMESPACE_END

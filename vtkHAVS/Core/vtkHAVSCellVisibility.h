@@ -34,11 +34,15 @@
 #ifndef vtkHAVSCellVisibility_h
 #define vtkHAVSCellVisibility_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkObject.h"
 
 #include <cstdint> // For uint8_t
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSMesh;
 class vtkHAVSPreIntegrationTable;
@@ -106,4 +110,5 @@ private:
   vtkTimeStamp VisibilityTime;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

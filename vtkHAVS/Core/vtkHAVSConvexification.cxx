@@ -20,6 +20,8 @@
 #include <random>
 #include <unordered_map>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSConvexification);
 
 namespace
@@ -1224,3 +1226,5 @@ void vtkHAVSConvexification::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfTrianglesWithoutCell: " << this->NumberOfTrianglesWithoutCell << "\n";
   os << indent << "BuildSeconds: " << this->BuildSeconds << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -80,6 +80,8 @@
 #ifndef vtkHAVSConvexification_h
 #define vtkHAVSConvexification_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkObject.h"
 
@@ -87,6 +89,8 @@
 #include <memory>  // For std::unique_ptr
 #include <utility> // For std::pair
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class VTKHAVSCORE_EXPORT vtkHAVSConvexification : public vtkObject
 {
@@ -193,4 +197,5 @@ private:
   vtkIdType NumberOfOverlappingPieces = 0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -21,6 +21,8 @@
 
 #include <algorithm>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSFaceOrderPolicy);
 
 vtkHAVSFaceOrderPolicy::vtkHAVSFaceOrderPolicy() = default;
@@ -316,3 +318,5 @@ void vtkHAVSFaceOrderPolicy::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Last order: " << this->LastOrder << (this->LastReused ? " (reused)" : "") << ", "
      << this->LastSeconds << " s\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -34,6 +34,8 @@
 #ifndef vtkHAVSFaceOrderPolicy_h
 #define vtkHAVSFaceOrderPolicy_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h"      // For export macro
 #include "vtkHAVSVisibilityOrder.h" // For ViewKey
 #include "vtkNew.h"                 // For vtkNew
@@ -42,6 +44,8 @@
 #include <array>   // For std::array
 #include <cstdint> // For uint32_t
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSFaceSorter;
 class vtkHAVSMesh;
@@ -241,4 +245,5 @@ private:
   vtkIdType LastOrderedFaces = 0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

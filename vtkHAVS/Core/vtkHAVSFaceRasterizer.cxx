@@ -19,6 +19,8 @@
 #include <cmath>
 #include <limits>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSFaceRasterizer);
 
 namespace
@@ -451,3 +453,5 @@ void vtkHAVSFaceRasterizer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Size: " << this->Width << " x " << this->Height
      << (this->Parallel ? ", parallel" : ", perspective") << ", hits " << this->Hits.size() << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

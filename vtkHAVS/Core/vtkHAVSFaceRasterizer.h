@@ -31,12 +31,16 @@
 #ifndef vtkHAVSFaceRasterizer_h
 #define vtkHAVSFaceRasterizer_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkObject.h"
 
 #include <cstdint>    // For uint32_t
 #include <functional> // For std::function
 #include <vector>     // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class VTKHAVSCORE_EXPORT vtkHAVSFaceRasterizer : public vtkObject
 {
@@ -118,4 +122,5 @@ private:
   std::vector<Hit> Hits;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -28,6 +28,8 @@
 #include <limits>
 #include <tuple>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSFaceSet);
 
 namespace
@@ -707,3 +709,5 @@ void vtkHAVSFaceSet::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CentroidOrigin: (" << this->CentroidOrigin[0] << ", " << this->CentroidOrigin[1]
      << ", " << this->CentroidOrigin[2] << ")\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -35,12 +35,16 @@
 #ifndef vtkHAVSFaceSet_h
 #define vtkHAVSFaceSet_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkTimeStamp.h" // For BuildTime
 
 #include <cstdint> // For uint32_t
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkUnstructuredGrid;
 
@@ -159,4 +163,5 @@ private:
   vtkTimeStamp BuildTime;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -17,6 +17,8 @@
 
 #include <algorithm>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSFaceSorter);
 
 //------------------------------------------------------------------------------
@@ -153,3 +155,5 @@ void vtkHAVSFaceSorter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastSortSeconds: " << this->LastSortSeconds << "\n";
   os << indent << "BlockReversal: " << this->BlockReversal << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -22,6 +22,8 @@
 #ifndef vtkHAVSFaceSorter_h
 #define vtkHAVSFaceSorter_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkNew.h"            // For vtkNew
 #include "vtkObject.h"
@@ -29,6 +31,8 @@
 #include <array>   // For std::array
 #include <cstdint> // For uint32_t
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSFaceSet;
 class vtkHAVSRadixSorter;
@@ -114,4 +118,5 @@ private:
   int BlockReversal = 1;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -21,6 +21,8 @@
 
 #include <algorithm>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSFramePlanes);
 
 vtkHAVSFramePlanes::vtkHAVSFramePlanes() = default;
@@ -147,3 +149,5 @@ void vtkHAVSFramePlanes::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Planes: " << this->Planes.size() << ", sections " << this->Sections.size()
      << " (" << this->SectionTriangles << " triangles, " << this->SectionSeconds << " s)\n";
 }
+
+VTK_ABI_NAMESPACE_END

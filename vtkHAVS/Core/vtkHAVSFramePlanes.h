@@ -24,12 +24,16 @@
 #ifndef vtkHAVSFramePlanes_h
 #define vtkHAVSFramePlanes_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkNew.h"            // For vtkNew
 #include "vtkObject.h"
 
 #include <array>  // For std::array
 #include <vector> // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSMesh;
 class vtkHAVSPlaneSection;
@@ -124,4 +128,5 @@ private:
   vtkNew<vtkHAVSPlaneSection> Sectioner;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -21,10 +21,14 @@
 #ifndef vtkHAVSFrameRequest_h
 #define vtkHAVSFrameRequest_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkType.h" // For vtkIdType, vtkMTimeType
 
 #include <cstdint> // For uint32_t, uint8_t
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSFramePlanes;
 class vtkHAVSMesh;
@@ -113,5 +117,6 @@ struct vtkHAVSFrameResult
   bool TableUploaded = false;    ///< the pre-integration table
 };
 
+VTK_ABI_NAMESPACE_END
 #endif
 // VTK-HeaderTest-Exclude: vtkHAVSFrameRequest.h

@@ -15,6 +15,8 @@
 
 #include <algorithm>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSFrameStatistics);
 
 //------------------------------------------------------------------------------
@@ -123,3 +125,5 @@ void vtkHAVSFrameStatistics::PrintSelf(ostream& os, vtkIndent indent)
      << this->RankingSeconds << " s; frame " << this->FrameSeconds << " s\n";
   os << indent << "Automatic k draws: " << this->AutomaticKDraws << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -34,10 +34,14 @@
 #ifndef vtkHAVSFrameStatistics_h
 #define vtkHAVSFrameStatistics_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkObject.h"
 
 #include <vector> // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkIntArray;
 
@@ -300,4 +304,5 @@ private:
   double CullingSeconds = 0.0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

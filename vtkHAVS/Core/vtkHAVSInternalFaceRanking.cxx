@@ -21,6 +21,8 @@
 #include <numeric>
 #include <random>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSInternalFaceRanking);
 
 namespace
@@ -555,3 +557,5 @@ void vtkHAVSInternalFaceRanking::PrintSelf(ostream& os, vtkIndent indent)
   }
   os << ", " << this->LastSeconds << " s, " << this->GetMemoryBytes() << " bytes\n";
 }
+
+VTK_ABI_NAMESPACE_END

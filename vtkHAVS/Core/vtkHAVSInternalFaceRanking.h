@@ -36,6 +36,8 @@
 #ifndef vtkHAVSInternalFaceRanking_h
 #define vtkHAVSInternalFaceRanking_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkObject.h"
 
@@ -43,6 +45,8 @@
 #include <cstdint>    // For uint32_t
 #include <functional> // For std::function
 #include <vector>     // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSMesh;
 
@@ -162,4 +166,5 @@ private:
   double LastViewSeconds = 0.0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

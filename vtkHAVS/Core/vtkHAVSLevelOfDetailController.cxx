@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <cmath>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSLevelOfDetailController);
 
 namespace
@@ -76,3 +78,5 @@ void vtkHAVSLevelOfDetailController::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Last frame: fraction " << this->LastFraction << ", " << this->LastSeconds
      << " s; last full frame " << this->FullSeconds << " s\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -26,8 +26,12 @@
 #ifndef vtkHAVSLevelOfDetailController_h
 #define vtkHAVSLevelOfDetailController_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkObject.h"
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class VTKHAVSCORE_EXPORT vtkHAVSLevelOfDetailController : public vtkObject
 {
@@ -79,4 +83,5 @@ private:
   double FullSeconds = -1.0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

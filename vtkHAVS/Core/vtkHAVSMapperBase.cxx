@@ -25,6 +25,8 @@
 #include "vtkUnstructuredGridBase.h"
 #include "vtkVolume.h"
 
+VTK_ABI_NAMESPACE_BEGIN
+
 //------------------------------------------------------------------------------
 vtkHAVSMapperBase::vtkHAVSMapperBase(const char* mapperName)
   : Mesh(vtkSmartPointer<vtkHAVSMesh>::New())
@@ -255,3 +257,5 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastFrameAborted: " << this->LastFrameAborted << "\n";
   os << indent << "TimeToDraw: " << this->TimeToDraw << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -44,6 +44,8 @@
 #ifndef vtkHAVSMapperBase_h
 #define vtkHAVSMapperBase_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkNew.h"            // For vtkNew
 #include "vtkSmartPointer.h"   // For vtkSmartPointer
@@ -52,6 +54,8 @@
 #include <array>  // For std::array
 #include <string> // For std::string
 #include <vector> // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkFloatArray;
 class vtkHAVSFramePlanes;
@@ -241,4 +245,5 @@ private:
   std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

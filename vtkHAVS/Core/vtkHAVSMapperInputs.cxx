@@ -32,6 +32,8 @@
 
 #include <algorithm>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 namespace
 {
 bool IsConstantOne(vtkPiecewiseFunction* f)
@@ -257,3 +259,5 @@ bool vtkHAVSMapperInputs::RendererHasOpaqueGeometry(vtkRenderer* renderer)
   }
   return false;
 }
+
+VTK_ABI_NAMESPACE_END

@@ -21,11 +21,15 @@
 #ifndef vtkHAVSMapperInputs_h
 #define vtkHAVSMapperInputs_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 
 #include <functional> // For std::function
 #include <string>     // For std::string
 #include <vector>     // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkAbstractVolumeMapper;
 class vtkFloatArray;
@@ -108,4 +112,5 @@ public:
   static bool RendererHasOpaqueGeometry(vtkRenderer* renderer);
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -37,6 +37,8 @@
 #include <limits>
 #include <sstream>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSMesh);
 
 namespace
@@ -760,3 +762,5 @@ void vtkHAVSMesh::PrintSelf(ostream& os, vtkIndent indent)
      << this->Tessellation.AddedPoints << " points added; "
      << this->Tessellation.LowerDimensionCells << " lower-dimensional cells left out)\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -35,6 +35,8 @@
 #ifndef vtkHAVSMesh_h
 #define vtkHAVSMesh_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h"      // For export macro
 #include "vtkHAVSTetrahedralizer.h" // For vtkHAVSTetrahedralizer::Report
 #include "vtkNew.h"                 // For vtkNew
@@ -46,6 +48,8 @@
 #include <functional> // For std::function
 #include <string>     // For std::string
 #include <vector>     // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkDataArray;
 class vtkDataObject;
@@ -257,4 +261,5 @@ private:
   double LastUpdateSeconds = 0.0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

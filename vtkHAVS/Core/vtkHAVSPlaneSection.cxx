@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <utility>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSPlaneSection);
 
 namespace
@@ -196,3 +198,5 @@ void vtkHAVSPlaneSection::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "LastSeconds: " << this->LastSeconds << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -31,11 +31,15 @@
 #ifndef vtkHAVSPlaneSection_h
 #define vtkHAVSPlaneSection_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkObject.h"
 
 #include <cstdint> // For uint32_t
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class VTKHAVSCORE_EXPORT vtkHAVSPlaneSection : public vtkObject
 {
@@ -75,4 +79,5 @@ private:
   double LastSeconds = 0.0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -19,6 +19,8 @@
 #include <algorithm>
 #include <cmath>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSPreIntegrationTable);
 
 namespace
@@ -508,3 +510,5 @@ void vtkHAVSPreIntegrationTable::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LengthLogScale: " << this->LengthLogScale << "\n";
   os << indent << "LastBuildSeconds: " << this->LastBuildSeconds << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

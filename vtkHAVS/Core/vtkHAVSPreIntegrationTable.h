@@ -51,12 +51,16 @@
 #ifndef vtkHAVSPreIntegrationTable_h
 #define vtkHAVSPreIntegrationTable_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCellOptics.h" // For vtkNew<vtkHAVSCellOptics>
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkNew.h"            // For vtkNew
 #include "vtkObject.h"
 
 #include <vector> // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkVolumeProperty;
 
@@ -202,4 +206,5 @@ private:
   double LastBuildSeconds = 0.0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -17,6 +17,8 @@
 #include <cstring>
 #include <limits>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSRadixSorter);
 
 namespace
@@ -170,3 +172,5 @@ void vtkHAVSRadixSorter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Scratch capacity: " << this->Keys.capacity() << " keys\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -25,12 +25,16 @@
 #ifndef vtkHAVSRadixSorter_h
 #define vtkHAVSRadixSorter_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkObject.h"
 
 #include <cstddef> // For size_t
 #include <cstdint> // For uint32_t
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class VTKHAVSCORE_EXPORT vtkHAVSRadixSorter : public vtkObject
 {
@@ -67,4 +71,5 @@ private:
   std::vector<size_t> BucketCounts; // 256 per chunk, then the chunk's output offsets
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -24,6 +24,8 @@
 #include "vtkUnstructuredGridBase.h"
 #include "vtkVolume.h"
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkAbstractObjectFactoryNewMacro(vtkHAVSRayCastMapper);
 
 //------------------------------------------------------------------------------
@@ -158,3 +160,5 @@ void vtkHAVSRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
      << this->LastFoldReentries << " fold re-entries, " << this->LastDrawSeconds << " s (peeling "
      << this->LastPeelSeconds << " s, casting " << this->LastCastSeconds << " s)\n";
 }
+
+VTK_ABI_NAMESPACE_END

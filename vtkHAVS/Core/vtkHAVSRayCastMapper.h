@@ -48,12 +48,16 @@
 #ifndef vtkHAVSRayCastMapper_h
 #define vtkHAVSRayCastMapper_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkHAVSMapperBase.h"
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
 #include <vector> // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkFloatArray;
 class vtkHAVSFramePlanes;
@@ -254,4 +258,5 @@ private:
   bool RayMeshBroken = false; // the layout holds the broken table
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

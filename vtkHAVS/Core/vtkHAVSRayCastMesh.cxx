@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <array>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 namespace
 {
 struct FaceKey
@@ -113,3 +115,5 @@ void vtkHAVSRayCastMesh::BreakNeighboursForTesting()
     std::rotate(&this->Neighbours[t], &this->Neighbours[t] + 1, &this->Neighbours[t] + 4);
   }
 }
+
+VTK_ABI_NAMESPACE_END

@@ -33,11 +33,15 @@
 #ifndef vtkHAVSRayCastMesh_h
 #define vtkHAVSRayCastMesh_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 
 #include <cstddef> // For size_t
 #include <cstdint> // For uint32_t, int32_t
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class VTKHAVSCORE_EXPORT vtkHAVSRayCastMesh
 {
@@ -85,4 +89,5 @@ private:
   std::vector<uint32_t> BoundaryCells;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -18,6 +18,8 @@
 #include <cmath>
 #include <random>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSTableResolution);
 
 //------------------------------------------------------------------------------
@@ -123,3 +125,5 @@ void vtkHAVSTableResolution::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastCandidates: " << this->LastCandidates << "\n";
   os << indent << "LastSeconds: " << this->LastSeconds << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

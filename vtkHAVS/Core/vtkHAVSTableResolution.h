@@ -48,9 +48,13 @@
 #ifndef vtkHAVSTableResolution_h
 #define vtkHAVSTableResolution_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkTimeStamp.h" // For vtkTimeStamp
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSPreIntegrationTable;
 class vtkVolumeProperty;
@@ -127,4 +131,5 @@ private:
   vtkTimeStamp BuildTime;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -43,6 +43,8 @@
 #include <utility>
 #include <vector>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 namespace
 {
 const char* const kOriginalCell = "vtkHAVSTetrahedralizerOriginalCell";
@@ -1321,3 +1323,5 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSTetrahedralizer::Tetrahedralize(
   r.Seconds = vtkTimerLog::GetUniversalTime() - start;
   return grid;
 }
+
+VTK_ABI_NAMESPACE_END

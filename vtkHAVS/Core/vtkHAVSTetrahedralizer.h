@@ -60,12 +60,16 @@
 #ifndef vtkHAVSTetrahedralizer_h
 #define vtkHAVSTetrahedralizer_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkSmartPointer.h"   // For vtkSmartPointer
 #include "vtkType.h"           // For vtkIdType
 
 #include <functional> // For std::function
 #include <vector>     // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkCompositeDataSet;
 class vtkDataArray;
@@ -172,4 +176,5 @@ public:
     const std::function<bool(vtkDataSet*)>& keep, vtkIdType* skipped, vtkIdType* appended);
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

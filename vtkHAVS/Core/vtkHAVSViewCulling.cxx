@@ -19,6 +19,8 @@
 
 #include <algorithm>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSViewCulling);
 
 //------------------------------------------------------------------------------
@@ -142,3 +144,5 @@ void vtkHAVSViewCulling::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Culled cells: " << this->NumberOfCulledCells << " (" << this->LastSeconds
      << " s)\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -27,12 +27,16 @@
 #ifndef vtkHAVSViewCulling_h
 #define vtkHAVSViewCulling_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkObject.h"
 
 #include <array>   // For std::array
 #include <cstdint> // For uint8_t
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSMesh;
 
@@ -82,4 +86,5 @@ private:
   vtkTimeStamp CullingTime;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -19,6 +19,8 @@
 #include <algorithm>
 #include <cmath>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 //------------------------------------------------------------------------------
 vtkHAVSViewFrame vtkHAVSViewFrame::Make(
   vtkRenderer* renderer, vtkVolume* volume, const double shift[3])
@@ -106,3 +108,5 @@ void vtkHAVSViewFrame::ToColumnMajor(const double rowMajor[16], float columnMajo
     }
   }
 }
+
+VTK_ABI_NAMESPACE_END

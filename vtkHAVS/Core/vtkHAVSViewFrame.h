@@ -38,7 +38,11 @@
 #ifndef vtkHAVSViewFrame_h
 #define vtkHAVSViewFrame_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkRenderer;
 class vtkVolume;
@@ -78,4 +82,5 @@ public:
   static void ToColumnMajor(const double rowMajor[16], float columnMajor[16]);
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

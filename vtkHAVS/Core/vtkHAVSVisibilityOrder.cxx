@@ -26,6 +26,8 @@
 #include <cmath>
 #include <limits>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSVisibilityOrder);
 
 //------------------------------------------------------------------------------
@@ -738,3 +740,5 @@ vtkHAVSVisibilityOrder::ViewKey vtkHAVSVisibilityOrder::MakeViewKey(
   }
   return key;
 }
+
+VTK_ABI_NAMESPACE_END

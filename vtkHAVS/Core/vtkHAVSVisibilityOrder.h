@@ -53,6 +53,8 @@
 #ifndef vtkHAVSVisibilityOrder_h
 #define vtkHAVSVisibilityOrder_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
@@ -61,6 +63,8 @@
 #include <cstdint> // For uint32_t
 #include <utility> // For std::pair
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSConvexification;
 class vtkHAVSFaceRasterizer;
@@ -239,4 +243,5 @@ private:
   double LastSortSeconds = 0.0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -45,6 +45,8 @@
 #include <algorithm>
 #include <cmath>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkAbstractObjectFactoryNewMacro(vtkHAVSVolumeMapper);
 
 namespace
@@ -66,11 +68,12 @@ const char* vtkHAVSVolumeMapper::GetKBufferPathName(int path)
 {
   return vtkHAVSFrameRequest::GetPathName(path);
 }
-static_assert(vtkHAVSVolumeMapper::KBufferPathFramebufferFetch ==
-      vtkHAVSFrameRequest::PathFramebufferFetch &&
-    vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock ==
-      vtkHAVSFrameRequest::PathFragmentShaderInterlock &&
-    vtkHAVSVolumeMapper::KBufferPathFragmentLists == vtkHAVSFrameRequest::PathFragmentLists,
+static_assert(static_cast<int>(vtkHAVSVolumeMapper::KBufferPathFramebufferFetch) ==
+      static_cast<int>(vtkHAVSFrameRequest::PathFramebufferFetch) &&
+    static_cast<int>(vtkHAVSVolumeMapper::KBufferPathFragmentShaderInterlock) ==
+      static_cast<int>(vtkHAVSFrameRequest::PathFragmentShaderInterlock) &&
+    static_cast<int>(vtkHAVSVolumeMapper::KBufferPathFragmentLists) ==
+      static_cast<int>(vtkHAVSFrameRequest::PathFragmentLists),
   "the k-buffer paths of the mapper and of the frame request");
 
 //------------------------------------------------------------------------------
@@ -747,3 +750,5 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastFrame:\n";
   this->LastFrame->PrintSelf(os, indent.GetNextIndent());
 }
+
+VTK_ABI_NAMESPACE_END

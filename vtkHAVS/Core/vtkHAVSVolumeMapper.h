@@ -52,6 +52,8 @@
 #ifndef vtkHAVSVolumeMapper_h
 #define vtkHAVSVolumeMapper_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCoreModule.h"   // For export macro
 #include "vtkHAVSFrameRequest.h" // For vtkHAVSFrameRequest, vtkHAVSFrameResult
 #include "vtkHAVSMapperBase.h"
@@ -60,6 +62,8 @@
 #include <cstdint> // For uint32_t
 #include <string>  // For std::string
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkFloatArray;
 class vtkHAVSCellVisibility;
@@ -581,4 +585,5 @@ private:
   vtkNew<vtkHAVSFrameStatistics> LastFrame;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -24,6 +24,8 @@
 #define EGL_PLATFORM_SURFACELESS_MESA 0x31DD
 #endif
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSEGLRenderWindow);
 
 namespace
@@ -351,3 +353,5 @@ void vtkHAVSEGLRenderWindow::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EGL platform: "
      << (this->Internal->Platform.empty() ? "(none yet)" : this->Internal->Platform) << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -38,11 +38,15 @@
 #ifndef vtkHAVSEGLRenderWindow_h
 #define vtkHAVSEGLRenderWindow_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSHeadlessModule.h" // For export macro
 #include "vtkHAVSSurfacelessRenderWindow.h"
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class VTKHAVSHEADLESS_EXPORT vtkHAVSEGLRenderWindow : public vtkHAVSSurfacelessRenderWindow
 {
@@ -114,4 +118,5 @@ private:
   std::unique_ptr<Internals> Internal;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

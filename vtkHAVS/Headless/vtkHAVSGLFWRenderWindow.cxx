@@ -19,6 +19,8 @@
 #include <mutex>
 #include <string>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSGLFWRenderWindow);
 
 namespace
@@ -330,3 +332,5 @@ void vtkHAVSGLFWRenderWindow::PrintSelf(ostream& os, vtkIndent indent)
        << "." << glfwGetWindowAttrib(this->Window, GLFW_CONTEXT_VERSION_MINOR) << "\n";
   }
 }
+
+VTK_ABI_NAMESPACE_END

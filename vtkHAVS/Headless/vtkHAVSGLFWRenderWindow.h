@@ -28,10 +28,14 @@
 #ifndef vtkHAVSGLFWRenderWindow_h
 #define vtkHAVSGLFWRenderWindow_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkGenericOpenGLRenderWindow.h"
 #include "vtkHAVSHeadlessModule.h" // For export macro
 
 #include <string> // For std::string
+
+VTK_ABI_NAMESPACE_BEGIN
 
 struct GLFWwindow;
 
@@ -106,4 +110,5 @@ private:
   GLFWwindow* Window = nullptr;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

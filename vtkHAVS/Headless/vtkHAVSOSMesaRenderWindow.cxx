@@ -56,6 +56,8 @@
 #define HAVS_OSMESA_SONAME "libOSMesa.so.8"
 #endif
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSOSMesaRenderWindow);
 
 namespace
@@ -617,3 +619,5 @@ void vtkHAVSOSMesaRenderWindow::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "Probe: " << vtkHAVSOSMesaRenderWindow::GetProbeReport() << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

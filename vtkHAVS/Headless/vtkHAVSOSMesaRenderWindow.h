@@ -50,11 +50,15 @@
 #ifndef vtkHAVSOSMesaRenderWindow_h
 #define vtkHAVSOSMesaRenderWindow_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSHeadlessModule.h" // For export macro
 #include "vtkHAVSSurfacelessRenderWindow.h"
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class VTKHAVSHEADLESS_EXPORT vtkHAVSOSMesaRenderWindow : public vtkHAVSSurfacelessRenderWindow
 {
@@ -147,4 +151,5 @@ private:
   std::unique_ptr<Internals> Internal;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

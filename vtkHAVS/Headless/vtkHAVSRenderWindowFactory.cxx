@@ -38,6 +38,8 @@
 #include <mutex>
 #include <sstream>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSRenderWindowFactory);
 
 namespace
@@ -379,3 +381,5 @@ void vtkHAVSRenderWindowFactory::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Selected backend: " << vtkHAVSRenderWindowFactory::GetSelectedBackend() << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

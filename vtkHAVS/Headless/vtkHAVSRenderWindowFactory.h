@@ -35,12 +35,16 @@
 #ifndef vtkHAVSRenderWindowFactory_h
 #define vtkHAVSRenderWindowFactory_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSHeadlessModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkWrappingHints.h" // For VTK_NEWINSTANCE
 
 #include <string> // For std::string
 #include <vector> // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkRenderWindow;
 
@@ -130,4 +134,5 @@ private:
   void operator=(const vtkHAVSRenderWindowFactory&) = delete;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

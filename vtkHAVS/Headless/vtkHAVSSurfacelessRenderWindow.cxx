@@ -12,6 +12,8 @@
 #include "vtkHAVSOpenGL.h"
 #include "vtkOpenGLState.h"
 
+VTK_ABI_NAMESPACE_BEGIN
+
 //------------------------------------------------------------------------------
 void vtkHAVSSurfacelessRenderWindow::OpenGLInitContext()
 {
@@ -92,3 +94,5 @@ void vtkHAVSSurfacelessRenderWindow::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Context: " << this->GetContextName() << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

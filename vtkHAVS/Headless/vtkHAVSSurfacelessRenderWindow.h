@@ -27,8 +27,12 @@
 #ifndef vtkHAVSSurfacelessRenderWindow_h
 #define vtkHAVSSurfacelessRenderWindow_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkGenericOpenGLRenderWindow.h"
 #include "vtkHAVSHeadlessModule.h" // For export macro
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class VTKHAVSHEADLESS_EXPORT vtkHAVSSurfacelessRenderWindow : public vtkGenericOpenGLRenderWindow
 {
@@ -65,4 +69,5 @@ private:
   void operator=(const vtkHAVSSurfacelessRenderWindow&) = delete;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -24,6 +24,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSExtremumPass);
 
 //------------------------------------------------------------------------------
@@ -106,3 +108,5 @@ bool vtkHAVSExtremumPass::ResolveBlend(vtkOpenGLRenderWindow* window,
       return true;
   }
 }
+
+VTK_ABI_NAMESPACE_END

@@ -21,7 +21,11 @@
 #ifndef vtkHAVSExtremumPass_h
 #define vtkHAVSExtremumPass_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkObject.h"
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSGLFrameTargets;
 class vtkHAVSGLPassContext;
@@ -65,4 +69,5 @@ private:
   void operator=(const vtkHAVSExtremumPass&) = delete;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

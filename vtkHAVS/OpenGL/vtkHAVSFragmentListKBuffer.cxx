@@ -20,6 +20,8 @@
 
 #include <algorithm>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSFragmentListKBuffer);
 
 namespace
@@ -175,3 +177,5 @@ void vtkHAVSFragmentListKBuffer::ReleaseGraphicsResources(vtkWindow*)
     this->HeadsSize[0] = this->HeadsSize[1] = 0;
   }
 }
+
+VTK_ABI_NAMESPACE_END

@@ -22,8 +22,12 @@
 #ifndef vtkHAVSFragmentListKBuffer_h
 #define vtkHAVSFragmentListKBuffer_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSKBuffer.h"
 #include "vtkHAVSOpenGL.h" // For GLuint
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkOpenGLRenderWindow;
 
@@ -61,4 +65,5 @@ private:
   GLuint Counter = 0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -22,6 +22,8 @@
 
 #include <string>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSFramebufferFetchKBuffer);
 
 namespace
@@ -151,3 +153,5 @@ void vtkHAVSFramebufferFetchKBuffer::ReleaseGraphicsResources(vtkWindow* window)
   this->K = 0;
   this->Size[0] = this->Size[1] = 0;
 }
+
+VTK_ABI_NAMESPACE_END

@@ -20,11 +20,15 @@
 #ifndef vtkHAVSFramebufferFetchKBuffer_h
 #define vtkHAVSFramebufferFetchKBuffer_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSKBuffer.h"
 #include "vtkSmartPointer.h"  // For vtkSmartPointer
 #include "vtkTextureObject.h" // For vtkSmartPointer<vtkTextureObject>
 
 #include <vector> // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
@@ -60,4 +64,5 @@ private:
   int Size[2] = { 0, 0 };
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -15,6 +15,8 @@
 #include <cstring>
 #include <string>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 namespace vtkHAVSGLCapabilities
 {
 bool HasExtension(const char* name)
@@ -61,3 +63,5 @@ vtkHAVSShaders::InterlockKind AvailableInterlock()
   return vtkHAVSShaders::InterlockNone;
 }
 }
+
+VTK_ABI_NAMESPACE_END

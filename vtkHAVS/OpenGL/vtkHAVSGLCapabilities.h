@@ -22,7 +22,11 @@
 #ifndef vtkHAVSGLCapabilities_h
 #define vtkHAVSGLCapabilities_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSShaders.h" // For InterlockKind
+
+VTK_ABI_NAMESPACE_BEGIN
 
 namespace vtkHAVSGLCapabilities
 {
@@ -36,4 +40,5 @@ bool InterlockEmulated();
 vtkHAVSShaders::InterlockKind AvailableInterlock();
 }
 
+VTK_ABI_NAMESPACE_END
 #endif

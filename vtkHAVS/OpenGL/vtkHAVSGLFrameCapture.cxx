@@ -26,6 +26,8 @@
 #include <sstream>
 #include <vector>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 namespace
 {
 template <typename T>
@@ -218,3 +220,5 @@ bool vtkHAVSGLFrameCapture::Write(
   }
   return ok;
 }
+
+VTK_ABI_NAMESPACE_END

@@ -33,9 +33,13 @@
 #ifndef vtkHAVSGLFrameCapture_h
 #define vtkHAVSGLFrameCapture_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkType.h" // For vtkIdType
 
 #include <string> // For std::string
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSGLPassContext;
 
@@ -51,4 +55,5 @@ public:
     std::string& error);
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -21,6 +21,8 @@
 
 #include <algorithm>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSGLFrameTargets);
 
 //------------------------------------------------------------------------------
@@ -365,3 +367,5 @@ void vtkHAVSGLFrameTargets::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastCaptureMultisampled: " << this->LastCaptureMultisampled << "\n";
   os << indent << "LastCaptureResolved: " << this->LastCaptureResolved << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

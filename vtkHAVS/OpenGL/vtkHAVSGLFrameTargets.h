@@ -24,6 +24,8 @@
 #ifndef vtkHAVSGLFrameTargets_h
 #define vtkHAVSGLFrameTargets_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSOpenGL.h" // For GLuint
 #include "vtkObject.h"
 #include "vtkSmartPointer.h"  // For vtkSmartPointer
@@ -32,6 +34,8 @@
 #include <cstdint>          // For std::uint64_t
 #include <initializer_list> // For std::initializer_list
 #include <vector>           // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
@@ -135,4 +139,5 @@ private:
   GLuint EmptyVertexArray = 0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -18,6 +18,8 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSGLMapperResources);
 
 //------------------------------------------------------------------------------
@@ -88,3 +90,5 @@ void vtkHAVSGLMapperResources::PrintSelf(ostream& os, vtkIndent indent)
   this->Table->PrintSelf(os, indent.GetNextIndent());
   this->Targets->PrintSelf(os, indent.GetNextIndent());
 }
+
+VTK_ABI_NAMESPACE_END

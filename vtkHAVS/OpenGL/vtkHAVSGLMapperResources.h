@@ -24,10 +24,14 @@
 #ifndef vtkHAVSGLMapperResources_h
 #define vtkHAVSGLMapperResources_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkNew.h" // For vtkNew
 #include "vtkObject.h"
 
 #include <functional> // For std::function
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSGLFrameTargets;
 class vtkHAVSGLTable;
@@ -81,4 +85,5 @@ private:
   std::function<void(vtkOpenGLRenderWindow*)> ReleaseOwn;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

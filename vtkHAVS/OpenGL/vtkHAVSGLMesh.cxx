@@ -19,6 +19,8 @@
 
 #include <algorithm>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSGLMesh);
 
 namespace
@@ -368,3 +370,5 @@ void vtkHAVSGLMesh::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Faces uploaded: " << this->IndexCount / 3 << ", sections "
      << this->SectionDraws.size() << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -21,6 +21,8 @@
 #ifndef vtkHAVSGLMesh_h
 #define vtkHAVSGLMesh_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSFramePlanes.h" // For vtkHAVSFramePlanes::Section
 #include "vtkHAVSOpenGL.h"      // For GLuint
 #include "vtkObject.h"
@@ -30,6 +32,8 @@
 #include <cstdint>    // For uint32_t
 #include <functional> // For std::function
 #include <vector>     // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSMesh;
 class vtkOpenGLBufferObject;
@@ -159,4 +163,5 @@ private:
   vtkMTimeType SectionsVersion = 0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

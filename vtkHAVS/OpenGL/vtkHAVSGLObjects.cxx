@@ -11,6 +11,8 @@
 
 #include <algorithm>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 namespace
 {
 /// The smallest buffer made: an empty source still binds.
@@ -251,3 +253,5 @@ void vtkHAVSGLQueries::Release()
     queries->clear();
   }
 }
+
+VTK_ABI_NAMESPACE_END

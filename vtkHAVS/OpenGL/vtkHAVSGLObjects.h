@@ -26,12 +26,16 @@
 #ifndef vtkHAVSGLObjects_h
 #define vtkHAVSGLObjects_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSOpenGL.h" // For GLuint, GLenum
 #include "vtkType.h"       // For vtkMTimeType
 
 #include <cstddef> // For size_t
 #include <cstdint> // For uint64_t
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 /// A GL buffer object and the version of what it holds.
 class vtkHAVSGLBuffer
@@ -163,5 +167,6 @@ private:
   std::vector<GLuint> SampleQueries;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif
 // VTK-HeaderTest-Exclude: vtkHAVSGLObjects.h

@@ -23,6 +23,8 @@
 
 #include <vector>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 //------------------------------------------------------------------------------
 vtkHAVSGLPassContext::vtkHAVSGLPassContext(vtkOpenGLRenderWindow* window, vtkHAVSGLMesh* mesh,
   vtkHAVSGLTable* table, vtkHAVSGLFrameTargets* targets,
@@ -151,3 +153,5 @@ vtkHAVSGLScopedPassState::vtkHAVSGLScopedPassState(vtkOpenGLState* state)
   state->vtkglDisable(GL_SCISSOR_TEST);
   state->vtkglDepthMask(GL_FALSE);
 }
+
+VTK_ABI_NAMESPACE_END

@@ -21,11 +21,15 @@
 #ifndef vtkHAVSGLPassContext_h
 #define vtkHAVSGLPassContext_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSShaders.h" // For Features
 #include "vtkHAVSFrameRequest.h"   // For FrameRequest
 #include "vtkOpenGLState.h"        // For the scoped state savers
 
 #include <string> // For std::string
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSGLFrameTargets;
 class vtkHAVSGLMesh;
@@ -87,4 +91,5 @@ struct vtkHAVSGLScopedPassState
   explicit vtkHAVSGLScopedPassState(vtkOpenGLState* state);
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -17,6 +17,8 @@
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 
+VTK_ABI_NAMESPACE_BEGIN
+
 namespace
 {
 vtkIdType ReadQuery(GLuint query)
@@ -122,3 +124,5 @@ void vtkHAVSGLSaturationMask::ReleaseGraphicsResources()
   }
   this->Size[0] = this->Size[1] = 0;
 }
+
+VTK_ABI_NAMESPACE_END

@@ -31,10 +31,14 @@
 #ifndef vtkHAVSGLSaturationMask_h
 #define vtkHAVSGLSaturationMask_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSOpenGL.h" // For GLuint
 #include "vtkType.h"       // For vtkIdType
 
 #include <string> // For std::string
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSGLPassContext;
 class vtkShaderProgram;
@@ -80,4 +84,5 @@ private:
   vtkIdType LastSaturatedPixels = -1;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -20,6 +20,8 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSGLTable);
 
 //------------------------------------------------------------------------------
@@ -164,3 +166,5 @@ void vtkHAVSGLTable::PrintSelf(ostream& os, vtkIndent indent)
      << ", max length " << this->MaxLength << ", length log scale " << this->LengthLogScale
      << ", cell values " << this->CellValues << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

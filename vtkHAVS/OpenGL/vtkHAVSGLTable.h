@@ -19,10 +19,14 @@
 #ifndef vtkHAVSGLTable_h
 #define vtkHAVSGLTable_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkObject.h"
 #include "vtkOpenGLBufferObject.h" // For vtkSmartPointer<vtkOpenGLBufferObject>
 #include "vtkSmartPointer.h"       // For vtkSmartPointer
 #include "vtkTextureObject.h"      // For vtkSmartPointer<vtkTextureObject>
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSPreIntegrationTable;
 class vtkOpenGLRenderWindow;
@@ -86,4 +90,5 @@ private:
   double LengthLogScale = 0.0; ///< 0: a linear length axis
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -18,6 +18,8 @@
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSInterlockKBuffer);
 
 //------------------------------------------------------------------------------
@@ -116,3 +118,5 @@ void vtkHAVSInterlockKBuffer::ReleaseGraphicsResources(vtkWindow*)
     this->PixelEntriesBytes = 0;
   }
 }
+
+VTK_ABI_NAMESPACE_END

@@ -22,10 +22,14 @@
 #ifndef vtkHAVSInterlockKBuffer_h
 #define vtkHAVSInterlockKBuffer_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSKBuffer.h"
 #include "vtkHAVSOpenGL.h" // For GLuint
 
 #include <cstddef> // For size_t
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkOpenGLRenderWindow;
 
@@ -58,4 +62,5 @@ private:
   size_t PixelEntriesBytes = 0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

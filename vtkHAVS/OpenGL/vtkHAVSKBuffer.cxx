@@ -13,6 +13,8 @@
 #include "vtkHAVSShaders.h"
 #include "vtkHAVSFrameRequest.h"
 
+VTK_ABI_NAMESPACE_BEGIN
+
 //------------------------------------------------------------------------------
 void vtkHAVSKBuffer::PrintSelf(ostream& os, vtkIndent indent)
 {
@@ -33,3 +35,5 @@ void vtkHAVSKBuffer::DrawFaces(
   const bool measure = r.MeasureStages || r.KeepResult || r.CountViolations;
   this->Saturation.DrawFaces(context, program, mark, storageBuffer, measure);
 }
+
+VTK_ABI_NAMESPACE_END

@@ -32,8 +32,12 @@
 #ifndef vtkHAVSKBuffer_h
 #define vtkHAVSKBuffer_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSGLSaturationMask.h" // For vtkHAVSGLSaturationMask
 #include "vtkObject.h"
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSGLPassContext;
 class vtkShaderProgram;
@@ -86,4 +90,5 @@ private:
   void operator=(const vtkHAVSKBuffer&) = delete;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -17,6 +17,8 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSRasterBoundPass);
 
 //------------------------------------------------------------------------------
@@ -37,3 +39,5 @@ bool vtkHAVSRasterBoundPass::Draw(vtkHAVSGLPassContext& context)
   state->vtkglDisable(GL_BLEND);
   return true;
 }
+
+VTK_ABI_NAMESPACE_END

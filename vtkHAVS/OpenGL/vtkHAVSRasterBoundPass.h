@@ -20,7 +20,11 @@
 #ifndef vtkHAVSRasterBoundPass_h
 #define vtkHAVSRasterBoundPass_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkObject.h"
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSGLPassContext;
 
@@ -41,4 +45,5 @@ private:
   void operator=(const vtkHAVSRasterBoundPass&) = delete;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

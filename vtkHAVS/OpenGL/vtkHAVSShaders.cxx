@@ -37,6 +37,8 @@
 
 #include <sstream>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 namespace
 {
 /// The `//HAVS::` tag in `text` replaced by `with` (VTK's substitution of shader tags).
@@ -324,3 +326,5 @@ std::string vtkHAVSShaders::RayCastTileVertexShader()
 {
   return vtkHAVSRayCastTileVS;
 }
+
+VTK_ABI_NAMESPACE_END

@@ -22,9 +22,13 @@
 #ifndef vtkHAVSShaders_h
 #define vtkHAVSShaders_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSOpenGLModule.h" // For export macro
 
 #include <string> // For std::string
+
+VTK_ABI_NAMESPACE_BEGIN
 
 /**
  * What a k-buffer shader does per fragment besides the k-buffer itself;
@@ -124,4 +128,5 @@ public:
   ///@}
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

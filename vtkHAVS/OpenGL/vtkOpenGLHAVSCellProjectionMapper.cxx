@@ -32,6 +32,8 @@
 
 #include <algorithm>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkOpenGLHAVSCellProjectionMapper);
 
 namespace
@@ -315,3 +317,5 @@ void vtkOpenGLHAVSCellProjectionMapper::PrintSelf(ostream& os, vtkIndent indent)
      << ", section triangles: " << this->GL->SectionTriangles << "\n";
   this->Resources->PrintSelf(os, indent.GetNextIndent());
 }
+
+VTK_ABI_NAMESPACE_END

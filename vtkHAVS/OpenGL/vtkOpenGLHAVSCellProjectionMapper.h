@@ -23,12 +23,16 @@
 #ifndef vtkOpenGLHAVSCellProjectionMapper_h
 #define vtkOpenGLHAVSCellProjectionMapper_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSOpenGLModule.h" // For export macro
 #include "vtkNew.h"              // For vtkNew
 
 #include <memory> // For std::unique_ptr
 #include <vector> // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSGLMapperResources;
 class vtkShaderProgram;
@@ -65,4 +69,5 @@ private:
   std::unique_ptr<GLObjects> GL;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -36,6 +36,8 @@
 #include <cstdint>
 #include <vector>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkOpenGLHAVSRayCastMapper);
 
 namespace
@@ -567,3 +569,5 @@ void vtkOpenGLHAVSRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
      << ", section triangles: " << this->GL->SectionTriangles << "\n";
   this->Resources->PrintSelf(os, indent.GetNextIndent());
 }
+
+VTK_ABI_NAMESPACE_END

@@ -31,12 +31,16 @@
 #ifndef vtkOpenGLHAVSRayCastMapper_h
 #define vtkOpenGLHAVSRayCastMapper_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSOpenGLModule.h" // For export macro
 #include "vtkHAVSRayCastMapper.h"
 #include "vtkNew.h" // For vtkNew
 
 #include <memory> // For std::unique_ptr
 #include <vector> // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSGLMapperResources;
 class vtkHAVSGLQueries;
@@ -103,4 +107,5 @@ private:
   std::unique_ptr<GLObjects> GL;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -36,6 +36,8 @@
 
 #include <dlfcn.h>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkOpenGLHAVSVolumeMapper);
 
 namespace
@@ -341,3 +343,5 @@ void vtkOpenGLHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->GLMesh->PrintSelf(os, indent.GetNextIndent());
   this->Resources->PrintSelf(os, indent.GetNextIndent());
 }
+
+VTK_ABI_NAMESPACE_END

@@ -32,11 +32,15 @@
 #ifndef vtkOpenGLHAVSVolumeMapper_h
 #define vtkOpenGLHAVSVolumeMapper_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSOpenGLModule.h" // For export macro
 #include "vtkHAVSVolumeMapper.h"
 #include "vtkNew.h" // For vtkNew
 
 #include <vector> // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSExtremumPass;
 class vtkHAVSFragmentListKBuffer;
@@ -103,4 +107,5 @@ private:
 
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -45,6 +45,8 @@
 #include <sstream>
 #include <unistd.h>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSDataSets);
 
 namespace
@@ -584,3 +586,5 @@ void vtkHAVSDataSets::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DataDirectory: " << GetDataDirectory() << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

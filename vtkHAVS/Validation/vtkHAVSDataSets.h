@@ -35,6 +35,8 @@
 #ifndef vtkHAVSDataSets_h
 #define vtkHAVSDataSets_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSValidationModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
@@ -42,6 +44,8 @@
 #include <functional> // For std::function
 #include <string>     // For std::string
 #include <vector>     // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkDataSet;
 class vtkUnstructuredGrid;
@@ -97,4 +101,5 @@ private:
   void operator=(const vtkHAVSDataSets&) = delete;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

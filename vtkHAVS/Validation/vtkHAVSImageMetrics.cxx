@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <cmath>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSImageMetrics);
 
 namespace
@@ -146,3 +148,5 @@ void vtkHAVSImageMetrics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Scale: " << this->Scale << "\n";
   os << indent << "IgnoreWorstPixels: " << this->IgnoreWorstPixels << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

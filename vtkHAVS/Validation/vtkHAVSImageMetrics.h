@@ -21,10 +21,14 @@
 #ifndef vtkHAVSImageMetrics_h
 #define vtkHAVSImageMetrics_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSValidationModule.h" // For export macro
 #include "vtkObject.h"
 
 #include <vector> // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkFloatArray;
 class vtkUnsignedCharArray;
@@ -92,4 +96,5 @@ private:
   vtkIdType IgnoreWorstPixels = 0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

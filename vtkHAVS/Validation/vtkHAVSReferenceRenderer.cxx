@@ -41,6 +41,8 @@
 #include <limits>
 #include <mutex>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSReferenceRenderer);
 
 //------------------------------------------------------------------------------
@@ -852,3 +854,5 @@ void vtkHAVSReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OpaqueDepth: " << (this->OpaqueDepth ? "set" : "none") << "\n";
   os << indent << "NumberOfStartedInside: " << this->NumberOfStartedInside << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

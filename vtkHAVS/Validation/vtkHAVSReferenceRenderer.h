@@ -48,6 +48,8 @@
 #ifndef vtkHAVSReferenceRenderer_h
 #define vtkHAVSReferenceRenderer_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSValidationModule.h" // For export macro
 #include "vtkNew.h"                  // For vtkNew
 #include "vtkObject.h"
@@ -57,6 +59,8 @@
 #include <cstdint> // For uint32_t
 #include <limits>  // For std::numeric_limits
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkCamera;
 class vtkDataSet;
@@ -266,4 +270,5 @@ private:
   double ScalarRange[2] = { 0.0, 1.0 };
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

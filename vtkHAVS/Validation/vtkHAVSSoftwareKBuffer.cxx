@@ -21,6 +21,8 @@
 #include <cmath>
 #include <limits>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSSoftwareKBuffer);
 
 namespace
@@ -360,3 +362,5 @@ void vtkHAVSSoftwareKBuffer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PixelsOverK6: " << this->PixelsOverK6 << "\n";
   os << indent << "PixelsOverK14: " << this->PixelsOverK14 << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

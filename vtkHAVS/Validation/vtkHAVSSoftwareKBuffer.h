@@ -30,12 +30,16 @@
 #ifndef vtkHAVSSoftwareKBuffer_h
 #define vtkHAVSSoftwareKBuffer_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSValidationModule.h" // For export macro
 #include "vtkNew.h"                  // For vtkNew
 #include "vtkObject.h"
 
 #include <cstdint> // For uint32_t
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkFloatArray;
 class vtkHAVSPreIntegrationTable;
@@ -104,4 +108,5 @@ private:
   vtkIdType PixelsOverK14 = 0;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -17,6 +17,8 @@
 #include <algorithm>
 #include <cmath>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSStandardViews);
 
 //------------------------------------------------------------------------------
@@ -63,3 +65,5 @@ void vtkHAVSStandardViews::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfViews: " << NumberOfViews << "\n";
 }
+
+VTK_ABI_NAMESPACE_END

@@ -20,8 +20,12 @@
 #ifndef vtkHAVSStandardViews_h
 #define vtkHAVSStandardViews_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSValidationModule.h" // For export macro
 #include "vtkObject.h"
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkCamera;
 class vtkDataSet;
@@ -50,4 +54,5 @@ private:
   void operator=(const vtkHAVSStandardViews&) = delete;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

@@ -13,6 +13,8 @@
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSStructuredGridVolumeRepresentation);
 
 //------------------------------------------------------------------------------
@@ -29,3 +31,5 @@ void vtkHAVSStructuredGridVolumeRepresentation::PrintSelf(ostream& os, vtkIndent
 {
   this->Superclass::PrintSelf(os, indent);
 }
+
+VTK_ABI_NAMESPACE_END

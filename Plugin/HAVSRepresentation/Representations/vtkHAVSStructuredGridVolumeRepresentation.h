@@ -18,8 +18,12 @@
 #ifndef vtkHAVSStructuredGridVolumeRepresentation_h
 #define vtkHAVSStructuredGridVolumeRepresentation_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSRepresentationsModule.h" // For export macro
 #include "vtkHAVSUnstructuredGridVolumeRepresentation.h"
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class VTKHAVSREPRESENTATIONS_EXPORT vtkHAVSStructuredGridVolumeRepresentation
   : public vtkHAVSUnstructuredGridVolumeRepresentation
@@ -42,4 +46,5 @@ private:
   void operator=(const vtkHAVSStructuredGridVolumeRepresentation&) = delete;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif

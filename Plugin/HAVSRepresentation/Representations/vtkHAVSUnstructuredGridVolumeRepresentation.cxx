@@ -25,6 +25,8 @@
 
 #include <algorithm>
 
+VTK_ABI_NAMESPACE_BEGIN
+
 vtkStandardNewMacro(vtkHAVSUnstructuredGridVolumeRepresentation);
 
 namespace
@@ -309,3 +311,5 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::PrintSelf(ostream& os, vtkInde
     named.second->PrintSelf(os, indent.GetNextIndent());
   }
 }
+
+VTK_ABI_NAMESPACE_END

@@ -39,12 +39,16 @@
 #ifndef vtkHAVSUnstructuredGridVolumeRepresentation_h
 #define vtkHAVSUnstructuredGridVolumeRepresentation_h
 
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+
 #include "vtkHAVSRepresentationsModule.h" // For export macro
 #include "vtkUnstructuredGridVolumeRepresentation.h"
 
 #include <string>  // For std::string
 #include <utility> // For std::pair
 #include <vector>  // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSCellProjectionMapper;
 class vtkHAVSMapperBase;
@@ -176,4 +180,5 @@ private:
   double InteractiveTargetSeconds = 0.1;
 };
 
+VTK_ABI_NAMESPACE_END
 #endif
