@@ -58,12 +58,6 @@
 
 VTK_ABI_NAMESPACE_BEGIN
 
-class vtkFloatArray;
-class vtkHAVSFramePlanes;
-class vtkHAVSMesh;
-class vtkHAVSPreIntegrationTable;
-class vtkHAVSViewFrame;
-
 class VTKHAVSCORE_EXPORT vtkHAVSCellProjectionMapper : public vtkHAVSMapperBase
 {
 public:

@@ -11,8 +11,8 @@
  * @class   vtkHAVSMapperInputs
  * @brief   What every vtkHAVS mapper prepares from its input and volume the same way.
  *
- * Shared by vtkHAVSVolumeMapper and vtkHAVSCellProjectionMapper (one code
- * path, one set of messages): the mesh of the mapper's input for its scalar
+ * The helpers vtkHAVSMapperBase calls for all three mappers (one code path,
+ * one set of messages): the mesh of the mapper's input for its scalar
  * selection, the pre-integration table of the volume's property, and whether
  * the renderer can have opaque geometry in its depth buffer. Errors go out
  * through the mapper (vtkErrorWithObjectMacro); warnings that should be given

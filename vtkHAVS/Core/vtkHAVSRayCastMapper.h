@@ -59,12 +59,7 @@
 
 VTK_ABI_NAMESPACE_BEGIN
 
-class vtkFloatArray;
-class vtkHAVSFramePlanes;
-class vtkHAVSMesh;
-class vtkHAVSPreIntegrationTable;
 class vtkHAVSRayCastMesh;
-class vtkHAVSViewFrame;
 
 class VTKHAVSCORE_EXPORT vtkHAVSRayCastMapper : public vtkHAVSMapperBase
 {

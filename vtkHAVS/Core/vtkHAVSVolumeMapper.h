@@ -65,19 +65,14 @@
 
 VTK_ABI_NAMESPACE_BEGIN
 
-class vtkFloatArray;
 class vtkHAVSCellVisibility;
 class vtkHAVSFaceOrderPolicy;
 class vtkHAVSFaceSorter;
-class vtkHAVSFramePlanes;
 class vtkHAVSInternalFaceRanking;
 class vtkHAVSLevelOfDetailController;
 class vtkHAVSFrameStatistics;
-class vtkHAVSMesh;
-class vtkHAVSPreIntegrationTable;
 class vtkHAVSTableResolution;
 class vtkHAVSViewCulling;
-class vtkHAVSViewFrame;
 class vtkRenderWindow;
 
 class VTKHAVSCORE_EXPORT vtkHAVSVolumeMapper : public vtkHAVSMapperBase

@@ -9,14 +9,24 @@
 =========================================================================*/
 #include "vtkHAVSGLMapperResources.h"
 
+#include "vtkHAVSExtremumPass.h"
+#include "vtkHAVSFramePlanes.h"
+#include "vtkHAVSFrameRequest.h"
 #include "vtkHAVSGLCapabilities.h"
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLTable.h"
+#include "vtkHAVSOpenGL.h"
+#include "vtkHAVSViewFrame.h"
 
 #include "vtkCommand.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -56,6 +66,108 @@ vtkOpenGLRenderWindow* vtkHAVSGLMapperResources::Prepare(
     return nullptr;
   }
   return window;
+}
+
+namespace
+{
+/// The most planes the shaders take: 6 clipping planes and the near plane.
+constexpr int MaximumPlanes = 7;
+/// The additive blend's value (vtkVolumeMapper::ADDITIVE_BLEND).
+constexpr int AdditiveBlend = 4;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLMapperResources::BeginFrame(
+  const vtkHAVSViewFrame& view, bool opaque, vtkObject* mapper)
+{
+  this->Targets->Resize(view.Width, view.Height);
+  if (opaque)
+  {
+    this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, view.Width, view.Height, mapper);
+  }
+}
+
+void vtkHAVSGLMapperResources::ActivateTextures()
+{
+  this->Table->GetTable()->Activate();
+  this->Targets->GetOpaqueDepth()->Activate();
+  this->Table->GetAdditive1D()->Activate();
+  this->Table->GetCellOptics()->Activate();
+}
+
+void vtkHAVSGLMapperResources::SetTextureUniforms(vtkShaderProgram* program)
+{
+  this->Table->SetUniforms(program);
+  program->SetUniformi("havsAdditive", this->Table->GetAdditive1D()->GetTextureUnit());
+  program->SetUniformi("havsOpaqueDepth", this->Targets->GetOpaqueDepth()->GetTextureUnit());
+}
+
+void vtkHAVSGLMapperResources::SetViewUniforms(vtkShaderProgram* program,
+  const vtkHAVSViewFrame& view, vtkHAVSFramePlanes* planes, const double shift[3], bool eye)
+{
+  float m[16];
+  vtkHAVSViewFrame::ToColumnMajor(view.ModelToEyeRelative, m);
+  program->SetUniformMatrix4x4("havsMCRC", m);
+  vtkHAVSViewFrame::ToColumnMajor(view.ClipToEyeRelative, m);
+  program->SetUniformMatrix4x4("havsDCRC", m);
+  float eyeModel[3], direction[3], directionWorld[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    eyeModel[i] = static_cast<float>(view.EyeGrid[i] - shift[i]);
+    direction[i] = static_cast<float>(view.DirectionGrid[i]);
+    directionWorld[i] = static_cast<float>(view.DirectionWorld[i]);
+  }
+  program->SetUniform3f("havsDirectionOfProjection", directionWorld);
+  program->SetUniformi("havsParallel", view.Parallel ? 1 : 0);
+  const float viewport[2] = { static_cast<float>(view.Width), static_cast<float>(view.Height) };
+  program->SetUniform2f("havsViewportSize", viewport);
+  const int planeCount = std::min(planes->GetNumberOfPlanes(), MaximumPlanes);
+  program->SetUniformi("havsPlaneCount", planeCount);
+  if (planeCount > 0)
+  {
+    float values[MaximumPlanes][4] = {};
+    for (int i = 0; i < planeCount; ++i)
+    {
+      std::copy(planes->GetPlane(i).begin(), planes->GetPlane(i).end(), values[i]);
+    }
+    program->SetUniform4fv("havsPlanesRC", planeCount, values);
+  }
+  if (eye)
+  {
+    program->SetUniform3f("havsEyeMC", eyeModel);
+    program->SetUniform3f("havsDirectionMC", direction);
+  }
+}
+
+void vtkHAVSGLMapperResources::SetBlending(int blend)
+{
+  vtkOpenGLState* state = this->Window->GetState();
+  state->vtkglEnable(GL_BLEND);
+  if (blend == vtkHAVSFrameRequest::CompositeBlend)
+  {
+    // Front to back: what is drawn goes under what is in front (premultiplied).
+    state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+  }
+  else
+  {
+    // Order-independent: the largest (of s, or of 1 - s), or the sum.
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+    state->vtkglBlendEquation(blend == AdditiveBlend ? GL_FUNC_ADD : GL_MAX);
+  }
+}
+
+bool vtkHAVSGLMapperResources::EndFrame(
+  int blend, bool keep, const vtkHAVSViewFrame& view, vtkObject* mapper)
+{
+  vtkOpenGLState* state = this->Window->GetState();
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglBlendEquation(GL_FUNC_ADD);
+  const bool resolved =
+    vtkHAVSExtremumPass::ResolveBlend(this->Window, this->Targets, this->Table, blend);
+  return this->Targets->EndFrame(resolved, keep,
+    { this->Table->GetCellOptics(), this->Table->GetAdditive1D(), this->Table->GetTable(),
+      this->Targets->GetOpaqueDepth() },
+    view.OriginX, view.OriginY, mapper);
 }
 
 //------------------------------------------------------------------------------

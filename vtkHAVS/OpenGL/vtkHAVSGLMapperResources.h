@@ -20,6 +20,12 @@
  * targets (vtkHAVSGLFrameTargets: the result, the opaque depth, the kept
  * result). The mapper's own GPU objects are released through the callback
  * given to SetReleaseCallback, with the context current.
+ *
+ * The cell projection and the ray caster also share here the frame's frame:
+ * BeginFrame (targets at the view's size, the opaque depth), the textures
+ * and uniforms their programs read alike, the blending of a front-to-back
+ * (or order-independent) draw, and EndFrame (the extremum blends' resolve,
+ * the result composited into the window).
  */
 #ifndef vtkHAVSGLMapperResources_h
 #define vtkHAVSGLMapperResources_h
@@ -33,8 +39,11 @@
 
 VTK_ABI_NAMESPACE_BEGIN
 
+class vtkHAVSFramePlanes;
 class vtkHAVSGLFrameTargets;
 class vtkHAVSGLTable;
+class vtkHAVSViewFrame;
+class vtkShaderProgram;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkWindow;
@@ -63,6 +72,30 @@ public:
 
   /// Releases everything in `window` (nullptr: in whichever window holds it).
   void Release(vtkWindow* window);
+
+  /// The targets at the view's size; the opaque depth captured when `opaque`.
+  void BeginFrame(const vtkHAVSViewFrame& view, bool opaque, vtkObject* mapper);
+  /// The table's, the cell optics', the additive nodes' and the opaque depth's textures active.
+  void ActivateTextures();
+  /**
+   * The uniforms of the view every cell-projection and ray-casting program
+   * reads (havsMCRC, havsDCRC, havsDirectionOfProjection, havsParallel,
+   * havsViewportSize, havsPlaneCount, havsPlanesRC) and, with `eye`, the
+   * eye and direction in the mesh's shifted model coordinates (havsEyeMC,
+   * havsDirectionMC).
+   */
+  static void SetViewUniforms(vtkShaderProgram* program, const vtkHAVSViewFrame& view,
+    vtkHAVSFramePlanes* planes, const double shift[3], bool eye);
+  /// The table's uniforms, the additive nodes' and the opaque depth's units (textures active).
+  void SetTextureUniforms(vtkShaderProgram* program);
+  /// Blending for a draw front to back under the result (composite) or order-independent.
+  void SetBlending(int blend);
+  /**
+   * The frame's end: the extremum blends' resolve, the textures deactivated,
+   * the framebuffer bindings popped, the result kept when `keep` and
+   * composited into the window. False, with an error, when it failed.
+   */
+  bool EndFrame(int blend, bool keep, const vtkHAVSViewFrame& view, vtkObject* mapper);
 
   vtkOpenGLRenderWindow* GetWindow() const { return this->Window; }
   vtkHAVSGLTable* GetTable() { return this->Table; }

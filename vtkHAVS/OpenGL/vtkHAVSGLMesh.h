@@ -12,9 +12,10 @@
  * @brief   The mesh on the GPU: points, scalars, faces in draw order, sections.
  *
  * Points (3 floats, model coordinates) and normalized scalars are uploaded
- * once per mesh; the triangles in draw order and their boundary flags (a
- * texture buffer indexed by gl_PrimitiveID) once per new face order; the
- * sections of the near and clipping planes when they change. DrawFaces()
+ * once per mesh; the triangles in draw order once per new face order (with
+ * tagging, each boundary face on vertices of its own whose scalar tells the
+ * shader its role); the sections of the near and clipping planes when they
+ * change. Each Update* method uploads only when its version changed. DrawFaces()
  * draws, in this order along every ray, the sections that enter the clipped
  * volume, the faces, the sections that leave it.
  */

@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSGLObjects.h"
 
+#include "vtkHAVSFramePlanes.h"
+
 #include <algorithm>
 
 VTK_ABI_NAMESPACE_BEGIN
@@ -127,6 +129,41 @@ void vtkHAVSGLVertexArray::Release()
     glDeleteVertexArrays(1, &this->Handle);
   }
   this->Handle = 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkHAVSGLSection::Update(const vtkHAVSFramePlanes& planes)
+{
+  const std::vector<vtkHAVSFramePlanes::Section>& sections = planes.GetSections();
+  if (sections.empty())
+  {
+    return 0; // (the camera outside the mesh: nothing cut by the near plane)
+  }
+  const vtkMTimeType version = planes.GetSectionsVersion();
+  const vtkHAVSFramePlanes::Section& section = sections.front(); // the near plane's only
+  if (this->Points.Update(GL_ARRAY_BUFFER, section.Points, version, GL_STREAM_DRAW))
+  {
+    this->Cells.Update(GL_SHADER_STORAGE_BUFFER, section.Cells, version, GL_STREAM_DRAW);
+    this->Array.SetBuffers(this->Points, nullptr);
+    this->Triangles = static_cast<int>(section.Cells.size());
+  }
+  return this->Triangles;
+}
+
+void vtkHAVSGLSection::Draw(GLuint cellBinding)
+{
+  this->Cells.BindBase(GL_SHADER_STORAGE_BUFFER, cellBinding);
+  this->Array.Bind();
+  glDrawArrays(GL_TRIANGLES, 0, 3 * this->Triangles);
+  vtkHAVSGLVertexArray::Unbind();
+}
+
+void vtkHAVSGLSection::Release()
+{
+  this->Array.Release();
+  this->Points.Release();
+  this->Cells.Release();
+  this->Triangles = 0;
 }
 
 //------------------------------------------------------------------------------

@@ -37,6 +37,8 @@
 
 VTK_ABI_NAMESPACE_BEGIN
 
+class vtkHAVSFramePlanes;
+
 /// A GL buffer object and the version of what it holds.
 class vtkHAVSGLBuffer
 {
@@ -96,6 +98,27 @@ public:
 
 private:
   GLuint Handle = 0;
+};
+
+/**
+ * The near plane's section of the mesh where it cuts it (the camera inside),
+ * as the cell projection and the ray caster draw it: its triangles (points)
+ * and the cell of each (a storage buffer), uploaded when their version changed.
+ */
+class vtkHAVSGLSection
+{
+public:
+  /// The near plane's section of `planes` uploaded if new; its triangle count (0: none).
+  int Update(const vtkHAVSFramePlanes& planes);
+  /// Draws its triangles with each one's cell bound at `cellBinding`.
+  void Draw(GLuint cellBinding);
+  void Release();
+
+private:
+  vtkHAVSGLVertexArray Array;
+  vtkHAVSGLBuffer Points;
+  vtkHAVSGLBuffer Cells;
+  int Triangles = 0;
 };
 
 /// A 2D texture with immutable storage, for image load/store.

@@ -43,8 +43,6 @@ constexpr GLuint CellBinding = 4;  // the cells' planes and fields (vtkHAVSCellG
 constexpr GLuint OrderBinding = 5; // the cell of each drawn triangle's position
 /// Segments longer than this contribute nothing: off (the cell projection has no gaps to skip).
 constexpr float NoGapLength = 3.0e38f;
-/// The most planes the shaders take: 6 clipping planes and the near plane.
-constexpr int MaximumPlanes = 7;
 }
 
 /// The mapper's own GPU objects.
@@ -55,22 +53,18 @@ struct vtkOpenGLHAVSCellProjectionMapper::GLObjects
   vtkHAVSGLBuffer IndexBuffer;
   vtkHAVSGLBuffer CellBuffer;
   vtkHAVSGLBuffer OrderBuffer;
-  vtkHAVSGLVertexArray Section; // the near plane's section
-  vtkHAVSGLBuffer SectionPointBuffer;
-  vtkHAVSGLBuffer SectionCellBuffer;
-  int SectionTriangles = 0;
+  vtkHAVSGLSection Section; // the near plane's section
   size_t UploadedCells = 0; // tetrahedra in the index buffer (12 indices each)
 
   void Release()
   {
-    for (vtkHAVSGLBuffer* b : { &this->PointBuffer, &this->IndexBuffer, &this->CellBuffer,
-           &this->OrderBuffer, &this->SectionPointBuffer, &this->SectionCellBuffer })
+    for (vtkHAVSGLBuffer* b :
+      { &this->PointBuffer, &this->IndexBuffer, &this->CellBuffer, &this->OrderBuffer })
     {
       b->Release();
     }
     this->Cells.Release();
     this->Section.Release();
-    this->SectionTriangles = 0;
     this->UploadedCells = 0;
   }
 };
@@ -118,73 +112,29 @@ void vtkOpenGLHAVSCellProjectionMapper::Upload(const CellFrame& frame)
 }
 
 //------------------------------------------------------------------------------
-int vtkOpenGLHAVSCellProjectionMapper::UploadSection(const CellFrame& frame)
-{
-  const std::vector<vtkHAVSFramePlanes::Section>& sections = frame.Planes->GetSections();
-  if (sections.empty())
-  {
-    return 0; // (the camera outside the mesh: nothing cut by the near plane)
-  }
-  GLObjects& gl = *this->GL;
-  const vtkMTimeType version = frame.Planes->GetSectionsVersion();
-  const vtkHAVSFramePlanes::Section& section = sections.front(); // the near plane's only
-  if (gl.SectionPointBuffer.Update(GL_ARRAY_BUFFER, section.Points, version, GL_STREAM_DRAW))
-  {
-    gl.SectionCellBuffer.Update(GL_SHADER_STORAGE_BUFFER, section.Cells, version, GL_STREAM_DRAW);
-    gl.Section.SetBuffers(gl.SectionPointBuffer, nullptr);
-    gl.SectionTriangles = static_cast<int>(section.Cells.size());
-  }
-  return gl.SectionTriangles;
-}
-
-//------------------------------------------------------------------------------
 void vtkOpenGLHAVSCellProjectionMapper::SetUniforms(
   vtkShaderProgram* program, const CellFrame& frame)
 {
   const vtkHAVSViewFrame& view = *frame.View;
-  this->Resources->GetTable()->SetUniforms(program);
-  program->SetUniformi("havsAdditive", this->Resources->GetTable()->GetAdditive1D()->GetTextureUnit());
-  program->SetUniformi(
-    "havsOpaqueDepth", this->Resources->GetTargets()->GetOpaqueDepth()->GetTextureUnit());
+  this->Resources->SetTextureUniforms(program);
+  vtkHAVSGLMapperResources::SetViewUniforms(
+    program, view, frame.Planes, frame.Mesh->GetShift(), true);
+  // The projection's own: the clip matrix, the model's linear part in world
+  // units (the segment lengths), the testing aid, no gap length.
   float m[16];
-  vtkHAVSViewFrame::ToColumnMajor(view.ModelToEyeRelative, m);
-  program->SetUniformMatrix4x4("havsMCRC", m);
   vtkHAVSViewFrame::ToColumnMajor(view.ModelToClip, m);
   program->SetUniformMatrix4x4("havsMCDC", m);
-  vtkHAVSViewFrame::ToColumnMajor(view.ClipToEyeRelative, m);
-  program->SetUniformMatrix4x4("havsDCRC", m);
-  const double* shift = frame.Mesh->GetShift();
-  float eye[3], direction[3], directionWorld[3], linear[9];
+  float linear[9];
   for (int i = 0; i < 3; ++i)
   {
-    eye[i] = static_cast<float>(view.EyeGrid[i] - shift[i]);
-    direction[i] = static_cast<float>(view.DirectionGrid[i]);
-    directionWorld[i] = static_cast<float>(view.DirectionWorld[i]);
     for (int j = 0; j < 3; ++j)
     {
       linear[3 * j + i] = static_cast<float>(view.GridToWorld[4 * i + j]); // column-major
     }
   }
-  program->SetUniform3f("havsEyeMC", eye);
-  program->SetUniform3f("havsDirectionMC", direction);
-  program->SetUniform3f("havsDirectionOfProjection", directionWorld);
   program->SetUniformMatrix3x3("havsModelToWorld", linear);
-  program->SetUniformi("havsParallel", view.Parallel ? 1 : 0);
   program->SetUniformi("havsWrongExit", frame.WrongExit ? 1 : 0);
   program->SetUniformf("havsGapLength", NoGapLength);
-  const float viewport[2] = { static_cast<float>(view.Width), static_cast<float>(view.Height) };
-  program->SetUniform2f("havsViewportSize", viewport);
-  const int planeCount = std::min(frame.Planes->GetNumberOfPlanes(), MaximumPlanes);
-  program->SetUniformi("havsPlaneCount", planeCount);
-  if (planeCount > 0)
-  {
-    float planes[MaximumPlanes][4];
-    for (int i = 0; i < planeCount; ++i)
-    {
-      std::copy(frame.Planes->GetPlane(i).begin(), frame.Planes->GetPlane(i).end(), planes[i]);
-    }
-    program->SetUniform4fv("havsPlanesRC", planeCount, planes);
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -199,23 +149,17 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
     return false;
   }
   GLObjects& gl = *this->GL;
-  vtkHAVSGLFrameTargets* targets = this->Resources->GetTargets();
-  vtkHAVSGLTable* glTable = this->Resources->GetTable();
   this->Upload(frame);
-  const int sectionTriangles = this->UploadSection(frame);
+  const int sectionTriangles = gl.Section.Update(*frame.Planes);
   const vtkHAVSViewFrame& view = *frame.View;
-  const int width = view.Width, height = view.Height;
-  targets->Resize(width, height);
   const bool opaque = frame.Opaque;
-  if (opaque)
-  {
-    targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height, this);
-  }
+  this->Resources->BeginFrame(view, opaque, this);
 
   // 2. The program, its textures and uniforms.
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
     vtkHAVSShaders::CellProjectionVertexShader().c_str(),
-    vtkHAVSShaders::CellProjectionShader(opaque, frame.Blend, glTable->HasCellOptics())
+    vtkHAVSShaders::CellProjectionShader(
+      opaque, frame.Blend, this->Resources->GetTable()->HasCellOptics())
       .c_str(),
     "");
   if (!program || !program->GetCompiled())
@@ -226,37 +170,18 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
 
   vtkOpenGLState* state = window->GetState();
   vtkHAVSGLScopedPassState passState(state);
-  vtkTextureObject* table = glTable->GetTable();
-  vtkTextureObject* depth = targets->GetOpaqueDepth();
-  vtkTextureObject* additive = glTable->GetAdditive1D();
-  vtkTextureObject* cellOptics = glTable->GetCellOptics();
-  table->Activate();
-  depth->Activate();
-  additive->Activate();
-  cellOptics->Activate();
+  this->Resources->ActivateTextures();
   this->SetUniforms(program, frame);
 
   // 3. The draw: the near plane's section, then every cell's front faces in
   // the order, blended front to back (or order-independently).
   state->PushFramebufferBindings();
-  targets->BindResult();
-  state->vtkglViewport(0, 0, width, height);
+  this->Resources->GetTargets()->BindResult();
+  state->vtkglViewport(0, 0, view.Width, view.Height);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   const float zero[4] = { 0, 0, 0, 0 };
   glClearBufferfv(GL_COLOR, 0, zero);
-  state->vtkglEnable(GL_BLEND);
-  if (frame.Blend == vtkHAVSCellProjectionMapper::COMPOSITE_BLEND)
-  {
-    // Front to back: the segment goes under what is in front (premultiplied).
-    state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
-  }
-  else
-  {
-    // Order-independent: the largest (of s, or of 1 - s), or the sum.
-    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-    state->vtkglBlendEquation(
-      frame.Blend == vtkHAVSCellProjectionMapper::ADDITIVE_BLEND ? GL_FUNC_ADD : GL_MAX);
-  }
+  this->Resources->SetBlending(frame.Blend);
   gl.CellBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, CellBinding);
   if (frame.MeasureStages)
   {
@@ -267,11 +192,9 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   {
     // The near plane's section first: the cells it cuts are the first along
     // their rays (either facing; one triangle per cell entry).
-    gl.SectionCellBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, OrderBinding);
     program->SetUniformi("havsTrianglesPerCell", 1);
     program->SetUniformi("havsNearSectionDrawn", 1);
-    gl.Section.Bind();
-    glDrawArrays(GL_TRIANGLES, 0, 3 * sectionTriangles);
+    gl.Section.Draw(OrderBinding);
   }
   state->vtkglEnable(GL_CULL_FACE);
   state->vtkglCullFace(GL_BACK);
@@ -290,11 +213,9 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   *drawSeconds = vtkTimerLog::GetUniversalTime() - t0;
   glFrontFace(GL_CCW);
   state->vtkglDisable(GL_CULL_FACE);
-  state->vtkglBlendEquation(GL_FUNC_ADD);
+
   // 4. The extremum blends' resolve, the result composited into the window.
-  const bool resolved = vtkHAVSExtremumPass::ResolveBlend(window, targets, glTable, frame.Blend);
-  return targets->EndFrame(resolved, frame.KeepResult, { cellOptics, additive, table, depth },
-    view.OriginX, view.OriginY, this);
+  return this->Resources->EndFrame(frame.Blend, frame.KeepResult, view, this);
 }
 
 //------------------------------------------------------------------------------
@@ -313,8 +234,7 @@ void vtkOpenGLHAVSCellProjectionMapper::ReleaseGraphicsResources(vtkWindow* wind
 void vtkOpenGLHAVSCellProjectionMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Cells uploaded: " << this->GL->UploadedCells
-     << ", section triangles: " << this->GL->SectionTriangles << "\n";
+  os << indent << "Cells uploaded: " << this->GL->UploadedCells << "\n";
   this->Resources->PrintSelf(os, indent.GetNextIndent());
 }
 

@@ -59,8 +59,6 @@ private:
 
   /// The mesh's points and cells, the order's faces and cells: each when its version changed.
   void Upload(const CellFrame& frame);
-  /// The near plane's section (triangles and their cells); returns its triangle count.
-  int UploadSection(const CellFrame& frame);
   /// Every uniform of the frame's program (the view, the planes, the table).
   void SetUniforms(vtkShaderProgram* program, const CellFrame& frame);
 

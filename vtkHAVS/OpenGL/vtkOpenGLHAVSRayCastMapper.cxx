@@ -68,8 +68,6 @@ constexpr float PeelTolerance = 1.0e-5f;
 constexpr float NoGapLength = 3.0e38f;
 /// A ray's walk stops after the mesh's cell count plus this many steps (a broken walk ends).
 constexpr int ExtraSteps = 16;
-/// The most planes the shaders take: 6 clipping planes and the near plane.
-constexpr int MaximumPlanes = 7;
 /// Vertices of one tile (two triangles), drawn instanced per tile.
 constexpr GLsizei TileVertices = 6;
 }
@@ -82,30 +80,26 @@ struct vtkOpenGLHAVSRayCastMapper::GLObjects
   vtkHAVSGLBuffer Points, Faces, FaceCells, Cells, Neighbours, Counts, TilePasses, PeelTiles;
   vtkHAVSGLImage EntryKey, EntryCell, RayState;
   vtkHAVSGLStencilTarget PeelTarget; // a stencil only: the tiles a pass peels
-  vtkHAVSGLVertexArray Section;      // the near plane's section
-  vtkHAVSGLBuffer SectionPoints, SectionCells;
-  int SectionTriangles = 0;
+  vtkHAVSGLSection Section;          // the near plane's section
   int BoundaryFaces = 0;
   int Tetrahedra = 0;
 
   void Release()
   {
     for (vtkHAVSGLBuffer* b : { &this->Points, &this->Faces, &this->FaceCells, &this->Cells,
-           &this->Neighbours, &this->Counts, &this->TilePasses, &this->PeelTiles,
-           &this->SectionPoints, &this->SectionCells })
+           &this->Neighbours, &this->Counts, &this->TilePasses, &this->PeelTiles })
     {
       b->Release();
     }
-    for (vtkHAVSGLVertexArray* v : { &this->Boundary, &this->Tiles, &this->Section })
-    {
-      v->Release();
-    }
+    this->Boundary.Release();
+    this->Tiles.Release();
+    this->Section.Release();
     for (vtkHAVSGLImage* i : { &this->EntryKey, &this->EntryCell, &this->RayState })
     {
       i->Release();
     }
     this->PeelTarget.Release();
-    this->SectionTriangles = this->BoundaryFaces = this->Tetrahedra = 0;
+    this->BoundaryFaces = this->Tetrahedra = 0;
   }
 };
 
@@ -139,26 +133,6 @@ void vtkOpenGLHAVSRayCastMapper::Upload(const RayFrame& frame)
     gl.Tetrahedra = static_cast<int>(mesh.GetNumberOfTetrahedra());
   }
   this->Resources->GetTable()->Update(frame.Table, frame.TableVersion);
-}
-
-//------------------------------------------------------------------------------
-int vtkOpenGLHAVSRayCastMapper::UploadSection(const RayFrame& frame)
-{
-  const std::vector<vtkHAVSFramePlanes::Section>& sections = frame.Planes->GetSections();
-  if (sections.empty())
-  {
-    return 0; // (the camera outside the mesh: nothing cut by the near plane)
-  }
-  GLObjects& gl = *this->GL;
-  const vtkMTimeType version = frame.Planes->GetSectionsVersion();
-  const vtkHAVSFramePlanes::Section& section = sections.front(); // the near plane's only
-  if (gl.SectionPoints.Update(GL_ARRAY_BUFFER, section.Points, version, GL_STREAM_DRAW))
-  {
-    gl.SectionCells.Update(GL_SHADER_STORAGE_BUFFER, section.Cells, version, GL_STREAM_DRAW);
-    gl.Section.SetBuffers(gl.SectionPoints, nullptr);
-    gl.SectionTriangles = static_cast<int>(section.Cells.size());
-  }
-  return gl.SectionTriangles;
 }
 
 //------------------------------------------------------------------------------
@@ -198,38 +172,13 @@ void vtkOpenGLHAVSRayCastMapper::SetUniforms(vtkOpenGLRenderWindow* window,
   const vtkHAVSViewFrame& view = *frame.View;
   vtkOpenGLShaderCache* cache = window->GetShaderCache();
   // What the peel and the cast both read (the view, the planes).
-  float m[16];
-  const double* shift = frame.Mesh->GetShift();
-  float eye[3], direction[3], directionWorld[3];
-  for (int i = 0; i < 3; ++i)
-  {
-    eye[i] = static_cast<float>(view.EyeGrid[i] - shift[i]);
-    direction[i] = static_cast<float>(view.DirectionGrid[i]);
-    directionWorld[i] = static_cast<float>(view.DirectionWorld[i]);
-  }
-  const float viewport[2] = { static_cast<float>(view.Width), static_cast<float>(view.Height) };
-  const int planeCount = std::min(frame.Planes->GetNumberOfPlanes(), MaximumPlanes);
-  float planes[MaximumPlanes][4] = {};
-  for (int i = 0; i < planeCount; ++i)
-  {
-    std::copy(frame.Planes->GetPlane(i).begin(), frame.Planes->GetPlane(i).end(), planes[i]);
-  }
   for (vtkShaderProgram* program : { programs.Peel, programs.Cast })
   {
     cache->ReadyShaderProgram(program);
-    vtkHAVSViewFrame::ToColumnMajor(view.ModelToEyeRelative, m);
-    program->SetUniformMatrix4x4("havsMCRC", m);
-    vtkHAVSViewFrame::ToColumnMajor(view.ClipToEyeRelative, m);
-    program->SetUniformMatrix4x4("havsDCRC", m);
-    program->SetUniform3f("havsDirectionOfProjection", directionWorld);
-    program->SetUniformi("havsParallel", view.Parallel ? 1 : 0);
-    program->SetUniform2f("havsViewportSize", viewport);
-    program->SetUniformi("havsPlaneCount", planeCount);
-    if (planeCount > 0)
-    {
-      program->SetUniform4fv("havsPlanesRC", planeCount, planes);
-    }
+    vtkHAVSGLMapperResources::SetViewUniforms(
+      program, view, frame.Planes, frame.Mesh->GetShift(), program == programs.Cast);
   }
+  const float viewport[2] = { static_cast<float>(view.Width), static_cast<float>(view.Height) };
   cache->ReadyShaderProgram(programs.Mask);
   programs.Mask->SetUniform2f("havsViewportSize", viewport);
   for (vtkShaderProgram* program : { programs.Peel, programs.Cast, programs.Mask })
@@ -239,6 +188,7 @@ void vtkOpenGLHAVSRayCastMapper::SetUniforms(vtkOpenGLRenderWindow* window,
     program->SetUniformi("havsTileSize", grid.Size);
   }
   // The peel's own.
+  float m[16];
   cache->ReadyShaderProgram(programs.Peel);
   vtkHAVSViewFrame::ToColumnMajor(view.ModelToClip, m);
   programs.Peel->SetUniformMatrix4x4("havsMCDC", m);
@@ -246,19 +196,13 @@ void vtkOpenGLHAVSRayCastMapper::SetUniforms(vtkOpenGLRenderWindow* window,
   // The cast's own: the table, the opaque depth, the walk.
   vtkShaderProgram* cast = programs.Cast;
   cache->ReadyShaderProgram(cast);
-  vtkHAVSGLTable* table = this->Resources->GetTable();
-  table->SetUniforms(cast);
+  this->Resources->SetTextureUniforms(cast);
   cast->SetUniformf("havsTerminationOpacity", frame.TerminationOpacity);
   cast->SetUniformf("havsGapLength", NoGapLength);
-  cast->SetUniformi(
-    "havsOpaqueDepth", this->Resources->GetTargets()->GetOpaqueDepth()->GetTextureUnit());
-  cast->SetUniformi("havsAdditive", table->GetAdditive1D()->GetTextureUnit());
   double clipToModel[16];
   vtkMatrix4x4::Invert(view.ModelToClip, clipToModel);
   vtkHAVSViewFrame::ToColumnMajor(clipToModel, m);
   cast->SetUniformMatrix4x4("havsDCMC", m);
-  cast->SetUniform3f("havsEyeMC", eye);
-  cast->SetUniform3f("havsDirectionMC", direction);
   cast->SetUniformi("havsMaxSteps", this->GL->Tetrahedra + ExtraSteps);
   cast->SetUniformi("havsFolds", frame.FoldReentries ? 1 : 0);
 }
@@ -350,9 +294,7 @@ void vtkOpenGLHAVSRayCastMapper::Peel(vtkOpenGLRenderWindow* window, const Progr
       // The camera inside: the rays start on the near plane's section
       // (either facing), nearer than any boundary face behind it.
       state->vtkglDisable(GL_CULL_FACE);
-      gl.Section.Bind();
-      gl.SectionCells.BindBase(GL_SHADER_STORAGE_BUFFER, FaceCellBinding);
-      glDrawArrays(GL_TRIANGLES, 0, 3 * sectionTriangles);
+      gl.Section.Draw(FaceCellBinding);
     }
     if (stage == 0)
     {
@@ -370,23 +312,11 @@ void vtkOpenGLHAVSRayCastMapper::Peel(vtkOpenGLRenderWindow* window, const Progr
 void vtkOpenGLHAVSRayCastMapper::Cast(vtkOpenGLRenderWindow* window, const Programs& programs,
   const RayFrame& frame, const TileGrid& grid, int pass)
 {
-  vtkOpenGLState* state = window->GetState();
   this->Resources->GetTargets()->BindResult();
   window->GetShaderCache()->ReadyShaderProgram(programs.Cast);
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  state->vtkglEnable(GL_BLEND);
-  if (frame.Blend == vtkHAVSRayCastMapper::COMPOSITE_BLEND)
-  {
-    // Front to back: this pass goes under the earlier ones (premultiplied).
-    state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
-  }
-  else
-  {
-    // Order-independent: the largest (of s, or of 1 - s), or the sum.
-    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-    state->vtkglBlendEquation(
-      frame.Blend == vtkHAVSRayCastMapper::ADDITIVE_BLEND ? GL_FUNC_ADD : GL_MAX);
-  }
+  window->GetState()->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  // This pass's colour goes under the earlier passes' (or order-independently).
+  this->Resources->SetBlending(frame.Blend);
   // (Only the tiles where this pass's peeling found entries.)
   programs.Cast->SetUniformi("havsPass", pass + 1);
   this->GL->Tiles.Bind();
@@ -435,21 +365,15 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     return false;
   }
   GLObjects& gl = *this->GL;
-  vtkHAVSGLFrameTargets* targets = this->Resources->GetTargets();
-  vtkHAVSGLTable* glTable = this->Resources->GetTable();
   this->Upload(frame);
-  const int sectionTriangles = this->UploadSection(frame);
+  const int sectionTriangles = gl.Section.Update(*frame.Planes);
   const vtkHAVSViewFrame& view = *frame.View;
   const int width = view.Width, height = view.Height;
-  targets->Resize(width, height);
+  this->Resources->BeginFrame(view, frame.Opaque, this);
   gl.EntryKey.Resize(GL_R32UI, width, height);
   gl.EntryCell.Resize(GL_R32UI, width, height);
   gl.RayState.Resize(GL_RGBA32F, width, height);
   gl.PeelTarget.Resize(width, height);
-  if (frame.Opaque)
-  {
-    targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height, this);
-  }
 
   // 2. The programs, the textures, the uniforms; the screen tiles (without
   // them, one tile covering the viewport).
@@ -460,14 +384,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   }
   vtkOpenGLState* state = window->GetState();
   vtkHAVSGLScopedPassState passState(state);
-  vtkTextureObject* table = glTable->GetTable();
-  vtkTextureObject* depth = targets->GetOpaqueDepth();
-  vtkTextureObject* additive = glTable->GetAdditive1D();
-  vtkTextureObject* cellOptics = glTable->GetCellOptics();
-  table->Activate();
-  depth->Activate();
-  additive->Activate();
-  cellOptics->Activate();
+  this->Resources->ActivateTextures();
   TileGrid grid;
   grid.Size = frame.TileSize > 0 ? frame.TileSize : std::max(width, height);
   grid.Count[0] = (width + grid.Size - 1) / grid.Size;
@@ -490,7 +407,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     }
   }
   state->PushFramebufferBindings();
-  targets->BindResult();
+  this->Resources->GetTargets()->BindResult();
   state->vtkglViewport(0, 0, width, height);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   const float zero[4] = { 0, 0, 0, 0 };
@@ -535,17 +452,13 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   state->vtkglStencilFunc(stencil[0], stencil[1], static_cast<GLuint>(stencil[2]));
   state->vtkglStencilOp(stencil[3], stencil[4], stencil[5]);
   state->vtkglStencilMask(static_cast<GLuint>(stencil[6]));
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglBlendEquation(GL_FUNC_ADD);
-
-  // 6. The extremum blends' resolve, the result composited into the window.
-  const bool resolved = vtkHAVSExtremumPass::ResolveBlend(window, targets, glTable, frame.Blend);
   for (GLuint unit = 0; unit < NumberOfImageUnits; ++unit)
   {
     vtkHAVSGLImage::UnbindImage(unit);
   }
-  return targets->EndFrame(resolved, frame.KeepResult, { cellOptics, additive, table, depth },
-    view.OriginX, view.OriginY, this);
+
+  // 6. The extremum blends' resolve, the result composited into the window.
+  return this->Resources->EndFrame(frame.Blend, frame.KeepResult, view, this);
 }
 
 //------------------------------------------------------------------------------
@@ -565,8 +478,7 @@ void vtkOpenGLHAVSRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Boundary faces: " << this->GL->BoundaryFaces
-     << ", tetrahedra: " << this->GL->Tetrahedra
-     << ", section triangles: " << this->GL->SectionTriangles << "\n";
+     << ", tetrahedra: " << this->GL->Tetrahedra << "\n";
   this->Resources->PrintSelf(os, indent.GetNextIndent());
 }
 

@@ -84,8 +84,6 @@ private:
 
   /// The ray mesh and the table: each when its version changed.
   void Upload(const RayFrame& frame);
-  /// The near plane's section (triangles and their cells); returns its triangle count.
-  int UploadSection(const RayFrame& frame);
   /// The programs (nullptr members, with an error, when one did not build).
   bool MakePrograms(vtkOpenGLRenderWindow* window, const RayFrame& frame, Programs& programs);
   /// Every uniform of the three programs for this frame.

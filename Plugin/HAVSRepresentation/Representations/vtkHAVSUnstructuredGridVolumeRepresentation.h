@@ -67,9 +67,10 @@ public:
   ///@{
   /**
    * Which of vtkHAVS's mappers renders: "HAVS" (vtkHAVSVolumeMapper, the
-   * default) or "HAVS Ray Cast" (vtkHAVSRayCastMapper: GPU ray casting
-   * through the tetrahedra, no sorting). Any other name is an error and
-   * keeps the mapper.
+   * default), "HAVS Ray Cast" (vtkHAVSRayCastMapper: GPU ray casting
+   * through the tetrahedra, no sorting) or "HAVS Cell Projection"
+   * (vtkHAVSCellProjectionMapper: the cells in the exact order). Any other
+   * name is an error and keeps the mapper.
    */
   void SetHAVSMapper(const char* name);
   const char* GetHAVSMapper() { return this->HAVSMapperName.c_str(); }
