@@ -24,9 +24,13 @@
 // 5. a mesh shared by two mappers (SetMesh): the second mapper prepares
 //    nothing (GetLastMeshUpdate() == MeshShared), follows a new time step,
 //    and draws the same image as with a mesh of its own (control: the
-//    statistic of a mapper with its own mesh says MeshBuilt).
+//    statistic of a mapper with its own mesh says MeshBuilt);
+// 6. a volume with a shader property the mappers do not apply (a replacement
+//    of a `//VTK::` tag) gets exactly one warning per mapper over two frames
+//    (control: the same volume without it gets none).
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
+#include "havsTestMessages.h"
 #include "havsTestScenes.h"
 
 #include "vtkHAVSCellProjectionMapper.h"
@@ -47,6 +51,7 @@
 #include "vtkPoints.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkShaderProperty.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
@@ -361,6 +366,31 @@ int TestHAVSMapperContract(int, char*[])
     d = havstest::Compare(havstest::ReadRGBA(b.Window), havstest::ReadRGBA(c.Window));
     Check(d.Max == 0.0,
       "and draws the new time step as its own mesh does (max " + std::to_string(d.Max) + ")");
+  }
+
+  // 6. The volume's shader property: said once, not silently dropped.
+  for (size_t i = 0; i < mappers.size(); ++i)
+  {
+    for (bool replaced : { true, false })
+    {
+      vtkSmartPointer<vtkHAVSMapperBase> m = mappers[i]->NewInstance();
+      m->Delete(); // (NewInstance gave one reference, the smart pointer took another)
+      havstest::VolumeScene scene = havstest::MakeScene(grid, m, property, 64, 64);
+      if (replaced)
+      {
+        scene.Volume->GetShaderProperty()->AddFragmentShaderReplacement(
+          "//VTK::Base::Dec", true, "//VTK::Base::Dec\n// a user's replacement", false);
+      }
+      havstest::Messages* messages = havstest::CountMessages(m);
+      scene.Window->Render();
+      scene.Window->Render();
+      const bool said = messages->Text.find("shader property") != std::string::npos;
+      Check(replaced ? (said && messages->Warnings == 1) : (!said && messages->Warnings == 0),
+        std::string(m->GetClassName()) +
+          (replaced ? ": one warning for the shader property it does not apply ("
+                    : ": control, no shader property: no warning (") +
+          std::to_string(messages->Warnings) + " warnings)");
+    }
   }
   return havstest::Result();
 }

@@ -20,10 +20,14 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkRenderWindow.h"
+#include "vtkShaderProperty.h"
+#include "vtkUniforms.h"
 #include "vtkRenderer.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGridBase.h"
 #include "vtkVolume.h"
+
+#include <string>
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -175,6 +179,31 @@ bool vtkHAVSMapperBase::PrepareMesh(vtkVolume* volume)
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSMapperBase::CheckShaderProperty(vtkVolume* volume)
+{
+  vtkShaderProperty* property = volume ? volume->GetShaderProperty() : nullptr;
+  if (!property)
+  {
+    return;
+  }
+  const int replacements = property->GetNumberOfShaderReplacements();
+  const int uniforms = property->GetFragmentCustomUniforms()->GetNumberOfUniforms() +
+    property->GetVertexCustomUniforms()->GetNumberOfUniforms() +
+    property->GetGeometryCustomUniforms()->GetNumberOfUniforms();
+  const bool code = property->HasVertexShaderCode() || property->HasFragmentShaderCode() ||
+    property->HasGeometryShaderCode();
+  if (replacements > 0 || uniforms > 0 || code)
+  {
+    this->WarnOnce(vtkHAVSMapperInputs::WarnShaderProperty,
+      "The volume's shader property (" + std::to_string(replacements) + " replacements, " +
+        std::to_string(uniforms) + " custom uniforms" + (code ? ", shader code" : "") +
+        ") is not applied by " + this->MapperName +
+        ": its shaders have none of vtkOpenGLGPUVolumeRayCastMapper's tags. The volume is "
+        "drawn without it.");
+  }
+}
+
+//------------------------------------------------------------------------------
 bool vtkHAVSMapperBase::PrepareTable(vtkVolume* volume)
 {
   return vtkHAVSMapperInputs::PrepareTable(this, volume, this->Mesh, this->Table,
@@ -203,6 +232,7 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   else if (!this->AbortRequested(renderer))
   {
+    this->CheckShaderProperty(volume);
     // 3. The input and its mesh, 4. the table: each only when its inputs changed.
     if (this->GetNumberOfInputConnections(0) > 0)
     {

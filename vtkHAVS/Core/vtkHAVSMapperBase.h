@@ -40,6 +40,12 @@
  *   aborted frame draws nothing (GetLastFrameAborted()).
  *
  * Warnings that should be given once per mapper go through WarnOnce.
+ *
+ * The volume's shader property (vtkOpenGLShaderProperty: replacements of
+ * vtkOpenGLGPUVolumeRayCastMapper's `//VTK::` tags, custom uniforms, whole
+ * shader code) is not applied: the three mappers' shaders have none of those
+ * tags. A volume that has any gets one warning per mapper saying so, and is
+ * drawn as without it.
  */
 #ifndef vtkHAVSMapperBase_h
 #define vtkHAVSMapperBase_h
@@ -235,6 +241,7 @@ private:
   void operator=(const vtkHAVSMapperBase&) = delete;
 
   bool PrepareMesh(vtkVolume* volume);
+  void CheckShaderProperty(vtkVolume* volume);
 
   const char* MapperName;
   int LastMeshUpdate = MeshNotPrepared;
@@ -242,7 +249,7 @@ private:
   bool LastFrameAborted = false;
   vtkMTimeType SeenMeshBuild = 0;  // the mesh's build and scalar times this mapper last drew
   vtkMTimeType SeenMeshScalars = 0;
-  std::array<bool, 9> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
+  std::array<bool, 10> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
 };
 
 VTK_ABI_NAMESPACE_END

@@ -56,6 +56,7 @@ public:
     WarnOrder,
     WarnBlend,
     WarnAutomaticK,
+    WarnShaderProperty,
     NumberOfOnceWarnings
   };
   using WarnOnce = std::function<void(int, const std::string&)>;
