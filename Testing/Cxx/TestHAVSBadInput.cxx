@@ -183,7 +183,7 @@ int TestHAVSBadInput(int, char*[])
     havstest::Check(o.Errors == 1, "all-NaN scalars: error");
   }
   // A polygon next to tetrahedra: skipped with a warning; only polygons: error.
-  // (A hexahedron is split into tetrahedra: TestHAVSCells.)
+  // (A hexahedron is split into tetrahedra: TestHAVSCellTypes.)
   {
     auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
     vtkIdType quad[4] = { 0, 1, 4, 3 };
@@ -237,7 +237,7 @@ int TestHAVSBadInput(int, char*[])
       o.Warnings >= 1 && Contains(o.Text, "2 cells refer to points that do not exist"),
       "point ids out of range (cells to split): a warning that counts them");
   }
-  // Cell scalars render (their accuracy: TestHAVSCells); field data: a clear error.
+  // Cell scalars render (their accuracy: TestHAVSCellScalars); field data: a clear error.
   {
     auto grid = vtkHAVSDataSets::MakeBox(2, 2, 2, 0.5, 0.0, 1.0);
     vtkNew<vtkDoubleArray> cellScalars;

@@ -111,7 +111,7 @@ void TestInvisibleCells(bool cellScalars, bool parallel)
 {
   const std::string name = std::string(cellScalars ? "cell" : "point") + " scalars, " +
     (parallel ? "parallel" : "perspective");
-  // Pixels left out, as the other exactness tests do (TestHAVSCells says why
+  // Pixels left out, as the other exactness tests do (havsTestCells.h says why
   // cell scalars need two more).
   const size_t edge = cellScalars ? 7 : 5;
   vtkSmartPointer<vtkUnstructuredGrid> grid = vtkHAVSDataSets::MakeGenerated(14);
