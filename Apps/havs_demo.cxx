@@ -1368,9 +1368,10 @@ void PrintSetup(const Scene& scene, const Options& o, const Platform& platform,
         platform.LastOrder.c_str(), platform.OrderViolations);
     }
   }
-  std::printf("HAVS RC = vtkHAVSRayCastMapper (GPU ray casting through the tetrahedra, "
-              "depth-peeled re-entries); HAVS CP = vtkHAVSCellProjectionMapper (the cells in the "
-              "exact MPVO order, each fragment integrating its cell); both with HAVS's %d^3 table.\n",
+  std::printf(
+    "HAVS RC = vtkHAVSRayCastMapper (GPU ray casting through the tetrahedra, "
+    "depth-peeled re-entries); HAVS CP = vtkHAVSCellProjectionMapper (the cells in the "
+    "exact MPVO order, each fragment integrating its cell); both with HAVS's %d^3 table.\n",
     o.Table);
   std::printf("PT = vtkProjectedTetrahedraMapper; ZSweep = vtkUnstructuredGridVolumeZSweepMapper "
               "and RayCast = vtkUnstructuredGridVolumeRayCastMapper with ImageSampleDistance 1, "

@@ -133,24 +133,28 @@ int CheckFrameContract(const Candidate& c, vtkUnstructuredGrid* grid, vtkVolumeP
   log.Window = window;
   vtkNew<vtkCallbackCommand> onMapper;
   onMapper->SetClientData(&log);
-  onMapper->SetCallback([](vtkObject*, unsigned long event, void* data, void*) {
-    auto* l = static_cast<Log*>(data);
-    const bool start = event == vtkCommand::VolumeMapperRenderStartEvent;
-    l->Events.push_back(start ? "start" : "end");
-    l->Inside = start;
-    if (start && l->AbortWanted)
+  onMapper->SetCallback(
+    [](vtkObject*, unsigned long event, void* data, void*)
     {
-      l->Window->SetAbortRender(1);
-    }
-  });
+      auto* l = static_cast<Log*>(data);
+      const bool start = event == vtkCommand::VolumeMapperRenderStartEvent;
+      l->Events.push_back(start ? "start" : "end");
+      l->Inside = start;
+      if (start && l->AbortWanted)
+      {
+        l->Window->SetAbortRender(1);
+      }
+    });
   mapper->AddObserver(vtkCommand::VolumeMapperRenderStartEvent, onMapper);
   mapper->AddObserver(vtkCommand::VolumeMapperRenderEndEvent, onMapper);
   vtkNew<vtkCallbackCommand> onAbortCheck;
   onAbortCheck->SetClientData(&log);
-  onAbortCheck->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
-    auto* l = static_cast<Log*>(data);
-    l->AbortChecks += l->Inside ? 1 : 0;
-  });
+  onAbortCheck->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*)
+    {
+      auto* l = static_cast<Log*>(data);
+      l->AbortChecks += l->Inside ? 1 : 0;
+    });
   window->AddObserver(vtkCommand::AbortCheckEvent, onAbortCheck);
 
   window->Render();
@@ -345,8 +349,8 @@ int TestHAVSMapperContract(int, char*[])
       havstest::Compare(havstest::ReadRGBA(b.Window), havstest::ReadRGBA(c.Window));
     Check(d.Max == 0.0, "the shared mesh draws the same image (max " + std::to_string(d.Max) + ")");
     b.Window->Render();
-    Check(sharing->GetLastMeshUpdate() == vtkHAVSMapperBase::MeshUnchanged,
-      "then unchanged for it");
+    Check(
+      sharing->GetLastMeshUpdate() == vtkHAVSMapperBase::MeshUnchanged, "then unchanged for it");
 
     // A new time step: other values of the same array on the same mesh.
     vtkDataArray* s = box->GetPointData()->GetScalars();

@@ -71,8 +71,8 @@ int TestHAVSShaderSources(int, char*[])
   check(vtkHAVSShaders::RayCastShader(true), "ray_cast_opaque", "frag");
   for (int blend : { 1, 2, 4 })
   {
-    check(vtkHAVSShaders::RayCastShader(true, blend),
-      "ray_cast_blend" + std::to_string(blend), "frag");
+    check(
+      vtkHAVSShaders::RayCastShader(true, blend), "ray_cast_blend" + std::to_string(blend), "frag");
   }
   check(vtkHAVSShaders::RayCastTileVertexShader(), "ray_cast_tile", "vert");
   for (int blend : { 1, 2, 4 })
@@ -80,16 +80,13 @@ int TestHAVSShaderSources(int, char*[])
     check(vtkHAVSShaders::CellProjectionShader(true, blend),
       "cell_projection_blend" + std::to_string(blend), "frag");
   }
-  check(
-    vtkHAVSShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true),
+  check(vtkHAVSShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true),
     "list_resolve_vote", "frag");
-  check(
-    vtkHAVSShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, false),
+  check(vtkHAVSShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, false),
     "list_resolve", "frag");
   for (int k : { 1, 2, 3, 6, 13, 14 })
   {
-    check(vtkHAVSShaders::ResolveShader(
-            vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, k, false),
+    check(vtkHAVSShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, k, false),
       "fetch_resolve_k" + std::to_string(k), "frag");
   }
   for (int k : { 1, 2, 3, 6, 14, 15, 32, 64 })
@@ -113,14 +110,13 @@ int TestHAVSShaderSources(int, char*[])
     f.Tagging = (mask & 2) != 0;
     f.Opaque = (mask & 4) != 0;
     const std::string suffix = "_features" + std::to_string(mask);
-    check(vtkHAVSShaders::ResolveShader(
-            vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, 2, false, f),
+    check(
+      vtkHAVSShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFramebufferFetch, 2, false, f),
       "fetch_resolve" + suffix, "frag");
     check(vtkHAVSShaders::InterlockDrawShader(6, vtkHAVSShaders::InterlockARB, f),
       "interlock_draw" + suffix, "frag");
     check(vtkHAVSShaders::ListDrawShader(f), "list_draw" + suffix, "frag");
-    check(vtkHAVSShaders::ResolveShader(
-            vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true, f),
+    check(vtkHAVSShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true, f),
       "list_resolve" + suffix, "frag");
   }
   // Cell scalars (vtkHAVSCellOptics: the segments, the extremum resolve and
@@ -133,8 +129,8 @@ int TestHAVSShaderSources(int, char*[])
     for (int blend : { 0, 1, 2, 4 })
     {
       const std::string suffix = "_cells_blend" + std::to_string(blend);
-      check(vtkHAVSShaders::CellProjectionShader(true, blend, true),
-        "cell_projection" + suffix, "frag");
+      check(vtkHAVSShaders::CellProjectionShader(true, blend, true), "cell_projection" + suffix,
+        "frag");
       check(vtkHAVSShaders::RayCastShader(true, blend, true), "ray_cast" + suffix, "frag");
     }
     for (int k : { 2, 6 })
@@ -147,8 +143,7 @@ int TestHAVSShaderSources(int, char*[])
         "fetch_resolve" + suffix, "frag");
     }
     check(vtkHAVSShaders::ListDrawShader(f), "list_draw_cells", "frag");
-    check(vtkHAVSShaders::ResolveShader(
-            vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true, f),
+    check(vtkHAVSShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true, f),
       "list_resolve_cells", "frag");
   }
   // The features left out are really out of the source (no fetch, no atomic).

@@ -47,10 +47,10 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
-#include "vtkHAVSCoreModule.h"      // For export macro
-#include "vtkHAVSVisibilityOrder.h" // For ViewKey
+#include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkHAVSMapperBase.h"
-#include "vtkNew.h" // For vtkNew
+#include "vtkHAVSVisibilityOrder.h" // For ViewKey
+#include "vtkNew.h"                 // For vtkNew
 
 #include <cstdint> // For uint32_t
 #include <string>  // For std::string

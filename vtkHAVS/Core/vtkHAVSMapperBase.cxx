@@ -20,10 +20,10 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkRenderWindow.h"
-#include "vtkShaderProperty.h"
-#include "vtkUniforms.h"
 #include "vtkRenderer.h"
+#include "vtkShaderProperty.h"
 #include "vtkTimerLog.h"
+#include "vtkUniforms.h"
 #include "vtkUnstructuredGridBase.h"
 #include "vtkVolume.h"
 
@@ -206,9 +206,10 @@ void vtkHAVSMapperBase::CheckShaderProperty(vtkVolume* volume)
 //------------------------------------------------------------------------------
 bool vtkHAVSMapperBase::PrepareTable(vtkVolume* volume)
 {
-  return vtkHAVSMapperInputs::PrepareTable(this, volume, this->Mesh, this->Table,
-    this->TableScalarResolution, this->TableLengthResolution, this->MapperName,
-    [this](int which, const std::string& m) { this->WarnOnce(which, m); }, &this->TableRebuilt);
+  return vtkHAVSMapperInputs::PrepareTable(
+    this, volume, this->Mesh, this->Table, this->TableScalarResolution, this->TableLengthResolution,
+    this->MapperName, [this](int which, const std::string& m) { this->WarnOnce(which, m); },
+    &this->TableRebuilt);
 }
 
 //------------------------------------------------------------------------------
@@ -227,8 +228,8 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
   // 2. A blend mode the mapper draws.
   if (!this->IsBlendModeSupported(this->BlendMode))
   {
-    vtkErrorMacro("Blend mode " << this->BlendMode << " is not supported by " << this->MapperName
-                                << ".");
+    vtkErrorMacro(
+      "Blend mode " << this->BlendMode << " is not supported by " << this->MapperName << ".");
   }
   else if (!this->AbortRequested(renderer))
   {

@@ -9,7 +9,8 @@
 =========================================================================*/
 /**
  * @class   vtkHAVSMapperBase
- * @brief   What the three vtkHAVS mappers share: settings, inputs, mesh, table and one frame's skeleton.
+ * @brief   What the three vtkHAVS mappers share: settings, inputs, mesh, table and one frame's
+ * skeleton.
  *
  * vtkHAVSVolumeMapper (HAVS: sorted faces, a k-buffer),
  * vtkHAVSCellProjectionMapper and vtkHAVSRayCastMapper derive from this
@@ -170,11 +171,11 @@ public:
   /// What preparing the mesh did in the last frame.
   enum MeshUpdates
   {
-    MeshNotPrepared = 0, ///< the frame stopped before (no input, error, abort)
-    MeshUnchanged = 1,   ///< as this mapper last drew it
-    MeshBuilt = 2,       ///< built (or rebuilt) by this mapper from the input
+    MeshNotPrepared = 0,   ///< the frame stopped before (no input, error, abort)
+    MeshUnchanged = 1,     ///< as this mapper last drew it
+    MeshBuilt = 2,         ///< built (or rebuilt) by this mapper from the input
     MeshScalarsMapped = 3, ///< a new time step: only the scalars mapped again
-    MeshShared = 4       ///< prepared by another mapper sharing it since this one drew: no work
+    MeshShared = 4         ///< prepared by another mapper sharing it since this one drew: no work
   };
   ///@{
   /// The last frame's mesh update (MeshUpdates), its seconds (0 unless built or mapped here).
@@ -210,7 +211,8 @@ protected:
   /// The table for the volume's property (false, with an error, when it cannot be made).
   virtual bool PrepareTable(vtkVolume* volume);
   /// The mapper's own part of the frame: order, draw, statistics.
-  virtual void RenderView(vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) = 0;
+  virtual void RenderView(
+    vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) = 0;
   /// Called with the frame's time (TimeToDraw) after a frame that reached RenderView.
   virtual void FrameFinished(double vtkNotUsed(seconds)) {}
   /// The graphics layer's kept float result (nullptr without one).
@@ -247,7 +249,7 @@ private:
   int LastMeshUpdate = MeshNotPrepared;
   double LastMeshSeconds = 0.0;
   bool LastFrameAborted = false;
-  vtkMTimeType SeenMeshBuild = 0;  // the mesh's build and scalar times this mapper last drew
+  vtkMTimeType SeenMeshBuild = 0; // the mesh's build and scalar times this mapper last drew
   vtkMTimeType SeenMeshScalars = 0;
   std::array<bool, 10> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
 };

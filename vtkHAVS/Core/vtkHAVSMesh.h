@@ -254,7 +254,7 @@ private:
   vtkTimeStamp BuildTime;
   vtkTimeStamp ScalarTime;
   uint64_t GeometryHash = 0;
-  vtkDataSet* HashedSource = nullptr; // identity only: whether GeometryHash is set
+  vtkDataSet* HashedSource = nullptr;       // identity only: whether GeometryHash is set
   vtkWeakPointer<vtkDataArray> MappedArray; // the scalar array last mapped, and its time
   vtkMTimeType MappedArrayTime = 0;
   int LastUpdate = UpdateNone;

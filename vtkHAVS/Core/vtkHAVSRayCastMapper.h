@@ -31,14 +31,13 @@
  * negative control: one pass on a mesh that needs more).
  *
  * Same inputs, scalars, mesh and table as the other mappers
- * (vtkHAVSMapperBase, whose Render() calls RenderView()), the volume's matrix, perspective and parallel
- * cameras, opaque geometry, up to 6 clipping planes (each ray clipped to
- * them). The camera inside the mesh: where the near plane cuts it (the GL
- * near clip removes the entry faces there) the rays start on the near
- * plane's section (vtkHAVSFramePlanes, each triangle with its cell), drawn
- * with the entries of the first pass. Screen tiles: the ray-casting pass
- * works only in the tiles where rays start, with per-tile pass counts.
- * Blend modes: composite, maximum and minimum intensity, additive.
+ * (vtkHAVSMapperBase, whose Render() calls RenderView()), the volume's matrix, perspective and
+ * parallel cameras, opaque geometry, up to 6 clipping planes (each ray clipped to them). The camera
+ * inside the mesh: where the near plane cuts it (the GL near clip removes the entry faces there)
+ * the rays start on the near plane's section (vtkHAVSFramePlanes, each triangle with its cell),
+ * drawn with the entries of the first pass. Screen tiles: the ray-casting pass works only in the
+ * tiles where rays start, with per-tile pass counts. Blend modes: composite, maximum and minimum
+ * intensity, additive.
  *
  * The mesh's layout is vtkHAVSRayCastMesh (96 bytes per tetrahedron).
  *

@@ -477,8 +477,8 @@ void vtkHAVSVolumeMapper::RenderView(
 }
 
 //------------------------------------------------------------------------------
-bool vtkHAVSVolumeMapper::DrawOrdered(vtkRenderer* renderer, const vtkHAVSViewFrame& view,
-  int path, int maxK, FrameRequest& request, FrameResult& result)
+bool vtkHAVSVolumeMapper::DrawOrdered(vtkRenderer* renderer, const vtkHAVSViewFrame& view, int path,
+  int maxK, FrameRequest& request, FrameResult& result)
 {
   // Automatic's probe may ask for a second draw in the exact order; the
   // automatic k searches with counted draws when the view moved far enough.

@@ -574,7 +574,7 @@ private:
   KSearchKey LastKSearch;
   int FoundK = 0; // 0: none yet
   int KSearchDraws = 0;
-  FrameResult KSearchUploads; // what the search's draws uploaded
+  FrameResult KSearchUploads;  // what the search's draws uploaded
   bool SkippingCells = false;  // this frame skips invisible cells
   double DrawnFraction = -1.0; // the level of detail's fraction drawn (-1: nothing drawn)
   vtkNew<vtkHAVSFrameStatistics> LastFrame;

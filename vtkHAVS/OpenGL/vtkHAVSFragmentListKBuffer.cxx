@@ -147,9 +147,8 @@ bool vtkHAVSFragmentListKBuffer::Resolve(vtkHAVSGLPassContext& context)
   const bool vote = vtkHAVSGLCapabilities::HasExtension("GL_ARB_shader_group_vote");
   glBindImageTexture(0, this->Heads, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->Nodes);
-  vtkShaderProgram* program = context.QuadProgram(
-    vtkHAVSShaders::ResolveShader(vtkHAVSFrameRequest::PathFragmentLists,
-      context.Request.K, vote, context.ShaderFeatures()));
+  vtkShaderProgram* program = context.QuadProgram(vtkHAVSShaders::ResolveShader(
+    vtkHAVSFrameRequest::PathFragmentLists, context.Request.K, vote, context.ShaderFeatures()));
   if (program)
   {
     program->SetUniformi("havsNodeCapacity", static_cast<int>(this->Capacity));

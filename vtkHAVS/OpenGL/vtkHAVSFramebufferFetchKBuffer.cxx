@@ -12,8 +12,8 @@
 #include "vtkHAVSGLCapabilities.h"
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLPassContext.h"
-#include "vtkHAVSShaders.h"
 #include "vtkHAVSOpenGL.h"
+#include "vtkHAVSShaders.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -116,9 +116,8 @@ bool vtkHAVSFramebufferFetchKBuffer::Resolve(vtkHAVSGLPassContext& context)
   {
     t->Activate();
   }
-  vtkShaderProgram* program = context.QuadProgram(
-    vtkHAVSShaders::ResolveShader(vtkHAVSFrameRequest::PathFramebufferFetch,
-      context.Request.K, false, context.ShaderFeatures()));
+  vtkShaderProgram* program = context.QuadProgram(vtkHAVSShaders::ResolveShader(
+    vtkHAVSFrameRequest::PathFramebufferFetch, context.Request.K, false, context.ShaderFeatures()));
   if (program)
   {
     program->SetUniformi("havsColorTexture", this->Targets[0]->GetTextureUnit());

@@ -9,8 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSGLFrameTargets.h"
 
-#include "vtkHAVSShaders.h"
 #include "vtkHAVSMapperInputs.h"
+#include "vtkHAVSShaders.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -266,8 +266,7 @@ bool vtkHAVSGLFrameTargets::Composite(int originX, int originY)
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   vtkShaderProgram* program = this->Window->GetShaderCache()->ReadyShaderProgram(
-    vtkHAVSShaders::QuadVertexShader().c_str(),
-    vtkHAVSShaders::CompositeShader().c_str(), "");
+    vtkHAVSShaders::QuadVertexShader().c_str(), vtkHAVSShaders::CompositeShader().c_str(), "");
   if (!program || !program->GetCompiled())
   {
     return false;

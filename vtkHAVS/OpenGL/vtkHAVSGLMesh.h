@@ -95,7 +95,8 @@ public:
   /// False when nothing was uploaded; `failed` when the upload failed.
   bool UpdateFaceOrder(const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary,
     bool tagged, vtkMTimeType version, bool* failed);
-  bool UpdateSections(const std::vector<vtkHAVSFramePlanes::Section>& sections, vtkMTimeType version);
+  bool UpdateSections(
+    const std::vector<vtkHAVSFramePlanes::Section>& sections, vtkMTimeType version);
   ///@}
 
   vtkIdType GetNumberOfFaces() const { return this->IndexCount / 3; }

@@ -55,8 +55,8 @@ public:
   bool Update(GLenum target, const void* data, size_t bytes, vtkMTimeType version,
     GLenum usage = GL_STATIC_DRAW);
   template <class T>
-  bool Update(
-    GLenum target, const std::vector<T>& values, vtkMTimeType version, GLenum usage = GL_STATIC_DRAW)
+  bool Update(GLenum target, const std::vector<T>& values, vtkMTimeType version,
+    GLenum usage = GL_STATIC_DRAW)
   {
     return this->Update(target, values.data(), values.size() * sizeof(T), version, usage);
   }

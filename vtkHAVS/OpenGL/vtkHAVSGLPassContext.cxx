@@ -13,8 +13,8 @@
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLMesh.h"
 #include "vtkHAVSGLTable.h"
-#include "vtkHAVSShaders.h"
 #include "vtkHAVSOpenGL.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSViewFrame.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -27,8 +27,7 @@ VTK_ABI_NAMESPACE_BEGIN
 
 //------------------------------------------------------------------------------
 vtkHAVSGLPassContext::vtkHAVSGLPassContext(vtkOpenGLRenderWindow* window, vtkHAVSGLMesh* mesh,
-  vtkHAVSGLTable* table, vtkHAVSGLFrameTargets* targets,
-  const vtkHAVSFrameRequest& request)
+  vtkHAVSGLTable* table, vtkHAVSGLFrameTargets* targets, const vtkHAVSFrameRequest& request)
   : Window(window)
   , Mesh(mesh)
   , Table(table)
@@ -83,8 +82,7 @@ vtkShaderProgram* vtkHAVSGLPassContext::Program(
 
 vtkShaderProgram* vtkHAVSGLPassContext::FaceProgram(const std::string& fragmentShader)
 {
-  return this->Program(
-    vtkHAVSShaders::FaceVertexShader(this->Request.CellScalars), fragmentShader);
+  return this->Program(vtkHAVSShaders::FaceVertexShader(this->Request.CellScalars), fragmentShader);
 }
 
 vtkShaderProgram* vtkHAVSGLPassContext::QuadProgram(const std::string& fragmentShader)

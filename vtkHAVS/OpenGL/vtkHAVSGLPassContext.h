@@ -23,9 +23,9 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
-#include "vtkHAVSShaders.h" // For Features
-#include "vtkHAVSFrameRequest.h"   // For FrameRequest
-#include "vtkOpenGLState.h"        // For the scoped state savers
+#include "vtkHAVSFrameRequest.h" // For FrameRequest
+#include "vtkHAVSShaders.h"      // For Features
+#include "vtkOpenGLState.h"      // For the scoped state savers
 
 #include <string> // For std::string
 

@@ -9,9 +9,9 @@
 =========================================================================*/
 #include "vtkHAVSKBuffer.h"
 
+#include "vtkHAVSFrameRequest.h"
 #include "vtkHAVSGLPassContext.h"
 #include "vtkHAVSShaders.h"
-#include "vtkHAVSFrameRequest.h"
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -28,9 +28,8 @@ void vtkHAVSKBuffer::DrawFaces(
   vtkHAVSGLPassContext& context, vtkShaderProgram* program, bool storageBuffer)
 {
   const vtkHAVSFrameRequest& r = context.Request;
-  const std::string mark = r.SkipSaturated
-    ? vtkHAVSShaders::SaturationMarkShader(this->GetPath(), r.K)
-    : std::string();
+  const std::string mark =
+    r.SkipSaturated ? vtkHAVSShaders::SaturationMarkShader(this->GetPath(), r.K) : std::string();
   // Measured only where the frame waits for the GPU anyway.
   const bool measure = r.MeasureStages || r.KeepResult || r.CountViolations;
   this->Saturation.DrawFaces(context, program, mark, storageBuffer, measure);

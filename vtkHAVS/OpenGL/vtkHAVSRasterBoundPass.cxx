@@ -11,8 +11,8 @@
 
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLPassContext.h"
-#include "vtkHAVSShaders.h"
 #include "vtkHAVSOpenGL.h"
+#include "vtkHAVSShaders.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"

@@ -118,8 +118,7 @@ std::string vtkHAVSShaders::FetchDrawShader(int k, const Features& features)
   return source;
 }
 
-std::string vtkHAVSShaders::InterlockDrawShader(
-  int k, InterlockKind kind, const Features& features)
+std::string vtkHAVSShaders::InterlockDrawShader(int k, InterlockKind kind, const Features& features)
 {
   static const char* const extension[] = { "#extension GL_ARB_fragment_shader_interlock : require",
     "#extension GL_NV_fragment_shader_interlock : require", "" };
@@ -178,8 +177,7 @@ std::string vtkHAVSShaders::ListDrawShader(const Features& features)
   return Compose(vtkHAVSListDrawFS, 1, 1, features);
 }
 
-std::string vtkHAVSShaders::ResolveShader(
-  int path, int k, bool groupVote, const Features& features)
+std::string vtkHAVSShaders::ResolveShader(int path, int k, bool groupVote, const Features& features)
 {
   std::string extension, declarations, load;
   int resolveK = k;

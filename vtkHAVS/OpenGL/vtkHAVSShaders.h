@@ -16,8 +16,8 @@
  * compose their shaders (vtkShaderProgram::Substitute on named tags): the
  * defines (HAVS_K, the per-pixel stride), the shared k-buffer library, the
  * per-path declarations and loads. All three mappers' programs are made here:
- * HAVS's k-buffer passes, the cell projection's and the ray caster's. No OpenGL: the sources can be generated and checked
- * (e.g. by glslangValidator) on a machine without the matching GPU.
+ * HAVS's k-buffer passes, the cell projection's and the ray caster's. No OpenGL: the sources can be
+ * generated and checked (e.g. by glslangValidator) on a machine without the matching GPU.
  */
 #ifndef vtkHAVSShaders_h
 #define vtkHAVSShaders_h

@@ -16,9 +16,9 @@
 #include "vtkHAVSGLObjects.h"
 #include "vtkHAVSGLPassContext.h"
 #include "vtkHAVSGLTable.h"
-#include "vtkHAVSShaders.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSOpenGL.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSViewFrame.h"
 
 #include "vtkObjectFactory.h"
@@ -142,8 +142,8 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   vtkRenderer* renderer, const CellFrame& frame, double* drawSeconds)
 {
   // 1. The window, and what changed uploaded.
-  vtkOpenGLRenderWindow* window = this->Resources->Prepare(
-    renderer, this, "vtkHAVSCellProjectionMapper", "storage buffers");
+  vtkOpenGLRenderWindow* window =
+    this->Resources->Prepare(renderer, this, "vtkHAVSCellProjectionMapper", "storage buffers");
   if (!window)
   {
     return false;

@@ -16,10 +16,10 @@
 #include "vtkHAVSGLObjects.h"
 #include "vtkHAVSGLPassContext.h"
 #include "vtkHAVSGLTable.h"
-#include "vtkHAVSShaders.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSOpenGL.h"
 #include "vtkHAVSRayCastMesh.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSViewFrame.h"
 
 #include "vtkMatrix4x4.h"

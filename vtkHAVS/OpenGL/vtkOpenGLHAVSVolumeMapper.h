@@ -104,7 +104,6 @@ private:
   vtkNew<vtkHAVSRasterBoundPass> RasterBound;
   char* CaptureDirectory = nullptr;
   bool LastCaptureSucceeded = false;
-
 };
 
 VTK_ABI_NAMESPACE_END
