@@ -73,6 +73,22 @@ std::string Compose(const char* templ, int k, int pixelStride,
   return source;
 }
 
+/// A shader that integrates whole cells' segments (the cell projection's and
+/// the ray caster's): no k-buffer, no violation counter, no tagging; its blend
+/// and the additive blend's library in.
+std::string CellSegmentShader(const char* templ, bool opaque, int blend, bool cellScalars)
+{
+  vtkHAVSShaders::Features features;
+  features.CountViolations = false;
+  features.Tagging = false;
+  features.Opaque = opaque;
+  features.CellScalars = cellScalars;
+  std::string source = Compose(templ, 1, 1, features);
+  Replace(source, "//HAVS::CellBlend", "#define HAVS_CELL_BLEND " + std::to_string(blend));
+  Replace(source, "//HAVS::AdditiveLib", vtkHAVSAdditiveLib);
+  return source;
+}
+
 /// "E[i] = <pair i/2>.xy|zw;" for i < k.
 std::string UnpackEntries(const std::string& pairPrefix, int k)
 {
@@ -287,15 +303,7 @@ std::string vtkHAVSShaders::CellProjectionVertexShader()
 
 std::string vtkHAVSShaders::CellProjectionShader(bool opaque, int blend, bool cellScalars)
 {
-  Features features;
-  features.CountViolations = false;
-  features.Tagging = false;
-  features.Opaque = opaque;
-  features.CellScalars = cellScalars;
-  std::string source = Compose(vtkHAVSCellProjectionFS, 1, 1, features);
-  Replace(source, "//HAVS::CellBlend", "#define HAVS_CELL_BLEND " + std::to_string(blend));
-  Replace(source, "//HAVS::AdditiveLib", vtkHAVSAdditiveLib);
-  return source;
+  return CellSegmentShader(vtkHAVSCellProjectionFS, opaque, blend, cellScalars);
 }
 
 std::string vtkHAVSShaders::RayCastPeelShader()
@@ -309,15 +317,7 @@ std::string vtkHAVSShaders::RayCastPeelShader()
 
 std::string vtkHAVSShaders::RayCastShader(bool opaque, int blend, bool cellScalars)
 {
-  Features features;
-  features.CountViolations = false;
-  features.Tagging = false;
-  features.Opaque = opaque;
-  features.CellScalars = cellScalars;
-  std::string source = Compose(vtkHAVSRayCastFS, 1, 1, features);
-  Replace(source, "//HAVS::CellBlend", "#define HAVS_CELL_BLEND " + std::to_string(blend));
-  Replace(source, "//HAVS::AdditiveLib", vtkHAVSAdditiveLib);
-  return source;
+  return CellSegmentShader(vtkHAVSRayCastFS, opaque, blend, cellScalars);
 }
 
 std::string vtkHAVSShaders::RayCastTileVertexShader()
