@@ -25,9 +25,12 @@
 //    nothing (GetLastMeshUpdate() == MeshShared), follows a new time step,
 //    and draws the same image as with a mesh of its own (control: the
 //    statistic of a mapper with its own mesh says MeshBuilt);
-// 6. a volume with a shader property the mappers do not apply (a replacement
-//    of a `//VTK::` tag) gets exactly one warning per mapper over two frames
-//    (control: the same volume without it gets none).
+// 6. the volume's shader property: a fragment custom uniform, a declaration
+//    at //VTK::Base::Dec and exit code at //VTK::Base::Exit halve the volume's
+//    colour in every mapper (control: the uniform at 1 does not), and a
+//    replacement of a tag the mappers lack (//VTK::Shading::Impl) gets
+//    exactly one warning naming it over two frames and changes nothing
+//    (control: a replacement of an honoured tag gets none).
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
 #include "havsTestMessages.h"
@@ -53,10 +56,12 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProperty.h"
 #include "vtkSmartPointer.h"
+#include "vtkUniforms.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -372,28 +377,84 @@ int TestHAVSMapperContract(int, char*[])
       "and draws the new time step as its own mesh does (max " + std::to_string(d.Max) + ")");
   }
 
-  // 6. The volume's shader property: said once, not silently dropped.
+  // 6. The volume's shader property, through the base: the honoured tags
+  // applied in the composite (a custom uniform, a declaration, the exit code),
+  // anything else said once and left out.
   for (size_t i = 0; i < mappers.size(); ++i)
   {
-    for (bool replaced : { true, false })
+    const std::string name = mappers[i]->GetClassName();
+    auto draw = [&](const std::function<void(vtkShaderProperty*)>& customize, int* warnings,
+                  std::string* text)
     {
       vtkSmartPointer<vtkHAVSMapperBase> m = mappers[i]->NewInstance();
       m->Delete(); // (NewInstance gave one reference, the smart pointer took another)
       havstest::VolumeScene scene = havstest::MakeScene(grid, m, property, 64, 64);
-      if (replaced)
-      {
-        scene.Volume->GetShaderProperty()->AddFragmentShaderReplacement(
-          "//VTK::Base::Dec", true, "//VTK::Base::Dec\n// a user's replacement", false);
-      }
+      customize(scene.Volume->GetShaderProperty());
       havstest::Messages* messages = havstest::CountMessages(m);
       scene.Window->Render();
       scene.Window->Render();
-      const bool said = messages->Text.find("shader property") != std::string::npos;
-      Check(replaced ? (said && messages->Warnings == 1) : (!said && messages->Warnings == 0),
-        std::string(m->GetClassName()) +
-          (replaced ? ": one warning for the shader property it does not apply ("
-                    : ": control, no shader property: no warning (") +
-          std::to_string(messages->Warnings) + " warnings)");
+      *warnings = messages->Warnings;
+      *text = messages->Text;
+      return havstest::ReadRGBA(scene.Window);
+    };
+    int warnings = 0;
+    std::string text;
+    const std::vector<float> plain = draw([](vtkShaderProperty*) {}, &warnings, &text);
+    Check(warnings == 0 && VolumePixels(plain) > 100,
+      name + ": without a shader property, no warning and a volume (" +
+        std::to_string(VolumePixels(plain)) + " pixels)");
+    // The largest difference, in the colour channels, between `image` and
+    // `scale` times the plain image (on a black background the composite is
+    // the volume's premultiplied colour).
+    auto offScaled = [&](const std::vector<float>& image, double scale)
+    {
+      double worst = image.size() == plain.size() ? 0.0 : 1e30;
+      for (size_t p = 0; p + 3 < plain.size() && p + 3 < image.size(); p += 4)
+      {
+        for (size_t c = 0; c < 3; ++c)
+        {
+          worst = std::max(worst, std::abs(image[p + c] - scale * plain[p + c]));
+        }
+      }
+      return worst;
+    };
+    for (double tint : { 0.5, 1.0 })
+    {
+      const std::vector<float> tinted = draw(
+        [tint](vtkShaderProperty* sp)
+        {
+          sp->GetFragmentCustomUniforms()->SetUniformf("havsTestTint", static_cast<float>(tint));
+          sp->AddFragmentShaderReplacement("//VTK::Base::Dec", true,
+            "vec4 havsTestScale(vec4 c) { return c * havsTestTint; }", false);
+          sp->AddFragmentShaderReplacement(
+            "//VTK::Base::Exit", true, "g_fragColor = havsTestScale(g_fragColor);", false);
+        },
+        &warnings, &text);
+      const double off = offScaled(tinted, 0.5);
+      // Two 8-bit roundings: the plain image's and the tinted one's.
+      const bool halved = off <= 1.5 / 255.0;
+      Check(warnings == 0 && (tint == 0.5 ? halved : !halved),
+        name +
+          (tint == 0.5 ? ": a uniform, a declaration and exit code halve the volume's colour"
+                       : ": control, the same with the uniform at 1: not halved") +
+          " (max " + std::to_string(off * 255.0) + "/255 from half the plain image, " +
+          std::to_string(warnings) + " warnings)");
+    }
+    for (bool ignored : { true, false })
+    {
+      const std::vector<float> image = draw(
+        [ignored](vtkShaderProperty* sp)
+        {
+          sp->AddFragmentShaderReplacement(
+            ignored ? "//VTK::Shading::Impl" : "//VTK::Base::Dec", true, "// a user's line", false);
+        },
+        &warnings, &text);
+      const bool said = warnings == 1 && text.find("//VTK::Shading::Impl") != std::string::npos;
+      Check((ignored ? said : warnings == 0) && offScaled(image, 1.0) == 0.0,
+        name +
+          (ignored ? ": a tag it does not have (//VTK::Shading::Impl): one warning naming it"
+                   : ": control, an honoured tag: no warning") +
+          ", the image unchanged (" + std::to_string(warnings) + " warnings)");
     }
   }
   return havstest::Result();

@@ -30,6 +30,10 @@ bool Check(bool condition, const std::string& what)
     ++Failures();
     std::cerr << "CHECK FAILED: " << what << std::endl;
   }
+  else if (std::getenv("HAVS_TEST_VERBOSE"))
+  {
+    std::cout << "ok: " << what << std::endl;
+  }
   return condition;
 }
 

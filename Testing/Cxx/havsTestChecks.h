@@ -28,7 +28,7 @@ constexpr int SkipReturnCode = 125;
 
 /// Counts failed checks.
 int& Failures();
-/// Prints and counts a failed check.
+/// Prints and counts a failed check (and, with HAVS_TEST_VERBOSE set, prints a passed one).
 bool Check(bool condition, const std::string& what);
 /// |a - b| <= tol (and both finite), printed on failure.
 bool CheckNear(double a, double b, double tol, const std::string& what);

@@ -179,27 +179,26 @@ bool vtkHAVSMapperBase::PrepareMesh(vtkVolume* volume)
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSMapperBase::CheckShaderProperty(vtkVolume* volume)
+void vtkHAVSMapperBase::PrepareShaderHooks(vtkVolume* volume)
 {
-  vtkShaderProperty* property = volume ? volume->GetShaderProperty() : nullptr;
-  if (!property)
+  this->ShaderHooks = vtkHAVSShaderHooks::From(volume ? volume->GetShaderProperty() : nullptr);
+  if (!this->ShaderHooks.Ignored.empty())
   {
-    return;
-  }
-  const int replacements = property->GetNumberOfShaderReplacements();
-  const int uniforms = property->GetFragmentCustomUniforms()->GetNumberOfUniforms() +
-    property->GetVertexCustomUniforms()->GetNumberOfUniforms() +
-    property->GetGeometryCustomUniforms()->GetNumberOfUniforms();
-  const bool code = property->HasVertexShaderCode() || property->HasFragmentShaderCode() ||
-    property->HasGeometryShaderCode();
-  if (replacements > 0 || uniforms > 0 || code)
-  {
+    std::string what;
+    for (const std::string& line : this->ShaderHooks.Ignored)
+    {
+      what += (what.empty() ? "" : "; ") + line;
+    }
+    std::string honoured;
+    for (const std::string& tag : vtkHAVSShaderHooks::HonouredTags())
+    {
+      honoured += (honoured.empty() ? "" : ", ") + tag;
+    }
     this->WarnOnce(vtkHAVSMapperInputs::WarnShaderProperty,
-      "The volume's shader property (" + std::to_string(replacements) + " replacements, " +
-        std::to_string(uniforms) + " custom uniforms" + (code ? ", shader code" : "") +
-        ") is not applied by " + this->MapperName +
-        ": its shaders have none of vtkOpenGLGPUVolumeRayCastMapper's tags. The volume is "
-        "drawn without it.");
+      std::string("Part of the volume's shader property is not applied by ") + this->MapperName +
+        " (" + what + "): it applies the fragment replacements of " + honoured +
+        " and the fragment custom uniforms, in the pass that composites the volume; the rest is "
+        "left out.");
   }
 }
 
@@ -233,7 +232,7 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   else if (!this->AbortRequested(renderer))
   {
-    this->CheckShaderProperty(volume);
+    this->PrepareShaderHooks(volume);
     // 3. The input and its mesh, 4. the table: each only when its inputs changed.
     if (this->GetNumberOfInputConnections(0) > 0)
     {
@@ -286,6 +285,10 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastMeshUpdate: " << GetMeshUpdateName(this->LastMeshUpdate) << " ("
      << this->LastMeshSeconds << " s)\n";
   os << indent << "LastFrameAborted: " << this->LastFrameAborted << "\n";
+  os << indent << "ShaderHooks: " << this->ShaderHooks.Fragment.size()
+     << " fragment replacements applied, custom uniforms "
+     << (this->ShaderHooks.FragmentUniforms ? "applied" : "none") << ", "
+     << this->ShaderHooks.Ignored.size() << " parts left out\n";
   os << indent << "TimeToDraw: " << this->TimeToDraw << "\n";
 }
 

@@ -42,20 +42,22 @@
  *
  * Warnings that should be given once per mapper go through WarnOnce.
  *
- * The volume's shader property (vtkOpenGLShaderProperty: replacements of
- * vtkOpenGLGPUVolumeRayCastMapper's `//VTK::` tags, custom uniforms, whole
- * shader code) is not applied: the three mappers' shaders have none of those
- * tags. A volume that has any gets one warning per mapper saying so, and is
- * drawn as without it.
+ * The volume's shader property (vtkOpenGLShaderProperty) is read every frame
+ * into vtkHAVSShaderHooks: the three mappers apply the same part of it, in
+ * the pass that composites the volume's pixels over the scene
+ * (`//VTK::CustomUniforms::Dec`, `//VTK::Base::Dec` and `//VTK::Base::Exit`
+ * of vtkOpenGLGPUVolumeRayCastMapper's fragment tags, and the fragment custom
+ * uniforms); for anything else in it the mapper warns once.
  */
 #ifndef vtkHAVSMapperBase_h
 #define vtkHAVSMapperBase_h
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
-#include "vtkHAVSCoreModule.h" // For export macro
-#include "vtkNew.h"            // For vtkNew
-#include "vtkSmartPointer.h"   // For vtkSmartPointer
+#include "vtkHAVSCoreModule.h"  // For export macro
+#include "vtkHAVSShaderHooks.h" // For vtkHAVSShaderHooks
+#include "vtkNew.h"             // For vtkNew
+#include "vtkSmartPointer.h"    // For vtkSmartPointer
 #include "vtkUnstructuredGridVolumeMapper.h"
 
 #include <array>  // For std::array
@@ -193,6 +195,13 @@ public:
    */
   void Render(vtkRenderer* renderer, vtkVolume* volume) final;
 
+  /**
+   * The part of the volume's shader property the last frame applied
+   * (vtkHAVSShaderHooks, read at the start of Render; the GL layer's
+   * composite applies it).
+   */
+  const vtkHAVSShaderHooks& GetShaderHooks() const { return this->ShaderHooks; }
+
 protected:
   vtkHAVSMapperBase(const char* mapperName);
   ~vtkHAVSMapperBase() override;
@@ -243,12 +252,13 @@ private:
   void operator=(const vtkHAVSMapperBase&) = delete;
 
   bool PrepareMesh(vtkVolume* volume);
-  void CheckShaderProperty(vtkVolume* volume);
+  void PrepareShaderHooks(vtkVolume* volume);
 
   const char* MapperName;
   int LastMeshUpdate = MeshNotPrepared;
   double LastMeshSeconds = 0.0;
   bool LastFrameAborted = false;
+  vtkHAVSShaderHooks ShaderHooks;
   vtkMTimeType SeenMeshBuild = 0; // the mesh's build and scalar times this mapper last drew
   vtkMTimeType SeenMeshScalars = 0;
   std::array<bool, 10> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings

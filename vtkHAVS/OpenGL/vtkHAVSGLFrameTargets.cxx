@@ -10,12 +10,14 @@
 #include "vtkHAVSGLFrameTargets.h"
 
 #include "vtkHAVSMapperInputs.h"
+#include "vtkHAVSShaderHooks.h"
 #include "vtkHAVSShaders.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkOpenGLUniforms.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
@@ -265,11 +267,20 @@ bool vtkHAVSGLFrameTargets::Composite(int originX, int originY)
   vtkOpenGLState* state = this->Window->GetState();
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  // The volume's shader property: its fragment uniforms declared and set here.
+  auto* uniforms = vtkOpenGLUniforms::SafeDownCast(
+    this->Hooks ? this->Hooks->FragmentUniforms.GetPointer() : nullptr);
+  const std::string fragment =
+    vtkHAVSShaders::CompositeShader(this->Hooks, uniforms ? uniforms->GetDeclarations() : "");
   vtkShaderProgram* program = this->Window->GetShaderCache()->ReadyShaderProgram(
-    vtkHAVSShaders::QuadVertexShader().c_str(), vtkHAVSShaders::CompositeShader().c_str(), "");
+    vtkHAVSShaders::QuadVertexShader().c_str(), fragment.c_str(), "");
   if (!program || !program->GetCompiled())
   {
     return false;
+  }
+  if (uniforms && !uniforms->SetUniforms(program))
+  {
+    vtkWarningMacro("The volume's fragment custom uniforms could not all be set in the composite.");
   }
   this->Result->Activate();
   program->SetUniformi("havsResultTexture", this->Result->GetTextureUnit());

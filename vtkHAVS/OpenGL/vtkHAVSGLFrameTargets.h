@@ -37,6 +37,7 @@
 
 VTK_ABI_NAMESPACE_BEGIN
 
+class vtkHAVSShaderHooks;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkWindow;
@@ -91,8 +92,11 @@ public:
   /// The count, and the first pixels (x, y) into `pixels`.
   std::uint64_t ReadViolationCounter(std::vector<int>& pixels, std::uint64_t* shaded = nullptr);
 
-  /// Composites the result over VTK's framebuffer (viewport set by the caller).
+  /// Composites the result over VTK's framebuffer (viewport set by the caller),
+  /// with the shader hooks last set applied.
   bool Composite(int originX, int originY);
+  /// The volume's shader hooks the composite applies (the mapper's; nullptr: none).
+  void SetShaderHooks(const vtkHAVSShaderHooks* hooks) { this->Hooks = hooks; }
 
   /**
    * The end of a cell-projection or ray-cast frame, after its draw and its
@@ -124,6 +128,7 @@ private:
   static int ReadFramebufferDepthFormat();
 
   vtkOpenGLRenderWindow* Window = nullptr;
+  const vtkHAVSShaderHooks* Hooks = nullptr;
   int Size[2] = { 0, 0 };
   vtkSmartPointer<vtkTextureObject> OpaqueDepth;
   int OpaqueDepthFormat = -1;

@@ -15,6 +15,7 @@
 #include "vtkHAVSGLCapabilities.h"
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLTable.h"
+#include "vtkHAVSMapperBase.h"
 #include "vtkHAVSOpenGL.h"
 #include "vtkHAVSViewFrame.h"
 
@@ -60,6 +61,9 @@ vtkOpenGLRenderWindow* vtkHAVSGLMapperResources::Prepare(
     this->Targets->SetContext(window);
   }
   window->MakeCurrent();
+  // The volume's shader property, as the mapper read it this frame, reaches the composite.
+  auto* base = vtkHAVSMapperBase::SafeDownCast(mapper);
+  this->Targets->SetShaderHooks(base ? &base->GetShaderHooks() : nullptr);
   if (!vtkHAVSGLCapabilities::HasVersion(4, 3))
   {
     vtkErrorWithObjectMacro(mapper, << mapperName << " needs OpenGL 4.3 (" << needs << ").");

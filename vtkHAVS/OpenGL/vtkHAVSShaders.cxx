@@ -10,6 +10,7 @@
 #include "vtkHAVSShaders.h"
 
 #include "vtkHAVSFrameRequest.h"
+#include "vtkHAVSShaderHooks.h"
 
 #include "vtkHAVSAdditiveLib.h"
 #include "vtkHAVSCellOptics.h"
@@ -291,9 +292,31 @@ std::string vtkHAVSShaders::TrivialShader()
   return vtkHAVSTrivialFS;
 }
 
-std::string vtkHAVSShaders::CompositeShader()
+std::string vtkHAVSShaders::CompositeShader(
+  const vtkHAVSShaderHooks* hooks, const std::string& uniformDeclarations)
 {
-  return vtkHAVSCompositeFS;
+  std::string source = vtkHAVSCompositeFS;
+  if (!hooks)
+  {
+    return source;
+  }
+  // As VTK applies a shader property: the user's "replace first" replacements,
+  // the mapper's own substitutions (the custom uniforms' declarations), the rest.
+  for (bool first : { true, false })
+  {
+    if (!first)
+    {
+      Replace(source, "//VTK::CustomUniforms::Dec", uniformDeclarations);
+    }
+    for (const vtkHAVSShaderHooks::Replacement& r : hooks->Fragment)
+    {
+      if (r.First == first)
+      {
+        vtkShaderProgram::Substitute(source, r.Tag, r.Code, r.All);
+      }
+    }
+  }
+  return source;
 }
 
 std::string vtkHAVSShaders::CellProjectionVertexShader()

@@ -30,6 +30,8 @@
 
 VTK_ABI_NAMESPACE_BEGIN
 
+class vtkHAVSShaderHooks;
+
 /**
  * What a k-buffer shader does per fragment besides the k-buffer itself;
  * each feature left out is compiled out (no cost where a frame does not
@@ -104,8 +106,11 @@ public:
   /// Benchmark aid: a trivial fragment shader (rasterization cost alone).
   static std::string TrivialShader();
 
-  /// Composites the result over VTK's framebuffer.
-  static std::string CompositeShader();
+  /// Composites the result over VTK's framebuffer; with the volume's shader
+  /// property's `hooks` applied (vtkHAVSShaderHooks), its custom uniforms
+  /// declared by `uniformDeclarations` (vtkOpenGLUniforms::GetDeclarations).
+  static std::string CompositeShader(
+    const vtkHAVSShaderHooks* hooks = nullptr, const std::string& uniformDeclarations = "");
   ///@{
   /// vtkHAVSCellProjectionMapper: the faces' vertex shader, and the fragment
   /// shader (the k-buffer library's segment look-up; the opaque cut compiled
