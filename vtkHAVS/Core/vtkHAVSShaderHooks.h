@@ -69,9 +69,9 @@ public:
   /// Anything to apply (a replacement or a custom uniform)?
   bool Empty() const { return this->Fragment.empty() && !this->FragmentUniforms; }
 
-  std::vector<Replacement> Fragment;       ///< the honoured fragment replacements, in order
+  std::vector<Replacement> Fragment;             ///< the honoured fragment replacements, in order
   vtkSmartPointer<vtkUniforms> FragmentUniforms; ///< the property's, when it has any
-  std::vector<std::string> Ignored;        ///< what is not applied, one line each
+  std::vector<std::string> Ignored;              ///< what is not applied, one line each
 };
 
 VTK_ABI_NAMESPACE_END

@@ -51,34 +51,18 @@ int vtkHAVSFragmentListKBuffer::GetMaximumK() const
 void vtkHAVSFragmentListKBuffer::GrowNodes(GLuint capacity)
 {
   this->Capacity = capacity;
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Nodes);
-  glBufferData(
-    GL_SHADER_STORAGE_BUFFER, size_t(this->Capacity) * kNodeBytes, nullptr, GL_DYNAMIC_COPY);
+  this->Nodes.Update(
+    GL_SHADER_STORAGE_BUFFER, nullptr, size_t(this->Capacity) * kNodeBytes, 0, GL_DYNAMIC_COPY);
 }
 
 //------------------------------------------------------------------------------
 bool vtkHAVSFragmentListKBuffer::Allocate(vtkHAVSGLPassContext& context)
 {
   const int width = context.Width(), height = context.Height();
-  if (!this->Heads || this->HeadsSize[0] != width || this->HeadsSize[1] != height)
+  this->Heads.Resize(GL_R32UI, width, height);
+  if (!this->Counter.GetHandle())
   {
-    if (this->Heads)
-    {
-      glDeleteTextures(1, &this->Heads);
-    }
-    glGenTextures(1, &this->Heads);
-    glBindTexture(GL_TEXTURE_2D, this->Heads);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32UI, width, height);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    this->HeadsSize[0] = width;
-    this->HeadsSize[1] = height;
-  }
-  if (!this->Counter)
-  {
-    glGenBuffers(1, &this->Counter);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Counter);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
-    glGenBuffers(1, &this->Nodes);
+    this->Counter.Update(GL_SHADER_STORAGE_BUFFER, nullptr, sizeof(GLuint), 0, GL_DYNAMIC_READ);
   }
   const GLuint wanted =
     static_cast<GLuint>(std::max<size_t>(static_cast<size_t>(width) * height * 4, size_t(1) << 20));
@@ -93,9 +77,8 @@ bool vtkHAVSFragmentListKBuffer::Allocate(vtkHAVSGLPassContext& context)
 bool vtkHAVSFragmentListKBuffer::Clear(vtkHAVSGLPassContext&)
 {
   const GLuint noNode = 0xFFFFFFFFu, zero = 0;
-  glClearTexImage(this->Heads, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &noNode);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Counter);
-  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &zero);
+  this->Heads.Clear(GL_RED_INTEGER, GL_UNSIGNED_INT, &noNode);
+  this->Counter.Write(0, &zero, sizeof(GLuint));
   return true;
 }
 
@@ -113,9 +96,9 @@ bool vtkHAVSFragmentListKBuffer::Draw(vtkHAVSGLPassContext& context)
     {
       this->Clear(context);
     }
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->Nodes);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, this->Counter);
-    glBindImageTexture(0, this->Heads, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    this->Nodes.BindBase(GL_SHADER_STORAGE_BUFFER, 1);
+    this->Counter.BindBase(GL_SHADER_STORAGE_BUFFER, 2);
+    this->Heads.BindImage(0);
     vtkShaderProgram* program =
       context.FaceProgram(vtkHAVSShaders::ListDrawShader(context.ShaderFeatures()));
     ok = program != nullptr;
@@ -128,8 +111,7 @@ bool vtkHAVSFragmentListKBuffer::Draw(vtkHAVSGLPassContext& context)
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
       GL_BUFFER_UPDATE_BARRIER_BIT);
     GLuint count = 0;
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Counter);
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &count);
+    this->Counter.Read(0, &count, sizeof(GLuint));
     this->LastFragmentCount = count;
     if (count <= this->Capacity)
     {
@@ -145,8 +127,8 @@ bool vtkHAVSFragmentListKBuffer::Draw(vtkHAVSGLPassContext& context)
 bool vtkHAVSFragmentListKBuffer::Resolve(vtkHAVSGLPassContext& context)
 {
   const bool vote = vtkHAVSGLCapabilities::HasExtension("GL_ARB_shader_group_vote");
-  glBindImageTexture(0, this->Heads, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->Nodes);
+  this->Heads.BindImage(0);
+  this->Nodes.BindBase(GL_SHADER_STORAGE_BUFFER, 1);
   vtkShaderProgram* program = context.QuadProgram(vtkHAVSShaders::ResolveShader(
     vtkHAVSFrameRequest::PathFragmentLists, context.Request.K, vote, context.ShaderFeatures()));
   if (program)
@@ -160,21 +142,10 @@ bool vtkHAVSFragmentListKBuffer::Resolve(vtkHAVSGLPassContext& context)
 //------------------------------------------------------------------------------
 void vtkHAVSFragmentListKBuffer::ReleaseGraphicsResources(vtkWindow*)
 {
-  for (GLuint* buffer : { &this->Nodes, &this->Counter })
-  {
-    if (*buffer)
-    {
-      glDeleteBuffers(1, buffer);
-      *buffer = 0;
-    }
-  }
+  this->Nodes.Release();
+  this->Counter.Release();
   this->Capacity = 0;
-  if (this->Heads)
-  {
-    glDeleteTextures(1, &this->Heads);
-    this->Heads = 0;
-    this->HeadsSize[0] = this->HeadsSize[1] = 0;
-  }
+  this->Heads.Release();
 }
 
 VTK_ABI_NAMESPACE_END

@@ -24,6 +24,7 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
+#include "vtkHAVSGLObjects.h" // For vtkHAVSGLBuffer, vtkHAVSGLImage
 #include "vtkHAVSKBuffer.h"
 #include "vtkHAVSOpenGL.h" // For GLuint
 
@@ -58,11 +59,10 @@ private:
 
   void GrowNodes(GLuint capacity);
 
-  GLuint Heads = 0;
-  int HeadsSize[2] = { 0, 0 };
-  GLuint Nodes = 0;
-  GLuint Capacity = 0;
-  GLuint Counter = 0;
+  vtkHAVSGLImage Heads;    ///< each pixel's first node (R32UI)
+  vtkHAVSGLBuffer Nodes;   ///< the node pool
+  GLuint Capacity = 0;     ///< nodes the pool holds
+  vtkHAVSGLBuffer Counter; ///< nodes appended this frame
 };
 
 VTK_ABI_NAMESPACE_END

@@ -223,21 +223,18 @@ const std::vector<float>* vtkHAVSGLFrameTargets::GetKeptResult(int size[2]) cons
 void vtkHAVSGLFrameTargets::ResetViolationCounter()
 {
   const GLuint zero = 0;
-  if (!this->ViolationCounter)
+  if (!this->ViolationCounter.GetHandle())
   {
     const GLuint zeros[2 + LoggedViolations] = {};
-    glGenBuffers(1, &this->ViolationCounter);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(zeros), zeros, GL_DYNAMIC_READ);
+    this->ViolationCounter.Update(
+      GL_SHADER_STORAGE_BUFFER, zeros, sizeof(zeros), 0, GL_DYNAMIC_READ);
   }
   else
   {
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
-    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &zero);
-    glBufferSubData(
-      GL_SHADER_STORAGE_BUFFER, (1 + LoggedViolations) * sizeof(GLuint), sizeof(GLuint), &zero);
+    this->ViolationCounter.Write(0, &zero, sizeof(GLuint));
+    this->ViolationCounter.Write((1 + LoggedViolations) * sizeof(GLuint), &zero, sizeof(GLuint));
   }
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, this->ViolationCounter);
+  this->ViolationCounter.BindBase(GL_SHADER_STORAGE_BUFFER, 3);
 }
 
 //------------------------------------------------------------------------------
@@ -246,8 +243,7 @@ std::uint64_t vtkHAVSGLFrameTargets::ReadViolationCounter(
 {
   GLuint data[2 + LoggedViolations] = {};
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViolationCounter);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(data), data);
+  this->ViolationCounter.Read(0, data, sizeof(data));
   pixels.clear();
   for (GLuint i = 0; i < std::min<GLuint>(data[0], LoggedViolations); ++i)
   {
@@ -318,13 +314,9 @@ bool vtkHAVSGLFrameTargets::EndFrame(bool resolved, bool keep,
 //------------------------------------------------------------------------------
 void vtkHAVSGLFrameTargets::DrawFullViewport()
 {
-  if (!this->EmptyVertexArray)
-  {
-    glGenVertexArrays(1, &this->EmptyVertexArray);
-  }
-  glBindVertexArray(this->EmptyVertexArray);
+  this->EmptyVertexArray.Bind(); // no attributes: the corners come from gl_VertexID
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
+  vtkHAVSGLVertexArray::Unbind();
 }
 
 //------------------------------------------------------------------------------
@@ -357,16 +349,8 @@ void vtkHAVSGLFrameTargets::ReleaseSizeDependent(vtkWindow* window)
 void vtkHAVSGLFrameTargets::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->ReleaseSizeDependent(window);
-  if (this->ViolationCounter)
-  {
-    glDeleteBuffers(1, &this->ViolationCounter);
-    this->ViolationCounter = 0;
-  }
-  if (this->EmptyVertexArray)
-  {
-    glDeleteVertexArrays(1, &this->EmptyVertexArray);
-    this->EmptyVertexArray = 0;
-  }
+  this->ViolationCounter.Release();
+  this->EmptyVertexArray.Release();
 }
 
 //------------------------------------------------------------------------------

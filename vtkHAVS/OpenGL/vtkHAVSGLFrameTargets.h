@@ -26,7 +26,8 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
-#include "vtkHAVSOpenGL.h" // For GLuint
+#include "vtkHAVSGLObjects.h" // For vtkHAVSGLBuffer, vtkHAVSGLVertexArray
+#include "vtkHAVSOpenGL.h"    // For GLuint
 #include "vtkObject.h"
 #include "vtkSmartPointer.h"  // For vtkSmartPointer
 #include "vtkTextureObject.h" // For vtkSmartPointer<vtkTextureObject>
@@ -140,8 +141,8 @@ private:
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResultFramebuffer;
   std::vector<float> KeptResult;
   int KeptSize[2] = { 0, 0 };
-  GLuint ViolationCounter = 0;
-  GLuint EmptyVertexArray = 0;
+  vtkHAVSGLBuffer ViolationCounter;
+  vtkHAVSGLVertexArray EmptyVertexArray;
 };
 
 VTK_ABI_NAMESPACE_END

@@ -25,20 +25,17 @@ vtkStandardNewMacro(vtkHAVSGLMesh);
 
 namespace
 {
-/// Fills the buffers of the bound vertex array that the face vertex shader
-/// reads: points (location 0, 3 floats each) and normalized scalars (location
-/// 1, `components` floats each).
-void UploadVertexAttributes(GLuint pointBuffer, GLuint scalarBuffer,
-  const std::vector<float>& points, const std::vector<float>& scalars, GLenum usage, int components)
+/// Fills the buffers that the face vertex shader reads, points (location 0,
+/// 3 floats each) and normalized scalars (location 1, `components` floats
+/// each), and points `array`'s attributes at them.
+void UploadVertexAttributes(vtkHAVSGLVertexArray& array, vtkHAVSGLBuffer& pointBuffer,
+  vtkHAVSGLBuffer& scalarBuffer, const std::vector<float>& points,
+  const std::vector<float>& scalars, GLenum usage, int components)
 {
-  glBindBuffer(GL_ARRAY_BUFFER, pointBuffer);
-  glBufferData(GL_ARRAY_BUFFER, points.size() * sizeof(float), points.data(), usage);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, scalarBuffer);
-  glBufferData(GL_ARRAY_BUFFER, scalars.size() * sizeof(float), scalars.data(), usage);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, components, GL_FLOAT, GL_FALSE, 0, nullptr);
+  pointBuffer.Update(GL_ARRAY_BUFFER, points, 0, usage);
+  scalarBuffer.Update(GL_ARRAY_BUFFER, scalars, 0, usage);
+  array.SetAttribute(0, pointBuffer, 3);
+  array.SetAttribute(1, scalarBuffer, components);
 }
 }
 
@@ -46,7 +43,7 @@ vtkHAVSGLMesh::vtkHAVSGLMesh() = default;
 
 vtkHAVSGLMesh::~vtkHAVSGLMesh()
 {
-  if (this->VertexArray || this->SectionArray)
+  if (this->VertexArray.IsCreated() || this->SectionArray.IsCreated())
   {
     vtkErrorMacro("ReleaseGraphicsResources was not called before destruction.");
   }
@@ -56,45 +53,37 @@ vtkHAVSGLMesh::~vtkHAVSGLMesh()
 void vtkHAVSGLMesh::UploadGeometry(
   const std::vector<float>& points, const std::vector<float>& scalars, int components)
 {
-  if (!this->VertexArray)
-  {
-    glGenVertexArrays(1, &this->VertexArray);
-    glGenBuffers(1, &this->PointBuffer);
-    glGenBuffers(1, &this->ScalarBuffer);
-    glGenBuffers(1, &this->IndexBuffer);
-  }
   this->Points = points;
   this->Scalars = scalars;
   this->Components = components;
   this->VertexCapacity = points.size() / 3;
-  glBindVertexArray(this->VertexArray);
-  UploadVertexAttributes(
-    this->PointBuffer, this->ScalarBuffer, points, scalars, GL_STATIC_DRAW, components);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
-  glBindVertexArray(0);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  UploadVertexAttributes(this->VertexArray, this->PointBuffer, this->ScalarBuffer, points, scalars,
+    GL_STATIC_DRAW, components);
+  if (!this->IndexBuffer.GetHandle())
+  {
+    this->IndexBuffer.Update(GL_ELEMENT_ARRAY_BUFFER, nullptr, 0, 0, GL_STREAM_DRAW);
+  }
+  this->VertexArray.SetIndices(&this->IndexBuffer);
 }
 
 //------------------------------------------------------------------------------
 void vtkHAVSGLMesh::UploadScalars(const std::vector<float>& scalars)
 {
-  if (!this->VertexArray || scalars.size() != this->Scalars.size())
+  if (!this->VertexArray.IsCreated() || scalars.size() != this->Scalars.size())
   {
     vtkErrorMacro("UploadScalars: " << scalars.size() << " scalars for " << this->Scalars.size()
                                     << " uploaded.");
     return;
   }
   this->Scalars = scalars;
-  glBindBuffer(GL_ARRAY_BUFFER, this->ScalarBuffer);
-  glBufferSubData(GL_ARRAY_BUFFER, 0, scalars.size() * sizeof(float), scalars.data());
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  this->ScalarBuffer.Write(0, scalars.data(), scalars.size() * sizeof(float));
 }
 
 //------------------------------------------------------------------------------
 bool vtkHAVSGLMesh::UploadFaceOrder(
   const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary, bool tagged)
 {
-  if (!this->VertexArray)
+  if (!this->VertexArray.IsCreated())
   {
     vtkErrorMacro("UploadFaceOrder before UploadGeometry.");
     return false;
@@ -112,7 +101,6 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
   }
   const std::vector<uint32_t>* indices = &triangles;
   std::vector<uint32_t> rewritten;
-  glBindVertexArray(this->VertexArray);
   if (boundaryFaces > 0)
   {
     // The boundary faces' own vertices, in draw order, after the points.
@@ -147,23 +135,18 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
       std::vector<float> allPoints(this->Points), allScalars(this->Scalars);
       allPoints.resize(3 * vertices);
       allScalars.resize(nc * vertices);
-      UploadVertexAttributes(
-        this->PointBuffer, this->ScalarBuffer, allPoints, allScalars, GL_DYNAMIC_DRAW, nc);
+      UploadVertexAttributes(this->VertexArray, this->PointBuffer, this->ScalarBuffer, allPoints,
+        allScalars, GL_DYNAMIC_DRAW, nc);
       this->VertexCapacity = vertices;
     }
-    glBindBuffer(GL_ARRAY_BUFFER, this->PointBuffer);
-    glBufferSubData(
-      GL_ARRAY_BUFFER, 3 * numPoints * sizeof(float), points.size() * sizeof(float), points.data());
-    glBindBuffer(GL_ARRAY_BUFFER, this->ScalarBuffer);
-    glBufferSubData(GL_ARRAY_BUFFER, nc * numPoints * sizeof(float), scalars.size() * sizeof(float),
-      scalars.data());
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    this->PointBuffer.Write(
+      3 * numPoints * sizeof(float), points.data(), points.size() * sizeof(float));
+    this->ScalarBuffer.Write(
+      nc * numPoints * sizeof(float), scalars.data(), scalars.size() * sizeof(float));
     indices = &rewritten;
   }
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, this->IndexBuffer);
-  glBufferData(
-    GL_ELEMENT_ARRAY_BUFFER, indices->size() * sizeof(uint32_t), indices->data(), GL_STREAM_DRAW);
-  glBindVertexArray(0);
+  // (The same buffer object, newly filled: the vertex array keeps pointing at it.)
+  this->IndexBuffer.Update(GL_ELEMENT_ARRAY_BUFFER, *indices, 0, GL_STREAM_DRAW);
   this->IndexCount = static_cast<GLsizei>(indices->size());
   return true;
 }
@@ -192,32 +175,21 @@ void vtkHAVSGLMesh::UploadSections(const std::vector<vtkHAVSFramePlanes::Section
   {
     return;
   }
-  if (!this->SectionArray)
-  {
-    glGenVertexArrays(1, &this->SectionArray);
-    glGenBuffers(1, &this->SectionPoints);
-    glGenBuffers(1, &this->SectionScalars);
-  }
-  glBindVertexArray(this->SectionArray);
-  UploadVertexAttributes(
-    this->SectionPoints, this->SectionScalars, points, scalars, GL_STREAM_DRAW, this->Components);
-  glBindVertexArray(0);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  UploadVertexAttributes(this->SectionArray, this->SectionPoints, this->SectionScalars, points,
+    scalars, GL_STREAM_DRAW, this->Components);
 }
 
 //------------------------------------------------------------------------------
 void vtkHAVSGLMesh::ReadBack(
   std::vector<float>& points, std::vector<float>& scalars, std::vector<uint32_t>& indices) const
 {
-  auto read = [](GLuint buffer, auto& out, size_t count)
+  auto read = [](const vtkHAVSGLBuffer& buffer, auto& out, size_t count)
   {
     out.resize(count);
-    glBindBuffer(GL_COPY_READ_BUFFER, buffer);
     if (count > 0)
     {
-      glGetBufferSubData(GL_COPY_READ_BUFFER, 0, count * sizeof(out[0]), out.data());
+      buffer.Read(0, out.data(), count * sizeof(out[0]));
     }
-    glBindBuffer(GL_COPY_READ_BUFFER, 0);
   };
   const size_t vertices = std::max(this->VertexCapacity, this->Points.size() / 3);
   read(this->PointBuffer, points, 3 * vertices);
@@ -247,7 +219,7 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
       {
         program->SetUniformi("havsOwnPlane", d.PlaneIndex);
       }
-      glBindVertexArray(this->SectionArray);
+      this->SectionArray.Bind();
       glDrawArrays(GL_TRIANGLES, d.First, d.Count);
     }
     if (roles)
@@ -267,7 +239,7 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
     const GLsizei first = static_cast<GLsizei>(static_cast<long long>(faces) * b / batches);
     const GLsizei last = static_cast<GLsizei>(static_cast<long long>(faces) * (b + 1) / batches);
     glFrontFace(flipFacing ? GL_CW : GL_CCW);
-    glBindVertexArray(this->VertexArray);
+    this->VertexArray.Bind();
     glDrawElements(GL_TRIANGLES, 3 * (last - first), GL_UNSIGNED_INT,
       reinterpret_cast<const void*>(3 * sizeof(GLuint) * static_cast<size_t>(first)));
     glFrontFace(GL_CCW);
@@ -277,32 +249,20 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
     }
   }
   drawSections(false);
-  glBindVertexArray(0);
+  vtkHAVSGLVertexArray::Unbind();
 }
 
 //------------------------------------------------------------------------------
 void vtkHAVSGLMesh::ReleaseGraphicsResources(vtkWindow* window)
 {
-  GLuint buffers[] = { this->PointBuffer, this->ScalarBuffer, this->IndexBuffer,
-    this->SectionPoints, this->SectionScalars };
-  for (GLuint b : buffers)
+  for (vtkHAVSGLBuffer* b : { &this->PointBuffer, &this->ScalarBuffer, &this->IndexBuffer,
+         &this->SectionPoints, &this->SectionScalars })
   {
-    if (b)
-    {
-      glDeleteBuffers(1, &b);
-    }
+    b->Release();
   }
-  this->PointBuffer = this->ScalarBuffer = this->IndexBuffer = 0;
-  this->SectionPoints = this->SectionScalars = 0;
   this->SectionDraws.clear();
-  for (GLuint* array : { &this->VertexArray, &this->SectionArray })
-  {
-    if (*array)
-    {
-      glDeleteVertexArrays(1, array);
-      *array = 0;
-    }
-  }
+  this->VertexArray.Release();
+  this->SectionArray.Release();
   this->IndexCount = 0;
   this->VertexCapacity = 0;
   this->GeometryVersion = this->ScalarVersion = this->OrderVersion = this->SectionsVersion = 0;

@@ -25,6 +25,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSFramePlanes.h" // For vtkHAVSFramePlanes::Section
+#include "vtkHAVSGLObjects.h"   // For vtkHAVSGLBuffer, vtkHAVSGLVertexArray
 #include "vtkHAVSOpenGL.h"      // For GLuint
 #include "vtkObject.h"
 #include "vtkSmartPointer.h"  // For vtkSmartPointer
@@ -135,19 +136,19 @@ private:
   void operator=(const vtkHAVSGLMesh&) = delete;
 
   vtkOpenGLRenderWindow* Window = nullptr;
-  GLuint VertexArray = 0;
-  GLuint PointBuffer = 0;
-  GLuint ScalarBuffer = 0;
-  GLuint IndexBuffer = 0;
+  vtkHAVSGLVertexArray VertexArray;
+  vtkHAVSGLBuffer PointBuffer;
+  vtkHAVSGLBuffer ScalarBuffer;
+  vtkHAVSGLBuffer IndexBuffer;
   GLsizei IndexCount = 0;
   std::vector<float> Points; // as uploaded, for the boundary vertices
   std::vector<float> Scalars;
   size_t VertexCapacity = 0; // vertices the point and scalar buffers hold
   int Components = 1;        // scalars per vertex
 
-  GLuint SectionArray = 0;
-  GLuint SectionPoints = 0;
-  GLuint SectionScalars = 0;
+  vtkHAVSGLVertexArray SectionArray;
+  vtkHAVSGLBuffer SectionPoints;
+  vtkHAVSGLBuffer SectionScalars;
   struct SectionDraw
   {
     int PlaneIndex;

@@ -99,11 +99,24 @@ void vtkHAVSGLBuffer::Release()
 //------------------------------------------------------------------------------
 void vtkHAVSGLVertexArray::SetBuffers(const vtkHAVSGLBuffer& points, const vtkHAVSGLBuffer* indices)
 {
+  this->SetAttribute(0, points, 3);
+  this->SetIndices(indices);
+}
+
+void vtkHAVSGLVertexArray::SetAttribute(
+  GLuint location, const vtkHAVSGLBuffer& buffer, int components)
+{
   this->Bind();
-  glBindBuffer(GL_ARRAY_BUFFER, points.GetHandle());
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, buffer.GetHandle());
+  glEnableVertexAttribArray(location);
+  glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, 0, nullptr);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
+  Unbind();
+}
+
+void vtkHAVSGLVertexArray::SetIndices(const vtkHAVSGLBuffer* indices)
+{
+  this->Bind();
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices ? indices->GetHandle() : 0);
   Unbind();
 }

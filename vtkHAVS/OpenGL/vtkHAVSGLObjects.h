@@ -80,7 +80,7 @@ private:
   vtkMTimeType Version = 0;
 };
 
-/// A vertex array: attribute 0 the points (3 floats), optionally indices.
+/// A vertex array: float attributes from buffers, optionally indices.
 class vtkHAVSGLVertexArray
 {
 public:
@@ -90,6 +90,10 @@ public:
 
   /// Attribute 0 from `points` (3 floats a vertex), and `indices` (0: none).
   void SetBuffers(const vtkHAVSGLBuffer& points, const vtkHAVSGLBuffer* indices);
+  /// Attribute `location` from `buffer`, `components` floats a vertex, tightly packed.
+  void SetAttribute(GLuint location, const vtkHAVSGLBuffer& buffer, int components);
+  /// The index buffer drawn from (nullptr: none).
+  void SetIndices(const vtkHAVSGLBuffer* indices);
   /// Bound (made first when needed: an array without attributes draws by ids).
   void Bind();
   static void Unbind();

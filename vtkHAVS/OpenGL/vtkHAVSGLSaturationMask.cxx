@@ -15,38 +15,29 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkRenderbuffer.h"
 #include "vtkShaderProgram.h"
 
 VTK_ABI_NAMESPACE_BEGIN
-
-namespace
-{
-vtkIdType ReadQuery(GLuint query)
-{
-  GLuint64 value = 0;
-  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &value);
-  return static_cast<vtkIdType>(value);
-}
-}
 
 //------------------------------------------------------------------------------
 void vtkHAVSGLSaturationMask::Attach(vtkHAVSGLPassContext& context)
 {
   const int w = context.Width(), h = context.Height();
-  if (!this->Stencil || this->Size[0] != w || this->Size[1] != h)
+  if (!this->Stencil || this->Stencil->GetContext() != context.Window)
   {
-    if (!this->Stencil)
-    {
-      glGenRenderbuffers(1, &this->Stencil);
-    }
-    glBindRenderbuffer(GL_RENDERBUFFER, this->Stencil);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, w, h);
-    glBindRenderbuffer(GL_RENDERBUFFER, 0);
-    this->Size[0] = w;
-    this->Size[1] = h;
+    // (A renderbuffer lives and dies with its object: vtkRenderbuffer frees
+    // its name when deleted, and cannot be made again after a release.)
+    this->Stencil = vtkSmartPointer<vtkRenderbuffer>::New();
+    this->Stencil->SetContext(context.Window);
+    this->Stencil->Create(GL_DEPTH24_STENCIL8, w, h);
+  }
+  else
+  {
+    this->Stencil->Resize(w, h); // (nothing when the size is the same)
   }
   glFramebufferRenderbuffer(
-    GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, this->Stencil);
+    GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, this->Stencil->GetHandle());
   vtkOpenGLState* state = context.Window->GetState();
   state->vtkglStencilMask(0xFF);
   const GLint zero = 0;
@@ -63,10 +54,7 @@ void vtkHAVSGLSaturationMask::DrawFaces(vtkHAVSGLPassContext& context, vtkShader
     context.DrawFaces(program);
     return;
   }
-  if (measure && !this->Query)
-  {
-    glGenQueries(1, &this->Query);
-  }
+  this->Queries.Release(); // the last frame's
   vtkOpenGLState* state = context.Window->GetState();
   vtkOpenGLState::ScopedglEnableDisable stencilTest(state, GL_STENCIL_TEST);
   state->vtkglEnable(GL_STENCIL_TEST);
@@ -88,12 +76,12 @@ void vtkHAVSGLSaturationMask::DrawFaces(vtkHAVSGLPassContext& context, vtkShader
       const bool count = measure && batch + 2 == Batches; // the last mark
       if (count)
       {
-        glBeginQuery(GL_SAMPLES_PASSED, this->Query);
+        this->Queries.BeginSamples();
       }
       context.DrawFullViewport();
       if (count)
       {
-        glEndQuery(GL_SAMPLES_PASSED);
+        this->Queries.EndSamples();
         marked = true;
       }
       state->vtkglStencilFunc(GL_EQUAL, 0, 0xFF);
@@ -105,24 +93,15 @@ void vtkHAVSGLSaturationMask::DrawFaces(vtkHAVSGLPassContext& context, vtkShader
   state->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
   if (marked)
   {
-    this->LastSaturatedPixels = ReadQuery(this->Query);
+    this->LastSaturatedPixels = static_cast<vtkIdType>(this->Queries.Samples().back());
   }
 }
 
 //------------------------------------------------------------------------------
 void vtkHAVSGLSaturationMask::ReleaseGraphicsResources()
 {
-  if (this->Stencil)
-  {
-    glDeleteRenderbuffers(1, &this->Stencil);
-    this->Stencil = 0;
-  }
-  if (this->Query)
-  {
-    glDeleteQueries(1, &this->Query);
-    this->Query = 0;
-  }
-  this->Size[0] = this->Size[1] = 0;
+  this->Stencil = nullptr; // its name deleted with it (the context is current)
+  this->Queries.Release();
 }
 
 VTK_ABI_NAMESPACE_END

@@ -33,8 +33,11 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
-#include "vtkHAVSOpenGL.h" // For GLuint
-#include "vtkType.h"       // For vtkIdType
+#include "vtkHAVSGLObjects.h" // For vtkHAVSGLQueries
+#include "vtkHAVSOpenGL.h"    // For GLuint
+#include "vtkRenderbuffer.h"  // For vtkRenderbuffer
+#include "vtkSmartPointer.h"  // For vtkSmartPointer
+#include "vtkType.h"          // For vtkIdType
 
 #include <string> // For std::string
 
@@ -78,9 +81,8 @@ private:
   vtkHAVSGLSaturationMask(const vtkHAVSGLSaturationMask&) = delete;
   void operator=(const vtkHAVSGLSaturationMask&) = delete;
 
-  GLuint Stencil = 0; // a renderbuffer
-  int Size[2] = { 0, 0 };
-  GLuint Query = 0; // samples passed by the last mark
+  vtkSmartPointer<vtkRenderbuffer> Stencil; ///< depth-stencil, attached to the result's framebuffer
+  vtkHAVSGLQueries Queries;                 ///< samples passed by the last mark
   vtkIdType LastSaturatedPixels = -1;
 };
 

@@ -46,23 +46,15 @@ bool vtkHAVSInterlockKBuffer::Allocate(vtkHAVSGLPassContext& context)
 {
   const size_t bytes = static_cast<size_t>(context.Width()) * context.Height() *
     vtkHAVSShaders::InterlockPixelStride(context.Request.K) * 4 * sizeof(float);
-  if (!this->PixelEntries || this->PixelEntriesBytes != bytes)
-  {
-    if (!this->PixelEntries)
-    {
-      glGenBuffers(1, &this->PixelEntries);
-    }
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->PixelEntries);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, bytes, nullptr, GL_DYNAMIC_COPY);
-    this->PixelEntriesBytes = bytes;
-  }
+  // Its "version" is its size: made again only when the size changes.
+  this->PixelEntries.Update(GL_SHADER_STORAGE_BUFFER, nullptr, bytes, bytes, GL_DYNAMIC_COPY);
   return true;
 }
 
 //------------------------------------------------------------------------------
 bool vtkHAVSInterlockKBuffer::Clear(vtkHAVSGLPassContext& context)
 {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->PixelEntries);
+  this->PixelEntries.BindBase(GL_SHADER_STORAGE_BUFFER, 0);
   context.Targets->BindResult();
   context.Window->GetState()->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   vtkShaderProgram* clear =
@@ -96,7 +88,7 @@ bool vtkHAVSInterlockKBuffer::Draw(vtkHAVSGLPassContext& context)
 //------------------------------------------------------------------------------
 bool vtkHAVSInterlockKBuffer::Resolve(vtkHAVSGLPassContext& context)
 {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->PixelEntries);
+  this->PixelEntries.BindBase(GL_SHADER_STORAGE_BUFFER, 0);
   vtkShaderProgram* program = context.QuadProgram(
     vtkHAVSShaders::ResolveShader(vtkHAVSFrameRequest::PathFragmentShaderInterlock,
       context.Request.K, false, context.ShaderFeatures()));
@@ -111,12 +103,7 @@ bool vtkHAVSInterlockKBuffer::Resolve(vtkHAVSGLPassContext& context)
 void vtkHAVSInterlockKBuffer::ReleaseGraphicsResources(vtkWindow*)
 {
   this->Saturation.ReleaseGraphicsResources();
-  if (this->PixelEntries)
-  {
-    glDeleteBuffers(1, &this->PixelEntries);
-    this->PixelEntries = 0;
-    this->PixelEntriesBytes = 0;
-  }
+  this->PixelEntries.Release();
 }
 
 VTK_ABI_NAMESPACE_END

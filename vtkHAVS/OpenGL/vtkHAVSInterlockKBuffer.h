@@ -24,6 +24,7 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
+#include "vtkHAVSGLObjects.h" // For vtkHAVSGLBuffer
 #include "vtkHAVSKBuffer.h"
 #include "vtkHAVSOpenGL.h" // For GLuint
 
@@ -58,8 +59,7 @@ private:
   vtkHAVSInterlockKBuffer(const vtkHAVSInterlockKBuffer&) = delete;
   void operator=(const vtkHAVSInterlockKBuffer&) = delete;
 
-  GLuint PixelEntries = 0;
-  size_t PixelEntriesBytes = 0;
+  vtkHAVSGLBuffer PixelEntries; ///< the per-pixel entries (its version: its size)
 };
 
 VTK_ABI_NAMESPACE_END
