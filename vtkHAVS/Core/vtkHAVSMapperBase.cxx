@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSMapperBase.h"
 
+#include "vtkHAVSMapperGraphics.h"
+
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSMapperInputs.h"
 #include "vtkHAVSMesh.h"
@@ -131,9 +133,17 @@ bool vtkHAVSMapperBase::AbortRequested(vtkRenderer* renderer)
   return this->LastFrameAborted;
 }
 
-const std::vector<float>* vtkHAVSMapperBase::GetKeptResult(int[2])
+const std::vector<float>* vtkHAVSMapperBase::GetKeptResult(int size[2])
 {
-  return nullptr;
+  return this->Graphics ? this->Graphics->GetKeptResult(size) : nullptr;
+}
+
+void vtkHAVSMapperBase::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Graphics)
+  {
+    this->Graphics->Release(window);
+  }
 }
 
 bool vtkHAVSMapperBase::GetFloatResult(vtkFloatArray* rgba, int size[2])

@@ -68,6 +68,7 @@ VTK_ABI_NAMESPACE_BEGIN
 
 class vtkFloatArray;
 class vtkHAVSFramePlanes;
+class vtkHAVSMapperGraphics;
 class vtkHAVSMesh;
 class vtkHAVSPreIntegrationTable;
 class vtkHAVSViewFrame;
@@ -77,6 +78,9 @@ class VTKHAVSCORE_EXPORT vtkHAVSMapperBase : public vtkUnstructuredGridVolumeMap
 public:
   vtkTypeMacro(vtkHAVSMapperBase, vtkUnstructuredGridVolumeMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Releases the graphics layer's resources in `window` (all three mappers alike).
+  void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
   /**
@@ -225,7 +229,9 @@ protected:
   /// Called with the frame's time (TimeToDraw) after a frame that reached RenderView.
   virtual void FrameFinished(double vtkNotUsed(seconds)) {}
   /// The graphics layer's kept float result (nullptr without one).
-  virtual const std::vector<float>* GetKeptResult(int size[2]);
+  const std::vector<float>* GetKeptResult(int size[2]);
+  /// The graphics layer (the GL mapper's; not owned: it lives as long as the mapper).
+  void SetGraphics(vtkHAVSMapperGraphics* graphics) { this->Graphics = graphics; }
 
   /// Whether the render window asks to abort the frame (counts LastFrameAborted).
   bool AbortRequested(vtkRenderer* renderer);
@@ -259,6 +265,7 @@ private:
   double LastMeshSeconds = 0.0;
   bool LastFrameAborted = false;
   vtkHAVSShaderHooks ShaderHooks;
+  vtkHAVSMapperGraphics* Graphics = nullptr;
   vtkMTimeType SeenMeshBuild = 0; // the mesh's build and scalar times this mapper last drew
   vtkMTimeType SeenMeshScalars = 0;
   std::array<bool, 10> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings

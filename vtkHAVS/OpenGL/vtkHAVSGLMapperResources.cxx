@@ -72,6 +72,12 @@ vtkOpenGLRenderWindow* vtkHAVSGLMapperResources::Prepare(
   return window;
 }
 
+//------------------------------------------------------------------------------
+const std::vector<float>* vtkHAVSGLMapperResources::GetKeptResult(int size[2])
+{
+  return this->Targets->GetKeptResult(size);
+}
+
 namespace
 {
 /// The most planes the shaders take: 6 clipping planes and the near plane.

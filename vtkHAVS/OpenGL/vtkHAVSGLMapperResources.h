@@ -32,8 +32,8 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
-#include "vtkNew.h" // For vtkNew
-#include "vtkObject.h"
+#include "vtkHAVSMapperGraphics.h" // For vtkHAVSMapperGraphics
+#include "vtkNew.h"                // For vtkNew
 
 #include <functional> // For std::function
 
@@ -48,11 +48,11 @@ class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkWindow;
 
-class vtkHAVSGLMapperResources : public vtkObject
+class vtkHAVSGLMapperResources : public vtkHAVSMapperGraphics
 {
 public:
   static vtkHAVSGLMapperResources* New();
-  vtkTypeMacro(vtkHAVSGLMapperResources, vtkObject);
+  vtkTypeMacro(vtkHAVSGLMapperResources, vtkHAVSMapperGraphics);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// What releases the mapper's own GPU objects (called with the context current).
@@ -71,7 +71,9 @@ public:
     vtkRenderer* renderer, vtkObject* mapper, const char* mapperName, const char* needs);
 
   /// Releases everything in `window` (nullptr: in whichever window holds it).
-  void Release(vtkWindow* window);
+  void Release(vtkWindow* window) override;
+  /// The targets' kept float result (vtkHAVSGLFrameTargets::GetKeptResult).
+  const std::vector<float>* GetKeptResult(int size[2]) override;
 
   /// The targets at the view's size; the opaque depth captured when `opaque`.
   void BeginFrame(const vtkHAVSViewFrame& view, bool opaque, vtkObject* mapper);

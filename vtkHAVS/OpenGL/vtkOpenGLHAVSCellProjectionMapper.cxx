@@ -73,6 +73,7 @@ struct vtkOpenGLHAVSCellProjectionMapper::GLObjects
 vtkOpenGLHAVSCellProjectionMapper::vtkOpenGLHAVSCellProjectionMapper()
   : GL(new GLObjects)
 {
+  this->SetGraphics(this->Resources);
   this->Resources->SetReleaseCallback([this](vtkOpenGLRenderWindow*) { this->GL->Release(); });
 }
 
@@ -216,18 +217,6 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
 
   // 4. The extremum blends' resolve, the result composited into the window.
   return this->Resources->EndFrame(frame.Blend, frame.KeepResult, view, this);
-}
-
-//------------------------------------------------------------------------------
-const std::vector<float>* vtkOpenGLHAVSCellProjectionMapper::GetKeptResult(int size[2])
-{
-  return this->Resources->GetTargets()->GetKeptResult(size);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLHAVSCellProjectionMapper::ReleaseGraphicsResources(vtkWindow* window)
-{
-  this->Resources->Release(window);
 }
 
 //------------------------------------------------------------------------------

@@ -44,14 +44,11 @@ public:
   vtkTypeMacro(vtkOpenGLHAVSCellProjectionMapper, vtkHAVSCellProjectionMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  void ReleaseGraphicsResources(vtkWindow* window) override;
-
 protected:
   vtkOpenGLHAVSCellProjectionMapper();
   ~vtkOpenGLHAVSCellProjectionMapper() override;
 
   bool DrawCells(vtkRenderer* renderer, const CellFrame& frame, double* drawSeconds) override;
-  const std::vector<float>* GetKeptResult(int size[2]) override;
 
 private:
   vtkOpenGLHAVSCellProjectionMapper(const vtkOpenGLHAVSCellProjectionMapper&) = delete;

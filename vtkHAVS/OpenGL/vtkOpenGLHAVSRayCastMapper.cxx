@@ -107,6 +107,7 @@ struct vtkOpenGLHAVSRayCastMapper::GLObjects
 vtkOpenGLHAVSRayCastMapper::vtkOpenGLHAVSRayCastMapper()
   : GL(new GLObjects)
 {
+  this->SetGraphics(this->Resources);
   this->Resources->SetReleaseCallback([this](vtkOpenGLRenderWindow*) { this->GL->Release(); });
 }
 
@@ -459,18 +460,6 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
 
   // 6. The extremum blends' resolve, the result composited into the window.
   return this->Resources->EndFrame(frame.Blend, frame.KeepResult, view, this);
-}
-
-//------------------------------------------------------------------------------
-const std::vector<float>* vtkOpenGLHAVSRayCastMapper::GetKeptResult(int size[2])
-{
-  return this->Resources->GetTargets()->GetKeptResult(size);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLHAVSRayCastMapper::ReleaseGraphicsResources(vtkWindow* window)
-{
-  this->Resources->Release(window);
 }
 
 //------------------------------------------------------------------------------

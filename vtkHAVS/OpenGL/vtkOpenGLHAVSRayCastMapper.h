@@ -54,14 +54,11 @@ public:
   vtkTypeMacro(vtkOpenGLHAVSRayCastMapper, vtkHAVSRayCastMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  void ReleaseGraphicsResources(vtkWindow* window) override;
-
 protected:
   vtkOpenGLHAVSRayCastMapper();
   ~vtkOpenGLHAVSRayCastMapper() override;
 
   bool DrawRays(vtkRenderer* renderer, const RayFrame& frame, RayCounts* counts) override;
-  const std::vector<float>* GetKeptResult(int size[2]) override;
 
 private:
   vtkOpenGLHAVSRayCastMapper(const vtkOpenGLHAVSRayCastMapper&) = delete;

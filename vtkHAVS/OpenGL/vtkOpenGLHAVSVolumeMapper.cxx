@@ -64,6 +64,7 @@ struct KeepLoaded
 //------------------------------------------------------------------------------
 vtkOpenGLHAVSVolumeMapper::vtkOpenGLHAVSVolumeMapper()
 {
+  this->SetGraphics(this->Resources);
   this->Resources->SetReleaseCallback(
     [this](vtkOpenGLRenderWindow* home)
     {
@@ -318,18 +319,6 @@ bool vtkOpenGLHAVSVolumeMapper::CompositeKeptResult(vtkRenderer* renderer)
   vtkHAVSGLScopedPassState passState(state);
   state->vtkglViewport(originX, originY, width, height);
   return targets->Composite(originX, originY);
-}
-
-//------------------------------------------------------------------------------
-const std::vector<float>* vtkOpenGLHAVSVolumeMapper::GetKeptResult(int size[2])
-{
-  return this->Resources->GetTargets()->GetKeptResult(size);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLHAVSVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
-{
-  this->Resources->Release(window);
 }
 
 //------------------------------------------------------------------------------

@@ -75,7 +75,6 @@ public:
   vtkGetStringMacro(CaptureDirectory);
   vtkGetMacro(LastCaptureSucceeded, bool);
   ///@}
-  void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:
   vtkOpenGLHAVSVolumeMapper();
@@ -85,7 +84,6 @@ protected:
   int GetMaximumK(int path) override;
   bool DrawFrame(vtkRenderer* renderer, const FrameRequest& request, FrameResult& result) override;
   bool CompositeKeptResult(vtkRenderer* renderer) override;
-  const std::vector<float>* GetKeptResult(int size[2]) override;
 
 private:
   vtkOpenGLHAVSVolumeMapper(const vtkOpenGLHAVSVolumeMapper&) = delete;

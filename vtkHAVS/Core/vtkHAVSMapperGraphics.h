@@ -1,0 +1,53 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    vtkHAVSMapperGraphics.h
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+/**
+ * @class   vtkHAVSMapperGraphics
+ * @brief   What vtkHAVSMapperBase asks of a mapper's graphics layer.
+ *
+ * The GL-free base cannot name OpenGL objects; its graphics layer
+ * (vtkHAVSGLMapperResources, one per GL mapper) implements this interface,
+ * and the GL mapper hands it to the base (vtkHAVSMapperBase::SetGraphics).
+ * The base then releases the graphics resources and reads the kept float
+ * result the same way for every mapper.
+ */
+#ifndef vtkHAVSMapperGraphics_h
+#define vtkHAVSMapperGraphics_h
+
+#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
+#include "vtkHAVSCoreModule.h"   // For export macro
+#include "vtkObject.h"
+
+#include <vector> // For std::vector
+
+VTK_ABI_NAMESPACE_BEGIN
+
+class vtkWindow;
+
+class VTKHAVSCORE_EXPORT vtkHAVSMapperGraphics : public vtkObject
+{
+public:
+  vtkTypeMacro(vtkHAVSMapperGraphics, vtkObject);
+
+  /// Releases everything in `window` (nullptr: in whichever window holds it).
+  virtual void Release(vtkWindow* window) = 0;
+  /// The last frame's kept float result and its size; nullptr without one.
+  virtual const std::vector<float>* GetKeptResult(int size[2]) = 0;
+
+protected:
+  vtkHAVSMapperGraphics() = default;
+  ~vtkHAVSMapperGraphics() override = default;
+
+private:
+  vtkHAVSMapperGraphics(const vtkHAVSMapperGraphics&) = delete;
+  void operator=(const vtkHAVSMapperGraphics&) = delete;
+};
+
+VTK_ABI_NAMESPACE_END
+#endif
