@@ -92,21 +92,7 @@ vtkSmartPointer<vtkUnstructuredGrid> HigherOrderShell(
             v[s + 1] = v[s];
             v[s + 1][axes[s]] += 1.0;
           }
-          double d[3][3];
-          for (int r = 0; r < 3; ++r)
-          {
-            for (int c = 0; c < 3; ++c)
-            {
-              d[r][c] = v[r + 1][c] - v[0][c];
-            }
-          }
-          const double det = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) -
-            d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
-            d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
-          if (det < 0)
-          {
-            std::swap(v[1], v[2]);
-          }
+          OrientPositive(v);
           for (int n = 0; n < count; ++n)
           {
             const double r = pc[3 * n], s = pc[3 * n + 1], t = pc[3 * n + 2];

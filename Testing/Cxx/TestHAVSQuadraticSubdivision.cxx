@@ -57,6 +57,32 @@ using namespace havstest::cells;
 
 namespace
 {
+/// One refinement level of a shell of `quads` surface quads, printed.
+struct Level
+{
+  vtkHAVSTetrahedralizer::Report Report;
+  double Error = 0.0;      ///< relative volume error against `exact`
+  vtkIdType Boundary = 0;  ///< boundary triangles
+  vtkIdType Expected = 0;  ///< the refined surface's triangles
+  double FieldError = 0.0; ///< the linear field at the new points
+};
+Level Refine(vtkUnstructuredGrid* shell, int level, double exact, vtkIdType quads)
+{
+  Level l;
+  auto tets = vtkHAVSTetrahedralizer::Tetrahedralize(shell, &l.Report, level);
+  l.Error = std::fabs(TetrahedraVolume(tets) - exact) / exact;
+  l.Boundary = BoundaryTriangles(tets);
+  l.Expected = 2 * quads << (2 * level);
+  l.FieldError = FieldError(tets, shell->GetNumberOfPoints(), Linear);
+  std::printf("  level %d: %lld tetrahedra, %lld points added, volume error %.3e, "
+              "boundary triangles %lld (refined surface %lld), linear field error %.1e, "
+              "%.3f s\n",
+    level, static_cast<long long>(tets->GetNumberOfCells()),
+    static_cast<long long>(l.Report.AddedPoints), l.Error, static_cast<long long>(l.Boundary),
+    static_cast<long long>(l.Expected), l.FieldError, l.Report.Seconds);
+  return l;
+}
+
 /// The volume of a non-linear cell: its Jacobian's determinant by Gauss
 /// quadrature (6 points per axis; a tetrahedron through the collapsed cube).
 double CellVolume(vtkCell* cell, bool tetrahedron, bool wedge = false)
@@ -135,18 +161,10 @@ int TestHAVSQuadraticSubdivision(int, char*[])
     double previous = 1e30;
     for (int level = 0; level <= 3; ++level)
     {
-      vtkHAVSTetrahedralizer::Report report;
-      auto tets = vtkHAVSTetrahedralizer::Tetrahedralize(shell, &report, level);
-      const double error = std::fabs(TetrahedraVolume(tets) - exact) / exact;
-      const vtkIdType boundary = BoundaryTriangles(tets);
-      const vtkIdType expected = 2 * quads << (2 * level);
-      const double fieldError = FieldError(tets, shell->GetNumberOfPoints(), Linear);
-      std::printf("  level %d: %lld tetrahedra, %lld points added, volume error %.3e, "
-                  "boundary triangles %lld (refined surface %lld), linear field error %.1e, "
-                  "%.3f s\n",
-        level, static_cast<long long>(tets->GetNumberOfCells()),
-        static_cast<long long>(report.AddedPoints), error, static_cast<long long>(boundary),
-        static_cast<long long>(expected), fieldError, report.Seconds);
+      const Level l = Refine(shell, level, exact, quads);
+      const vtkHAVSTetrahedralizer::Report& report = l.Report;
+      const double error = l.Error, fieldError = l.FieldError;
+      const vtkIdType boundary = l.Boundary, expected = l.Expected;
       // Level 1 of a quadratic tetrahedron is its canonical eight, which level 0 is too.
       if (level >= 2 || !tetrahedra)
       {
@@ -176,11 +194,8 @@ int TestHAVSQuadraticSubdivision(int, char*[])
     for (int split :
       { vtkHAVSTetrahedralizer::SplitLocalOrder, vtkHAVSTetrahedralizer::SplitUnmerged })
     {
-      auto tets = vtkHAVSTetrahedralizer::Tetrahedralize(shell, nullptr, 2, split);
-      const vtkIdType boundary = BoundaryTriangles(tets);
-      std::printf("  control (%s, level 2): boundary triangles %lld (refined surface %lld)\n",
-        split == vtkHAVSTetrahedralizer::SplitLocalOrder ? "local order" : "points not merged",
-        static_cast<long long>(boundary), static_cast<long long>(2 * quads << 4));
+      vtkIdType boundary = 0;
+      SplitControl(shell, split, 2 * quads << 4, &boundary);
       if (!tetrahedra || split == vtkHAVSTetrahedralizer::SplitUnmerged)
       {
         havstest::Check(boundary > (2 * quads << 4), std::string(what) + ": the control cracks");
@@ -221,21 +236,12 @@ int TestHAVSQuadraticSubdivision(int, char*[])
     double previous = 1e30;
     for (int level = 1; level <= 2; ++level)
     {
-      vtkHAVSTetrahedralizer::Report report;
-      auto tets = vtkHAVSTetrahedralizer::Tetrahedralize(shell, &report, level);
-      const double error = std::fabs(TetrahedraVolume(tets) - exact) / exact;
-      const vtkIdType boundary = BoundaryTriangles(tets);
-      const vtkIdType expected = 2 * quads << (2 * level);
-      const double fieldError = FieldError(tets, shell->GetNumberOfPoints(), Linear);
-      std::printf("  level %d: %lld tetrahedra, volume error %.3e, boundary triangles %lld "
-                  "(refined surface %lld), linear field error %.1e\n",
-        level, static_cast<long long>(tets->GetNumberOfCells()), error,
-        static_cast<long long>(boundary), static_cast<long long>(expected), fieldError);
-      havstest::Check(report.RefinedCells == shell->GetNumberOfCells() && boundary == expected &&
-          fieldError < 1e-12,
+      const Level l = Refine(shell, level, exact, quads);
+      havstest::Check(l.Report.RefinedCells == shell->GetNumberOfCells() &&
+          l.Boundary == l.Expected && l.FieldError < 1e-12,
         std::string(what) + ": refined, no cracks, the linear field exact");
-      havstest::Check(error < previous / 3.0, std::string(what) + ": volume error falls");
-      previous = error;
+      havstest::Check(l.Error < previous / 3.0, std::string(what) + ": volume error falls");
+      previous = l.Error;
     }
     havstest::Check(previous < 5e-3, std::string(what) + ": volume within 5e-3 at level 2");
   }

@@ -25,6 +25,7 @@
 #include "havsTestScenes.h"
 #include "havsTestShells.h"
 
+#include "vtkCamera.h"
 #include "vtkCell.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -53,6 +54,21 @@ using namespace havstest::cells;
 
 namespace
 {
+/// The exact reference image of `grid` (refined to `level`) seen by `camera`, kSize².
+std::vector<float> ExactImage(
+  vtkUnstructuredGrid* grid, int level, vtkVolumeProperty* property, vtkCamera* camera)
+{
+  vtkNew<vtkHAVSReferenceRenderer> r;
+  r->SetInputData(grid);
+  r->SetHigherOrderSubdivision(level);
+  r->SetProperty(property);
+  r->SetCamera(camera);
+  r->SetSize(kSize, kSize);
+  r->Render();
+  return std::vector<float>(
+    r->GetImage()->GetPointer(0), r->GetImage()->GetPointer(0) + 4 * kSize * kSize);
+}
+
 /// `grid`'s geometry in new arrays (as a reader gives each time step), with
 /// the point array "s" = f(point) (or the cell array "c" = f(cell centre)).
 vtkSmartPointer<vtkUnstructuredGrid> TimeStep(vtkUnstructuredGrid* grid,
@@ -186,15 +202,8 @@ void TessellatedTimeSteps(vtkVolumeProperty* property,
     s.Window->Render();
     const auto two = havstest::FloatResult(mapper);
     havstest::Check(update() == 2, name + ": a new step maps the scalars only");
-    vtkNew<vtkHAVSReferenceRenderer> r;
-    r->SetInputData(second);
-    r->SetHigherOrderSubdivision(c.Level);
-    r->SetProperty(property);
-    r->SetCamera(s.Renderer->GetActiveCamera());
-    r->SetSize(kSize, kSize);
-    r->Render();
-    const std::vector<float> exact(
-      r->GetImage()->GetPointer(0), r->GetImage()->GetPointer(0) + 4 * kSize * kSize);
+    const std::vector<float> exact =
+      ExactImage(second, c.Level, property, s.Renderer->GetActiveCamera());
     const auto d =
       havstest::Compare(two, exact, c.CellProjection || !c.CellData ? kEdge : kEdgeCellScalars);
     Print(name + ", second step", d);
@@ -262,14 +271,8 @@ int TestHAVSTimeSteps(int, char*[])
         mapper->SetInputData(grid);
         s.Window->Render();
         const auto image = havstest::FloatResult(mapper);
-        vtkNew<vtkHAVSReferenceRenderer> r;
-        r->SetInputData(grid);
-        r->SetProperty(property);
-        r->SetCamera(s.Renderer->GetActiveCamera());
-        r->SetSize(kSize, kSize);
-        r->Render();
-        const std::vector<float> exact(
-          r->GetImage()->GetPointer(0), r->GetImage()->GetPointer(0) + 4 * kSize * kSize);
+        const std::vector<float> exact =
+          ExactImage(grid, 0, property, s.Renderer->GetActiveCamera());
         const auto d =
           havstest::Compare(image, exact, cells || !cellData ? kEdge : kEdgeCellScalars);
         const std::string name = kind + ", " + what + " (" + Name(cells) + ")";

@@ -70,9 +70,10 @@ vtkSmartPointer<vtkPoints> ShellPoints(const int m[3])
   return points;
 }
 
-/// A quadratic tetrahedron (10 nodes) on the corners `v` (box-lattice parameters), positively
-/// oriented in parameter space.
-void AddQuadraticTetra(vtkUnstructuredGrid* grid, ShellNodes& nodes, std::array<Param, 4> v)
+}
+
+//------------------------------------------------------------------------------
+void OrientPositive(std::array<Param, 4>& v)
 {
   double d[3][3];
   for (int r = 0; r < 3; ++r)
@@ -89,6 +90,27 @@ void AddQuadraticTetra(vtkUnstructuredGrid* grid, ShellNodes& nodes, std::array<
   {
     std::swap(v[1], v[2]);
   }
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnstructuredGrid> SplitControl(
+  vtkDataSet* grid, int split, vtkIdType refinedSurface, vtkIdType* boundary)
+{
+  auto tets = vtkHAVSTetrahedralizer::Tetrahedralize(grid, nullptr, 2, split);
+  *boundary = BoundaryTriangles(tets);
+  std::printf("  control (%s, level 2): boundary triangles %lld (refined surface %lld)\n",
+    split == vtkHAVSTetrahedralizer::SplitLocalOrder ? "local order" : "points not merged",
+    static_cast<long long>(*boundary), static_cast<long long>(refinedSurface));
+  return tets;
+}
+
+namespace
+{
+/// A quadratic tetrahedron (10 nodes) on the corners `v` (box-lattice parameters), positively
+/// oriented in parameter space.
+void AddQuadraticTetra(vtkUnstructuredGrid* grid, ShellNodes& nodes, std::array<Param, 4> v)
+{
+  OrientPositive(v);
   auto at = [&](int a) { return nodes.Id(v[a][0], v[a][1], v[a][2]); };
   auto mid = [&](int a, int b)
   { return nodes.Id((v[a][0] + v[b][0]) / 2, (v[a][1] + v[b][1]) / 2, (v[a][2] + v[b][2]) / 2); };
@@ -533,11 +555,8 @@ void CheckRefinement(const std::string& what, vtkUnstructuredGrid* grid, double 
   for (int split :
     { vtkHAVSTetrahedralizer::SplitLocalOrder, vtkHAVSTetrahedralizer::SplitUnmerged })
   {
-    auto tets = vtkHAVSTetrahedralizer::Tetrahedralize(grid, nullptr, 2, split);
-    const vtkIdType boundary = BoundaryTriangles(tets);
-    std::printf("  control (%s, level 2): boundary triangles %lld (refined surface %lld)\n",
-      split == vtkHAVSTetrahedralizer::SplitLocalOrder ? "local order" : "points not merged",
-      static_cast<long long>(boundary), static_cast<long long>(2 * surfaceQuads << 4));
+    vtkIdType boundary = 0;
+    auto tets = SplitControl(grid, split, 2 * surfaceQuads << 4, &boundary);
     if (split == vtkHAVSTetrahedralizer::SplitUnmerged || localOrderControlCracks)
     {
       havstest::Check(boundary > (2 * surfaceQuads << 4) && InnerBoundaryTriangles(tets, off) > 0,

@@ -113,6 +113,16 @@ private:
 
 using Param = std::array<double, 3>;
 
+/// The corners `v` of a tetrahedron (box-lattice parameters) reordered, if
+/// needed, to be positively oriented (v[1] and v[2] swapped).
+void OrientPositive(std::array<Param, 4>& v);
+
+/// A level-2 control of the refinement (`split`: vtkHAVSTetrahedralizer's
+/// SplitLocalOrder or SplitUnmerged): `grid` tetrahedralized that way, its
+/// boundary triangles into `boundary`, printed beside `refinedSurface`.
+vtkSmartPointer<vtkUnstructuredGrid> SplitControl(
+  vtkDataSet* grid, int split, vtkIdType refinedSurface, vtkIdType* boundary);
+
 /// The curved shell in pyramids: each box (m[0] x m[1] x m[2]) as four
 /// quadratic (13-node) or triquadratic (19-node) pyramids on its faces
 /// across y and z, apex at the box's centre, and four quadratic tetrahedra
