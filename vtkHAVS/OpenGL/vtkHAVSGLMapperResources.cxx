@@ -14,6 +14,7 @@
 #include "vtkHAVSFrameRequest.h"
 #include "vtkHAVSGLCapabilities.h"
 #include "vtkHAVSGLFrameTargets.h"
+#include "vtkHAVSGLObjects.h"
 #include "vtkHAVSGLTable.h"
 #include "vtkHAVSMapperBase.h"
 #include "vtkHAVSOpenGL.h"
@@ -34,7 +35,10 @@ VTK_ABI_NAMESPACE_BEGIN
 vtkStandardNewMacro(vtkHAVSGLMapperResources);
 
 //------------------------------------------------------------------------------
-vtkHAVSGLMapperResources::vtkHAVSGLMapperResources() = default;
+vtkHAVSGLMapperResources::vtkHAVSGLMapperResources()
+  : Section(new vtkHAVSGLSection)
+{
+}
 
 vtkHAVSGLMapperResources::~vtkHAVSGLMapperResources()
 {
@@ -87,14 +91,27 @@ constexpr int AdditiveBlend = 4;
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSGLMapperResources::BeginFrame(
-  const vtkHAVSViewFrame& view, bool opaque, vtkObject* mapper)
+vtkOpenGLRenderWindow* vtkHAVSGLMapperResources::BeginFrame(vtkRenderer* renderer,
+  vtkObject* mapper, const char* mapperName, const char* needs, const vtkHAVSViewFrame& view,
+  bool opaque, const vtkHAVSFramePlanes& planes)
 {
+  vtkOpenGLRenderWindow* window = this->Prepare(renderer, mapper, mapperName, needs);
+  if (!window)
+  {
+    return nullptr;
+  }
   this->Targets->Resize(view.Width, view.Height);
   if (opaque)
   {
     this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, view.Width, view.Height, mapper);
   }
+  this->SectionTriangles = this->Section->Update(planes);
+  return window;
+}
+
+void vtkHAVSGLMapperResources::DrawSection(unsigned int cellBinding)
+{
+  this->Section->Draw(cellBinding);
 }
 
 void vtkHAVSGLMapperResources::ActivateTextures()
@@ -198,6 +215,12 @@ void vtkHAVSGLMapperResources::Release(vtkWindow* window)
   {
     this->ReleaseOwn(home);
   }
+  if (this->Owned)
+  {
+    this->Owned->Release();
+  }
+  this->Section->Release();
+  this->SectionTriangles = 0;
   this->Table->ReleaseGraphicsResources(home);
   this->Targets->ReleaseGraphicsResources(home);
   home->RemoveObserver(this->WindowDeleteObserver);

@@ -36,11 +36,13 @@
 #include "vtkNew.h"                // For vtkNew
 
 #include <functional> // For std::function
+#include <memory>     // For std::unique_ptr
 
 VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSFramePlanes;
 class vtkHAVSGLFrameTargets;
+class vtkHAVSGLSection;
 class vtkHAVSGLTable;
 class vtkHAVSViewFrame;
 class vtkShaderProgram;
@@ -48,12 +50,33 @@ class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkWindow;
 
+/// A mapper's own GPU objects, owned and released by its vtkHAVSGLMapperResources.
+struct vtkHAVSGLOwnObjects
+{
+  virtual ~vtkHAVSGLOwnObjects() = default;
+  /// Releases every GL name they hold (called with the context current).
+  virtual void Release() = 0;
+};
+
 class vtkHAVSGLMapperResources : public vtkHAVSMapperGraphics
 {
 public:
   static vtkHAVSGLMapperResources* New();
   vtkTypeMacro(vtkHAVSGLMapperResources, vtkHAVSMapperGraphics);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Takes the mapper's own GPU objects (a vtkHAVSGLOwnObjects): released
+   * with everything else (Release, the window's deletion, the resources'
+   * own end, the context current) and deleted with the resources. Returns them.
+   */
+  template <class Objects>
+  Objects* Own(std::unique_ptr<Objects> objects)
+  {
+    Objects* own = objects.get();
+    this->Owned = std::move(objects);
+    return own;
+  }
 
   /// What releases the mapper's own GPU objects (called with the context current).
   void SetReleaseCallback(std::function<void(vtkOpenGLRenderWindow*)> release)
@@ -75,8 +98,19 @@ public:
   /// The targets' kept float result (vtkHAVSGLFrameTargets::GetKeptResult).
   const std::vector<float>* GetKeptResult(int size[2]) override;
 
-  /// The targets at the view's size; the opaque depth captured when `opaque`.
-  void BeginFrame(const vtkHAVSViewFrame& view, bool opaque, vtkObject* mapper);
+  /**
+   * The start of a cell-projection or ray-cast frame: the window prepared
+   * (Prepare), the targets at the view's size, the opaque depth captured
+   * when `opaque`, the near plane's section of `planes` uploaded if new.
+   * nullptr, with Prepare's error, without a usable window.
+   */
+  vtkOpenGLRenderWindow* BeginFrame(vtkRenderer* renderer, vtkObject* mapper,
+    const char* mapperName, const char* needs, const vtkHAVSViewFrame& view, bool opaque,
+    const vtkHAVSFramePlanes& planes);
+  /// The near plane's section this frame: its triangles (0: none), and its draw
+  /// with each triangle's cell at `cellBinding`.
+  int GetSectionTriangles() const { return this->SectionTriangles; }
+  void DrawSection(unsigned int cellBinding);
   /// The table's, the cell optics', the additive nodes' and the opaque depth's textures active.
   void ActivateTextures();
   /**
@@ -118,6 +152,9 @@ private:
   vtkNew<vtkHAVSGLTable> Table;
   vtkNew<vtkHAVSGLFrameTargets> Targets;
   std::function<void(vtkOpenGLRenderWindow*)> ReleaseOwn;
+  std::unique_ptr<vtkHAVSGLOwnObjects> Owned;
+  std::unique_ptr<vtkHAVSGLSection> Section; // the near plane's section (cell projection, rays)
+  int SectionTriangles = 0;
 };
 
 VTK_ABI_NAMESPACE_END

@@ -31,6 +31,7 @@
 #include "vtkTimerLog.h"
 
 #include <algorithm>
+#include <memory>
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -46,17 +47,16 @@ constexpr float NoGapLength = 3.0e38f;
 }
 
 /// The mapper's own GPU objects.
-struct vtkOpenGLHAVSCellProjectionMapper::GLObjects
+struct vtkOpenGLHAVSCellProjectionMapper::GLObjects : vtkHAVSGLOwnObjects
 {
   vtkHAVSGLVertexArray Cells; // the points, the ordered faces' indices
   vtkHAVSGLBuffer PointBuffer;
   vtkHAVSGLBuffer IndexBuffer;
   vtkHAVSGLBuffer CellBuffer;
   vtkHAVSGLBuffer OrderBuffer;
-  vtkHAVSGLSection Section; // the near plane's section
   size_t UploadedCells = 0; // tetrahedra in the index buffer (12 indices each)
 
-  void Release()
+  void Release() override
   {
     for (vtkHAVSGLBuffer* b :
       { &this->PointBuffer, &this->IndexBuffer, &this->CellBuffer, &this->OrderBuffer })
@@ -64,23 +64,18 @@ struct vtkOpenGLHAVSCellProjectionMapper::GLObjects
       b->Release();
     }
     this->Cells.Release();
-    this->Section.Release();
     this->UploadedCells = 0;
   }
 };
 
 //------------------------------------------------------------------------------
 vtkOpenGLHAVSCellProjectionMapper::vtkOpenGLHAVSCellProjectionMapper()
-  : GL(new GLObjects)
 {
+  this->GL = this->Resources->Own(std::make_unique<GLObjects>());
   this->SetGraphics(this->Resources);
-  this->Resources->SetReleaseCallback([this](vtkOpenGLRenderWindow*) { this->GL->Release(); });
 }
 
-vtkOpenGLHAVSCellProjectionMapper::~vtkOpenGLHAVSCellProjectionMapper()
-{
-  this->ReleaseGraphicsResources(nullptr);
-}
+vtkOpenGLHAVSCellProjectionMapper::~vtkOpenGLHAVSCellProjectionMapper() = default;
 
 //------------------------------------------------------------------------------
 void vtkOpenGLHAVSCellProjectionMapper::Upload(const CellFrame& frame)
@@ -142,19 +137,18 @@ void vtkOpenGLHAVSCellProjectionMapper::SetUniforms(
 bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   vtkRenderer* renderer, const CellFrame& frame, double* drawSeconds)
 {
-  // 1. The window, and what changed uploaded.
-  vtkOpenGLRenderWindow* window =
-    this->Resources->Prepare(renderer, this, "vtkHAVSCellProjectionMapper", "storage buffers");
+  // 1. The window, the targets, the section; what changed uploaded.
+  const vtkHAVSViewFrame& view = *frame.View;
+  const bool opaque = frame.Opaque;
+  vtkOpenGLRenderWindow* window = this->Resources->BeginFrame(
+    renderer, this, "vtkHAVSCellProjectionMapper", "storage buffers", view, opaque, *frame.Planes);
   if (!window)
   {
     return false;
   }
   GLObjects& gl = *this->GL;
   this->Upload(frame);
-  const int sectionTriangles = gl.Section.Update(*frame.Planes);
-  const vtkHAVSViewFrame& view = *frame.View;
-  const bool opaque = frame.Opaque;
-  this->Resources->BeginFrame(view, opaque, this);
+  const int sectionTriangles = this->Resources->GetSectionTriangles();
 
   // 2. The program, its textures and uniforms.
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
@@ -195,7 +189,7 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
     // their rays (either facing; one triangle per cell entry).
     program->SetUniformi("havsTrianglesPerCell", 1);
     program->SetUniformi("havsNearSectionDrawn", 1);
-    gl.Section.Draw(OrderBinding);
+    this->Resources->DrawSection(OrderBinding);
   }
   state->vtkglEnable(GL_CULL_FACE);
   state->vtkglCullFace(GL_BACK);

@@ -61,7 +61,7 @@ private:
 
   vtkNew<vtkHAVSGLMapperResources> Resources; // the window, the table, the targets
   struct GLObjects;                           // the mapper's own buffers (vtkHAVSGLObjects)
-  std::unique_ptr<GLObjects> GL;
+  GLObjects* GL = nullptr;                    // (owned and released by Resources)
 };
 
 VTK_ABI_NAMESPACE_END

@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 VTK_ABI_NAMESPACE_BEGIN
@@ -73,18 +74,17 @@ constexpr GLsizei TileVertices = 6;
 }
 
 /// The mapper's own GPU objects.
-struct vtkOpenGLHAVSRayCastMapper::GLObjects
+struct vtkOpenGLHAVSRayCastMapper::GLObjects : vtkHAVSGLOwnObjects
 {
   vtkHAVSGLVertexArray Boundary; // the points, the boundary faces
   vtkHAVSGLVertexArray Tiles;    // no attributes: the tiles' corners come from their ids
   vtkHAVSGLBuffer Points, Faces, FaceCells, Cells, Neighbours, Counts, TilePasses, PeelTiles;
   vtkHAVSGLImage EntryKey, EntryCell, RayState;
   vtkHAVSGLStencilTarget PeelTarget; // a stencil only: the tiles a pass peels
-  vtkHAVSGLSection Section;          // the near plane's section
   int BoundaryFaces = 0;
   int Tetrahedra = 0;
 
-  void Release()
+  void Release() override
   {
     for (vtkHAVSGLBuffer* b : { &this->Points, &this->Faces, &this->FaceCells, &this->Cells,
            &this->Neighbours, &this->Counts, &this->TilePasses, &this->PeelTiles })
@@ -93,7 +93,6 @@ struct vtkOpenGLHAVSRayCastMapper::GLObjects
     }
     this->Boundary.Release();
     this->Tiles.Release();
-    this->Section.Release();
     for (vtkHAVSGLImage* i : { &this->EntryKey, &this->EntryCell, &this->RayState })
     {
       i->Release();
@@ -105,16 +104,12 @@ struct vtkOpenGLHAVSRayCastMapper::GLObjects
 
 //------------------------------------------------------------------------------
 vtkOpenGLHAVSRayCastMapper::vtkOpenGLHAVSRayCastMapper()
-  : GL(new GLObjects)
 {
+  this->GL = this->Resources->Own(std::make_unique<GLObjects>());
   this->SetGraphics(this->Resources);
-  this->Resources->SetReleaseCallback([this](vtkOpenGLRenderWindow*) { this->GL->Release(); });
 }
 
-vtkOpenGLHAVSRayCastMapper::~vtkOpenGLHAVSRayCastMapper()
-{
-  this->ReleaseGraphicsResources(nullptr);
-}
+vtkOpenGLHAVSRayCastMapper::~vtkOpenGLHAVSRayCastMapper() = default;
 
 //------------------------------------------------------------------------------
 void vtkOpenGLHAVSRayCastMapper::Upload(const RayFrame& frame)
@@ -295,7 +290,7 @@ void vtkOpenGLHAVSRayCastMapper::Peel(vtkOpenGLRenderWindow* window, const Progr
       // The camera inside: the rays start on the near plane's section
       // (either facing), nearer than any boundary face behind it.
       state->vtkglDisable(GL_CULL_FACE);
-      gl.Section.Draw(FaceCellBinding);
+      this->Resources->DrawSection(FaceCellBinding);
     }
     if (stage == 0)
     {
@@ -358,19 +353,18 @@ void vtkOpenGLHAVSRayCastMapper::ReadCounts(
 bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   vtkRenderer* renderer, const RayFrame& frame, RayCounts* counts)
 {
-  // 1. The window, what changed uploaded, the targets and images at the view's size.
-  vtkOpenGLRenderWindow* window =
-    this->Resources->Prepare(renderer, this, "vtkHAVSRayCastMapper", "storage buffers, images");
+  // 1. The window, the targets, the section; what changed uploaded; the images at the view's size.
+  const vtkHAVSViewFrame& view = *frame.View;
+  vtkOpenGLRenderWindow* window = this->Resources->BeginFrame(renderer, this,
+    "vtkHAVSRayCastMapper", "storage buffers, images", view, frame.Opaque, *frame.Planes);
   if (!window)
   {
     return false;
   }
-  GLObjects& gl = *this->GL;
   this->Upload(frame);
-  const int sectionTriangles = gl.Section.Update(*frame.Planes);
-  const vtkHAVSViewFrame& view = *frame.View;
+  GLObjects& gl = *this->GL;
   const int width = view.Width, height = view.Height;
-  this->Resources->BeginFrame(view, frame.Opaque, this);
+  const int sectionTriangles = this->Resources->GetSectionTriangles();
   gl.EntryKey.Resize(GL_R32UI, width, height);
   gl.EntryCell.Resize(GL_R32UI, width, height);
   gl.RayState.Resize(GL_RGBA32F, width, height);

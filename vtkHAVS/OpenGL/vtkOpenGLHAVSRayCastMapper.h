@@ -99,7 +99,7 @@ private:
 
   vtkNew<vtkHAVSGLMapperResources> Resources; // the window, the table, the targets
   struct GLObjects;                           // the mapper's own buffers and images
-  std::unique_ptr<GLObjects> GL;
+  GLObjects* GL = nullptr;                    // (owned and released by Resources)
 };
 
 VTK_ABI_NAMESPACE_END
