@@ -440,6 +440,29 @@ int TestHAVSMapperContract(int, char*[])
           " (max " + std::to_string(off * 255.0) + "/255 from half the plain image, " +
           std::to_string(warnings) + " warnings)");
     }
+    {
+      // Edits between frames of one mapper redraw at once: hooks added after a
+      // plain frame apply, and cleared they are gone (the hooks and the composite
+      // are read again only when the property changed).
+      vtkSmartPointer<vtkHAVSMapperBase> m = mappers[i]->NewInstance();
+      m->Delete();
+      havstest::VolumeScene scene = havstest::MakeScene(grid, m, property, 64, 64);
+      scene.Window->Render();
+      vtkShaderProperty* sp = scene.Volume->GetShaderProperty();
+      sp->GetFragmentCustomUniforms()->SetUniformf("havsTestTint", 0.5f);
+      sp->AddFragmentShaderReplacement(
+        "//VTK::Base::Exit", true, "g_fragColor = g_fragColor * havsTestTint;", false);
+      scene.Window->Render();
+      const double halvedOff = offScaled(havstest::ReadRGBA(scene.Window), 0.5);
+      sp->ClearAllFragmentShaderReplacements();
+      sp->GetFragmentCustomUniforms()->RemoveAllUniforms();
+      scene.Window->Render();
+      const double plainOff = offScaled(havstest::ReadRGBA(scene.Window), 1.0);
+      Check(halvedOff <= 1.5 / 255.0 && plainOff == 0.0,
+        name + ": hooks added after a frame apply at the next (max " +
+          std::to_string(halvedOff * 255.0) + "/255 from half), cleared they are gone (max " +
+          std::to_string(plainOff * 255.0) + "/255 from plain)");
+    }
     for (bool ignored : { true, false })
     {
       const std::vector<float> image = draw(

@@ -191,7 +191,15 @@ bool vtkHAVSMapperBase::PrepareMesh(vtkVolume* volume)
 //------------------------------------------------------------------------------
 void vtkHAVSMapperBase::PrepareShaderHooks(vtkVolume* volume)
 {
-  this->ShaderHooks = vtkHAVSShaderHooks::From(volume ? volume->GetShaderProperty() : nullptr);
+  // Read again only when the property (or one of its uniforms) changed.
+  vtkShaderProperty* property = volume ? volume->GetShaderProperty() : nullptr;
+  if (property == this->ShaderHooksProperty &&
+    vtkHAVSShaderHooks::TimeOf(property) == this->ShaderHooks.Time)
+  {
+    return;
+  }
+  this->ShaderHooksProperty = property;
+  this->ShaderHooks = vtkHAVSShaderHooks::From(property);
   if (!this->ShaderHooks.Ignored.empty())
   {
     std::string what;

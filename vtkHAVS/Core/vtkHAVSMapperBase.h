@@ -265,6 +265,7 @@ private:
   double LastMeshSeconds = 0.0;
   bool LastFrameAborted = false;
   vtkHAVSShaderHooks ShaderHooks;
+  const vtkShaderProperty* ShaderHooksProperty = nullptr; // compared only, never used
   vtkHAVSMapperGraphics* Graphics = nullptr;
   vtkMTimeType SeenMeshBuild = 0; // the mesh's build and scalar times this mapper last drew
   vtkMTimeType SeenMeshScalars = 0;

@@ -25,6 +25,18 @@ const std::vector<std::string>& vtkHAVSShaderHooks::HonouredTags()
 }
 
 //------------------------------------------------------------------------------
+vtkMTimeType vtkHAVSShaderHooks::TimeOf(vtkShaderProperty* property)
+{
+  if (!property)
+  {
+    return 0;
+  }
+  return std::max({ property->GetMTime(), property->GetFragmentCustomUniforms()->GetMTime(),
+    property->GetVertexCustomUniforms()->GetMTime(),
+    property->GetGeometryCustomUniforms()->GetMTime() });
+}
+
+//------------------------------------------------------------------------------
 vtkHAVSShaderHooks vtkHAVSShaderHooks::From(vtkShaderProperty* property)
 {
   vtkHAVSShaderHooks hooks;
@@ -32,6 +44,7 @@ vtkHAVSShaderHooks vtkHAVSShaderHooks::From(vtkShaderProperty* property)
   {
     return hooks;
   }
+  hooks.Time = TimeOf(property);
   const std::vector<std::string>& honoured = HonouredTags();
   for (int i = 0; i < property->GetNumberOfShaderReplacements(); ++i)
   {

@@ -66,12 +66,17 @@ public:
   /// The hooks of `property` (nullptr: none).
   static vtkHAVSShaderHooks From(vtkShaderProperty* property);
 
+  /// The latest modification of `property` and of its custom uniforms (0 for
+  /// nullptr): hooks read at this time need not be read again.
+  static vtkMTimeType TimeOf(vtkShaderProperty* property);
+
   /// Anything to apply (a replacement or a custom uniform)?
   bool Empty() const { return this->Fragment.empty() && !this->FragmentUniforms; }
 
   std::vector<Replacement> Fragment;             ///< the honoured fragment replacements, in order
   vtkSmartPointer<vtkUniforms> FragmentUniforms; ///< the property's, when it has any
   std::vector<std::string> Ignored;              ///< what is not applied, one line each
+  vtkMTimeType Time = 0;                         ///< TimeOf the property read
 };
 
 VTK_ABI_NAMESPACE_END

@@ -266,10 +266,16 @@ bool vtkHAVSGLFrameTargets::Composite(int originX, int originY)
   // The volume's shader property: its fragment uniforms declared and set here.
   auto* uniforms = vtkOpenGLUniforms::SafeDownCast(
     this->Hooks ? this->Hooks->FragmentUniforms.GetPointer() : nullptr);
-  const std::string fragment =
-    vtkHAVSShaders::CompositeShader(this->Hooks, uniforms ? uniforms->GetDeclarations() : "");
+  // Composed again only when the hooks were read again (their Time changed).
+  const vtkMTimeType hooksTime = this->Hooks ? this->Hooks->Time : 0;
+  if (this->CompositeSource.empty() || hooksTime != this->CompositeHooksTime)
+  {
+    this->CompositeSource =
+      vtkHAVSShaders::CompositeShader(this->Hooks, uniforms ? uniforms->GetDeclarations() : "");
+    this->CompositeHooksTime = hooksTime;
+  }
   vtkShaderProgram* program = this->Window->GetShaderCache()->ReadyShaderProgram(
-    vtkHAVSShaders::QuadVertexShader().c_str(), fragment.c_str(), "");
+    vtkHAVSShaders::QuadVertexShader().c_str(), this->CompositeSource.c_str(), "");
   if (!program || !program->GetCompiled())
   {
     return false;

@@ -34,6 +34,7 @@
 
 #include <cstdint>          // For std::uint64_t
 #include <initializer_list> // For std::initializer_list
+#include <string>           // For std::string
 #include <vector>           // For std::vector
 
 VTK_ABI_NAMESPACE_BEGIN
@@ -130,6 +131,8 @@ private:
 
   vtkOpenGLRenderWindow* Window = nullptr;
   const vtkHAVSShaderHooks* Hooks = nullptr;
+  std::string CompositeSource;         // the composite's fragment shader, hooks applied
+  vtkMTimeType CompositeHooksTime = 0; // the hooks' Time it was composed for
   int Size[2] = { 0, 0 };
   vtkSmartPointer<vtkTextureObject> OpaqueDepth;
   int OpaqueDepthFormat = -1;
