@@ -97,24 +97,7 @@ void main()
   }
   float tEnter = 0.0;
   tExit = max(tExit, 0.0);
-  for (int i = 0; i < havsPlaneCount; ++i)
-  {
-    float atEntry = dot(havsPlanesRC[i].xyz, havsPositionRC) + havsPlanesRC[i].w;
-    float rate = dot(havsPlanesRC[i].xyz, dWorld);
-    if (rate > 0.0)
-    {
-      tEnter = max(tEnter, -atEntry / rate);
-    }
-    else if (rate < 0.0)
-    {
-      tExit = min(tExit, -atEntry / rate);
-    }
-    else if (atEntry < 0.0)
-    {
-      discard;
-    }
-  }
-  if (!(tExit > tEnter))
+  if (!havsClipRay(havsPositionRC, dWorld, tEnter, tExit) || !(tExit > tEnter))
   {
     discard;
   }

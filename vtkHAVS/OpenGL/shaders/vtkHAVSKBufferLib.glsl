@@ -475,6 +475,32 @@ bool havsClipped(vec3 positionRC)
   return false;
 }
 
+// The part of the ray originRC + t dirRC (eye-relative world coordinates)
+// that every plane keeps: [tLow, tHigh] narrowed to it; false where a plane
+// parallel to the ray discards all of it. (The cell projection's segment in a
+// cell, the ray caster's whole ray.)
+bool havsClipRay(vec3 originRC, vec3 dirRC, inout float tLow, inout float tHigh)
+{
+  for (int i = 0; i < havsPlaneCount; ++i)
+  {
+    float atOrigin = dot(havsPlanesRC[i].xyz, originRC) + havsPlanesRC[i].w;
+    float rate = dot(havsPlanesRC[i].xyz, dirRC);
+    if (rate > 0.0)
+    {
+      tLow = max(tLow, -atOrigin / rate);
+    }
+    else if (rate < 0.0)
+    {
+      tHigh = min(tHigh, -atOrigin / rate);
+    }
+    else if (atOrigin < 0.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 // The k-buffer entry of the fragment being shaded: a mesh face's (tagged by
 // the facing of its outward-wound boundary face when tagging is on) or a
 // section's (an entry or an exit by its role). With tagging, a boundary face

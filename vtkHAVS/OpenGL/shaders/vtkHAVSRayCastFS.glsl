@@ -230,22 +230,9 @@ void main()
 
   // What of the ray is kept: the clipping (and near) planes, the opaque surface.
   float tLow = -HAVS_EMPTY, tHigh = HAVS_EMPTY;
-  for (int i = 0; i < havsPlaneCount; ++i)
+  if (!havsClipRay(oRC, dRC, tLow, tHigh))
   {
-    float f0 = dot(havsPlanesRC[i].xyz, oRC) + havsPlanesRC[i].w;
-    float rate = dot(havsPlanesRC[i].xyz, dRC);
-    if (rate > 0.0)
-    {
-      tLow = max(tLow, -f0 / rate);
-    }
-    else if (rate < 0.0)
-    {
-      tHigh = min(tHigh, -f0 / rate);
-    }
-    else if (f0 < 0.0)
-    {
-      tHigh = -HAVS_EMPTY;
-    }
+    tHigh = -HAVS_EMPTY;
   }
   // Nothing before the reach is integrated again (an entry taken a hair
   // before it, at a seam).
