@@ -31,6 +31,7 @@
 // Usage: TestHAVSCellProjection <scene> [size] [views]
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
+#include "havsTestMapperScenes.h"
 #include "havsTestScenes.h"
 
 #include "vtkHAVSCellProjectionMapper.h"
@@ -74,135 +75,6 @@ struct Bound
     return d.RMSE < this->RMSE && d.Max < this->Max;
   }
 };
-
-/// The exact image (clipped by `planes`, cut at the window depth `depth`,
-/// when given; under `blend`, vtkVolumeMapper's numbering).
-std::vector<float> Reference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
-  vtkCamera* camera, int size, vtkPlaneCollection* planes = nullptr, vtkFloatArray* depth = nullptr,
-  int blend = 0, vtkIdType* startedInside = nullptr)
-{
-  vtkNew<vtkHAVSReferenceRenderer> reference;
-  reference->SetInputData(grid);
-  reference->SetProperty(property);
-  reference->SetCamera(camera);
-  reference->SetSize(size, size);
-  reference->SetClippingPlanes(planes);
-  reference->SetOpaqueDepth(depth);
-  reference->SetBlendMode(blend);
-  reference->Render();
-  if (startedInside)
-  {
-    *startedInside = reference->GetNumberOfStartedInside();
-  }
-  vtkFloatArray* image = reference->GetImage();
-  return std::vector<float>(image->GetPointer(0), image->GetPointer(0) + 4 * size * size);
-}
-
-void Print(const std::string& what, const havstest::ImageDifference& d)
-{
-  std::printf("  %-58s RMSE %.6f  max %.6f  px > 1/255 %.3f %%\n", what.c_str(), d.RMSE, d.Max,
-    100.0 * d.FractionOver1);
-}
-
-/// Clipping planes (one, then two; perspective and parallel) on the hollow
-/// sphere, against the reference clipped alike; control: the mapper without
-/// the planes against the clipped reference.
-int ClipScene(int size)
-{
-  auto grid = vtkHAVSDataSets::Load("hollowsphere");
-  auto property = havstest::MakeRampPropertyFor(grid);
-  vtkNew<vtkHAVSCellProjectionMapper> mapper;
-  mapper->KeepFloatResultOn();
-  auto s = havstest::MakeScene(grid, mapper, property, size, size);
-  double bounds[6], centre[3];
-  grid->GetBounds(bounds);
-  grid->GetCenter(centre);
-  vtkNew<vtkPlane> first, second;
-  first->SetOrigin(centre[0] + 0.1 * (bounds[1] - bounds[0]), centre[1], centre[2]);
-  first->SetNormal(-0.8, 0.2, 0.3);
-  second->SetOrigin(centre);
-  second->SetNormal(0.1, -0.3, 1.0);
-  const size_t edgePixels = static_cast<size_t>(size) * size / 2000;
-  for (int n = 1; n <= 2; ++n)
-  {
-    vtkNew<vtkPlaneCollection> planes;
-    planes->AddItem(first);
-    if (n == 2)
-    {
-      planes->AddItem(second);
-    }
-    for (bool parallel : { false, true })
-    {
-      havstest::PlaceCamera(s.Renderer, 30.0, 20.0, parallel);
-      mapper->SetClippingPlanes(planes);
-      s.Window->Render();
-      const auto clipped = havstest::FloatResult(mapper);
-      const auto exact = Reference(grid, property, s.Renderer->GetActiveCamera(), size, planes);
-      // (Not RemoveAllClippingPlanes: that would empty `planes` itself.)
-      mapper->SetClippingPlanes(static_cast<vtkPlaneCollection*>(nullptr));
-      s.Window->Render();
-      const auto whole = havstest::FloatResult(mapper);
-      const std::string name = std::to_string(n) + (n == 1 ? " plane, " : " planes, ") +
-        (parallel ? "parallel" : "perspective");
-      const auto d = havstest::Compare(clipped, exact, edgePixels);
-      const auto control = havstest::Compare(whole, exact, edgePixels);
-      Print("clipping, " + name, d);
-      Print("clipping, " + name + ": control, without the planes", control);
-      havstest::Check(d.RMSE < 5e-4 && d.Max < 0.01, "clipping, " + name + ": exact");
-      havstest::Check(control.Max > 0.05, "clipping, " + name + ": control, the planes matter");
-    }
-  }
-  return havstest::Result();
-}
-
-/// An opaque sphere inside a box: the rays end at its surface, the last
-/// segment cut (against the reference cut at the window's depth); control:
-/// the reference through the surface.
-int OpaqueScene(int size)
-{
-  auto grid = vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
-  auto property = havstest::MakeRampPropertyFor(grid);
-  vtkNew<vtkHAVSCellProjectionMapper> mapper;
-  mapper->KeepFloatResultOn();
-  auto s = havstest::MakeScene(grid, mapper, property, size, size);
-  havstest::AddOpaqueSphere(s.Renderer);
-  havstest::PlaceCamera(s.Renderer, 25.0, 15.0, false);
-  s.Window->Render();
-  const auto image = havstest::FloatResult(mapper);
-  vtkNew<vtkFloatArray> depth;
-  s.Window->GetZbufferData(0, 0, size - 1, size - 1, depth);
-  const auto exact = Reference(grid, property, s.Renderer->GetActiveCamera(), size, nullptr, depth);
-  const auto d = havstest::Compare(image, exact, static_cast<size_t>(size) * size / 2000);
-  const auto control =
-    havstest::Compare(Reference(grid, property, s.Renderer->GetActiveCamera(), size), exact);
-  Print("opaque sphere: vs the reference cut at the surface", d);
-  Print("opaque sphere: control, the reference through it", control);
-  havstest::Check(d.RMSE < 5e-4 && d.Max < 0.01, "opaque sphere: the rays end at its surface");
-  havstest::Check(control.RMSE > 10.0 * d.RMSE && control.Max > 0.05,
-    "opaque sphere: negative control, the surface matters");
-  return havstest::Result();
-}
-}
-
-/// The views of the blend scenes: the first `views` standard views (turned
-/// off the axes on the test meshes), then a parallel one.
-void PlaceView(vtkRenderer* renderer, vtkUnstructuredGrid* grid, int v, int views, bool turned)
-{
-  vtkCamera* camera = renderer->GetActiveCamera();
-  const bool parallel = v == views;
-  vtkHAVSStandardViews::PlaceCamera(camera, grid, parallel ? 3 : v);
-  camera->SetParallelProjection(parallel ? 1 : 0);
-  if (turned || parallel)
-  {
-    camera->Azimuth(parallel ? 11.0 : 7.0);
-    camera->Elevation(parallel ? 7.0 : 5.0);
-    camera->OrthogonalizeViewUp();
-  }
-  if (parallel)
-  {
-    renderer->ResetCamera();
-  }
-  renderer->ResetCameraClippingRange();
 }
 
 /// The order-independent blends (maximum, minimum intensity, additive) drawn
@@ -232,8 +104,8 @@ int BlendScene(const std::string& mesh, int size, int views)
   {
     // The additive sum scales with 1 / unit distance: scaled so that the
     // brightest pixel of view 0 is 0.5, neither dim nor clamped.
-    PlaceView(s.Renderer, grid, 0, views, turned);
-    const auto probe = Reference(grid, thin, camera, size, nullptr, nullptr, 4);
+    havstest::PlaceStandardView(s.Renderer, grid, 0, views, turned);
+    const auto probe = havstest::ReferenceImage(grid, thin, camera, size, nullptr, nullptr, 4);
     double brightest = 0.0;
     for (size_t p = 0; p < probe.size(); p += 4)
     {
@@ -264,10 +136,11 @@ int BlendScene(const std::string& mesh, int size, int views)
     mapper->SetShuffleOrderForTesting(true);
     for (int v = 0; v <= views; ++v)
     {
-      PlaceView(s.Renderer, grid, v, views, turned);
+      havstest::PlaceStandardView(s.Renderer, grid, v, views, turned);
       const std::string name =
         std::string(mode.Name) + ", view " + std::to_string(v) + (v == views ? " (parallel)" : "");
-      const auto exact = Reference(grid, used, camera, size, nullptr, nullptr, mode.Blend);
+      const auto exact =
+        havstest::ReferenceImage(grid, used, camera, size, nullptr, nullptr, mode.Blend);
       for (size_t p = 0; p < exact.size(); p += 4)
       {
         covered += exact[p + 3] > 0.0f ? 1.0 : 0.0;
@@ -278,7 +151,7 @@ int BlendScene(const std::string& mesh, int size, int views)
       reused += mapper->GetLastOrderReused() ? 1 : 0;
       shuffledImages.push_back(havstest::FloatResult(mapper));
       const auto d = havstest::Compare(shuffledImages.back(), exact, edgePixels);
-      Print(name + ": shuffled cells", d);
+      havstest::PrintDifference(name + ": shuffled cells", d);
       if (!bound.Exact(d))
       {
         ++inexact;
@@ -290,7 +163,7 @@ int BlendScene(const std::string& mesh, int size, int views)
       mapper->SetWrongExitForTesting(true);
       s.Window->Render();
       const auto wrong = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
-      Print(name + ": control, the farthest exit plane", wrong);
+      havstest::PrintDifference(name + ": control, the farthest exit plane", wrong);
       controlsFailed += bound.Exact(wrong) ? 0 : 1;
       mapper->SetWrongExitForTesting(false);
     }
@@ -298,7 +171,7 @@ int BlendScene(const std::string& mesh, int size, int views)
     mapper->SetShuffleOrderForTesting(false);
     for (int v = 0; v <= views; ++v)
     {
-      PlaceView(s.Renderer, grid, v, views, turned);
+      havstest::PlaceStandardView(s.Renderer, grid, v, views, turned);
       s.Window->Render();
       const auto plain = havstest::Compare(havstest::FloatResult(mapper), shuffledImages[v]);
       worstOrderDifference = std::max(worstOrderDifference, plain.Max);
@@ -335,7 +208,7 @@ int ReuseScene(int size)
   vtkNew<vtkHAVSCellProjectionMapper> mapper;
   mapper->KeepFloatResultOn();
   auto s = havstest::MakeScene(grid, mapper, property, size, size);
-  PlaceView(s.Renderer, grid, 1, 6, true);
+  havstest::PlaceStandardView(s.Renderer, grid, 1, 6, true);
   s.Window->Render();
   const bool first = mapper->GetLastOrderReused();
   s.Window->Render();
@@ -347,7 +220,7 @@ int ReuseScene(int size)
   s.Window->Render();
   const bool edit = mapper->GetLastOrderReused();
   const auto after = havstest::FloatResult(mapper);
-  const auto exact = Reference(grid, property, s.Renderer->GetActiveCamera(), size);
+  const auto exact = havstest::ReferenceImage(grid, property, s.Renderer->GetActiveCamera(), size);
   const auto d = havstest::Compare(after, exact, static_cast<size_t>(size) * size / 2000);
   const auto changed = havstest::Compare(before, after);
   s.Renderer->GetActiveCamera()->Azimuth(2.0);
@@ -365,88 +238,6 @@ int ReuseScene(int size)
   return havstest::Result();
 }
 
-/// The camera inside the mesh (perspective, the near plane in it, as
-/// TestHAVSBoundary's camera-inside scenes): composite (MPVO) and maximum
-/// intensity against the reference, which starts the rays at the near plane;
-/// control: without the near plane's section.
-int InsideScene(const std::string& mesh, int size)
-{
-  auto grid = mesh == "box" ? vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0)
-                            : vtkHAVSDataSets::Load(mesh);
-  if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "scene " + mesh + " loads"))
-  {
-    return EXIT_FAILURE;
-  }
-  double bounds[6];
-  grid->GetBounds(bounds);
-  // (Off the box's face planes: an eye on one sees whole lines of pixel rays
-  // graze faces, where rasterizer and rays disagree whatever the mapper.)
-  double eye[3] = { 0.31, 0.355, 0.405 }, direction[3] = { 1.0, 0.4, 0.3 };
-  if (mesh != "box")
-  {
-    // Inside the flow, in front of the fin, looking downstream and a little up.
-    const double f[3] = { 0.45, 0.6, 0.5 };
-    for (int i = 0; i < 3; ++i)
-    {
-      eye[i] = bounds[2 * i] + f[i] * (bounds[2 * i + 1] - bounds[2 * i]);
-    }
-    direction[1] = 0.3;
-    direction[2] = 0.2;
-  }
-  auto property = havstest::MakeRampPropertyFor(grid);
-  vtkNew<vtkHAVSCellProjectionMapper> mapper;
-  mapper->KeepFloatResultOn();
-  auto s = havstest::MakeScene(grid, mapper, property, size, size);
-  vtkCamera* camera = s.Renderer->GetActiveCamera();
-  camera->SetPosition(eye);
-  camera->SetFocalPoint(eye[0] + direction[0], eye[1] + direction[1], eye[2] + direction[2]);
-  camera->SetViewUp(0, 0, 1);
-  camera->SetViewAngle(60.0);
-  // The near plane a little farther than ParaView leaves it when the user
-  // flies in, so that the slab it cuts off shows in both blends' controls.
-  const double length = grid->GetLength();
-  camera->SetClippingRange(0.05 * length, 2.0 * length);
-  const size_t edgePixels = static_cast<size_t>(size) * size / 2000;
-  for (int blend : { 0, 1, 2, 4 })
-  {
-    const char* const names[] = { "composite (MPVO)", "maximum intensity", "minimum intensity", "",
-      "additive" };
-    const std::string name = mesh + ", " + names[blend];
-    vtkVolumeProperty* used = property;
-    mapper->SetBlendMode(blend);
-    mapper->NearPlaneSectionOn();
-    s.Window->Render();
-    const auto image = havstest::FloatResult(mapper);
-    const vtkIdType triangles = mapper->GetLastSectionTriangles();
-    mapper->NearPlaneSectionOff();
-    s.Window->Render();
-    const auto without = havstest::FloatResult(mapper);
-    mapper->NearPlaneSectionOn();
-    vtkIdType started = 0;
-    const auto exact = Reference(grid, used, camera, size, nullptr, nullptr, blend, &started);
-    const auto d = havstest::Compare(image, exact, edgePixels);
-    const auto control = havstest::Compare(without, exact, edgePixels);
-    std::printf("camera inside %s: %lld of %d rays start in the mesh, section %lld triangles\n",
-      name.c_str(), static_cast<long long>(started), size * size,
-      static_cast<long long>(triangles));
-    Print(name + ": vs the reference", d);
-    Print(name + ": control, without the near section", control);
-    havstest::Check(started > size * size / 2 && triangles > 0,
-      name + ": most rays start in the mesh, the section is drawn");
-    havstest::Check(havstest::AllFinite(image), name + ": finite pixels");
-    havstest::Check(Bound().Exact(d), name + ": exact with the camera inside");
-    // The maximum sees the slab the section stands for only where the ray's
-    // maximum lies in it (in neither scene): its control is reported.
-    const Bound bound;
-    if (blend != 1)
-    {
-      havstest::Check(!bound.Exact(control) && control.RMSE > 10.0 * d.RMSE,
-        name + ": negative control, no section fails");
-    }
-  }
-  return havstest::Result();
-}
-
 int TestHAVSCellProjection(int argc, char* argv[])
 {
   const std::string scene = argc > 1 ? argv[1] : "hollowsphere";
@@ -454,11 +245,13 @@ int TestHAVSCellProjection(int argc, char* argv[])
   const int views = argc > 3 ? std::atoi(argv[3]) : 6;
   if (scene == "opaque")
   {
-    return OpaqueScene(size);
+    vtkNew<vtkHAVSCellProjectionMapper> mapper;
+    return havstest::OpaqueSphereScene(mapper, size);
   }
   if (scene == "clip")
   {
-    return ClipScene(size);
+    vtkNew<vtkHAVSCellProjectionMapper> mapper;
+    return havstest::ClipPlanesScene(mapper, size, true);
   }
   if (scene == "reuse")
   {
@@ -470,7 +263,8 @@ int TestHAVSCellProjection(int argc, char* argv[])
   }
   if (scene.rfind("inside-", 0) == 0)
   {
-    return InsideScene(scene.substr(7), size);
+    vtkNew<vtkHAVSCellProjectionMapper> mapper;
+    return havstest::CameraInsideScene(mapper, scene.substr(7), size);
   }
   auto grid = vtkHAVSDataSets::Load(scene);
   if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "scene " + scene + " loads"))
@@ -516,25 +310,9 @@ int TestHAVSCellProjection(int argc, char* argv[])
   {
     // views 0 .. views-1: standard perspective views; the last: parallel.
     const bool parallel = v == views;
-    vtkHAVSStandardViews::PlaceCamera(camera, grid, parallel ? 3 : v);
-    camera->SetParallelProjection(parallel ? 1 : 0);
-    if (turned)
-    {
-      camera->Azimuth(7.0);
-      camera->Elevation(5.0);
-      camera->OrthogonalizeViewUp();
-    }
-    s.Renderer->ResetCameraClippingRange();
-    if (parallel)
-    {
-      camera->Azimuth(11.0);
-      camera->Elevation(7.0);
-      camera->OrthogonalizeViewUp();
-      s.Renderer->ResetCamera();
-      s.Renderer->ResetCameraClippingRange();
-    }
+    havstest::PlaceStandardView(s.Renderer, grid, v, views, turned);
     const std::string name = "view " + std::to_string(v) + (parallel ? " (parallel)" : "");
-    const auto exact = Reference(grid, property, camera, size);
+    const auto exact = havstest::ReferenceImage(grid, property, camera, size);
     for (int method : methods)
     {
       mapper->SetCellOrderToMPVO();
@@ -542,7 +320,7 @@ int TestHAVSCellProjection(int argc, char* argv[])
       s.Window->Render();
       const auto d = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
       cycleBreaks += mapper->GetLastCycleBreaks();
-      Print(name +
+      havstest::PrintDifference(name +
           (method == vtkHAVSVisibilityOrder::NonConvexBoundaryLayers ? ": MPVO + boundary layers"
                                                                      : ": MPVO + convexification"),
         d);
@@ -560,24 +338,24 @@ int TestHAVSCellProjection(int argc, char* argv[])
       ++controlViews;
       mapper->SetNonConvexMethod(vtkHAVSVisibilityOrder::NonConvexBoundaryLayers);
       s.Volume->SetProperty(dense);
-      const auto denseExact = Reference(grid, dense, camera, size);
+      const auto denseExact = havstest::ReferenceImage(grid, dense, camera, size);
       s.Window->Render();
       const auto denseMPVO =
         havstest::Compare(havstest::FloatResult(mapper), denseExact, edgePixels);
-      Print(name + ": denser medium, MPVO", denseMPVO);
+      havstest::PrintDifference(name + ": denser medium, MPVO", denseMPVO);
       havstest::Check(bound.Exact(denseMPVO), name + ": denser medium, MPVO exact");
       mapper->SetCellOrderToCentroid();
       s.Window->Render();
       const auto centroid =
         havstest::Compare(havstest::FloatResult(mapper), denseExact, edgePixels);
-      Print(name + ": control, denser medium, centroid cell order", centroid);
+      havstest::PrintDifference(name + ": control, denser medium, centroid cell order", centroid);
       centroidFailed += bound.Exact(centroid) ? 0 : 1;
       mapper->SetCellOrderToMPVO();
       mapper->SetReverseOrderForTesting(true);
       s.Window->Render();
       const auto reversed =
         havstest::Compare(havstest::FloatResult(mapper), denseExact, edgePixels);
-      Print(name + ": control, denser medium, MPVO reversed", reversed);
+      havstest::PrintDifference(name + ": control, denser medium, MPVO reversed", reversed);
       reversedFailed += bound.Exact(reversed) ? 0 : 1;
       mapper->SetReverseOrderForTesting(false);
       s.Volume->SetProperty(property);
@@ -585,7 +363,7 @@ int TestHAVSCellProjection(int argc, char* argv[])
       mapper->SetWrongExitForTesting(true);
       s.Window->Render();
       const auto wrong = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
-      Print(name + ": control, the farthest exit plane", wrong);
+      havstest::PrintDifference(name + ": control, the farthest exit plane", wrong);
       wrongExitFailed += bound.Exact(wrong) ? 0 : 1;
       mapper->SetWrongExitForTesting(false);
     }
@@ -618,9 +396,9 @@ int TestHAVSCellProjection(int argc, char* argv[])
   s.Renderer->ResetCameraClippingRange();
   mapper->SetNonConvexMethod(vtkHAVSVisibilityOrder::NonConvexBoundaryLayers);
   s.Window->Render();
-  const auto d = havstest::Compare(
-    havstest::FloatResult(mapper), Reference(movedGrid, property, camera, size), edgePixels);
-  Print("volume matrix (rotated, stretched) vs the transformed grid", d);
+  const auto d = havstest::Compare(havstest::FloatResult(mapper),
+    havstest::ReferenceImage(movedGrid, property, camera, size), edgePixels);
+  havstest::PrintDifference("volume matrix (rotated, stretched) vs the transformed grid", d);
   havstest::Check(bound.Exact(d), "the volume's matrix: exact");
   return havstest::Result();
 }

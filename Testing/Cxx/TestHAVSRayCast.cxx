@@ -44,6 +44,7 @@
 // Usage: TestHAVSRayCast <scene> [size] [views]
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
+#include "havsTestMapperScenes.h"
 #include "havsTestProperties.h"
 #include "havsTestScenes.h"
 
@@ -90,28 +91,7 @@ namespace
 {
 bool Exact(const havstest::ImageDifference& d)
 {
-  return d.RMSE < 5e-4 && d.Max < 0.01;
-}
-
-std::vector<float> Reference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
-  vtkCamera* camera, int size, vtkPlaneCollection* planes = nullptr, vtkFloatArray* depth = nullptr)
-{
-  vtkNew<vtkHAVSReferenceRenderer> reference;
-  reference->SetInputData(grid);
-  reference->SetProperty(property);
-  reference->SetCamera(camera);
-  reference->SetSize(size, size);
-  reference->SetClippingPlanes(planes);
-  reference->SetOpaqueDepth(depth);
-  reference->Render();
-  vtkFloatArray* image = reference->GetImage();
-  return std::vector<float>(image->GetPointer(0), image->GetPointer(0) + 4 * size * size);
-}
-
-void Print(const std::string& what, const havstest::ImageDifference& d)
-{
-  std::printf("  %-58s RMSE %.6f  max %.6f  px > 1/255 %.3f %%\n", what.c_str(), d.RMSE, d.Max,
-    100.0 * d.FractionOver1);
+  return havstest::WithinExactBound(d);
 }
 
 void PrintCounts(vtkHAVSRayCastMapper* mapper, int size)
@@ -213,91 +193,6 @@ void CheckTiles(vtkHAVSRayCastMapper* mapper, vtkRenderWindow* window, int size)
   }
 }
 
-/// Clipping planes on the hollow sphere (as TestHAVSCellProjection's clip
-/// scene): one and two planes, perspective and parallel ("clip-all"; "clip":
-/// one plane in perspective, two in parallel).
-int ClipScene(int size, bool all)
-{
-  auto grid = vtkHAVSDataSets::Load("hollowsphere");
-  auto property = havstest::MakeRampPropertyFor(grid);
-  vtkNew<vtkHAVSRayCastMapper> mapper;
-  mapper->KeepFloatResultOn();
-  auto s = havstest::MakeScene(grid, mapper, property, size, size);
-  double bounds[6], centre[3];
-  grid->GetBounds(bounds);
-  grid->GetCenter(centre);
-  vtkNew<vtkPlane> first, second;
-  first->SetOrigin(centre[0] + 0.1 * (bounds[1] - bounds[0]), centre[1], centre[2]);
-  first->SetNormal(-0.8, 0.2, 0.3);
-  second->SetOrigin(centre);
-  second->SetNormal(0.1, -0.3, 1.0);
-  const size_t edgePixels = static_cast<size_t>(size) * size / 2000;
-  for (int n = 1; n <= 2; ++n)
-  {
-    vtkNew<vtkPlaneCollection> planes;
-    planes->AddItem(first);
-    if (n == 2)
-    {
-      planes->AddItem(second);
-    }
-    for (bool parallel : { false, true })
-    {
-      if (!all && parallel != (n == 2))
-      {
-        continue; // (the short run: one plane in perspective, two in parallel)
-      }
-      havstest::PlaceCamera(s.Renderer, 30.0, 20.0, parallel);
-      mapper->SetClippingPlanes(planes);
-      s.Window->Render();
-      const auto clipped = havstest::FloatResult(mapper);
-      const auto exact = Reference(grid, property, s.Renderer->GetActiveCamera(), size, planes);
-      mapper->SetClippingPlanes(static_cast<vtkPlaneCollection*>(nullptr));
-      s.Window->Render();
-      const auto whole = havstest::FloatResult(mapper);
-      const std::string name = std::to_string(n) + (n == 1 ? " plane, " : " planes, ") +
-        (parallel ? "parallel" : "perspective");
-      const auto d = havstest::Compare(clipped, exact, edgePixels);
-      const auto control = havstest::Compare(whole, exact, edgePixels);
-      Print("clipping, " + name, d);
-      Print("clipping, " + name + ": control, without the planes", control);
-      havstest::Check(Exact(d), "clipping, " + name + ": exact");
-      havstest::Check(control.Max > 0.05, "clipping, " + name + ": control, the planes matter");
-    }
-  }
-  return havstest::Result();
-}
-
-/// An opaque sphere inside a box: the rays end at its surface.
-int OpaqueScene(int size)
-{
-  auto grid = vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
-  auto property = havstest::MakeRampPropertyFor(grid);
-  vtkNew<vtkHAVSRayCastMapper> mapper;
-  mapper->KeepFloatResultOn();
-  auto s = havstest::MakeScene(grid, mapper, property, size, size);
-  havstest::AddOpaqueSphere(s.Renderer);
-  havstest::PlaceCamera(s.Renderer, 25.0, 15.0, false);
-  s.Window->Render();
-  const auto image = havstest::FloatResult(mapper);
-  vtkNew<vtkFloatArray> depth;
-  s.Window->GetZbufferData(0, 0, size - 1, size - 1, depth);
-  const auto exact = Reference(grid, property, s.Renderer->GetActiveCamera(), size, nullptr, depth);
-  const auto d = havstest::Compare(image, exact, static_cast<size_t>(size) * size / 2000);
-  const auto control =
-    havstest::Compare(Reference(grid, property, s.Renderer->GetActiveCamera(), size), exact);
-  Print("opaque sphere: vs the reference cut at the surface", d);
-  Print("opaque sphere: control, the reference through it", control);
-  havstest::Check(Exact(d), "opaque sphere: the rays end at its surface");
-  havstest::Check(control.RMSE > 10.0 * d.RMSE && control.Max > 0.05,
-    "opaque sphere: negative control, the surface matters");
-  return havstest::Result();
-}
-
-/// The order-independent blends (maximum, minimum intensity, additive)
-/// against the reference under the same blend, at view 0 (and a parallel
-/// view with `views` 2); control: a broken neighbour table (must fail at half the views or
-/// more: where the field hardly varies along the rays an extremum cannot
-/// show it). The minimum on the scalars negated (see below).
 int BlendScene(const std::string& mesh, int size, int views)
 {
   auto grid = vtkHAVSDataSets::Load(mesh);
@@ -389,12 +284,12 @@ int BlendScene(const std::string& mesh, int size, int views)
       const auto exact = reference(used, blend);
       s.Window->Render();
       const auto d = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
-      Print(name, d);
+      havstest::PrintDifference(name, d);
       inexact += Exact(d) ? 0 : 1;
       mapper->SetBrokenNeighboursForTesting(true);
       s.Window->Render();
       const auto broken = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
-      Print(name + ": control, a broken neighbour table", broken);
+      havstest::PrintDifference(name + ": control, a broken neighbour table", broken);
       controlsFailed += Exact(broken) ? 0 : 1;
       mapper->SetBrokenNeighboursForTesting(false);
     }
@@ -403,75 +298,6 @@ int BlendScene(const std::string& mesh, int size, int views)
       std::string(names[blend]) +
         ": negative control, a broken table fails at half the views or more");
   }
-  return havstest::Result();
-}
-
-/// The camera inside the mesh (perspective, the near plane in it, as
-/// TestHAVSCellProjection's inside scenes): against the reference, which
-/// starts the rays at the near plane; control: without the near plane's section.
-int InsideScene(const std::string& mesh, int size)
-{
-  auto grid = mesh == "box" ? vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0)
-                            : vtkHAVSDataSets::Load(mesh);
-  if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, "scene " + mesh + " loads"))
-  {
-    return EXIT_FAILURE;
-  }
-  double bounds[6];
-  grid->GetBounds(bounds);
-  double eye[3] = { 0.31, 0.355, 0.405 }, direction[3] = { 1.0, 0.4, 0.3 };
-  if (mesh != "box")
-  {
-    // Inside the flow, in front of the fin, looking downstream and a little up.
-    const double f[3] = { 0.45, 0.6, 0.5 };
-    for (int i = 0; i < 3; ++i)
-    {
-      eye[i] = bounds[2 * i] + f[i] * (bounds[2 * i + 1] - bounds[2 * i]);
-    }
-    direction[1] = 0.3;
-    direction[2] = 0.2;
-  }
-  auto property = havstest::MakeRampPropertyFor(grid);
-  vtkNew<vtkHAVSRayCastMapper> mapper;
-  mapper->KeepFloatResultOn();
-  auto s = havstest::MakeScene(grid, mapper, property, size, size);
-  vtkCamera* camera = s.Renderer->GetActiveCamera();
-  camera->SetPosition(eye);
-  camera->SetFocalPoint(eye[0] + direction[0], eye[1] + direction[1], eye[2] + direction[2]);
-  camera->SetViewUp(0, 0, 1);
-  camera->SetViewAngle(60.0);
-  const double length = grid->GetLength();
-  camera->SetClippingRange(0.05 * length, 2.0 * length);
-  mapper->NearPlaneSectionOn();
-  s.Window->Render();
-  const auto image = havstest::FloatResult(mapper);
-  const vtkIdType triangles = mapper->GetLastSectionTriangles();
-  PrintCounts(mapper, size);
-  mapper->NearPlaneSectionOff();
-  s.Window->Render();
-  const auto without = havstest::FloatResult(mapper);
-  vtkNew<vtkHAVSReferenceRenderer> reference;
-  reference->SetInputData(grid);
-  reference->SetProperty(property);
-  reference->SetCamera(camera);
-  reference->SetSize(size, size);
-  reference->Render();
-  const vtkIdType started = reference->GetNumberOfStartedInside();
-  vtkFloatArray* ref = reference->GetImage();
-  const std::vector<float> exact(ref->GetPointer(0), ref->GetPointer(0) + 4 * size * size);
-  const size_t edgePixels = static_cast<size_t>(size) * size / 2000;
-  const auto d = havstest::Compare(image, exact, edgePixels);
-  const auto control = havstest::Compare(without, exact, edgePixels);
-  std::printf("camera inside %s: %lld of %d rays start in the mesh, section %lld triangles\n",
-    mesh.c_str(), static_cast<long long>(started), size * size, static_cast<long long>(triangles));
-  Print(mesh + ": vs the reference", d);
-  Print(mesh + ": control, without the near section", control);
-  havstest::Check(started > size * size / 2 && triangles > 0,
-    mesh + ": most rays start in the mesh, the section is drawn");
-  havstest::Check(havstest::AllFinite(image), mesh + ": finite pixels");
-  havstest::Check(Exact(d), mesh + ": exact with the camera inside");
-  havstest::Check(
-    !Exact(control) && control.RMSE > 10.0 * d.RMSE, mesh + ": negative control, no section fails");
   return havstest::Result();
 }
 
@@ -547,37 +373,37 @@ int MirrorScene(const std::string& mesh, int size)
     s.Volume->SetMapper(mapper);
     s.Window->Render();
     const auto d = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
-    Print(name, d);
+    havstest::PrintDifference(name, d);
     PrintCounts(mapper, size);
     havstest::Check(Exact(d), name + ": exact");
     havstest::Check(mapper->GetLastPeelPasses() >= 2, name + ": the rays re-enter");
     const auto control = havstest::Compare(
       havstest::FloatResult(mapper), reference(unmirrored->GetMatrix()), edgePixels);
-    Print(name + ": control, the reference without the mirror", control);
+    havstest::PrintDifference(name + ": control, the reference without the mirror", control);
     havstest::Check(!Exact(control) && control.RMSE > 10.0 * d.RMSE,
       name + ": negative control, the mirror matters");
     mapper->SetBrokenNeighboursForTesting(true);
     s.Window->Render();
     const auto broken = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
-    Print(name + ": control, a broken neighbour table", broken);
+    havstest::PrintDifference(name + ": control, a broken neighbour table", broken);
     havstest::Check(!Exact(broken), name + ": negative control, a broken neighbour table fails");
     mapper->SetBrokenNeighboursForTesting(false);
     mapper->SetMaximumPeelPasses(1);
     s.Window->Render();
     const auto one = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
-    Print(name + ": control, one peeling pass", one);
+    havstest::PrintDifference(name + ": control, one peeling pass", one);
     havstest::Check(!Exact(one), name + ": negative control, one peeling pass fails");
     mapper->SetMaximumPeelPasses(0);
     // HAVS and the cell projection under the same matrix, the same reference.
     s.Volume->SetMapper(havs);
     s.Window->Render();
     const auto h = havstest::Compare(havstest::FloatResult(havs), exact, edgePixels);
-    Print(name + ": HAVS (MPVO, k = 2)", h);
+    havstest::PrintDifference(name + ": HAVS (MPVO, k = 2)", h);
     havstest::Check(Exact(h), name + ": HAVS exact");
     s.Volume->SetMapper(projection);
     s.Window->Render();
     const auto c = havstest::Compare(havstest::FloatResult(projection), exact, edgePixels);
-    Print(name + ": cell projection", c);
+    havstest::PrintDifference(name + ": cell projection", c);
     havstest::Check(Exact(c), name + ": cell projection exact");
   }
   return havstest::Result();
@@ -691,8 +517,8 @@ int FoldScene(int size)
               "off by %.5f (%.5f without), (%d, %d) by %.5f (%.5f without)\n",
     size, static_cast<long long>(reentries), static_cast<long long>(reentriesOff), x, y0, on[0],
     off[0], x, y1, on[1], off[1]);
-  Print("fold re-entries on", d);
-  Print("control, fold re-entries off", control);
+  havstest::PrintDifference("fold re-entries on", d);
+  havstest::PrintDifference("control, fold re-entries off", control);
   havstest::Check(reentries > 0 && reentriesOff == 0, "fold re-entries counted, none when off");
   havstest::Check(Exact(d), "the combustor at view 1: exact");
   havstest::Check(std::max(on[0], on[1]) < 0.01, "the two fold pixels: exact");
@@ -713,7 +539,8 @@ int TestHAVSRayCast(int argc, char* argv[])
   }
   if (scene == "opaque")
   {
-    return OpaqueScene(size);
+    vtkNew<vtkHAVSRayCastMapper> mapper;
+    return havstest::OpaqueSphereScene(mapper, size);
   }
   if (scene.rfind("mirror-", 0) == 0)
   {
@@ -721,11 +548,14 @@ int TestHAVSRayCast(int argc, char* argv[])
   }
   if (scene == "clip" || scene == "clip-all")
   {
-    return ClipScene(size, scene == "clip-all");
+    vtkNew<vtkHAVSRayCastMapper> mapper;
+    return havstest::ClipPlanesScene(mapper, size, scene == "clip-all");
   }
   if (scene.rfind("inside-", 0) == 0)
   {
-    return InsideScene(scene.substr(7), size);
+    vtkNew<vtkHAVSRayCastMapper> mapper;
+    return havstest::CameraInsideScene(
+      mapper, scene.substr(7), size, [&mapper, size]() { PrintCounts(mapper, size); });
   }
   if (scene.rfind("blend-", 0) == 0)
   {
@@ -836,30 +666,14 @@ int TestHAVSRayCast(int argc, char* argv[])
   for (int v = 0; v <= views; ++v)
   {
     const bool parallel = v == views;
-    vtkHAVSStandardViews::PlaceCamera(camera, grid, parallel ? 3 : v);
-    camera->SetParallelProjection(parallel ? 1 : 0);
-    if (turned)
-    {
-      camera->Azimuth(7.0);
-      camera->Elevation(5.0);
-      camera->OrthogonalizeViewUp();
-    }
-    s.Renderer->ResetCameraClippingRange();
-    if (parallel)
-    {
-      camera->Azimuth(11.0);
-      camera->Elevation(7.0);
-      camera->OrthogonalizeViewUp();
-      s.Renderer->ResetCamera();
-      s.Renderer->ResetCameraClippingRange();
-    }
+    havstest::PlaceStandardView(s.Renderer, grid, v, views, turned);
     const std::string name = "view " + std::to_string(v) + (parallel ? " (parallel)" : "");
     const double r0 = vtkTimerLog::GetUniversalTime();
-    const auto exact = Reference(grid, property, camera, size);
+    const auto exact = havstest::ReferenceImage(grid, property, camera, size);
     const double referenceSeconds = vtkTimerLog::GetUniversalTime() - r0;
     s.Window->Render();
     const auto d = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
-    Print(name, d);
+    havstest::PrintDifference(name, d);
     PrintCounts(mapper, size);
     std::printf("    reference %.2f s\n", referenceSeconds);
     mostPasses = std::max(mostPasses, mapper->GetLastPeelPasses());
@@ -881,7 +695,7 @@ int TestHAVSRayCast(int argc, char* argv[])
       mapper->SetBrokenNeighboursForTesting(true);
       s.Window->Render();
       const auto broken = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
-      Print(name + ": control, a broken neighbour table", broken);
+      havstest::PrintDifference(name + ": control, a broken neighbour table", broken);
       brokenFailed += Exact(broken) ? 0 : 1;
       mapper->SetBrokenNeighboursForTesting(false);
       if (mapper->GetLastPeelPasses() >= 2)
@@ -890,7 +704,7 @@ int TestHAVSRayCast(int argc, char* argv[])
         mapper->SetMaximumPeelPasses(1);
         s.Window->Render();
         const auto one = havstest::Compare(havstest::FloatResult(mapper), exact, edgePixels);
-        Print(name + ": control, one peeling pass", one);
+        havstest::PrintDifference(name + ": control, one peeling pass", one);
         onePassFailed += Exact(one) ? 0 : 1;
         mapper->SetMaximumPeelPasses(0);
       }
@@ -933,9 +747,9 @@ int TestHAVSRayCast(int argc, char* argv[])
   camera->SetParallelProjection(0);
   s.Renderer->ResetCameraClippingRange();
   s.Window->Render();
-  const auto d = havstest::Compare(
-    havstest::FloatResult(mapper), Reference(movedGrid, property, camera, size), edgePixels);
-  Print("volume matrix (rotated, stretched) vs the transformed grid", d);
+  const auto d = havstest::Compare(havstest::FloatResult(mapper),
+    havstest::ReferenceImage(movedGrid, property, camera, size), edgePixels);
+  havstest::PrintDifference("volume matrix (rotated, stretched) vs the transformed grid", d);
   havstest::Check(Exact(d), "the volume's matrix: exact");
   return havstest::Result();
 }

@@ -9,6 +9,7 @@
 =========================================================================*/
 #include "havsTestScenes.h"
 
+#include "vtkHAVSDataSets.h"
 #include "vtkHAVSVolumeMapper.h"
 
 #include "vtkActor.h"
@@ -81,6 +82,39 @@ void PlaceCamera(vtkRenderer* renderer, double azimuth, double elevation, bool p
   camera->OrthogonalizeViewUp();
   renderer->ResetCamera();
   renderer->ResetCameraClippingRange();
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> LoadInsideMesh(const std::string& mesh)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> grid = mesh == "box"
+    ? vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0)
+    : vtkHAVSDataSets::Load(mesh);
+  return grid && grid->GetNumberOfCells() > 0 ? grid : nullptr;
+}
+
+void PlaceCameraInside(vtkRenderer* renderer, vtkUnstructuredGrid* grid, bool box)
+{
+  double eye[3] = { 0.31, 0.355, 0.405 }, direction[3] = { 1.0, 0.4, 0.3 };
+  if (!box)
+  {
+    double bounds[6];
+    grid->GetBounds(bounds);
+    const double f[3] = { 0.45, 0.6, 0.5 };
+    for (int i = 0; i < 3; ++i)
+    {
+      eye[i] = bounds[2 * i] + f[i] * (bounds[2 * i + 1] - bounds[2 * i]);
+    }
+    direction[1] = 0.3;
+    direction[2] = 0.2;
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetParallelProjection(0);
+  camera->SetPosition(eye);
+  camera->SetFocalPoint(eye[0] + direction[0], eye[1] + direction[1], eye[2] + direction[2]);
+  camera->SetViewUp(0, 0, 1);
+  camera->SetViewAngle(60.0);
+  const double length = grid->GetLength();
+  camera->SetClippingRange(0.05 * length, 2.0 * length);
 }
 
 void UseCentroidOrder(vtkHAVSVolumeMapper* mapper)

@@ -17,6 +17,8 @@
 #include "havsTestProperties.h" // the scenes take these properties
 #include "vtkSmartPointer.h"
 
+#include <string>
+
 class vtkAbstractVolumeMapper;
 class vtkDataObject;
 class vtkHAVSVolumeMapper;
@@ -56,6 +58,20 @@ void AddOpaqueSphere(vtkRenderer* renderer);
 /// Places the camera: looking at the grid's centre from (azimuth, elevation)
 /// degrees, perspective unless parallel is set; resets the clipping range.
 void PlaceCamera(vtkRenderer* renderer, double azimuth, double elevation, bool parallel);
+
+/// The mesh of the camera-inside scenes: "box" (a 10^3 box of unit size) or a
+/// data set of vtkHAVSDataSets::Load; nullptr when it does not load.
+vtkSmartPointer<vtkUnstructuredGrid> LoadInsideMesh(const std::string& mesh);
+
+/**
+ * The camera inside `grid` (the cell projection's and the ray caster's
+ * inside scenes): perspective, 60 degrees, the near plane at 5 % of the
+ * grid's length so that the slab it cuts off shows. In the box off its face
+ * planes (an eye on one sees whole lines of pixel rays graze faces, where
+ * rasterizer and rays disagree whatever the mapper); in a data set inside
+ * the flow, in front of the fin, looking downstream and a little up.
+ */
+void PlaceCameraInside(vtkRenderer* renderer, vtkUnstructuredGrid* grid, bool box);
 }
 
 #endif

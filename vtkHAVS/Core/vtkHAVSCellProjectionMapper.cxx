@@ -170,7 +170,6 @@ void vtkHAVSCellProjectionMapper::ResetLastFrame()
   this->LastCellsDrawn = 0;
   this->LastCycleBreaks = 0;
   this->LastOrderReused = false;
-  this->LastSectionTriangles = 0;
 }
 
 //------------------------------------------------------------------------------
@@ -200,12 +199,7 @@ void vtkHAVSCellProjectionMapper::RenderView(
 {
   // Where the near plane cuts the mesh (the camera inside it) the rays start
   // on its section: the GL near clip removes the front faces there.
-  if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, this->NearPlaneSection))
-  {
-    this->WarnOnce(vtkHAVSMapperInputs::WarnPlanes,
-      "More than 6 clipping planes; vtkHAVSCellProjectionMapper uses the first 6.");
-  }
-  this->LastSectionTriangles = this->Planes->GetNumberOfSectionTriangles();
+  this->UpdatePlanes(view);
 
   // The cell order for the view.
   const double t0 = vtkTimerLog::GetUniversalTime();
@@ -245,8 +239,7 @@ void vtkHAVSCellProjectionMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "CellOrder: " << (this->CellOrder == CellOrderMPVO ? "MPVO" : "Centroid")
      << ", NonConvexMethod: " << this->NonConvexMethod << "\n";
-  os << indent << "NearPlaneSection: " << this->NearPlaneSection
-     << ", MeasureStageTimes: " << this->MeasureStageTimes << "\n";
+  os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";
   os << indent << "WrongExitForTesting: " << this->WrongExitForTesting
      << ", ReverseOrderForTesting: " << this->ReverseOrderForTesting
      << ", ShuffleOrderForTesting: " << this->ShuffleOrderForTesting << "\n";

@@ -117,17 +117,6 @@ public:
   vtkGetMacro(ShuffleOrderForTesting, bool);
   ///@}
 
-  ///@{
-  /// Draw the near plane's section where it cuts the mesh (the camera
-  /// inside it). On by default; off only as a negative control.
-  vtkSetMacro(NearPlaneSection, bool);
-  vtkGetMacro(NearPlaneSection, bool);
-  vtkBooleanMacro(NearPlaneSection, bool);
-  ///@}
-
-  /// Triangles of the near plane's section drawn in the last frame.
-  vtkGetMacro(LastSectionTriangles, vtkIdType);
-
   /// Whether the last frame reused the previous frame's cell order and its
   /// upload (the same view key, vtkHAVSVisibilityOrder::ViewKey: a
   /// transfer-function edit or a redraw does not sort again).
@@ -190,8 +179,6 @@ private:
   bool WrongExitForTesting = false;
   bool ReverseOrderForTesting = false;
   bool ShuffleOrderForTesting = false;
-  bool NearPlaneSection = true;
-  vtkIdType LastSectionTriangles = 0;
   bool MeasureStageTimes = false;
   bool LastOrderReused = false;
   vtkIdType LastCellsDrawn = 0;

@@ -230,6 +230,17 @@ bool vtkHAVSMapperBase::PrepareTable(vtkVolume* volume)
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSMapperBase::UpdatePlanes(const vtkHAVSViewFrame& view)
+{
+  if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, this->PlaneSections))
+  {
+    this->WarnOnce(vtkHAVSMapperInputs::WarnPlanes,
+      std::string("More than 6 clipping planes; ") + this->MapperName + " uses the first 6.");
+  }
+  this->LastSectionTriangles = this->Planes->GetNumberOfSectionTriangles();
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
   // 1. The frame starts (VTK's volume mapper event).
@@ -237,6 +248,7 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastMeshUpdate = MeshNotPrepared;
   this->LastMeshSeconds = 0.0;
   this->LastFrameAborted = false;
+  this->LastSectionTriangles = 0;
   this->TableRebuilt = false;
   this->ResetLastFrame();
   this->InvokeEvent(vtkCommand::VolumeMapperRenderStartEvent, nullptr);
@@ -298,6 +310,8 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TableScalarResolution: " << this->TableScalarResolution
      << ", TableLengthResolution: " << this->TableLengthResolution << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
+  os << indent << "PlaneSections: " << this->PlaneSections
+     << ", LastSectionTriangles: " << this->LastSectionTriangles << "\n";
   os << indent << "Mesh: " << this->Mesh.Get() << " (shared by " << this->Mesh->GetReferenceCount()
      << " owners)\n";
   os << indent << "LastMeshUpdate: " << GetMeshUpdateName(this->LastMeshUpdate) << " ("

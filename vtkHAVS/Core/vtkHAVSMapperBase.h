@@ -150,6 +150,25 @@ public:
 
   ///@{
   /**
+   * Where the near plane (the camera inside the mesh) or a clipping plane
+   * cuts the mesh, the rays enter (or leave) the clipped volume where no face
+   * lies: the mapper draws the mesh's section with the plane there, with the
+   * interpolated scalar (vtkHAVSFramePlanes). HAVS draws the near plane's and
+   * the clipping planes' sections; the cell projection and the ray caster
+   * clip each segment analytically and draw the near plane's only. On by
+   * default; off only as a negative control (the slab between the plane and
+   * the first face behind it is then lost).
+   */
+  vtkSetMacro(PlaneSections, bool);
+  vtkGetMacro(PlaneSections, bool);
+  vtkBooleanMacro(PlaneSections, bool);
+  ///@}
+
+  /// Triangles of the planes' sections drawn in the last frame.
+  vtkGetMacro(LastSectionTriangles, vtkIdType);
+
+  ///@{
+  /**
    * When on, each frame's premultiplied float RGBA result (before it is
    * blended into the window) is kept; GetFloatResult() copies it (4
    * components, width*height tuples, bottom row first, the renderer's
@@ -223,6 +242,9 @@ protected:
   virtual void MeshPrepared(int update, bool rebuilt) = 0;
   /// The table for the volume's property (false, with an error, when it cannot be made).
   virtual bool PrepareTable(vtkVolume* volume);
+  /// The frame's near and clipping planes and the mesh's sections with them
+  /// (Planes, PlaneSections); warns once beyond 6 clipping planes.
+  void UpdatePlanes(const vtkHAVSViewFrame& view);
   /// The mapper's own part of the frame: order, draw, statistics.
   virtual void RenderView(
     vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) = 0;
@@ -246,6 +268,8 @@ protected:
   int TableScalarResolution = 128;
   int TableLengthResolution = 128;
   bool KeepFloatResult = false;
+  bool PlaneSections = true;
+  vtkIdType LastSectionTriangles = 0;
 
   vtkSmartPointer<vtkHAVSMesh> Mesh;
   vtkNew<vtkHAVSPreIntegrationTable> Table;

@@ -64,7 +64,6 @@ void vtkHAVSRayCastMapper::ResetLastFrame()
   this->LastCellsCrossed = 0;
   this->LastFoldReentries = 0;
   this->LastPeelSeconds = this->LastCastSeconds = -1.0;
-  this->LastSectionTriangles = 0;
   this->LastTileGrid[0] = this->LastTileGrid[1] = 0;
   this->LastTilePasses.clear();
   this->LastPeelFragments.clear();
@@ -104,12 +103,7 @@ void vtkHAVSRayCastMapper::RenderView(
   vtkRenderer* renderer, vtkVolume* vtkNotUsed(volume), const vtkHAVSViewFrame& view)
 {
   // The near and clipping planes (the near plane's section where the camera is inside).
-  if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, this->NearPlaneSection))
-  {
-    this->WarnOnce(vtkHAVSMapperInputs::WarnPlanes,
-      "More than 6 clipping planes; vtkHAVSRayCastMapper uses the first 6.");
-  }
-  this->LastSectionTriangles = this->Planes->GetNumberOfSectionTriangles();
+  this->UpdatePlanes(view);
 
   // The draw: peel the entries, cast, per tile.
   RayFrame frame;
@@ -152,7 +146,6 @@ void vtkHAVSRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EarlyRayTerminationOpacity: " << this->EarlyRayTerminationOpacity
      << ", MaximumPeelPasses: " << this->MaximumPeelPasses << "\n";
   os << indent << "BrokenNeighboursForTesting: " << this->BrokenNeighboursForTesting
-     << ", NearPlaneSection: " << this->NearPlaneSection
      << ", FoldReentries: " << this->FoldReentries << "\n";
   os << indent << "Tiles: " << this->Tiles << ", TileSize: " << this->TileSize << "\n";
   os << indent << "Last frame: " << this->LastPeelPasses << " peel passes, "

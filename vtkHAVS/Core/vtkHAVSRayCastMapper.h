@@ -127,14 +127,6 @@ public:
   ///@}
 
   ///@{
-  /// Start the rays on the near plane's section where it cuts the mesh (the
-  /// camera inside it). On by default; off only as a negative control.
-  vtkSetMacro(NearPlaneSection, bool);
-  vtkGetMacro(NearPlaneSection, bool);
-  vtkBooleanMacro(NearPlaneSection, bool);
-  ///@}
-
-  ///@{
   /**
    * Re-entries across folds of the boundary (on by default; off only as a
    * negative control). Where the boundary folds (an exit face and an entry
@@ -155,9 +147,6 @@ public:
 
   /// Rays that went on across a fold of the boundary in the last frame.
   vtkGetMacro(LastFoldReentries, vtkIdType);
-
-  /// Triangles of the near plane's section drawn in the last frame.
-  vtkGetMacro(LastSectionTriangles, vtkIdType);
 
   ///@{
   /**
@@ -231,7 +220,6 @@ private:
   double EarlyRayTerminationOpacity = 0.999;
   int MaximumPeelPasses = 0;
   bool BrokenNeighboursForTesting = false;
-  bool NearPlaneSection = true;
   bool FoldReentries = true;
   vtkIdType LastFoldReentries = 0;
   bool Tiles = true;
@@ -239,7 +227,6 @@ private:
   int LastTileGrid[2] = { 0, 0 };
   std::vector<int> LastTilePasses;
   std::vector<long long> LastPeelFragments;
-  vtkIdType LastSectionTriangles = 0;
   int LastPeelPasses = 0;
   vtkIdType LastRaysStarted = 0;
   vtkIdType LastCellsCrossed = 0;

@@ -53,7 +53,7 @@ namespace
 {
 // The warnings given once per mapper (vtkHAVSMapperInputs::OnceWarning).
 using Inputs = vtkHAVSMapperInputs;
-const int WarnPath = Inputs::WarnPath, WarnK = Inputs::WarnK, WarnPlanes = Inputs::WarnPlanes;
+const int WarnPath = Inputs::WarnPath, WarnK = Inputs::WarnK;
 }
 
 //------------------------------------------------------------------------------
@@ -436,11 +436,7 @@ void vtkHAVSVolumeMapper::RenderView(
     this->MakeRequest(view, path, k, vtkHAVSMapperInputs::RendererHasOpaqueGeometry(renderer));
 
   // 6. The near and clipping planes, and the mesh's sections with them.
-  if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, this->PlaneSections))
-  {
-    this->WarnOnce(
-      WarnPlanes, "More than 6 clipping planes; vtkHAVSVolumeMapper uses the first 6.");
-  }
+  this->UpdatePlanes(view);
 
   // 7. The cells outside the view frustum or cut away by a clipping plane.
   this->FaceOrder->SetCellCulling(nullptr, 0);
@@ -744,7 +740,6 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CountOrderViolations: " << this->CountOrderViolations << "\n";
   static const char* const boundaryModes[] = { "Automatic", "Tagging", "Ignore", "GapLength" };
   os << indent << "BoundaryMode: " << boundaryModes[this->BoundaryMode] << "\n";
-  os << indent << "PlaneSections: " << this->PlaneSections << "\n";
   os << indent << "Mesh data:\n";
   this->Mesh->PrintSelf(os, indent.GetNextIndent());
   os << indent << "LastFrame:\n";

@@ -419,20 +419,6 @@ public:
   void SetBoundaryModeToGapLength() { this->SetBoundaryMode(BoundaryGapLength); }
   ///@}
 
-  ///@{
-  /**
-   * Where the near plane or a clipping plane cuts the mesh, the rays enter
-   * (or leave) the clipped volume where no face lies: the mapper draws the
-   * mesh's section with the plane there, with the interpolated scalar, as an
-   * entry (exit) fragment. On by default; off only for comparison (a
-   * negative control: the slab between the plane and the first face behind
-   * it is then lost).
-   */
-  vtkSetMacro(PlaneSections, bool);
-  vtkGetMacro(PlaneSections, bool);
-  vtkBooleanMacro(PlaneSections, bool);
-  ///@}
-
   /**
    * What the last frame did: path, k, order, violations, counts, times.
    */
@@ -530,7 +516,6 @@ protected:
   int VisibilityOrder = VisibilityOrderMPVO;
   int NonConvexMethod = 1; // vtkHAVSVisibilityOrder::NonConvexBoundaryLayers
   bool CountOrderViolations = false;
-  bool PlaneSections = true;
 
 private:
   vtkHAVSVolumeMapper(const vtkHAVSVolumeMapper&) = delete;
