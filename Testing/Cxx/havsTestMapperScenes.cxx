@@ -65,8 +65,8 @@ void PrintDifference(const std::string& what, const ImageDifference& d)
     100.0 * d.FractionOver1);
 }
 
-void PlaceStandardView(vtkRenderer* renderer, vtkUnstructuredGrid* grid, int v, int views,
-  bool turned)
+void PlaceStandardView(
+  vtkRenderer* renderer, vtkUnstructuredGrid* grid, int v, int views, bool turned)
 {
   vtkCamera* camera = renderer->GetActiveCamera();
   const bool parallel = v == views;
@@ -126,7 +126,8 @@ int ClipPlanesScene(vtkHAVSMapperBase* mapper, int size, bool all)
       mapper->SetClippingPlanes(planes);
       s.Window->Render();
       const auto clipped = FloatResult(mapper);
-      const auto exact = ReferenceImage(grid, property, s.Renderer->GetActiveCamera(), size, planes);
+      const auto exact =
+        ReferenceImage(grid, property, s.Renderer->GetActiveCamera(), size, planes);
       // (Not RemoveAllClippingPlanes: that would empty `planes` itself.)
       mapper->SetClippingPlanes(static_cast<vtkPlaneCollection*>(nullptr));
       s.Window->Render();

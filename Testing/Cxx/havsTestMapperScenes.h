@@ -22,7 +22,7 @@
 
 #include <functional> // For std::function
 #include <string>     // For std::string
-#include <vector> // For std::vector
+#include <vector>     // For std::vector
 
 class vtkCamera;
 class vtkFloatArray;
@@ -39,8 +39,8 @@ namespace havstest
 /// vtkVolumeMapper's numbering); `startedInside` gets its rays that start in
 /// the mesh.
 std::vector<float> ReferenceImage(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
-  vtkCamera* camera, int size, vtkPlaneCollection* planes = nullptr,
-  vtkFloatArray* depth = nullptr, int blend = 0, vtkIdType* startedInside = nullptr);
+  vtkCamera* camera, int size, vtkPlaneCollection* planes = nullptr, vtkFloatArray* depth = nullptr,
+  int blend = 0, vtkIdType* startedInside = nullptr);
 
 /// The bound an exact mapper meets against ReferenceImage: RMSE < 5e-4 and
 /// max < 0.01 (float images, edge pixels left out by the comparison).
@@ -53,8 +53,8 @@ void PrintDifference(const std::string& what, const ImageDifference& d);
 /// standard view v (vtkHAVSStandardViews; turned 7 degrees in azimuth and 5
 /// in elevation off the axes when `turned`), v == views a parallel view of
 /// standard view 3, turned so and then 11 and 7 degrees more.
-void PlaceStandardView(vtkRenderer* renderer, vtkUnstructuredGrid* grid, int v, int views,
-  bool turned);
+void PlaceStandardView(
+  vtkRenderer* renderer, vtkUnstructuredGrid* grid, int v, int views, bool turned);
 
 /// Clipping planes on the hollow sphere: one and two planes, perspective and
 /// parallel (`all`; otherwise one plane in perspective, two in parallel),
