@@ -480,5 +480,41 @@ int TestHAVSMapperContract(int, char*[])
           ", the image unchanged (" + std::to_string(warnings) + " warnings)");
     }
   }
+
+  // 7. The memory ledger, and the host copies freed after an upload: a frame
+  // after ReleaseGraphicsResources makes them again and draws the same image.
+  for (size_t i = 0; i < mappers.size(); ++i)
+  {
+    const std::string name = mappers[i]->GetClassName();
+    vtkSmartPointer<vtkHAVSMapperBase> m = mappers[i]->NewInstance();
+    m->Delete();
+    havstest::VolumeScene scene = havstest::MakeScene(grid, m, property, 64, 64);
+    scene.Window->Render();
+    const std::vector<float> first = havstest::ReadRGBA(scene.Window);
+    const size_t tets = static_cast<size_t>(grid->GetNumberOfCells());
+    size_t meshBytes = 0, gpuBytes = 0, sum = 0;
+    const std::vector<vtkHAVSMemory::Part> parts = m->GetMemoryParts();
+    for (const vtkHAVSMemory::Part& part : parts)
+    {
+      sum += part.Bytes;
+      meshBytes += part.Name.rfind("mesh", 0) == 0 ? part.Bytes : 0;
+      gpuBytes += part.Name.rfind("GPU", 0) == 0 ? part.Bytes : 0;
+    }
+    Check(sum == m->GetMemoryBytes() && meshBytes >= 16 * tets && gpuBytes >= 16 * tets,
+      name + ": the ledger holds the mesh (" + std::to_string(meshBytes / tets) +
+        " B a tetrahedron) and the GPU buffers (" + std::to_string(gpuBytes / tets) + ")");
+    m->ReleaseGraphicsResources(scene.Window);
+    size_t released = 0;
+    for (const vtkHAVSMemory::Part& part : m->GetMemoryParts())
+    {
+      released += part.Name.rfind("GPU", 0) == 0 ? part.Bytes : 0;
+    }
+    scene.Window->Render();
+    const double off = havstest::Compare(havstest::ReadRGBA(scene.Window), first).Max;
+    Check(released < gpuBytes && off == 0.0,
+      name + ": after ReleaseGraphicsResources (GPU buffers " + std::to_string(gpuBytes) + " -> " +
+        std::to_string(released) + " B) the next frame draws the same (max " +
+        std::to_string(off * 255.0) + "/255)");
+  }
   return havstest::Result();
 }

@@ -165,6 +165,15 @@ const std::vector<uint32_t>* vtkHAVSCellProjectionMapper::MakeOrder(const vtkHAV
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSCellProjectionMapper::AddMemoryParts(std::vector<vtkHAVSMemory::Part>& parts) const
+{
+  parts.push_back({ "cell order (MPVO)", this->Order->GetMemoryBytes() });
+  parts.push_back({ "cell records and faces", vtkHAVSMemory::Bytes(this->Cells, this->Faces) });
+  parts.push_back(
+    { "centroid and drawn orders", vtkHAVSMemory::Bytes(this->Centroid, this->Drawn) });
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSCellProjectionMapper::ResetLastFrame()
 {
   this->LastCellsDrawn = 0;
@@ -177,10 +186,11 @@ void vtkHAVSCellProjectionMapper::MeshPrepared(int update, bool rebuilt)
 {
   // The cells' planes and fields: the order is kept for a new time step on
   // the same mesh, made again for a new mesh.
-  if (update == MeshUnchanged && !this->Cells.empty())
+  if (update == MeshUnchanged && this->CellsComputed)
   {
     return;
   }
+  this->CellsComputed = true;
   vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
     this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
     this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
@@ -227,9 +237,18 @@ void vtkHAVSCellProjectionMapper::RenderView(
   frame.KeepResult = this->KeepFloatResult;
   frame.WrongExit = this->WrongExitForTesting;
   frame.MeasureStages = this->MeasureStageTimes;
+  frame.RestoreCells = [this]()
+  {
+    vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
+      this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
+      this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
+  };
   if (this->DrawCells(renderer, frame, &this->LastDrawSeconds))
   {
     this->LastCellsDrawn = static_cast<vtkIdType>(order->size());
+    // The GPU holds the cell records now: the host copy is freed (made again
+    // through RestoreCells if the GPU loses them).
+    std::vector<float>().swap(this->Cells);
   }
 }
 

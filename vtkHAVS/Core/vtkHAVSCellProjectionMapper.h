@@ -52,9 +52,10 @@
 #include "vtkHAVSVisibilityOrder.h" // For ViewKey
 #include "vtkNew.h"                 // For vtkNew
 
-#include <cstdint> // For uint32_t
-#include <string>  // For std::string
-#include <vector>  // For std::vector
+#include <cstdint>    // For uint32_t
+#include <functional> // For std::function
+#include <string>     // For std::string
+#include <vector>     // For std::vector
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -153,6 +154,9 @@ public:
     bool KeepResult = false;
     bool WrongExit = false;
     bool MeasureStages = false;
+    /// Makes Cells again when they were freed after an upload and the GPU
+    /// needs them (its buffers were released).
+    std::function<void()> RestoreCells;
   };
 
 protected:
@@ -160,6 +164,7 @@ protected:
   ~vtkHAVSCellProjectionMapper() override;
 
   void ResetLastFrame() override;
+  void AddMemoryParts(std::vector<vtkHAVSMemory::Part>& parts) const override;
   void MeshPrepared(int update, bool rebuilt) override;
   void RenderView(vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) override;
 
@@ -188,7 +193,8 @@ private:
 
   vtkNew<vtkHAVSVisibilityOrder> Order;
   bool OrderBuilt = false;
-  std::vector<float> Cells;
+  std::vector<float> Cells; // freed once uploaded (CellFrame::RestoreCells)
+  bool CellsComputed = false;
   std::vector<uint32_t> Faces;
   vtkTimeStamp GeometryTime;      // the cells' geometry (what the order depends on)
   vtkTimeStamp FieldTime;         // the cells' geometry or fields (what the GPU holds)

@@ -149,4 +149,10 @@ void vtkHAVSCellVisibility::PrintSelf(ostream& os, vtkIndent indent)
      << " (" << this->LastSeconds << " s)\n";
 }
 
+//------------------------------------------------------------------------------
+size_t vtkHAVSCellVisibility::GetMemoryBytes() const
+{
+  return vtkHAVSMemory::Bytes(this->Visible);
+}
+
 VTK_ABI_NAMESPACE_END

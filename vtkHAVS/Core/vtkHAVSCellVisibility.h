@@ -37,6 +37,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkHAVSMemory.h"     // For vtkHAVSMemory::Bytes
 #include "vtkObject.h"
 
 #include <cstdint> // For uint8_t
@@ -90,6 +91,9 @@ public:
 
   /// Changes each time the set of visible cells does.
   vtkMTimeType GetVisibilityVersion() const { return this->VisibilityTime.GetMTime(); }
+
+  /// The bytes its arrays hold (vtkHAVSMemory).
+  size_t GetMemoryBytes() const;
 
 protected:
   vtkHAVSCellVisibility() = default;

@@ -1227,4 +1227,10 @@ void vtkHAVSConvexification::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BuildSeconds: " << this->BuildSeconds << "\n";
 }
 
+//------------------------------------------------------------------------------
+size_t vtkHAVSConvexification::GetMemoryBytes() const
+{
+  return vtkHAVSMemory::Bytes(this->TriangleCells, this->Portals, this->PortalCenters);
+}
+
 VTK_ABI_NAMESPACE_END

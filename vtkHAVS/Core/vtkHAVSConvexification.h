@@ -83,6 +83,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkHAVSMemory.h"     // For vtkHAVSMemory::Bytes
 #include "vtkObject.h"
 
 #include <cstdint> // For uint32_t
@@ -166,6 +167,9 @@ public:
    * (internal double walls: the mesh lies on both sides).
    */
   vtkGetMacro(NumberOfOverlappingPieces, vtkIdType);
+
+  /// The bytes its arrays hold (vtkHAVSMemory).
+  size_t GetMemoryBytes() const;
 
 protected:
   vtkHAVSConvexification();

@@ -319,4 +319,20 @@ void vtkHAVSFaceOrderPolicy::PrintSelf(ostream& os, vtkIndent indent)
      << this->LastSeconds << " s\n";
 }
 
+//------------------------------------------------------------------------------
+void vtkHAVSFaceOrderPolicy::AddMemoryParts(std::vector<vtkHAVSMemory::Part>& parts) const
+{
+  parts.push_back({ "face order: centroid sort", this->Centroid->GetMemoryBytes() });
+  parts.push_back({ "face order: exact (MPVO, boundary layers)", this->Exact->GetMemoryBytes() });
+  parts.push_back({ "face order: the drawn faces",
+    vtkHAVSMemory::Bytes(this->DrawTriangles, this->DrawBoundary, this->UnculledFaces) });
+}
+
+//------------------------------------------------------------------------------
+size_t vtkHAVSFaceOrderPolicy::GetMemoryBytes() const
+{
+  return vtkHAVSMemory::Bytes(this->DrawTriangles, this->DrawBoundary, this->UnculledFaces) +
+    this->Centroid->GetMemoryBytes() + this->Exact->GetMemoryBytes();
+}
+
 VTK_ABI_NAMESPACE_END

@@ -37,6 +37,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSCoreModule.h"      // For export macro
+#include "vtkHAVSMemory.h"          // For vtkHAVSMemory::Bytes
 #include "vtkHAVSVisibilityOrder.h" // For ViewKey
 #include "vtkNew.h"                 // For vtkNew
 #include "vtkObject.h"
@@ -169,6 +170,11 @@ public:
 
   vtkHAVSFaceSorter* GetCentroidSorter() { return this->Centroid; }
   vtkHAVSVisibilityOrder* GetExactOrder() { return this->Exact; }
+
+  /// The bytes its arrays hold (vtkHAVSMemory).
+  size_t GetMemoryBytes() const;
+  /// The same in three parts: the centroid sort, the exact (MPVO) order, the drawn faces.
+  void AddMemoryParts(std::vector<vtkHAVSMemory::Part>& parts) const;
 
 protected:
   vtkHAVSFaceOrderPolicy();

@@ -710,4 +710,11 @@ void vtkHAVSFaceSet::PrintSelf(ostream& os, vtkIndent indent)
      << ", " << this->CentroidOrigin[2] << ")\n";
 }
 
+//------------------------------------------------------------------------------
+size_t vtkHAVSFaceSet::GetMemoryBytes() const
+{
+  return vtkHAVSMemory::Bytes(this->FaceVertices, this->BoundaryFlags, this->Centroids,
+    this->Tetrahedra, this->TetrahedronCells, this->FaceCells);
+}
+
 VTK_ABI_NAMESPACE_END

@@ -38,6 +38,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkHAVSMemory.h"     // For vtkHAVSMemory::Bytes
 #include "vtkObject.h"
 #include "vtkTimeStamp.h" // For BuildTime
 
@@ -132,6 +133,9 @@ public:
 
   /// Modified at each Build(), successful or not.
   vtkMTimeType GetBuildTime() const { return this->BuildTime.GetMTime(); }
+
+  /// The bytes its arrays hold (vtkHAVSMemory).
+  size_t GetMemoryBytes() const;
 
 protected:
   vtkHAVSFaceSet() = default;

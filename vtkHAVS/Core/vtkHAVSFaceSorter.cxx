@@ -156,4 +156,11 @@ void vtkHAVSFaceSorter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BlockReversal: " << this->BlockReversal << "\n";
 }
 
+//------------------------------------------------------------------------------
+size_t vtkHAVSFaceSorter::GetMemoryBytes() const
+{
+  return vtkHAVSMemory::Bytes(this->Keys, this->Order, this->SubsetOrder) +
+    this->RadixSorter->GetMemoryBytes();
+}
+
 VTK_ABI_NAMESPACE_END

@@ -25,6 +25,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkHAVSMemory.h"     // For vtkHAVSMemory::Bytes
 #include "vtkNew.h"            // For vtkNew
 #include "vtkObject.h"
 
@@ -90,6 +91,9 @@ public:
   vtkSetClampMacro(BlockReversal, int, 1, 1 << 20);
   vtkGetMacro(BlockReversal, int);
   ///@}
+
+  /// The bytes its arrays hold (vtkHAVSMemory).
+  size_t GetMemoryBytes() const;
 
 protected:
   vtkHAVSFaceSorter();

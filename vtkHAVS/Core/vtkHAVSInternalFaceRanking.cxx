@@ -536,15 +536,6 @@ bool vtkHAVSInternalFaceRanking::UpdateView(const double direction[3])
 }
 
 //------------------------------------------------------------------------------
-size_t vtkHAVSInternalFaceRanking::GetMemoryBytes() const
-{
-  return sizeof(uint32_t) *
-    (this->Ranks.capacity() + this->Order.capacity() + this->ClusterStart.capacity() +
-      this->ClusterFaces.capacity()) +
-    sizeof(int) * this->FaceLayers.capacity();
-}
-
-//------------------------------------------------------------------------------
 void vtkHAVSInternalFaceRanking::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -556,6 +547,13 @@ void vtkHAVSInternalFaceRanking::PrintSelf(ostream& os, vtkIndent indent)
     os << " (" << this->NumberOfLayers << " layers)";
   }
   os << ", " << this->LastSeconds << " s, " << this->GetMemoryBytes() << " bytes\n";
+}
+
+//------------------------------------------------------------------------------
+size_t vtkHAVSInternalFaceRanking::GetMemoryBytes() const
+{
+  return vtkHAVSMemory::Bytes(
+    this->Ranks, this->Order, this->FaceLayers, this->ClusterStart, this->ClusterFaces);
 }
 
 VTK_ABI_NAMESPACE_END

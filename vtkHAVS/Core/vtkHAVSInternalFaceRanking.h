@@ -39,6 +39,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkHAVSMemory.h"     // For vtkHAVSMemory::Bytes
 #include "vtkObject.h"
 
 #include <array>      // For std::array

@@ -230,6 +230,30 @@ bool vtkHAVSMapperBase::PrepareTable(vtkVolume* volume)
 }
 
 //------------------------------------------------------------------------------
+std::vector<vtkHAVSMemory::Part> vtkHAVSMapperBase::GetMemoryParts() const
+{
+  std::vector<vtkHAVSMemory::Part> parts;
+  parts.push_back(
+    { "mesh (tetrahedra, faces, points, scalars: shared)", this->Mesh->GetMemoryBytes() });
+  parts.push_back({ "table", this->Table->GetMemoryBytes() });
+  this->AddMemoryParts(parts);
+  parts.push_back({ "GPU buffers (every vtkHAVS mapper of the process)",
+    this->Graphics ? this->Graphics->GetMemoryBytes() : 0 });
+  return parts;
+}
+
+//------------------------------------------------------------------------------
+size_t vtkHAVSMapperBase::GetMemoryBytes() const
+{
+  size_t bytes = 0;
+  for (const vtkHAVSMemory::Part& part : this->GetMemoryParts())
+  {
+    bytes += part.Bytes;
+  }
+  return bytes;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSMapperBase::UpdatePlanes(const vtkHAVSViewFrame& view)
 {
   if (!this->Planes->Update(view, this->ClippingPlanes, this->Mesh, this->PlaneSections))
@@ -322,6 +346,12 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
      << (this->ShaderHooks.FragmentUniforms ? "applied" : "none") << ", "
      << this->ShaderHooks.Ignored.size() << " parts left out\n";
   os << indent << "TimeToDraw: " << this->TimeToDraw << "\n";
+  os << indent << "Memory:";
+  for (const vtkHAVSMemory::Part& part : this->GetMemoryParts())
+  {
+    os << " " << part.Name << " " << part.Bytes << " B;";
+  }
+  os << "\n";
 }
 
 VTK_ABI_NAMESPACE_END

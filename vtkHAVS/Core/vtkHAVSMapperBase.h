@@ -55,6 +55,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSCoreModule.h"  // For export macro
+#include "vtkHAVSMemory.h"      // For vtkHAVSMemory::Part
 #include "vtkHAVSShaderHooks.h" // For vtkHAVSShaderHooks
 #include "vtkNew.h"             // For vtkNew
 #include "vtkSmartPointer.h"    // For vtkSmartPointer
@@ -225,12 +226,24 @@ public:
    */
   const vtkHAVSShaderHooks& GetShaderHooks() const { return this->ShaderHooks; }
 
+  /**
+   * Where the mapper's memory is (vtkHAVSMemory): the mesh (the tetrahedra,
+   * their faces, points and scalars: shared by the mappers of one input), the
+   * table, the mapper's own orders and records, and the GPU buffers. The
+   * parts' arrays as allocated; not the input grid.
+   */
+  std::vector<vtkHAVSMemory::Part> GetMemoryParts() const;
+  /// The sum of GetMemoryParts().
+  size_t GetMemoryBytes() const;
+
 protected:
   vtkHAVSMapperBase(const char* mapperName);
   ~vtkHAVSMapperBase() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
+  /// Adds the mapper's own parts to the memory ledger (GetMemoryParts).
+  virtual void AddMemoryParts(std::vector<vtkHAVSMemory::Part>& vtkNotUsed(parts)) const {}
   /// Clears the last frame's statistics (called first in every frame).
   virtual void ResetLastFrame() {}
   /**

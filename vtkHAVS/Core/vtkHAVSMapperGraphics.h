@@ -24,7 +24,8 @@
 #include "vtkHAVSCoreModule.h"   // For export macro
 #include "vtkObject.h"
 
-#include <vector> // For std::vector
+#include <cstddef> // For size_t
+#include <vector>  // For std::vector
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -39,6 +40,9 @@ public:
   virtual void Release(vtkWindow* window) = 0;
   /// The last frame's kept float result and its size; nullptr without one.
   virtual const std::vector<float>* GetKeptResult(int size[2]) = 0;
+  /// The bytes of the GPU buffers the graphics layer holds (on llvmpipe in
+  /// host memory too): the memory ledger's "GPU buffers" (vtkHAVSMemory).
+  virtual size_t GetMemoryBytes() const { return 0; }
 
 protected:
   vtkHAVSMapperGraphics() = default;

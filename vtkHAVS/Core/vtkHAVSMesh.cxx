@@ -763,4 +763,18 @@ void vtkHAVSMesh::PrintSelf(ostream& os, vtkIndent indent)
      << this->Tessellation.LowerDimensionCells << " lower-dimensional cells left out)\n";
 }
 
+//------------------------------------------------------------------------------
+size_t vtkHAVSMesh::GetMemoryBytes() const
+{
+  // The tetrahedralized grid when it is the mesh's own (not the input's).
+  const size_t grid = this->Grid && this->Tessellation.Tessellated
+    ? static_cast<size_t>(this->Grid->GetActualMemorySize()) * 1024
+    : 0;
+  return grid + this->Faces->GetMemoryBytes() +
+    vtkHAVSMemory::Bytes(this->Points, this->Scalars, this->TetrahedronScalars,
+      this->TetrahedronCodes, this->CellValues, this->FaceVertexPoints, this->FaceVertexScalars,
+      this->FaceVertexIds, this->Sources.StencilOffsets, this->Sources.StencilIds,
+      this->Sources.StencilWeights, this->Sources.Cells);
+}
+
 VTK_ABI_NAMESPACE_END

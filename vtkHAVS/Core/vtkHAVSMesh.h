@@ -38,6 +38,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSCoreModule.h"      // For export macro
+#include "vtkHAVSMemory.h"          // For vtkHAVSMemory::Bytes
 #include "vtkHAVSTetrahedralizer.h" // For vtkHAVSTetrahedralizer::Report
 #include "vtkNew.h"                 // For vtkNew
 #include "vtkObject.h"
@@ -201,6 +202,9 @@ public:
   int GetNumberOfComponents() const { return this->NumberOfComponents; }
   /// How the array's components became the scalar rendered: a text for messages.
   const std::string& GetScalarDescription() const { return this->ScalarDescription; }
+
+  /// The bytes its arrays hold (vtkHAVSMemory).
+  size_t GetMemoryBytes() const;
 
 protected:
   vtkHAVSMesh();

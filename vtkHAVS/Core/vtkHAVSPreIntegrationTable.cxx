@@ -511,4 +511,12 @@ void vtkHAVSPreIntegrationTable::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastBuildSeconds: " << this->LastBuildSeconds << "\n";
 }
 
+//------------------------------------------------------------------------------
+size_t vtkHAVSPreIntegrationTable::GetMemoryBytes() const
+{
+  return (this->Table.capacity() + this->TransferFunction1D.capacity() +
+           this->Additive1D.capacity()) *
+    sizeof(float);
+}
+
 VTK_ABI_NAMESPACE_END

@@ -58,7 +58,8 @@
 #include "vtkNew.h"            // For vtkNew
 #include "vtkObject.h"
 
-#include <vector> // For std::vector
+#include <cstddef> // For size_t
+#include <vector>  // For std::vector
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -175,6 +176,9 @@ public:
    */
   static void IntegrateSegment(vtkVolumeProperty* property, int component, double sf, double sb,
     double length, double rgba[4], int maximumSteps = 1 << 16);
+
+  /// The bytes its arrays hold (vtkHAVSMemory).
+  size_t GetMemoryBytes() const;
 
 protected:
   vtkHAVSPreIntegrationTable() = default;

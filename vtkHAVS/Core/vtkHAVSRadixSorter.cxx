@@ -173,4 +173,11 @@ void vtkHAVSRadixSorter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Scratch capacity: " << this->Keys.capacity() << " keys\n";
 }
 
+//------------------------------------------------------------------------------
+size_t vtkHAVSRadixSorter::GetMemoryBytes() const
+{
+  return vtkHAVSMemory::Bytes(
+    this->Keys, this->KeysScratch, this->OrderScratch, this->BucketCounts);
+}
+
 VTK_ABI_NAMESPACE_END

@@ -28,6 +28,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkHAVSMemory.h"     // For vtkHAVSMemory::Bytes
 #include "vtkObject.h"
 
 #include <cstddef> // For size_t
@@ -56,6 +57,9 @@ public:
    * At most 2^32 - 1 keys (an error, and an empty order, beyond).
    */
   void Sort(const float* keys, size_t n, std::vector<uint32_t>& order);
+
+  /// The bytes its arrays hold (vtkHAVSMemory).
+  size_t GetMemoryBytes() const;
 
 protected:
   vtkHAVSRadixSorter() = default;

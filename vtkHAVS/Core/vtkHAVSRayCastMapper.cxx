@@ -57,6 +57,13 @@ void vtkHAVSRayCastMapper::SetBrokenNeighboursForTesting(bool broken)
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSRayCastMapper::AddMemoryParts(std::vector<vtkHAVSMemory::Part>& parts) const
+{
+  parts.push_back(
+    { "ray mesh (cell records, neighbours)", this->RayMesh ? this->RayMesh->GetMemoryBytes() : 0 });
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSRayCastMapper::ResetLastFrame()
 {
   this->LastPeelPasses = 0;
@@ -121,11 +128,20 @@ void vtkHAVSRayCastMapper::RenderView(
   frame.TileSize = this->Tiles ? this->TileSize : 0;
   frame.Blend = this->BlendMode;
   frame.FoldReentries = this->FoldReentries;
+  frame.RestoreCells = [this]()
+  {
+    this->RayMesh->UpdateFields(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
+      this->Mesh->GetFaceSet()->GetTetrahedra(),
+      this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
+  };
   RayCounts counts;
   if (!this->DrawRays(renderer, frame, &counts))
   {
     return;
   }
+  // The GPU holds the cell records now: the host copy is freed (made again
+  // through RestoreCells if the GPU loses them).
+  this->RayMesh->ReleaseCells();
   this->LastPeelPasses = counts.Passes;
   this->LastRaysStarted = static_cast<vtkIdType>(counts.Rays);
   this->LastCellsCrossed = static_cast<vtkIdType>(counts.Cells);

@@ -52,9 +52,10 @@
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkHAVSMapperBase.h"
 
-#include <memory> // For std::unique_ptr
-#include <string> // For std::string
-#include <vector> // For std::vector
+#include <functional> // For std::function
+#include <memory>     // For std::unique_ptr
+#include <string>     // For std::string
+#include <vector>     // For std::vector
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -186,6 +187,9 @@ public:
     int TileSize = 16; ///< 0: no tiles
     int Blend = 0;     ///< the blend mode
     bool FoldReentries = true;
+    /// Makes RayMesh's cell records again when they were freed after an
+    /// upload and the GPU needs them (its buffers were released).
+    std::function<void()> RestoreCells;
   };
   /// What the graphics layer counted in one frame.
   struct RayCounts
@@ -207,6 +211,7 @@ protected:
   ~vtkHAVSRayCastMapper() override;
 
   void ResetLastFrame() override;
+  void AddMemoryParts(std::vector<vtkHAVSMemory::Part>& parts) const override;
   void MeshPrepared(int update, bool rebuilt) override;
   void RenderView(vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) override;
 

@@ -116,4 +116,17 @@ void vtkHAVSRayCastMesh::BreakNeighboursForTesting()
   }
 }
 
+//------------------------------------------------------------------------------
+void vtkHAVSRayCastMesh::ReleaseCells()
+{
+  std::vector<float>().swap(this->Cells);
+}
+
+//------------------------------------------------------------------------------
+size_t vtkHAVSRayCastMesh::GetMemoryBytes() const
+{
+  return vtkHAVSMemory::Bytes(
+    this->Cells, this->Neighbours, this->BoundaryFaces, this->BoundaryCells);
+}
+
 VTK_ABI_NAMESPACE_END

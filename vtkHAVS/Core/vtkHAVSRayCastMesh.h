@@ -36,6 +36,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkHAVSMemory.h"     // For vtkHAVSMemory::Bytes
 
 #include <cstddef> // For size_t
 #include <cstdint> // For uint32_t, int32_t
@@ -81,6 +82,13 @@ public:
    * by one face (the walk then leaves through a face into the wrong cell).
    */
   void BreakNeighboursForTesting();
+
+  /// Frees the cell records (80 bytes a tetrahedron) once the GPU holds them;
+  /// UpdateFields() makes them again. Neighbours and boundary are kept.
+  void ReleaseCells();
+
+  /// The bytes its arrays hold (vtkHAVSMemory).
+  size_t GetMemoryBytes() const;
 
 private:
   std::vector<float> Cells;

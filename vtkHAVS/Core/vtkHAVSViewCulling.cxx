@@ -145,4 +145,10 @@ void vtkHAVSViewCulling::PrintSelf(ostream& os, vtkIndent indent)
      << " s)\n";
 }
 
+//------------------------------------------------------------------------------
+size_t vtkHAVSViewCulling::GetMemoryBytes() const
+{
+  return vtkHAVSMemory::Bytes(this->Culled, this->LastPlanes);
+}
+
 VTK_ABI_NAMESPACE_END

@@ -30,6 +30,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkHAVSMemory.h"     // For vtkHAVSMemory::Bytes
 #include "vtkObject.h"
 
 #include <array>   // For std::array
@@ -69,6 +70,9 @@ public:
 
   /// True when all four points lie where dot(xyz, p) + w < 0 for `plane`.
   static bool Outside(const float* const points[4], const double plane[4]);
+
+  /// The bytes its arrays hold (vtkHAVSMemory).
+  size_t GetMemoryBytes() const;
 
 protected:
   vtkHAVSViewCulling() = default;

@@ -86,6 +86,11 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
   const std::vector<uint32_t>& tets = faces->GetTetrahedra();
   const size_t numberOfFaces = vertices.size() / 3;
   const size_t numberOfTets = tets.size() / 4;
+  if (numberOfTets > static_cast<size_t>(std::numeric_limits<int32_t>::max()))
+  {
+    vtkErrorMacro("Build: " << numberOfTets << " tetrahedra; the order holds at most 2^31 - 1.");
+    return false;
+  }
 
   // Faces by their sorted point ids.
   std::vector<std::pair<Key, uint32_t>> keys(numberOfFaces);
@@ -117,12 +122,12 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
       this->CellFaces[4 * t + j] = f;
       if (this->FaceCells[2 * f] < 0)
       {
-        this->FaceCells[2 * f] = static_cast<int64_t>(t);
+        this->FaceCells[2 * f] = static_cast<int32_t>(t);
         farPoint[2 * f] = p[j];
       }
       else
       {
-        this->FaceCells[2 * f + 1] = static_cast<int64_t>(t);
+        this->FaceCells[2 * f + 1] = static_cast<int32_t>(t);
         farPoint[2 * f + 1] = p[j];
       }
     }
@@ -483,7 +488,7 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
       skip[t] = c < cells.size() && cells[c] != 0;
     }
   }
-  auto skipped = [&](int64_t t) { return t >= 0 && !skip.empty() && skip[t] != 0; };
+  auto skipped = [&](int32_t t) { return t >= 0 && !skip.empty() && skip[t] != 0; };
 
   // Each face's back cell: the one the ray enters through it (-1: it leaves
   // the mesh there). cell 1 lies on the positive side of the plane.
@@ -579,7 +584,7 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
   {
     if (back[f] >= 0 && this->FaceCells[2 * f + 1] >= 0)
     {
-      const int64_t front =
+      const int32_t front =
         this->FaceCells[2 * f] == back[f] ? this->FaceCells[2 * f + 1] : this->FaceCells[2 * f];
       if (!skipped(front))
       {
@@ -739,6 +744,15 @@ vtkHAVSVisibilityOrder::ViewKey vtkHAVSVisibilityOrder::MakeViewKey(
     key.Height = view.Height;
   }
   return key;
+}
+
+//------------------------------------------------------------------------------
+size_t vtkHAVSVisibilityOrder::GetMemoryBytes() const
+{
+  return vtkHAVSMemory::Bytes(this->FaceCells, this->FacePlanes, this->CellFaces,
+           this->TetrahedronCells, this->Order, this->CellOrder, this->Points, this->BoundaryFaces,
+           this->BoundaryFaceVertices, this->SeamFaces, this->FoldedFaces) +
+    (this->Convexification ? this->Convexification->GetMemoryBytes() : 0);
 }
 
 VTK_ABI_NAMESPACE_END

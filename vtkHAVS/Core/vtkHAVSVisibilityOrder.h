@@ -56,6 +56,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSCoreModule.h" // For export macro
+#include "vtkHAVSMemory.h"     // For vtkHAVSMemory::Bytes
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
@@ -201,6 +202,9 @@ public:
   vtkGetMacro(NumberOfBoundaryRelations, vtkIdType);
   vtkGetMacro(LastBoundaryLayerSeconds, double);
 
+  /// The bytes its arrays hold (vtkHAVSMemory).
+  size_t GetMemoryBytes() const;
+
 protected:
   vtkHAVSVisibilityOrder();
   ~vtkHAVSVisibilityOrder() override;
@@ -213,7 +217,7 @@ private:
   void BoundaryLayerRelations(const double eye[3], const double direction[3], bool parallel,
     std::vector<std::pair<uint32_t, uint32_t>>& relations);
 
-  std::vector<int64_t> FaceCells;  // 2 per face: the tetrahedra (-1: none)
+  std::vector<int32_t> FaceCells;  // 2 per face: the tetrahedra (-1: none; at most 2^31 - 1)
   std::vector<double> FacePlanes;  // 4 per face: n, d with n.x + d > 0 on FaceCells[0]'s far side
   std::vector<uint32_t> CellFaces; // 4 per tetrahedron
   std::vector<uint32_t> TetrahedronCells;        // the grid cell id of each tetrahedron

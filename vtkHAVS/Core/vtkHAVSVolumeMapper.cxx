@@ -129,6 +129,16 @@ bool vtkHAVSVolumeMapper::CompositeKeptResult(vtkRenderer*)
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSVolumeMapper::AddMemoryParts(std::vector<vtkHAVSMemory::Part>& parts) const
+{
+  this->FaceOrder->AddMemoryParts(parts);
+  parts.push_back({ "invisible-cell skipping and culling",
+    this->Visibility->GetMemoryBytes() + this->Culling->GetMemoryBytes() });
+  parts.push_back({ "level-of-detail ranking", this->Ranking->GetMemoryBytes() });
+  parts.push_back({ "long-segment table", this->LongSegmentTable->GetMemoryBytes() });
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSVolumeMapper::ResetLastFrame()
 {
   this->LastFrame->Reset();

@@ -236,4 +236,10 @@ void vtkHAVSGLMapperResources::PrintSelf(ostream& os, vtkIndent indent)
   this->Targets->PrintSelf(os, indent.GetNextIndent());
 }
 
+//------------------------------------------------------------------------------
+size_t vtkHAVSGLMapperResources::GetMemoryBytes() const
+{
+  return vtkHAVSGLBuffer::GetLiveBytes();
+}
+
 VTK_ABI_NAMESPACE_END

@@ -97,6 +97,9 @@ public:
   void Release(vtkWindow* window) override;
   /// The targets' kept float result (vtkHAVSGLFrameTargets::GetKeptResult).
   const std::vector<float>* GetKeptResult(int size[2]) override;
+  /// Every vtkHAVSGLBuffer of the process (vtkHAVSGLBuffer::GetLiveBytes): with
+  /// one mapper, its own.
+  size_t GetMemoryBytes() const override;
 
   /**
    * The start of a cell-projection or ray-cast frame: the window prepared

@@ -12,6 +12,7 @@
 #include "vtkHAVSFramePlanes.h"
 
 #include <algorithm>
+#include <atomic>
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -36,6 +37,22 @@ GLenum BindingOf(GLenum target)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+std::atomic<size_t> LiveBufferBytes{ 0 };
+}
+
+vtkHAVSGLBuffer::~vtkHAVSGLBuffer()
+{
+  // (The GL name goes with its context; only the ledger is kept right here.)
+  LiveBufferBytes -= this->Bytes;
+}
+
+size_t vtkHAVSGLBuffer::GetLiveBytes()
+{
+  return LiveBufferBytes;
+}
+
 bool vtkHAVSGLBuffer::Update(
   GLenum target, const void* data, size_t bytes, vtkMTimeType version, GLenum usage)
 {
@@ -53,7 +70,9 @@ bool vtkHAVSGLBuffer::Update(
   GLint previous = 0;
   glGetIntegerv(BindingOf(through), &previous);
   glBindBuffer(through, this->Handle);
+  LiveBufferBytes -= this->Bytes;
   this->Bytes = std::max(bytes, MinimumBufferBytes);
+  LiveBufferBytes += this->Bytes;
   glBufferData(through, static_cast<GLsizeiptr>(this->Bytes), nullptr, usage);
   if (data && bytes > 0)
   {
@@ -92,6 +111,7 @@ void vtkHAVSGLBuffer::Release()
     glDeleteBuffers(1, &this->Handle);
   }
   this->Handle = 0;
+  LiveBufferBytes -= this->Bytes;
   this->Bytes = 0;
   this->Version = 0;
 }

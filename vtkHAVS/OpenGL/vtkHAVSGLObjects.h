@@ -44,6 +44,7 @@ class vtkHAVSGLBuffer
 {
 public:
   vtkHAVSGLBuffer() = default;
+  ~vtkHAVSGLBuffer();
   vtkHAVSGLBuffer(const vtkHAVSGLBuffer&) = delete;
   vtkHAVSGLBuffer& operator=(const vtkHAVSGLBuffer&) = delete;
 
@@ -69,6 +70,8 @@ public:
 
   GLuint GetHandle() const { return this->Handle; }
   size_t GetBytes() const { return this->Bytes; }
+  /// The bytes of every vtkHAVSGLBuffer of this process now (the memory ledger's GPU part).
+  static size_t GetLiveBytes();
   vtkMTimeType GetVersion() const { return this->Version; }
   /// Forgets the version: the next Update uploads.
   void Invalidate() { this->Version = 0; }

@@ -83,6 +83,10 @@ void vtkOpenGLHAVSCellProjectionMapper::Upload(const CellFrame& frame)
   GLObjects& gl = *this->GL;
   if (gl.PointBuffer.Update(GL_ARRAY_BUFFER, frame.Mesh->GetPoints(), frame.GeometryVersion))
   {
+    if (frame.Cells->empty() && frame.RestoreCells)
+    {
+      frame.RestoreCells(); // (freed after the last upload)
+    }
     gl.CellBuffer.Update(GL_SHADER_STORAGE_BUFFER, *frame.Cells, frame.GeometryVersion);
     gl.Cells.SetBuffers(gl.PointBuffer, &gl.IndexBuffer);
   }

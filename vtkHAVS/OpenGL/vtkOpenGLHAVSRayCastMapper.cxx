@@ -119,6 +119,10 @@ void vtkOpenGLHAVSRayCastMapper::Upload(const RayFrame& frame)
   if (gl.Points.Update(GL_ARRAY_BUFFER, frame.Mesh->GetPoints(), version))
   {
     const vtkHAVSRayCastMesh& mesh = *frame.RayMesh;
+    if (mesh.GetCells().empty() && mesh.GetNumberOfTetrahedra() > 0 && frame.RestoreCells)
+    {
+      frame.RestoreCells(); // (freed after the last upload)
+    }
     gl.Faces.Update(GL_ELEMENT_ARRAY_BUFFER, mesh.GetBoundaryFaces(), version);
     gl.FaceCells.Update(GL_SHADER_STORAGE_BUFFER, mesh.GetBoundaryCells(), version);
     gl.Cells.Update(GL_SHADER_STORAGE_BUFFER, mesh.GetCells(), version);
