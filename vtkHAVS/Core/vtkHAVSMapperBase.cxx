@@ -9,6 +9,7 @@
 =========================================================================*/
 #include "vtkHAVSMapperBase.h"
 
+#include "vtkHAVSFaceSet.h"
 #include "vtkHAVSMapperGraphics.h"
 
 #include "vtkHAVSFramePlanes.h"
@@ -230,6 +231,12 @@ bool vtkHAVSMapperBase::PrepareTable(vtkVolume* volume)
 }
 
 //------------------------------------------------------------------------------
+vtkIdType vtkHAVSMapperBase::GetNumberOfDegenerateTetrahedra()
+{
+  return this->Mesh->IsValid() ? this->Mesh->GetFaceSet()->GetNumberOfDegenerateTetrahedra() : 0;
+}
+
+//------------------------------------------------------------------------------
 std::vector<vtkHAVSMemory::Part> vtkHAVSMapperBase::GetMemoryParts() const
 {
   std::vector<vtkHAVSMemory::Part> parts;
@@ -341,6 +348,9 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastMeshUpdate: " << GetMeshUpdateName(this->LastMeshUpdate) << " ("
      << this->LastMeshSeconds << " s)\n";
   os << indent << "LastFrameAborted: " << this->LastFrameAborted << "\n";
+  os << indent << "DegenerateTetrahedra (dropped): "
+     << (this->Mesh->IsValid() ? this->Mesh->GetFaceSet()->GetNumberOfDegenerateTetrahedra() : 0)
+     << "\n";
   os << indent << "ShaderHooks: " << this->ShaderHooks.Fragment.size()
      << " fragment replacements applied, custom uniforms "
      << (this->ShaderHooks.FragmentUniforms ? "applied" : "none") << ", "

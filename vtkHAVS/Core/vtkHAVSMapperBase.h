@@ -194,6 +194,10 @@ public:
   void SetMesh(vtkHAVSMesh* mesh);
   ///@}
 
+  /// Zero-volume tetrahedra the mesh dropped (they contribute nothing; a
+  /// warning only above vtkHAVSMesh::DegenerateWarningShare of them).
+  vtkIdType GetNumberOfDegenerateTetrahedra();
+
   /// What preparing the mesh did in the last frame.
   enum MeshUpdates
   {

@@ -678,11 +678,14 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   {
     this->Warnings.push_back(InvalidCellsWarning(this->Faces->GetNumberOfInvalidCells()));
   }
-  if (this->Faces->GetNumberOfDegenerateTetrahedra() > 0)
+  const vtkIdType degenerate = this->Faces->GetNumberOfDegenerateTetrahedra();
+  if (degenerate >
+    DegenerateWarningShare * static_cast<double>(degenerate + this->Faces->GetNumberOfTetrahedra()))
   {
     std::ostringstream w;
-    w << this->Faces->GetNumberOfDegenerateTetrahedra()
-      << " degenerate (zero-volume) tetrahedra were dropped.";
+    w << degenerate << " of " << degenerate + this->Faces->GetNumberOfTetrahedra()
+      << " tetrahedra are degenerate (zero-volume) and were dropped: more than "
+      << 100.0 * DegenerateWarningShare << " %, the mesh may be broken.";
     this->Warnings.push_back(w.str());
   }
   if (this->Faces->GetNumberOfDuplicateTetrahedra() > 0)
