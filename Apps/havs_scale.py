@@ -1,0 +1,274 @@
+# Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+"""havs_scale: the benchmark's scale section (issue 43).
+
+    python3 Apps/havs_scale.py [--build build] [--output-dir Documentation]
+                               [--sizes 1,5,10,25,50] [--mappers havs,tetraycast,cellproj,pt]
+                               [--size 512] [--memory-limit-gb G]
+
+For each size (millions of tetrahedra: a block of n^3 cubes, 5 tetrahedra each,
+vtkHAVSDataSets::MakeGenerated, the field sin(6x) cos(5y) + z) and each mapper,
+side by side, one child process each (peak memory only grows): the first image
+(the mesh, the orders, the table, the uploads, the shaders) and a new view
+(the median of three 30-degree turns), each ended by a read-back of the window;
+the memory beyond the loaded grid (the grid's resident size after malloc_trim
+is the base; the process's peak resident size is reset there through
+/proc/self/clear_refs): the peak during the two, and what is kept after them;
+and, for the project's mappers, their memory ledger (vtkHAVSMapperBase::
+GetMemoryParts: the mesh, the orders, the records, the GPU buffers; on llvmpipe
+the GPU buffers live in host memory, as does the rasterizer's own memory,
+which the ledger does not see). A configuration whose memory, extrapolated
+from the same mapper's bytes per tetrahedron at the largest size measured
+before, would not fit in the memory limit (default: MemAvailable less 2 GB)
+is not run; its row says so.
+
+Writes scale.csv, scale.md (the table) and, with matplotlib, scale.png (time
+and memory against size) in the output directory. Every row says the SMP
+backend (STDThread) and the renderer.
+"""
+import argparse
+import csv
+import ctypes
+import json
+import os
+import re
+import subprocess
+import sys
+import time
+
+MAPPERS = {
+    'havs': 'vtkHAVSVolumeMapper (defaults)',
+    'tetraycast': 'vtkHAVSRayCastMapper',
+    'cellproj': 'vtkHAVSCellProjectionMapper',
+    'pt': "VTK's vtkProjectedTetrahedraMapper",
+}
+
+
+def cubes_for(millions):
+    """Cubes per side for about `millions` million tetrahedra (5 per cube)."""
+    return max(2, round((millions * 1e6 / 5.0) ** (1.0 / 3.0)))
+
+
+def status_mb(key):
+    with open('/proc/self/status') as f:
+        for line in f:
+            if line.startswith(key):
+                return int(line.split()[1]) / 1024.0
+    return float('nan')
+
+
+def worker(mapper_name, cubes, size):
+    """One configuration; prints one JSON line."""
+    import vtkhavs
+    from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+    from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkVolume,
+                                             vtkVolumeProperty)
+    from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLProjectedTetrahedraMapper
+
+    trim = ctypes.CDLL('libc.so.6').malloc_trim
+    grid = vtkhavs.vtkHAVSDataSets.MakeGenerated(cubes)
+    tets = grid.GetNumberOfCells()
+    trim(0)
+    base = status_mb('VmRSS:')
+    with open('/proc/self/clear_refs', 'w') as f:
+        f.write('5')  # the peak resident size from here
+    make = {'havs': vtkhavs.vtkHAVSVolumeMapper, 'tetraycast': vtkhavs.vtkHAVSRayCastMapper,
+            'cellproj': vtkhavs.vtkHAVSCellProjectionMapper,
+            'pt': vtkOpenGLProjectedTetrahedraMapper}[mapper_name]
+    mapper = make()
+    mapper.SetInputData(grid)
+    lo, hi = grid.GetPointData().GetScalars().GetRange()
+    color = vtkColorTransferFunction()
+    color.AddRGBPoint(lo, 0.2, 0.3, 1.0)
+    color.AddRGBPoint(hi, 1.0, 0.4, 0.1)
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(lo, 0.0)
+    opacity.AddPoint(hi, 0.8)
+    prop = vtkVolumeProperty()
+    prop.SetColor(color)
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(grid.GetLength() / 40.0)
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    window = vtkhavs.vtkHAVSRenderWindowFactory.CreateRenderWindow()
+    window.SetSize(size, size)
+    renderer = vtkRenderer()
+    window.AddRenderer(renderer)
+    renderer.AddVolume(volume)
+    camera = renderer.GetActiveCamera()
+    renderer.ResetCamera()
+    camera.Azimuth(20)
+    camera.Elevation(15)
+    renderer.ResetCameraClippingRange()
+
+    def frame():
+        t0 = time.time()
+        window.Render()
+        window.GetRGBACharPixelData(0, 0, 0, 0, 0)  # (waits for the frame)
+        return time.time() - t0
+
+    first = frame()
+    views = []
+    for _ in range(3):
+        camera.Azimuth(30)
+        renderer.ResetCameraClippingRange()
+        views.append(frame())
+    views.sort()
+    peak = status_mb('VmHWM:')
+    trim(0)
+    kept = status_mb('VmRSS:')
+    row = {'mapper': mapper_name, 'tets': tets, 'size': size, 'first_s': first,
+           'view_s': views[1], 'grid_mb': base, 'peak_mb': peak - base, 'kept_mb': kept - base,
+           'renderer': vtkhavs.vtkHAVSRenderWindowFactory.GetBackendName(window),
+           'smp': os.environ.get('VTK_SMP_BACKEND_IN_USE', 'Sequential')}
+    if hasattr(mapper, 'GetMemoryBytes'):
+        row['ledger_mb'] = mapper.GetMemoryBytes() / 1048576.0
+        text = str(mapper)
+        line = [l for l in text.split('\n') if l.strip().startswith('Memory:')]
+        row['ledger'] = {name: int(b) for name, b in
+                         re.findall(r' (.+?) (\d+) B;', line[0].strip()[len('Memory:'):])} \
+            if line else {}
+    print('HAVS_SCALE ' + json.dumps(row), flush=True)
+
+
+def available_gb():
+    with open('/proc/meminfo') as f:
+        for line in f:
+            if line.startswith('MemAvailable:'):
+                return int(line.split()[1]) / 1048576.0
+    return 0.0
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    p.add_argument('--build', default='build')
+    p.add_argument('--output-dir', default='Documentation')
+    p.add_argument('--sizes', default='1,5,10,25,50')
+    p.add_argument('--mappers', default='havs,tetraycast,cellproj,pt')
+    p.add_argument('--size', type=int, default=512)
+    p.add_argument('--memory-limit-gb', type=float, default=0.0)
+    p.add_argument('--worker', nargs=3, metavar=('MAPPER', 'CUBES', 'SIZE'))
+    a = p.parse_args()
+    if a.worker:
+        worker(a.worker[0], int(a.worker[1]), int(a.worker[2]))
+        return 0
+
+    build = os.path.abspath(a.build)
+    env = dict(os.environ)
+    pythonpath = [os.path.join(build, 'lib', d, 'dist-packages')
+                  for d in os.listdir(os.path.join(build, 'lib')) if d.startswith('python3')]
+    env['PYTHONPATH'] = os.pathsep.join(pythonpath + [env.get('PYTHONPATH', '')])
+    env['LD_LIBRARY_PATH'] = os.path.join(build, 'lib')
+    env['VTK_SMP_BACKEND_IN_USE'] = 'STDThread'
+    fix = [f for f in os.listdir(os.path.join(build, 'lib')) if f.startswith('libvtkHAVSExpatFix')]
+    if fix:
+        env['LD_PRELOAD'] = os.path.join(build, 'lib', fix[0])
+    limit = a.memory_limit_gb or max(1.0, available_gb() - 2.0)
+    os.makedirs(a.output_dir, exist_ok=True)
+    rows = []
+    per_tet = {}  # mapper -> bytes a tetrahedron (peak + grid) at the largest size run
+    for millions in [float(s) for s in a.sizes.split(',')]:
+        cubes = cubes_for(millions)
+        tets = 5 * cubes ** 3
+        for m in a.mappers.split(','):
+            if m in per_tet and per_tet[m] * tets / 2 ** 30 > limit:
+                rows.append({'mapper': m, 'tets': tets, 'size': a.size,
+                             'skipped': 'needs about %.1f GB (from %.0f B a tetrahedron '
+                                        'measured at a smaller size), the limit is %.1f GB'
+                                        % (per_tet[m] * tets / 2 ** 30, per_tet[m], limit)})
+                print('%s %d: %s' % (m, tets, rows[-1]['skipped']), flush=True)
+                continue
+            t0 = time.time()
+            r = subprocess.run([sys.executable, os.path.abspath(__file__), '--worker', m,
+                                str(cubes), str(a.size)], env=env, capture_output=True, text=True)
+            line = [l for l in r.stdout.split('\n') if l.startswith('HAVS_SCALE ')]
+            if r.returncode != 0 or not line:
+                rows.append({'mapper': m, 'tets': tets, 'size': a.size,
+                             'skipped': 'failed (exit %d): %s' % (r.returncode,
+                                                                 r.stderr.strip()[-300:])})
+                print('%s %d: %s' % (m, tets, rows[-1]['skipped']), flush=True)
+                continue
+            row = json.loads(line[0][len('HAVS_SCALE '):])
+            rows.append(row)
+            per_tet[m] = (row['peak_mb'] + row['grid_mb']) * 2 ** 20 / row['tets']
+            print('%-10s %11d tets: first %6.2f s, new view %6.2f s, peak %6.0f B/tet, kept %6.0f '
+                  'B/tet (%.0f s)' % (m, row['tets'], row['first_s'], row['view_s'],
+                                       row['peak_mb'] * 2 ** 20 / row['tets'],
+                                       row['kept_mb'] * 2 ** 20 / row['tets'], time.time() - t0),
+                  flush=True)
+    write(rows, a.output_dir)
+    return 0
+
+
+def write(rows, out):
+    keys = ['mapper', 'tets', 'size', 'first_s', 'view_s', 'grid_mb', 'peak_mb', 'kept_mb',
+            'ledger_mb', 'renderer', 'smp', 'skipped', 'ledger']
+    with open(os.path.join(out, 'scale.csv'), 'w', newline='') as f:
+        w = csv.writer(f)
+        w.writerow(keys)
+        for r in rows:
+            w.writerow([json.dumps(r[k]) if k == 'ledger' and k in r else r.get(k, '')
+                        for k in keys])
+    lines = ['| tets | mapper | first image s | new view s | first / view | peak B/tet | '
+             'kept B/tet | ledger B/tet |', '|---|---|---|---|---|---|---|---|']
+    for r in rows:
+        name = MAPPERS.get(r['mapper'], r['mapper'])
+        if 'skipped' in r:
+            lines.append('| %s | %s | not run: %s |||||||' % (format(r['tets'], ','), name,
+                                                           r['skipped']))
+            continue
+        per = 2 ** 20 / r['tets']
+        lines.append('| %s | %s | %.2f | %.2f | %.1f | %.0f | %.0f | %s |' % (
+            format(r['tets'], ','), name, r['first_s'], r['view_s'], r['first_s'] / r['view_s'],
+            r['peak_mb'] * per, r['kept_mb'] * per,
+            '%.0f' % (r['ledger_mb'] * per) if 'ledger_mb' in r else '-'))
+    parts = ['', 'The ledgers at the largest size run (bytes a tetrahedron):', '']
+    largest = {}
+    for r in rows:
+        if 'ledger' in r:
+            largest[r['mapper']] = r
+    for m, r in largest.items():
+        parts.append('- %s, %s tets: %s' % (MAPPERS[m], format(r['tets'], ','), '; '.join(
+            '%s %.0f' % (k, v / r['tets']) for k, v in r['ledger'].items() if v > 0)))
+    smp = sorted({r.get('smp', '') for r in rows if 'smp' in r})
+    renderer = sorted({r.get('renderer', '') for r in rows if 'renderer' in r})
+    head = ['# Scale: time and memory against mesh size', '',
+            'Made by `python3 Apps/havs_scale.py` (%s; vtkSMPTools %s; window %s, %d^2). Memory '
+            'is beyond the loaded grid: the peak resident size during the first image and the '
+            'new views, and what is kept after them (after malloc_trim); the ledger is what the '
+            "mapper's own arrays and GPU buffers hold (on llvmpipe the rasterizer's memory is in "
+            'the process too, outside the ledger).' % (time.strftime('%Y-%m-%d'),
+                                                       ', '.join(smp), ', '.join(renderer),
+                                                       rows[0]['size'] if rows else 0), '']
+    with open(os.path.join(out, 'scale.md'), 'w') as f:
+        f.write('\n'.join(head + lines + parts) + '\n')
+    try:
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print('havs_scale: matplotlib is not installed: no scale.png')
+        return
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.5))
+    for m in MAPPERS:
+        rs = [r for r in rows if r['mapper'] == m and 'skipped' not in r]
+        if not rs:
+            continue
+        x = [r['tets'] / 1e6 for r in rs]
+        axes[0].plot(x, [r['first_s'] for r in rs], 'o-', label=MAPPERS[m])
+        axes[1].plot(x, [r['view_s'] for r in rs], 'o-', label=MAPPERS[m])
+        axes[2].plot(x, [r['peak_mb'] * 2 ** 20 / r['tets'] for r in rs], 'o-', label=MAPPERS[m])
+    for ax, title in zip(axes, ['first image (s)', 'new view (s)', 'peak bytes a tetrahedron']):
+        ax.set_xlabel('million tetrahedra')
+        ax.set_title(title)
+        ax.set_xscale('log')
+        ax.grid(True, alpha=0.3)
+    axes[0].set_yscale('log')
+    axes[1].set_yscale('log')
+    axes[2].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, 'scale.png'), dpi=90)
+
+
+if __name__ == '__main__':
+    sys.exit(main())
