@@ -211,13 +211,9 @@ void vtkHAVSGLMapperResources::Release(vtkWindow* window)
   }
   vtkOpenGLRenderWindow* home = this->Window;
   home->MakeCurrent();
-  if (this->ReleaseOwn)
-  {
-    this->ReleaseOwn(home);
-  }
   if (this->Owned)
   {
-    this->Owned->Release();
+    this->Owned->Release(home);
   }
   this->Section->Release();
   this->SectionTriangles = 0;

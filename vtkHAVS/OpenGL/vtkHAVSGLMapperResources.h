@@ -18,8 +18,8 @@
  * resources with it), the pre-integration table on the GPU
  * (vtkHAVSGLTable, uploaded when its version changes) and the frame's
  * targets (vtkHAVSGLFrameTargets: the result, the opaque depth, the kept
- * result). The mapper's own GPU objects are released through the callback
- * given to SetReleaseCallback, with the context current.
+ * result). The mapper's own GPU objects (a vtkHAVSGLOwnObjects given to
+ * Own) are released with them, with the context current.
  *
  * The cell projection and the ray caster also share here the frame's frame:
  * BeginFrame (targets at the view's size, the opaque depth), the textures
@@ -54,8 +54,8 @@ class vtkWindow;
 struct vtkHAVSGLOwnObjects
 {
   virtual ~vtkHAVSGLOwnObjects() = default;
-  /// Releases every GL name they hold (called with the context current).
-  virtual void Release() = 0;
+  /// Releases every GL name they hold in `window` (its context current).
+  virtual void Release(vtkOpenGLRenderWindow* window) = 0;
 };
 
 class vtkHAVSGLMapperResources : public vtkHAVSMapperGraphics
@@ -76,12 +76,6 @@ public:
     Objects* own = objects.get();
     this->Owned = std::move(objects);
     return own;
-  }
-
-  /// What releases the mapper's own GPU objects (called with the context current).
-  void SetReleaseCallback(std::function<void(vtkOpenGLRenderWindow*)> release)
-  {
-    this->ReleaseOwn = std::move(release);
   }
 
   /**
@@ -154,7 +148,6 @@ private:
   unsigned long WindowDeleteObserver = 0;
   vtkNew<vtkHAVSGLTable> Table;
   vtkNew<vtkHAVSGLFrameTargets> Targets;
-  std::function<void(vtkOpenGLRenderWindow*)> ReleaseOwn;
   std::unique_ptr<vtkHAVSGLOwnObjects> Owned;
   std::unique_ptr<vtkHAVSGLSection> Section; // the near plane's section (cell projection, rays)
   int SectionTriangles = 0;

@@ -56,7 +56,7 @@ struct vtkOpenGLHAVSCellProjectionMapper::GLObjects : vtkHAVSGLOwnObjects
   vtkHAVSGLBuffer OrderBuffer;
   size_t UploadedCells = 0; // tetrahedra in the index buffer (12 indices each)
 
-  void Release() override
+  void Release(vtkOpenGLRenderWindow*) override
   {
     for (vtkHAVSGLBuffer* b :
       { &this->PointBuffer, &this->IndexBuffer, &this->CellBuffer, &this->OrderBuffer })

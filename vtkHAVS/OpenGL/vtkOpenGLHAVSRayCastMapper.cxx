@@ -84,7 +84,7 @@ struct vtkOpenGLHAVSRayCastMapper::GLObjects : vtkHAVSGLOwnObjects
   int BoundaryFaces = 0;
   int Tetrahedra = 0;
 
-  void Release() override
+  void Release(vtkOpenGLRenderWindow*) override
   {
     for (vtkHAVSGLBuffer* b : { &this->Points, &this->Faces, &this->FaceCells, &this->Cells,
            &this->Neighbours, &this->Counts, &this->TilePasses, &this->PeelTiles })

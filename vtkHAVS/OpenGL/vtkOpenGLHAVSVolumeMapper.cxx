@@ -62,17 +62,24 @@ struct KeepLoaded
 }
 
 //------------------------------------------------------------------------------
+/// The mapper's own GPU objects, released with the resources (its mesh and k-buffers).
+struct vtkOpenGLHAVSVolumeMapper::GLObjects : vtkHAVSGLOwnObjects
+{
+  vtkOpenGLHAVSVolumeMapper* Self = nullptr;
+  void Release(vtkOpenGLRenderWindow* window) override
+  {
+    this->Self->GLMesh->ReleaseGraphicsResources(window);
+    this->Self->FetchKBuffer->ReleaseGraphicsResources(window);
+    this->Self->InterlockKBuffer->ReleaseGraphicsResources(window);
+    this->Self->ListKBuffer->ReleaseGraphicsResources(window);
+  }
+};
+
+//------------------------------------------------------------------------------
 vtkOpenGLHAVSVolumeMapper::vtkOpenGLHAVSVolumeMapper()
 {
+  this->Resources->Own(std::make_unique<GLObjects>())->Self = this;
   this->SetGraphics(this->Resources);
-  this->Resources->SetReleaseCallback(
-    [this](vtkOpenGLRenderWindow* home)
-    {
-      this->GLMesh->ReleaseGraphicsResources(home);
-      this->FetchKBuffer->ReleaseGraphicsResources(home);
-      this->InterlockKBuffer->ReleaseGraphicsResources(home);
-      this->ListKBuffer->ReleaseGraphicsResources(home);
-    });
 }
 
 vtkOpenGLHAVSVolumeMapper::~vtkOpenGLHAVSVolumeMapper()

@@ -94,6 +94,7 @@ private:
   vtkHAVSKBuffer* GetKBuffer(int path);
 
   vtkNew<vtkHAVSGLMapperResources> Resources; // the window, the table, the targets
+  struct GLObjects;                           // releases the mesh and k-buffers below
   vtkNew<vtkHAVSGLMesh> GLMesh;
   vtkNew<vtkHAVSFramebufferFetchKBuffer> FetchKBuffer;
   vtkNew<vtkHAVSInterlockKBuffer> InterlockKBuffer;
