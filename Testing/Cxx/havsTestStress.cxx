@@ -330,8 +330,14 @@ const std::vector<float>& PairReferences::Get(
 Pair RenderWithReference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, bool cells,
   PairReferences& references, double azimuth, double elevation)
 {
+  return RenderWithReference(grid, property, MakeMapper(cells), references, azimuth, elevation);
+}
+
+Pair RenderWithReference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
+  vtkUnstructuredGridVolumeMapper* mapper, PairReferences& references, double azimuth,
+  double elevation)
+{
   const int size = kPairSize;
-  auto mapper = MakeMapper(cells);
   havstest::Messages* messages = havstest::CountMessages(mapper);
   auto s = havstest::MakeScene(OnPath(grid), mapper, property, size, size);
   havstest::PlaceCamera(s.Renderer, azimuth, elevation, false);

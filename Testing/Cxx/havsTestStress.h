@@ -26,7 +26,8 @@
  *
  * Used by TestHAVSScaledCoordinates, TestHAVSTranslatedCoordinates,
  * TestHAVSWindowResize, TestHAVSExtremeScalars, TestHAVSBadCells,
- * TestHAVSDegenerateViews, TestHAVSElongatedMesh and TestHAVSStockMappersStress
+ * TestHAVSDegenerateViews, TestHAVSElongatedMesh, TestHAVSNearDegenerate and
+ * TestHAVSStockMappersStress
  * (the ctest entries TestHAVSStress.*).
  */
 #ifndef havsTestStress_h
@@ -191,6 +192,11 @@ struct Pair
 /// messages and the camera (for the controls' references).
 Pair RenderWithReference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, bool cells,
   PairReferences& references, double azimuth = 30.0, double elevation = 20.0);
+
+/// The same through a given mapper (its float result kept: KeepFloatResultOn).
+Pair RenderWithReference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
+  vtkUnstructuredGridVolumeMapper* mapper, PairReferences& references, double azimuth = 30.0,
+  double elevation = 20.0);
 
 /// `grid` with the point scalars f(point id, scalar) (a double array).
 vtkSmartPointer<vtkUnstructuredGrid> WithScalars(

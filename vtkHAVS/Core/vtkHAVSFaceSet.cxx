@@ -64,7 +64,11 @@ struct CellCounts
   vtkIdType Degenerate = 0;
   vtkIdType Invalid = 0;
   vtkIdType Ghost = 0;
+  vtkIdType Thin = 0; ///< of Degenerate: thinner than the relative bound (DropThinCells)
   double LongestEdgeSquared = 0.0;
+  double Bounds[6] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),
+    std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),
+    std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest() };
 };
 
 /// One face of a used tetrahedron, filed under its smallest point id: the two
@@ -137,15 +141,16 @@ void SortedFace(const uint32_t* ids, int face, uint32_t out[4])
   out[3] = ids[local[3]];
 }
 
-/// ((x1 - x0) x (x2 - x0)) . (x3 - x0): six times the signed volume of the
-/// tetrahedron x0 x1 x2 x3, positive when x3 lies on the side the normal of
-/// the triangle x0 x1 x2 points to.
+/// |x1 - x0|.
 double EdgeLength(const double* x0, const double* x1)
 {
   const double d[3] = { x1[0] - x0[0], x1[1] - x0[1], x1[2] - x0[2] };
   return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
+/// ((x1 - x0) x (x2 - x0)) . (x3 - x0): six times the signed volume of the
+/// tetrahedron x0 x1 x2 x3, positive when x3 lies on the side the normal of
+/// the triangle x0 x1 x2 points to.
 double TripleProduct(const double* x0, const double* x1, const double* x2, const double* x3)
 {
   double a[3], b[3], d[3];
@@ -229,15 +234,6 @@ struct ReadCells
             ++local.Invalid;
             continue;
           }
-          double longestSquared = 0.0;
-          for (int i = 0; i < 4; ++i)
-          {
-            for (int j = i + 1; j < 4; ++j)
-            {
-              const double d[3] = { x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2] };
-              longestSquared = std::max(longestSquared, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            }
-          }
           const double sixVolume = TripleProduct(x[0], x[1], x[2], x[3]);
           const double rounding = 16.0 * std::numeric_limits<double>::epsilon() *
             EdgeLength(x[0], x[1]) * EdgeLength(x[0], x[2]) * EdgeLength(x[0], x[3]);
@@ -252,11 +248,85 @@ struct ReadCells
           }
           table.Status[cell] = UsedTetrahedron;
           ++local.Used;
-          local.LongestEdgeSquared = std::max(local.LongestEdgeSquared, longestSquared);
+          for (int i = 0; i < 4; ++i)
+          {
+            for (int k = 0; k < 3; ++k)
+            {
+              local.Bounds[2 * k] = std::min(local.Bounds[2 * k], x[i][k]);
+              local.Bounds[2 * k + 1] = std::max(local.Bounds[2 * k + 1], x[i][k]);
+            }
+          }
         }
       });
   }
 };
+
+/// The second look at the used tetrahedra, once the used cells' bounds are
+/// known: a tetrahedron whose smallest height (|6 V| over |n|, n the cross
+/// product of its largest face) is at most `relative` times the mesh's extent
+/// along n (sum over the axes of |n_k| / |n| times the bounds' extent: what the
+/// float coordinates, shifted by the bounds' centre, resolve in that
+/// direction) is dropped as degenerate (counted in Thin too). Also the longest
+/// edge of the tetrahedra kept.
+void DropThinCells(CellTable& table, const double* coordinates, double relative,
+  const double extent[3], vtkSMPThreadLocal<CellCounts>& counts)
+{
+  const vtkIdType numberOfCells = static_cast<vtkIdType>(table.Status.size());
+  vtkSMPTools::For(0, numberOfCells,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      CellCounts& local = counts.Local();
+      for (vtkIdType cell = begin; cell < end; ++cell)
+      {
+        if (table.Status[cell] != UsedTetrahedron)
+        {
+          continue;
+        }
+        const uint32_t* ids = &table.PointIds[4 * cell];
+        const double* x[4];
+        for (int i = 0; i < 4; ++i)
+        {
+          x[i] = coordinates + 3 * static_cast<size_t>(ids[i]);
+        }
+        double longestSquared = 0.0;
+        for (int i = 0; i < 4; ++i)
+        {
+          for (int j = i + 1; j < 4; ++j)
+          {
+            const double d[3] = { x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2] };
+            longestSquared = std::max(longestSquared, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+          }
+        }
+        double largestDoubleArea = 0.0;
+        double alongNormal = 0.0; // sum |n_k| extent_k of the largest face's n
+        for (const int* face : TetrahedronFaces)
+        {
+          const double* p = x[face[0]];
+          const double* q = x[face[1]];
+          const double* r = x[face[2]];
+          const double a[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+          const double b[3] = { r[0] - p[0], r[1] - p[1], r[2] - p[2] };
+          const double n[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0] };
+          const double doubleArea = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+          if (doubleArea > largestDoubleArea)
+          {
+            largestDoubleArea = doubleArea;
+            alongNormal = std::fabs(n[0]) * extent[0] + std::fabs(n[1]) * extent[1] +
+              std::fabs(n[2]) * extent[2];
+          }
+        }
+        const double sixVolume = std::fabs(TripleProduct(x[0], x[1], x[2], x[3]));
+        if (sixVolume <= relative * alongNormal)
+        {
+          table.Status[cell] = DegenerateTetrahedron;
+          ++local.Thin;
+          continue;
+        }
+        local.LongestEdgeSquared = std::max(local.LongestEdgeSquared, longestSquared);
+      }
+    });
+}
 
 /// Files the four faces of every used tetrahedron under their smallest point id
 /// (a counting sort: count per bucket, prefix sum, scatter).
@@ -387,9 +457,8 @@ vtkIdType MarkDuplicateCells(CellTable& table)
 /// boundary flag, centroid minus `origin`, and the cells on either side (the
 /// one the winding's normal points into first). The arrays are already sized.
 void WriteFaces(const FaceUseBuckets& buckets, const std::vector<vtkIdType>& faceStart,
-  const std::vector<double>& coordinates, const double origin[3], std::vector<uint32_t>& vertices,
-  std::vector<uint8_t>& boundaryFlags, std::vector<float>& centroids,
-  std::vector<uint32_t>& faceCells)
+  const std::vector<double>& coordinates, std::vector<uint32_t>& vertices,
+  std::vector<uint8_t>& boundaryFlags, std::vector<uint32_t>& faceCells)
 {
   const vtkIdType numberOfBuckets = static_cast<vtkIdType>(buckets.Start.size()) - 1;
   auto point = [&](uint32_t id) { return &coordinates[3 * static_cast<size_t>(id)]; };
@@ -430,8 +499,6 @@ void WriteFaces(const FaceUseBuckets& buckets, const std::vector<vtkIdType>& fac
           for (int k = 0; k < 3; ++k)
           {
             vertices[3 * face + k] = ids[k];
-            centroids[3 * face + k] = static_cast<float>(
-              (point(ids[0])[k] + point(ids[1])[k] + point(ids[2])[k]) / 3.0 - origin[k]);
           }
           run = runEnd;
         }
@@ -553,15 +620,52 @@ void vtkHAVSFaceSet::Clear()
   this->TetrahedronCells.clear();
   this->BoundaryFlags.clear();
   this->Centroids.clear();
+  this->BuiltPoints = nullptr;
   this->NumberOfBoundaryFaces = 0;
   this->NumberOfNonManifoldFaces = 0;
   this->NumberOfTetrahedra = 0;
   this->NumberOfSkippedCells = 0;
   this->NumberOfDegenerateTetrahedra = 0;
+  this->NumberOfThinTetrahedra = 0;
   this->NumberOfInvalidCells = 0;
   this->NumberOfDuplicateTetrahedra = 0;
   this->LongestEdge = 0.0;
   std::fill(this->CentroidOrigin, this->CentroidOrigin + 3, 0.0);
+}
+
+//------------------------------------------------------------------------------
+const std::vector<float>& vtkHAVSFaceSet::GetCentroids() const
+{
+  const size_t numberOfFaces = this->FaceVertices.size() / 3;
+  if (this->Centroids.size() == 3 * numberOfFaces || !this->BuiltPoints)
+  {
+    return this->Centroids;
+  }
+  // In double from the points, in the faces' vertex order, then relative to
+  // the origin in float.
+  const std::vector<double> coordinates = CopyCoordinates(this->BuiltPoints);
+  this->Centroids.resize(3 * numberOfFaces);
+  const uint32_t* vertices = this->FaceVertices.data();
+  const double* origin = this->CentroidOrigin;
+  float* centroids = this->Centroids.data();
+  vtkSMPTools::For(0, static_cast<vtkIdType>(numberOfFaces),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        const double* p[3];
+        for (int v = 0; v < 3; ++v)
+        {
+          p[v] = &coordinates[3 * static_cast<size_t>(vertices[3 * f + v])];
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          centroids[3 * f + k] =
+            static_cast<float>((p[0][k] + p[1][k] + p[2][k]) / 3.0 - origin[k]);
+        }
+      }
+    });
+  return this->Centroids;
 }
 
 //------------------------------------------------------------------------------
@@ -614,11 +718,31 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
       cells.Degenerate += local.Degenerate;
       cells.Invalid += local.Invalid;
       cells.Ghost += local.Ghost;
-      cells.LongestEdgeSquared = std::max(cells.LongestEdgeSquared, local.LongestEdgeSquared);
+      for (int k = 0; k < 3; ++k)
+      {
+        cells.Bounds[2 * k] = std::min(cells.Bounds[2 * k], local.Bounds[2 * k]);
+        cells.Bounds[2 * k + 1] = std::max(cells.Bounds[2 * k + 1], local.Bounds[2 * k + 1]);
+      }
+    }
+    if (cells.Used > 0)
+    {
+      // Cells too thin for the float coordinates the GPU draws with.
+      const double extent[3] = { cells.Bounds[1] - cells.Bounds[0],
+        cells.Bounds[3] - cells.Bounds[2], cells.Bounds[5] - cells.Bounds[4] };
+      vtkSMPThreadLocal<CellCounts> thin;
+      DropThinCells(table, coordinates.data(), this->MinimumRelativeThickness, extent, thin);
+      for (const CellCounts& local : thin)
+      {
+        cells.Thin += local.Thin;
+        cells.LongestEdgeSquared = std::max(cells.LongestEdgeSquared, local.LongestEdgeSquared);
+      }
+      cells.Used -= cells.Thin;
+      cells.Degenerate += cells.Thin;
     }
   }
   this->NumberOfSkippedCells = cells.Skipped;
   this->NumberOfDegenerateTetrahedra = cells.Degenerate;
+  this->NumberOfThinTetrahedra = cells.Thin;
   this->NumberOfInvalidCells = cells.Invalid;
   this->NumberOfGhostCells = cells.Ghost;
   if (cells.Used == 0)
@@ -650,7 +774,6 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
   const size_t numberOfFaces = static_cast<size_t>(faceStart.back());
   this->FaceVertices.resize(3 * numberOfFaces);
   this->BoundaryFlags.resize(numberOfFaces);
-  this->Centroids.resize(3 * numberOfFaces);
   this->FaceCells.resize(2 * numberOfFaces);
 
   double bounds[6];
@@ -660,8 +783,9 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
     this->CentroidOrigin[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
   }
 
-  WriteFaces(buckets, faceStart, coordinates, this->CentroidOrigin, this->FaceVertices,
-    this->BoundaryFlags, this->Centroids, this->FaceCells);
+  WriteFaces(
+    buckets, faceStart, coordinates, this->FaceVertices, this->BoundaryFlags, this->FaceCells);
+  this->BuiltPoints = points;
 
   this->Tetrahedra.reserve(4 * static_cast<size_t>(cells.Used));
   this->TetrahedronCells.reserve(static_cast<size_t>(cells.Used));
@@ -702,7 +826,9 @@ void vtkHAVSFaceSet::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
   os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
   os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";
-  os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
+  os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra
+     << " (thinner than the bound: " << this->NumberOfThinTetrahedra << ")\n";
+  os << indent << "MinimumRelativeThickness: " << this->MinimumRelativeThickness << "\n";
   os << indent << "NumberOfInvalidCells: " << this->NumberOfInvalidCells << "\n";
   os << indent << "NumberOfDuplicateTetrahedra: " << this->NumberOfDuplicateTetrahedra << "\n";
   os << indent << "LongestEdge: " << this->LongestEdge << "\n";

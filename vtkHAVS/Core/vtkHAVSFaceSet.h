@@ -40,13 +40,15 @@
 #include "vtkHAVSCoreModule.h" // For export macro
 #include "vtkHAVSMemory.h"     // For vtkHAVSMemory::Bytes
 #include "vtkObject.h"
-#include "vtkTimeStamp.h" // For BuildTime
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+#include "vtkTimeStamp.h"    // For BuildTime
 
 #include <cstdint> // For uint32_t
 #include <vector>  // For std::vector
 
 VTK_ABI_NAMESPACE_BEGIN
 
+class vtkPoints;
 class vtkUnstructuredGrid;
 
 class VTKHAVSCORE_EXPORT vtkHAVSFaceSet : public vtkObject
@@ -55,6 +57,30 @@ public:
   static vtkHAVSFaceSet* New();
   vtkTypeMacro(vtkHAVSFaceSet, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The relative bound below which a tetrahedron is dropped as degenerate: its
+   * smallest height (the distance of a point to the opposite face, along that
+   * face's normal n) at most this share of the mesh's extent along n (the sum
+   * over the axes of |n_k| times the used tetrahedra's bounding-box extent:
+   * what float coordinates resolve in that direction, so that a mesh 1e6
+   * times longer than wide keeps its cells). Default
+   * DefaultMinimumRelativeThickness, 2^-20 (about 9.5e-7: 8 units in the last
+   * place of a float; the GPU draws with float coordinates and depths and
+   * cannot tell such a cell's faces apart). Such a cell adds at most its
+   * thickness times the largest extinction over |cos| of the ray's angle to
+   * its faces; in bulk (thousands of mutually intersecting slivers, as a
+   * broken mesher writes) it would otherwise break the order its faces are
+   * drawn in. The real data sets' thinnest cells are over 1.8e-5 of their
+   * diagonal (loxpost; the blunt fin 2.5e-5): none is dropped. 0 keeps every
+   * cell of non-zero volume (the rounding rule of double alone). Read by
+   * Build().
+   */
+  static constexpr double DefaultMinimumRelativeThickness = 9.5367431640625e-07;
+  vtkSetClampMacro(MinimumRelativeThickness, double, 0.0, 1.0);
+  vtkGetMacro(MinimumRelativeThickness, double);
+  ///@}
 
   /**
    * Extracts the faces. Returns false, with an error, for a null grid, a grid
@@ -75,6 +101,9 @@ public:
   vtkGetMacro(NumberOfTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfSkippedCells, vtkIdType);
   vtkGetMacro(NumberOfDegenerateTetrahedra, vtkIdType);
+  /// Of the degenerate tetrahedra, those of non-zero volume thinner than
+  /// MinimumRelativeThickness.
+  vtkGetMacro(NumberOfThinTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfDuplicateTetrahedra, vtkIdType);
   /// Cells with a point id out of range (< 0 or >= the number of points, as a
   /// corrupt file gives): skipped, their points never read.
@@ -91,9 +120,11 @@ public:
    * Three floats per face: the centroid in model coordinates minus
    * GetCentroidOrigin() (the centre of the points' bounds), so that the floats
    * keep their precision far from the origin. Add the origin back, in double,
-   * for the model-space centroid.
+   * for the model-space centroid. Made at the first call after Build() (only
+   * the centroid sort reads them; the exact orders and the ray caster never
+   * do, and need not hold their 12 bytes a face); not thread-safe.
    */
-  const std::vector<float>& GetCentroids() const { return this->Centroids; }
+  const std::vector<float>& GetCentroids() const;
   const double* GetCentroidOrigin() const { return this->CentroidOrigin; }
 
   /// Four point ids per used tetrahedron (skipped and degenerate cells left out).
@@ -149,7 +180,8 @@ private:
 
   std::vector<uint32_t> FaceVertices;
   std::vector<uint8_t> BoundaryFlags;
-  std::vector<float> Centroids;
+  mutable std::vector<float> Centroids;   // made by GetCentroids()
+  vtkSmartPointer<vtkPoints> BuiltPoints; // the points the faces were built on (shared)
   std::vector<uint32_t> Tetrahedra;
   std::vector<uint32_t> TetrahedronCells;
   std::vector<uint32_t> FaceCells;
@@ -159,6 +191,8 @@ private:
   vtkIdType NumberOfTetrahedra = 0;
   vtkIdType NumberOfSkippedCells = 0;
   vtkIdType NumberOfDegenerateTetrahedra = 0;
+  vtkIdType NumberOfThinTetrahedra = 0;
+  double MinimumRelativeThickness = DefaultMinimumRelativeThickness;
   vtkIdType NumberOfInvalidCells = 0;
   vtkIdType NumberOfDuplicateTetrahedra = 0;
   vtkIdType NumberOfGhostCells = 0;

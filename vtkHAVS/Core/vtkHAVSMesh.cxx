@@ -684,8 +684,11 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   {
     std::ostringstream w;
     w << degenerate << " of " << degenerate + this->Faces->GetNumberOfTetrahedra()
-      << " tetrahedra are degenerate (zero-volume) and were dropped: more than "
-      << 100.0 * DegenerateWarningShare << " %, the mesh may be broken.";
+      << " tetrahedra are degenerate and were dropped (zero volume, or "
+      << this->Faces->GetNumberOfThinTetrahedra() << " thinner than "
+      << this->Faces->GetMinimumRelativeThickness()
+      << " of the mesh's extent across them): more than " << 100.0 * DegenerateWarningShare
+      << " %, the mesh may be broken.";
     this->Warnings.push_back(w.str());
   }
   if (this->Faces->GetNumberOfDuplicateTetrahedra() > 0)

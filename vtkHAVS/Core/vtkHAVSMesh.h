@@ -139,7 +139,9 @@ public:
   const std::vector<std::string>& GetWarnings() const { return this->Warnings; }
 
   /**
-   * Zero-volume tetrahedra contribute nothing to any ray: they are dropped
+   * Zero-volume tetrahedra contribute nothing to any ray, and those thinner
+   * than vtkHAVSFaceSet::MinimumRelativeThickness of the mesh's extent across
+   * them nothing a float pipeline can resolve: they are dropped
    * and counted (GetFaceSet()->GetNumberOfDegenerateTetrahedra(), the mappers'
    * GetNumberOfDegenerateTetrahedra()). Only when they are more than this
    * share of the tetrahedra (a broken mesh rather than a mesher's slivers:
