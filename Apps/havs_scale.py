@@ -108,6 +108,13 @@ def worker(mapper_name, cubes, size):
         return time.time() - t0
 
     first = frame()
+    if hasattr(mapper, 'GetLastMeshUpdate') and mapper.GetLastMeshUpdate() == 0:
+        # Refused (vtkHAVSMapperBase::LargestGPUBuffer): nothing was drawn.
+        print('HAVS_SCALE ' + json.dumps({
+            'mapper': mapper_name, 'tets': tets, 'size': size,
+            'skipped': 'refused with an error: a GPU buffer over LargestGPUBuffer (%d bytes)'
+                       % mapper.GetLargestGPUBuffer()}), flush=True)
+        return
     views = []
     for _ in range(3):
         camera.Azimuth(30)
@@ -190,6 +197,9 @@ def main():
                 continue
             row = json.loads(line[0][len('HAVS_SCALE '):])
             rows.append(row)
+            if 'skipped' in row:
+                print('%s %d: %s' % (m, tets, row['skipped']), flush=True)
+                continue
             per_tet[m] = (row['peak_mb'] + row['grid_mb']) * 2 ** 20 / row['tets']
             print('%-10s %11d tets: first %6.2f s, new view %6.2f s, peak %6.0f B/tet, kept %6.0f '
                   'B/tet (%.0f s)' % (m, row['tets'], row['first_s'], row['view_s'],

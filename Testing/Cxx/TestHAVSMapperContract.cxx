@@ -516,5 +516,40 @@ int TestHAVSMapperContract(int, char*[])
         std::to_string(released) + " B) the next frame draws the same (max " +
         std::to_string(off * 255.0) + "/255)");
   }
+
+  // 8. A mesh whose largest GPU buffer would be larger than LargestGPUBuffer:
+  // not drawn, one error, no crash; the same mapper draws it once the limit
+  // allows it (the same image as a mapper that never refused, max 0).
+  // Control: the limit at exactly the need draws.
+  for (size_t i = 0; i < mappers.size(); ++i)
+  {
+    const std::string name = mappers[i]->GetClassName();
+    vtkSmartPointer<vtkHAVSMapperBase> plain = mappers[i]->NewInstance();
+    plain->Delete();
+    havstest::VolumeScene reference = havstest::MakeScene(grid, plain, property, 64, 64);
+    reference.Window->Render();
+    const std::vector<float> expected = havstest::ReadRGBA(reference.Window);
+    const size_t need = plain->GetLargestGPUBufferNeed().Bytes;
+
+    vtkSmartPointer<vtkHAVSMapperBase> m = mappers[i]->NewInstance();
+    m->Delete();
+    havstest::Messages* messages = havstest::CountMessages(m);
+    m->SetLargestGPUBuffer(static_cast<vtkIdType>(need) - 1);
+    havstest::VolumeScene scene = havstest::MakeScene(grid, m, property, 64, 64);
+    scene.Window->Render();
+    const int refusedPixels = VolumePixels(havstest::ReadRGBA(scene.Window));
+    scene.Window->Render();
+    const int errors = messages->Errors;
+    Check(need >= 12 * static_cast<size_t>(TetsOf(m)) && refusedPixels == 0 && errors == 1,
+      name + ": a mesh needing " + std::to_string(need) + " bytes in one buffer, 1 over the " +
+        "limit: nothing drawn (" + std::to_string(refusedPixels) + " volume pixels), " +
+        std::to_string(errors) + " error over two frames");
+    m->SetLargestGPUBuffer(static_cast<vtkIdType>(need));
+    scene.Window->Render();
+    const double off = havstest::Compare(havstest::ReadRGBA(scene.Window), expected).Max;
+    Check(off == 0.0 && messages->Errors == 1 && VolumePixels(expected) > 100,
+      name + ": the limit at the need: drawn as a mapper that never refused (max " +
+        std::to_string(off * 255.0) + "/255)");
+  }
   return havstest::Result();
 }

@@ -193,8 +193,8 @@ int TestHAVSNearDegenerate(int, char*[])
     const auto wrong = havstest::Compare(p.Image, references.Get(box, denser, p.Camera), edge);
     Print(name + ": against the box's exact image", d);
     Print(name + ": control, twice the density", wrong);
-    havstest::Check(Accurate(d, p.Subset),
-      name + (p.Subset ? ": within the level-of-detail bound" : ": exact"));
+    havstest::Check(
+      Accurate(d, p.Subset), name + (p.Subset ? ": within the level-of-detail bound" : ": exact"));
     havstest::Check(!Accurate(wrong, p.Subset), name + ": the control (twice the density) fails");
     havstest::Check(havstest::AllFinite(p.Image), name + ": finite");
     havstest::Check(CoveredPixels(exact) >= 100, name + ": the box shows");

@@ -165,6 +165,15 @@ const std::vector<uint32_t>* vtkHAVSCellProjectionMapper::MakeOrder(const vtkHAV
 }
 
 //------------------------------------------------------------------------------
+vtkHAVSMemory::Part vtkHAVSCellProjectionMapper::GetLargestGPUBufferNeed() const
+{
+  // The cell records (vtkHAVSCellGeometry: planes and field).
+  return { "cell records (80 bytes a tetrahedron)",
+    sizeof(float) * vtkHAVSCellGeometry::FloatsPerCell *
+      static_cast<size_t>(this->Mesh->GetFaceSet()->GetNumberOfTetrahedra()) };
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSCellProjectionMapper::AddMemoryParts(std::vector<vtkHAVSMemory::Part>& parts) const
 {
   parts.push_back({ "cell order (MPVO)", this->Order->GetMemoryBytes() });

@@ -165,6 +165,7 @@ protected:
 
   void ResetLastFrame() override;
   void AddMemoryParts(std::vector<vtkHAVSMemory::Part>& parts) const override;
+  vtkHAVSMemory::Part GetLargestGPUBufferNeed() const override;
   void MeshPrepared(int update, bool rebuilt) override;
   void RenderView(vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) override;
 

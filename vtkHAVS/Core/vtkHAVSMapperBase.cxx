@@ -163,6 +163,26 @@ bool vtkHAVSMapperBase::PrepareMesh(vtkVolume* volume)
   {
     return false;
   }
+  // A mesh whose largest GPU buffer would be larger than the mapper makes:
+  // said once per mesh, not drawn.
+  const vtkHAVSMemory::Part need = this->GetLargestGPUBufferNeed();
+  if (need.Bytes > static_cast<size_t>(this->LargestGPUBuffer))
+  {
+    if (this->RefusedMeshBuild != this->Mesh->GetBuildTime())
+    {
+      this->RefusedMeshBuild = this->Mesh->GetBuildTime();
+      vtkErrorMacro(<< this->MapperName << ": " << this->Mesh->GetFaceSet()->GetNumberOfTetrahedra()
+                    << " tetrahedra need " << need.Bytes << " bytes of " << need.Name
+                    << " in one GPU buffer, more than the largest it makes (LargestGPUBuffer, "
+                    << this->LargestGPUBuffer
+                    << " bytes: shaders address buffers with 32-bit offsets). Nothing is drawn; "
+                    << (need.Name.rfind("cell records", 0) == 0
+                           ? "draw this mesh with vtkHAVSVolumeMapper (12 bytes a face), or "
+                           : "draw this mesh ")
+                    << "in pieces (ParaView's distributed rendering).");
+    }
+    return false;
+  }
   // What changed since this mapper last drew: a shared mesh may have been
   // prepared by another mapper in between.
   const bool rebuilt = this->Mesh->GetBuildTime() != this->SeenMeshBuild;
@@ -341,6 +361,7 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TableScalarResolution: " << this->TableScalarResolution
      << ", TableLengthResolution: " << this->TableLengthResolution << "\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
+  os << indent << "LargestGPUBuffer: " << this->LargestGPUBuffer << "\n";
   os << indent << "PlaneSections: " << this->PlaneSections
      << ", LastSectionTriangles: " << this->LastSectionTriangles << "\n";
   os << indent << "Mesh: " << this->Mesh.Get() << " (shared by " << this->Mesh->GetReferenceCount()

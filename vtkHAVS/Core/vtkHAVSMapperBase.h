@@ -240,6 +240,24 @@ public:
   /// The sum of GetMemoryParts().
   size_t GetMemoryBytes() const;
 
+  ///@{
+  /**
+   * The largest single GPU buffer the mapper makes, in bytes. A mesh whose
+   * largest buffer (the ray caster's and the cell projection's cell records,
+   * 80 bytes a tetrahedron; HAVS's face indices, 12 bytes a face) would be
+   * larger is not drawn, with one error per mesh that says what to do instead.
+   * Default DefaultLargestGPUBuffer, 2^31 - 1 bytes: shaders address storage
+   * buffers with 32-bit byte offsets, and llvmpipe's crash past 2 GiB (the
+   * ray caster's records of 26.8 million tetrahedra); the limit is what a
+   * buffer can be addressed with, not what the GPU's memory holds.
+   */
+  static constexpr vtkIdType DefaultLargestGPUBuffer = 2147483647;
+  vtkSetClampMacro(LargestGPUBuffer, vtkIdType, 1, VTK_ID_MAX);
+  vtkGetMacro(LargestGPUBuffer, vtkIdType);
+  ///@}
+  /// The largest GPU buffer the prepared mesh needs (what it holds, its bytes).
+  virtual vtkHAVSMemory::Part GetLargestGPUBufferNeed() const { return {}; }
+
 protected:
   vtkHAVSMapperBase(const char* mapperName);
   ~vtkHAVSMapperBase() override;
@@ -286,6 +304,7 @@ protected:
   int TableLengthResolution = 128;
   bool KeepFloatResult = false;
   bool PlaneSections = true;
+  vtkIdType LargestGPUBuffer = DefaultLargestGPUBuffer;
   vtkIdType LastSectionTriangles = 0;
 
   vtkSmartPointer<vtkHAVSMesh> Mesh;
@@ -310,7 +329,8 @@ private:
   vtkHAVSMapperGraphics* Graphics = nullptr;
   vtkMTimeType SeenMeshBuild = 0; // the mesh's build and scalar times this mapper last drew
   vtkMTimeType SeenMeshScalars = 0;
-  std::array<bool, 10> Warned{}; // vtkHAVSMapperInputs::NumberOfOnceWarnings
+  vtkMTimeType RefusedMeshBuild = 0; // the mesh build whose buffers were too large (said once)
+  std::array<bool, 10> Warned{};     // vtkHAVSMapperInputs::NumberOfOnceWarnings
 };
 
 VTK_ABI_NAMESPACE_END

@@ -57,6 +57,14 @@ void vtkHAVSRayCastMapper::SetBrokenNeighboursForTesting(bool broken)
 }
 
 //------------------------------------------------------------------------------
+vtkHAVSMemory::Part vtkHAVSRayCastMapper::GetLargestGPUBufferNeed() const
+{
+  // The cell records: four face planes and the field, 80 bytes a tetrahedron.
+  return { "cell records (80 bytes a tetrahedron)",
+    80 * static_cast<size_t>(this->Mesh->GetFaceSet()->GetNumberOfTetrahedra()) };
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSRayCastMapper::AddMemoryParts(std::vector<vtkHAVSMemory::Part>& parts) const
 {
   parts.push_back(

@@ -129,6 +129,14 @@ bool vtkHAVSVolumeMapper::CompositeKeptResult(vtkRenderer*)
 }
 
 //------------------------------------------------------------------------------
+vtkHAVSMemory::Part vtkHAVSVolumeMapper::GetLargestGPUBufferNeed() const
+{
+  // The faces' indices in draw order, three 32-bit point ids a face.
+  return { "face indices (12 bytes a face)",
+    12 * static_cast<size_t>(this->Mesh->GetFaceSet()->GetNumberOfFaces()) };
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSVolumeMapper::AddMemoryParts(std::vector<vtkHAVSMemory::Part>& parts) const
 {
   this->FaceOrder->AddMemoryParts(parts);

@@ -480,6 +480,7 @@ protected:
   /// The frame's HAVS part (vtkHAVSMapperBase::Render calls them in order).
   void ResetLastFrame() override;
   void AddMemoryParts(std::vector<vtkHAVSMemory::Part>& parts) const override;
+  vtkHAVSMemory::Part GetLargestGPUBufferNeed() const override;
   void MeshPrepared(int update, bool rebuilt) override;
   bool PrepareTable(vtkVolume* volume) override;
   void RenderView(vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) override;
