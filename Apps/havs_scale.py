@@ -1,7 +1,7 @@
 # Copyright (c) 2026 the vtkHAVS developers. SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
 """havs_scale: the benchmark's scale section (issue 43).
 
-    python3 Apps/havs_scale.py [--build build] [--output-dir Documentation]
+    python3 Apps/havs_scale.py [--build build] [--output-dir Documentation/scale]
                                [--sizes 1,5,10,25,50] [--mappers havs,tetraycast,cellproj,pt]
                                [--size 512] [--memory-limit-gb G]
 
@@ -149,7 +149,7 @@ def available_gb():
 def main():
     p = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     p.add_argument('--build', default='build')
-    p.add_argument('--output-dir', default='Documentation')
+    p.add_argument('--output-dir', default='Documentation/scale')
     p.add_argument('--sizes', default='1,5,10,25,50')
     p.add_argument('--mappers', default='havs,tetraycast,cellproj,pt')
     p.add_argument('--size', type=int, default=512)
