@@ -191,6 +191,14 @@ void vtkHAVSCellProjectionMapper::ResetLastFrame()
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSCellProjectionMapper::ComputeCells()
+{
+  vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
+    this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
+    this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSCellProjectionMapper::MeshPrepared(int update, bool rebuilt)
 {
   // The cells' planes and fields: the order is kept for a new time step on
@@ -200,9 +208,7 @@ void vtkHAVSCellProjectionMapper::MeshPrepared(int update, bool rebuilt)
     return;
   }
   this->CellsComputed = true;
-  vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
-    this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
-    this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
+  this->ComputeCells();
   this->FieldTime.Modified();
   if (rebuilt || this->GeometryTime.GetMTime() == 0)
   {
@@ -246,12 +252,7 @@ void vtkHAVSCellProjectionMapper::RenderView(
   frame.KeepResult = this->KeepFloatResult;
   frame.WrongExit = this->WrongExitForTesting;
   frame.MeasureStages = this->MeasureStageTimes;
-  frame.RestoreCells = [this]()
-  {
-    vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
-      this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
-      this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
-  };
+  frame.RestoreCells = [this]() { this->ComputeCells(); };
   if (this->DrawCells(renderer, frame, &this->LastDrawSeconds))
   {
     this->LastCellsDrawn = static_cast<vtkIdType>(order->size());

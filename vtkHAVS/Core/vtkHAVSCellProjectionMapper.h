@@ -177,6 +177,8 @@ private:
   void operator=(const vtkHAVSCellProjectionMapper&) = delete;
 
   void CentroidOrder(const vtkHAVSViewFrame& view);
+  /// The cells' planes and fields (and faces) from the mesh (MeshPrepared, RestoreCells).
+  void ComputeCells();
   /// The frame's cell order (made again only when its key changed); nullptr on failure.
   const std::vector<uint32_t>* MakeOrder(const vtkHAVSViewFrame& view);
 

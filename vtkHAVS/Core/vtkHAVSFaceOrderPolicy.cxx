@@ -331,8 +331,9 @@ void vtkHAVSFaceOrderPolicy::AddMemoryParts(std::vector<vtkHAVSMemory::Part>& pa
 //------------------------------------------------------------------------------
 size_t vtkHAVSFaceOrderPolicy::GetMemoryBytes() const
 {
-  return vtkHAVSMemory::Bytes(this->DrawTriangles, this->DrawBoundary, this->UnculledFaces) +
-    this->Centroid->GetMemoryBytes() + this->Exact->GetMemoryBytes();
+  std::vector<vtkHAVSMemory::Part> parts;
+  this->AddMemoryParts(parts);
+  return vtkHAVSMemory::Sum(parts);
 }
 
 VTK_ABI_NAMESPACE_END

@@ -176,10 +176,9 @@ bool vtkHAVSMapperBase::PrepareMesh(vtkVolume* volume)
                     << " in one GPU buffer, more than the largest it makes (LargestGPUBuffer, "
                     << this->LargestGPUBuffer
                     << " bytes: shaders address buffers with 32-bit offsets). Nothing is drawn; "
-                    << (need.Name.rfind("cell records", 0) == 0
-                           ? "draw this mesh with vtkHAVSVolumeMapper (12 bytes a face), or "
-                           : "draw this mesh ")
-                    << "in pieces (ParaView's distributed rendering).");
+                       "draw this mesh in pieces (ParaView's distributed rendering) or with a "
+                       "mapper that needs less in one buffer (vtkHAVSVolumeMapper: 12 bytes a "
+                       "face; the ray caster and the cell projection: 80 bytes a tetrahedron).");
     }
     return false;
   }
@@ -272,12 +271,7 @@ std::vector<vtkHAVSMemory::Part> vtkHAVSMapperBase::GetMemoryParts() const
 //------------------------------------------------------------------------------
 size_t vtkHAVSMapperBase::GetMemoryBytes() const
 {
-  size_t bytes = 0;
-  for (const vtkHAVSMemory::Part& part : this->GetMemoryParts())
-  {
-    bytes += part.Bytes;
-  }
-  return bytes;
+  return vtkHAVSMemory::Sum(this->GetMemoryParts());
 }
 
 //------------------------------------------------------------------------------
@@ -369,8 +363,7 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastMeshUpdate: " << GetMeshUpdateName(this->LastMeshUpdate) << " ("
      << this->LastMeshSeconds << " s)\n";
   os << indent << "LastFrameAborted: " << this->LastFrameAborted << "\n";
-  os << indent << "DegenerateTetrahedra (dropped): "
-     << (this->Mesh->IsValid() ? this->Mesh->GetFaceSet()->GetNumberOfDegenerateTetrahedra() : 0)
+  os << indent << "DegenerateTetrahedra (dropped): " << this->GetNumberOfDegenerateTetrahedra()
      << "\n";
   os << indent << "ShaderHooks: " << this->ShaderHooks.Fragment.size()
      << " fragment replacements applied, custom uniforms "

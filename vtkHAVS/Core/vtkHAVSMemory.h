@@ -24,6 +24,7 @@
 
 #include <cstddef> // For size_t
 #include <string>  // For std::string
+#include <vector>  // For std::vector
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -42,6 +43,17 @@ struct Part
   std::string Name; ///< what it is ("mesh: faces", "order: MPVO", "GPU buffers", ...)
   size_t Bytes = 0;
 };
+
+/// The bytes of all the parts.
+inline size_t Sum(const std::vector<Part>& parts)
+{
+  size_t bytes = 0;
+  for (const Part& part : parts)
+  {
+    bytes += part.Bytes;
+  }
+  return bytes;
+}
 }
 
 VTK_ABI_NAMESPACE_END

@@ -59,9 +59,10 @@ void vtkHAVSRayCastMapper::SetBrokenNeighboursForTesting(bool broken)
 //------------------------------------------------------------------------------
 vtkHAVSMemory::Part vtkHAVSRayCastMapper::GetLargestGPUBufferNeed() const
 {
-  // The cell records: four face planes and the field, 80 bytes a tetrahedron.
+  // The cell records: four face planes and the field.
   return { "cell records (80 bytes a tetrahedron)",
-    80 * static_cast<size_t>(this->Mesh->GetFaceSet()->GetNumberOfTetrahedra()) };
+    vtkHAVSRayCastMesh::CellRecordBytes *
+      static_cast<size_t>(this->Mesh->GetFaceSet()->GetNumberOfTetrahedra()) };
 }
 
 //------------------------------------------------------------------------------
@@ -97,8 +98,7 @@ void vtkHAVSRayCastMapper::MeshPrepared(int update, bool rebuilt)
   {
     if (update != MeshUnchanged)
     {
-      this->RayMesh->UpdateFields(
-        this->Mesh->GetPoints(), this->Mesh->GetScalars(), tets, cellScalars);
+      this->UpdateRayFields();
       this->RayMeshTime.Modified();
     }
     return;
@@ -111,6 +111,14 @@ void vtkHAVSRayCastMapper::MeshPrepared(int update, bool rebuilt)
   }
   this->RayMeshBroken = this->BrokenNeighboursForTesting;
   this->RayMeshTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSRayCastMapper::UpdateRayFields()
+{
+  this->RayMesh->UpdateFields(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
+    this->Mesh->GetFaceSet()->GetTetrahedra(),
+    this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -136,12 +144,7 @@ void vtkHAVSRayCastMapper::RenderView(
   frame.TileSize = this->Tiles ? this->TileSize : 0;
   frame.Blend = this->BlendMode;
   frame.FoldReentries = this->FoldReentries;
-  frame.RestoreCells = [this]()
-  {
-    this->RayMesh->UpdateFields(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
-      this->Mesh->GetFaceSet()->GetTetrahedra(),
-      this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
-  };
+  frame.RestoreCells = [this]() { this->UpdateRayFields(); };
   RayCounts counts;
   if (!this->DrawRays(renderer, frame, &counts))
   {

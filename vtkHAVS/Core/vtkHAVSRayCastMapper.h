@@ -223,6 +223,9 @@ private:
   vtkHAVSRayCastMapper(const vtkHAVSRayCastMapper&) = delete;
   void operator=(const vtkHAVSRayCastMapper&) = delete;
 
+  /// The ray mesh's fields (the cell records) from the mesh (a new time step, RestoreCells).
+  void UpdateRayFields();
+
   double EarlyRayTerminationOpacity = 0.999;
   int MaximumPeelPasses = 0;
   bool BrokenNeighboursForTesting = false;

@@ -47,8 +47,10 @@ VTK_ABI_NAMESPACE_BEGIN
 class VTKHAVSCORE_EXPORT vtkHAVSRayCastMesh
 {
 public:
-  /// Bytes per tetrahedron on the GPU: planes and field (80), neighbours (16).
-  static constexpr size_t BytesPerTetrahedron = 96;
+  /// Bytes of a tetrahedron's cell record: four face planes and the field (20 floats).
+  static constexpr size_t CellRecordBytes = 20 * sizeof(float);
+  /// Bytes per tetrahedron on the GPU: the cell record (80), neighbours (16).
+  static constexpr size_t BytesPerTetrahedron = CellRecordBytes + 4 * sizeof(int32_t);
 
   /**
    * Builds the layout from `points` (3 floats each, model coordinates),

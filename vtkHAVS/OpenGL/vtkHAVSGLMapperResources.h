@@ -35,8 +35,7 @@
 #include "vtkHAVSMapperGraphics.h" // For vtkHAVSMapperGraphics
 #include "vtkNew.h"                // For vtkNew
 
-#include <functional> // For std::function
-#include <memory>     // For std::unique_ptr
+#include <memory> // For std::unique_ptr
 
 VTK_ABI_NAMESPACE_BEGIN
 

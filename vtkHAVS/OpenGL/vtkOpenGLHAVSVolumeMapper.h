@@ -93,12 +93,14 @@ private:
   bool Upload(const FrameRequest& request, FrameResult& result);
   vtkHAVSKBuffer* GetKBuffer(int path);
 
-  vtkNew<vtkHAVSGLMapperResources> Resources; // the window, the table, the targets
-  struct GLObjects;                           // releases the mesh and k-buffers below
   vtkNew<vtkHAVSGLMesh> GLMesh;
   vtkNew<vtkHAVSFramebufferFetchKBuffer> FetchKBuffer;
   vtkNew<vtkHAVSInterlockKBuffer> InterlockKBuffer;
   vtkNew<vtkHAVSFragmentListKBuffer> ListKBuffer;
+  struct GLObjects; // releases the mesh and k-buffers above
+  // The window, the table, the targets; declared after the objects its Own
+  // releases, so that it is destroyed before them.
+  vtkNew<vtkHAVSGLMapperResources> Resources;
   vtkNew<vtkHAVSExtremumPass> Extremum;
   vtkNew<vtkHAVSRasterBoundPass> RasterBound;
   char* CaptureDirectory = nullptr;
