@@ -14,8 +14,12 @@
 // same faces needs more (negative control); a cycle-free convex mesh needs
 // no cycle breaks. On the GPU, vtkHAVSVolumeMapper with SetVisibilityOrderToMPVO
 // at k = 1 matches the exact reference; the centroid order at k = 1 does not.
+// The order keeps no face planes: a face set built again after its Build()
+// gives no order and an error, until the order is built again (with
+// progress from 0 to 1).
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
+#include "havsTestMessages.h"
 #include "havsTestScenes.h"
 
 #include "vtkCamera.h"
@@ -39,6 +43,7 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -127,6 +132,29 @@ int TestHAVSVisibilityOrder(int, char*[])
     }
   }
   havstest::Check(worstCentroid > 2, "negative control: the centroid order needs k > 2");
+
+  // The planes are made from the face set's vertices: a face set built again
+  // (even on the same grid) is refused until the order is built again.
+  {
+    const double eye[3] = { centre[0] + 3, centre[1] - 12, centre[2] + 9 };
+    const double direction[3] = { -3, 12, -9 };
+    mpvo->Sort(eye, direction, false);
+    const std::vector<uint32_t> before = mpvo->GetOrder();
+    havstest::Messages* messages = havstest::CountMessages(mpvo);
+    faces->Build(grid);
+    mpvo->Sort(eye, direction, false);
+    havstest::Check(mpvo->GetOrder().empty() && messages->Errors == 1,
+      "a face set built again: no order, one error");
+    std::vector<double> progress;
+    havstest::Check(
+      mpvo->Build(faces, grid, [&](double p) { progress.push_back(p); }), "built again");
+    mpvo->Sort(eye, direction, false);
+    havstest::Check(mpvo->GetOrder() == before && messages->Errors == 1,
+      "built again: the same order as before, no error");
+    havstest::Check(progress.size() >= 3 && progress.front() == 0.0 && progress.back() == 1.0 &&
+        std::is_sorted(progress.begin(), progress.end()),
+      "Build reports progress from 0 to 1");
+  }
 
   // The mapper at k = 1: MPVO against the centroid order.
   auto property = havstest::MakeRampPropertyFor(grid);

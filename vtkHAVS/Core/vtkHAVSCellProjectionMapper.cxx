@@ -102,7 +102,8 @@ const std::vector<uint32_t>* vtkHAVSCellProjectionMapper::MakeOrder(const vtkHAV
   if (kind == CellOrderMPVO && !this->OrderBuilt)
   {
     vtkUnstructuredGrid* grid = this->Mesh->GetGrid();
-    if (!this->Order->Build(this->Mesh->GetFaceSet(), grid))
+    if (!this->Order->Build(
+          this->Mesh->GetFaceSet(), grid, [this](double p) { this->UpdateProgress(p); }))
     {
       vtkErrorMacro("The MPVO cell order could not be made for this mesh.");
       return nullptr;

@@ -75,7 +75,7 @@ const std::vector<uint32_t>* vtkHAVSFaceOrderPolicy::MakeExactOrder(
 {
   if (this->ExactMeshTime != mesh->GetBuildTime())
   {
-    this->Exact->Build(mesh->GetFaceSet(), grid);
+    this->Exact->Build(mesh->GetFaceSet(), grid, this->Progress);
     this->ExactMeshTime = mesh->GetBuildTime();
     this->ExactValid = false;
   }

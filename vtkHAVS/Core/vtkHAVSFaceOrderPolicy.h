@@ -42,9 +42,11 @@
 #include "vtkNew.h"                 // For vtkNew
 #include "vtkObject.h"
 
-#include <array>   // For std::array
-#include <cstdint> // For uint32_t
-#include <vector>  // For std::vector
+#include <array>      // For std::array
+#include <cstdint>    // For uint32_t
+#include <functional> // For std::function
+#include <utility>    // For std::move
+#include <vector>     // For std::vector
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -165,6 +167,13 @@ public:
   double GetLastBoundaryLayerSeconds() const;
   ///@}
 
+  /// Called with 0 … 1 while the exact order's adjacency is built (once per
+  /// mesh): the mapper's UpdateProgress.
+  void SetProgressCallback(std::function<void(double)> progress)
+  {
+    this->Progress = std::move(progress);
+  }
+
   /// The next Prepare() makes its order again even for an unchanged view.
   void Invalidate();
 
@@ -205,6 +214,7 @@ private:
 
   vtkNew<vtkHAVSFaceSorter> Centroid;
   vtkNew<vtkHAVSVisibilityOrder> Exact;
+  std::function<void(double)> Progress;
   vtkMTimeType ExactMeshTime = 0; // the mesh the exact order's adjacency was built for
   vtkHAVSVisibilityOrder::ViewKey LastExactKey;
   bool ExactValid = false;

@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -60,13 +61,49 @@ Key SortedKey(uint32_t a, uint32_t b, uint32_t c)
 }
 
 //------------------------------------------------------------------------------
-bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* grid)
+void vtkHAVSVisibilityOrder::FacePlane(size_t f, double plane[4]) const
+{
+  const uint32_t* ids = &this->Faces->GetFaceVertices()[3 * f];
+  const double* v0 = &this->Points[3 * static_cast<size_t>(ids[0])];
+  const double* v1 = &this->Points[3 * static_cast<size_t>(ids[1])];
+  const double* v2 = &this->Points[3 * static_cast<size_t>(ids[2])];
+  const double e1[3] = { v1[0] - v0[0], v1[1] - v0[1], v1[2] - v0[2] };
+  const double e2[3] = { v2[0] - v0[0], v2[1] - v0[1], v2[2] - v0[2] };
+  plane[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  plane[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  plane[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  plane[3] = -(plane[0] * v0[0] + plane[1] * v0[1] + plane[2] * v0[2]);
+  if (this->FaceFlags[f] & FaceFlipped)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      plane[i] = -plane[i];
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSVisibilityOrder::FacesUnchanged()
+{
+  if (this->Faces && this->Faces->GetBuildTime() == this->FacesBuildTime)
+  {
+    return true;
+  }
+  vtkErrorMacro("The face set was built again after this order's Build(): no order is made.");
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSVisibilityOrder::Build(
+  vtkHAVSFaceSet* faces, vtkUnstructuredGrid* grid, const std::function<void(double)>& progress)
 {
   this->FaceCells.clear();
-  this->FacePlanes.clear();
   this->CellFaces.clear();
-  this->TetrahedronCells.clear();
+  this->FaceFlags.clear();
+  this->Faces = nullptr;
+  this->FacesBuildTime = 0;
   this->Order.clear();
+  this->CellOrder.clear();
   this->Points.clear();
   this->BoundaryFaces.clear();
   this->BoundaryFaceVertices.clear();
@@ -77,118 +114,184 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
   this->ConvexificationBuilt = false;
   this->NumberOfImaginaryCells = 0;
   this->ConvexificationSeconds = 0.0;
+  auto report = [&](double p)
+  {
+    if (progress)
+    {
+      progress(p);
+    }
+  };
   if (!faces || !grid || !grid->GetPoints())
   {
     vtkErrorMacro("Build needs a face set and its grid.");
     return false;
   }
+  report(0.0);
   const std::vector<uint32_t>& vertices = faces->GetFaceVertices();
   const std::vector<uint32_t>& tets = faces->GetTetrahedra();
   const size_t numberOfFaces = vertices.size() / 3;
   const size_t numberOfTets = tets.size() / 4;
-  if (numberOfTets > static_cast<size_t>(std::numeric_limits<int32_t>::max()))
+  vtkPoints* points = grid->GetPoints();
+  const vtkIdType numberOfPoints = points->GetNumberOfPoints();
+  if (numberOfTets > static_cast<size_t>(std::numeric_limits<int32_t>::max()) ||
+    numberOfFaces > static_cast<size_t>(std::numeric_limits<uint32_t>::max()))
   {
-    vtkErrorMacro("Build: " << numberOfTets << " tetrahedra; the order holds at most 2^31 - 1.");
+    vtkErrorMacro("Build: " << numberOfTets << " tetrahedra, " << numberOfFaces
+                            << " faces; the order holds at most 2^31 - 1 and 2^32 - 1.");
     return false;
   }
 
-  // Faces by their sorted point ids.
-  std::vector<std::pair<Key, uint32_t>> keys(numberOfFaces);
-  for (size_t f = 0; f < numberOfFaces; ++f)
-  {
-    keys[f] = { SortedKey(vertices[3 * f], vertices[3 * f + 1], vertices[3 * f + 2]),
-      static_cast<uint32_t>(f) };
-  }
-  std::sort(keys.begin(), keys.end());
-
-  this->FaceCells.assign(2 * numberOfFaces, -1);
-  this->CellFaces.resize(4 * numberOfTets);
-  this->TetrahedronCells = faces->GetTetrahedronCells();
-  std::vector<uint32_t> farPoint(2 * numberOfFaces, 0); // each cell's vertex off the face
-  for (size_t t = 0; t < numberOfTets; ++t)
-  {
-    const uint32_t* p = &tets[4 * t];
-    for (int j = 0; j < 4; ++j)
+  // The points in double precision (the planes and the boundary layers read them).
+  this->Points.resize(3 * static_cast<size_t>(numberOfPoints));
+  vtkSMPTools::For(0, numberOfPoints,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const Key key = SortedKey(p[(j + 1) % 4], p[(j + 2) % 4], p[(j + 3) % 4]);
-      const auto it = std::lower_bound(keys.begin(), keys.end(), std::make_pair(key, 0u));
-      if (it == keys.end() || it->first != key)
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        vtkErrorMacro("A face of tetrahedron " << t << " is not in the face set.");
-        this->FaceCells.clear();
+        points->GetPoint(i, &this->Points[3 * i]);
+      }
+    });
+
+  // The face set's faces come sorted by their sorted point ids: the faces
+  // whose smallest id is p are firstFace[p] .. firstFace[p + 1] - 1.
+  auto keyOf = [&](size_t f)
+  { return SortedKey(vertices[3 * f], vertices[3 * f + 1], vertices[3 * f + 2]); };
+  std::vector<uint32_t> firstFace(static_cast<size_t>(numberOfPoints) + 1, 0);
+  {
+    Key previous = { 0, 0, 0 };
+    size_t next = 0; // the first point whose firstFace is not yet known
+    for (size_t f = 0; f < numberOfFaces; ++f)
+    {
+      const Key key = keyOf(f);
+      if ((f > 0 && !(previous < key)) || key[2] >= static_cast<uint32_t>(numberOfPoints))
+      {
+        vtkErrorMacro("The face set's faces are not sorted by their point ids (face "
+          << f << "): it was not built on this grid.");
         return false;
       }
-      const uint32_t f = it->second;
-      this->CellFaces[4 * t + j] = f;
-      if (this->FaceCells[2 * f] < 0)
+      for (; next <= key[0]; ++next)
       {
-        this->FaceCells[2 * f] = static_cast<int32_t>(t);
-        farPoint[2 * f] = p[j];
+        firstFace[next] = static_cast<uint32_t>(f);
       }
-      else
-      {
-        this->FaceCells[2 * f + 1] = static_cast<int32_t>(t);
-        farPoint[2 * f + 1] = p[j];
-      }
+      previous = key;
+    }
+    for (; next <= static_cast<size_t>(numberOfPoints); ++next)
+    {
+      firstFace[next] = static_cast<uint32_t>(numberOfFaces);
     }
   }
+  report(0.2);
 
-  // Planes, oriented away from cell 0 (outward for a boundary face).
-  vtkPoints* points = grid->GetPoints();
-  this->FacePlanes.resize(4 * numberOfFaces);
-  std::vector<uint8_t> folded(numberOfFaces, 0);
+  // Each tetrahedron's four faces (face j leaves out point j), in parallel.
+  this->CellFaces.resize(4 * numberOfTets);
+  std::atomic<size_t> missing(numberOfTets); // the first tetrahedron with a face not found
+  vtkSMPTools::For(0, static_cast<vtkIdType>(numberOfTets),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const uint32_t* p = &tets[4 * t];
+        for (int j = 0; j < 4; ++j)
+        {
+          const Key key = SortedKey(p[(j + 1) % 4], p[(j + 2) % 4], p[(j + 3) % 4]);
+          const bool inRange = key[2] < static_cast<uint32_t>(numberOfPoints);
+          uint32_t lo = inRange ? firstFace[key[0]] : 0;
+          const uint32_t last = inRange ? firstFace[key[0] + 1] : 0;
+          uint32_t hi = last;
+          while (lo < hi)
+          {
+            const uint32_t mid = lo + (hi - lo) / 2;
+            if (keyOf(mid) < key)
+            {
+              lo = mid + 1;
+            }
+            else
+            {
+              hi = mid;
+            }
+          }
+          if (lo == last || keyOf(lo) != key)
+          {
+            size_t seen = missing.load();
+            while (static_cast<size_t>(t) < seen &&
+              !missing.compare_exchange_weak(seen, static_cast<size_t>(t)))
+            {
+            }
+            this->CellFaces[4 * t + j] = 0;
+            continue;
+          }
+          this->CellFaces[4 * t + j] = lo;
+        }
+      }
+    });
+  if (missing.load() < numberOfTets)
+  {
+    vtkErrorMacro("A face of tetrahedron " << missing.load() << " is not in the face set.");
+    this->CellFaces.clear();
+    return false;
+  }
+  report(0.5);
+
+  // The two tetrahedra of each face, the first (in tetrahedron order) first,
+  // and the point of each off the face.
+  this->FaceCells.assign(2 * numberOfFaces, -1);
+  std::vector<uint32_t> farPoint(2 * numberOfFaces, 0);
+  for (size_t t = 0; t < numberOfTets; ++t)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      const uint32_t f = this->CellFaces[4 * t + j];
+      const int slot = this->FaceCells[2 * f] < 0 ? 0 : 1;
+      this->FaceCells[2 * f + slot] = static_cast<int32_t>(t);
+      farPoint[2 * f + slot] = tets[4 * t + j];
+    }
+  }
+  report(0.7);
+
+  // Planes, oriented away from cell 0 (outward for a boundary face): only
+  // the flip is kept (FacePlane makes the plane again).
+  this->Faces = faces;
+  this->FacesBuildTime = faces->GetBuildTime();
+  this->FaceFlags.assign(numberOfFaces, 0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(numberOfFaces),
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType f = begin; f < end; ++f)
       {
-        double v[3][3], x[3];
-        for (int i = 0; i < 3; ++i)
+        double n[4];
+        this->FacePlane(f, n);
+        const double* x = &this->Points[3 * static_cast<size_t>(farPoint[2 * f])];
+        uint8_t flags = 0;
+        if (n[0] * x[0] + n[1] * x[1] + n[2] * x[2] + n[3] > 0.0)
         {
-          points->GetPoint(vertices[3 * f + i], v[i]);
+          flags = FaceFlipped;
+          for (double& c : n)
+          {
+            c = -c;
+          }
         }
-        points->GetPoint(farPoint[2 * f], x);
-        const double e1[3] = { v[1][0] - v[0][0], v[1][1] - v[0][1], v[1][2] - v[0][2] };
-        const double e2[3] = { v[2][0] - v[0][0], v[2][1] - v[0][1], v[2][2] - v[0][2] };
-        double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-          e1[0] * e2[1] - e1[1] * e2[0] };
-        double d = -(n[0] * v[0][0] + n[1] * v[0][1] + n[2] * v[0][2]);
-        if (n[0] * x[0] + n[1] * x[1] + n[2] * x[2] + d > 0.0)
-        {
-          n[0] = -n[0];
-          n[1] = -n[1];
-          n[2] = -n[2];
-          d = -d;
-        }
-        double* plane = &this->FacePlanes[4 * f];
-        plane[0] = n[0];
-        plane[1] = n[1];
-        plane[2] = n[2];
-        plane[3] = d;
         if (this->FaceCells[2 * f + 1] >= 0)
         {
           // Folded: the second cell lies on the first's side too (an inverted cell).
-          points->GetPoint(farPoint[2 * f + 1], x);
-          folded[f] = n[0] * x[0] + n[1] * x[1] + n[2] * x[2] + d < 0.0 ? 1 : 0;
+          x = &this->Points[3 * static_cast<size_t>(farPoint[2 * f + 1])];
+          flags |= n[0] * x[0] + n[1] * x[1] + n[2] * x[2] + n[3] < 0.0 ? FaceFolded : 0;
         }
+        this->FaceFlags[f] = flags;
       }
     });
-  this->NumberOfFoldedFaces = std::count(folded.begin(), folded.end(), 1);
-  this->FoldedFaces.swap(folded);
+  std::vector<uint32_t>().swap(farPoint);
+  this->NumberOfFoldedFaces = std::count_if(this->FaceFlags.begin(), this->FaceFlags.end(),
+    [](uint8_t flags) { return (flags & FaceFolded) != 0; });
   if (this->NumberOfFoldedFaces > 0)
   {
     vtkWarningMacro(<< this->NumberOfFoldedFaces
                     << " internal faces have both their tetrahedra on one side (inverted or "
                        "overlapping cells): no visibility order is exact there.");
   }
+  report(0.9);
 
-  // What the non-convex methods need: the points and the boundary faces.
+  // What the non-convex methods need: the boundary faces.
   this->MeshConvex = faces->IsConvex();
-  this->Points.resize(3 * static_cast<size_t>(points->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    points->GetPoint(i, &this->Points[3 * i]);
-  }
   for (size_t f = 0; f < numberOfFaces; ++f)
   {
     if (this->FaceCells[2 * f + 1] < 0)
@@ -222,8 +325,9 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
   }
   auto normalsOppose = [&](uint32_t a, uint32_t b)
   {
-    const double* p = &this->FacePlanes[4 * static_cast<size_t>(this->BoundaryFaces[a])];
-    const double* q = &this->FacePlanes[4 * static_cast<size_t>(this->BoundaryFaces[b])];
+    double p[4], q[4];
+    this->FacePlane(this->BoundaryFaces[a], p);
+    this->FacePlane(this->BoundaryFaces[b], q);
     return p[0] * q[0] + p[1] * q[1] + p[2] * q[2] < 0.0;
   };
   auto addSeam = [&](uint32_t a, uint32_t b)
@@ -341,6 +445,7 @@ bool vtkHAVSVisibilityOrder::Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* g
     }
     i = j;
   }
+  report(1.0);
   return true;
 }
 
@@ -399,8 +504,9 @@ void vtkHAVSVisibilityOrder::BoundaryLayerRelations(const double eye[3], const d
   std::vector<uint8_t> entry(numberOfBoundary);
   for (size_t b = 0; b < numberOfBoundary; ++b)
   {
-    entry[b] = EyeSide(&this->FacePlanes[4 * static_cast<size_t>(this->BoundaryFaces[b])], eye,
-                 direction, parallel) > 0.0;
+    double plane[4];
+    this->FacePlane(this->BoundaryFaces[b], plane);
+    entry[b] = EyeSide(plane, eye, direction, parallel) > 0.0;
   }
   this->Rasterizer->SetView(this->ModelToClip, eye, direction, parallel, width, height);
   this->Rasterizer->Rasterize(
@@ -464,27 +570,39 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
     this->BuildConvexification(); // once per mesh, timed on its own
   }
   const double start = vtkTimerLog::GetUniversalTime();
-  const size_t numberOfFaces = this->FacePlanes.size() / 4;
-  const size_t numberOfTets = this->CellFaces.size() / 4;
   this->Order.clear();
-  this->Order.reserve(numberOfFaces);
   this->CellOrder.clear();
-  this->CellOrder.reserve(numberOfTets);
   this->NumberOfCycleBreaks = 0;
   this->NumberOfBoundaryRelations = 0;
   this->NumberOfSkippedFaces = 0;
+  if (this->FaceFlags.empty() || !this->FacesUnchanged())
+  {
+    this->LastSortSeconds = 0.0;
+    return;
+  }
+  const size_t numberOfFaces = this->FaceCells.size() / 2;
+  const size_t numberOfTets = this->CellFaces.size() / 4;
+  this->Order.reserve(numberOfFaces);
+  this->CellOrder.reserve(numberOfTets);
   auto side = [&](const double* p) { return EyeSide(p, eye, direction, parallel); };
+  auto faceSide = [&](size_t f)
+  {
+    double plane[4];
+    this->FacePlane(f, plane);
+    return side(plane);
+  };
+  const std::vector<uint32_t>& tetrahedronCells = this->Faces->GetTetrahedronCells();
 
   // The skipped tetrahedra (SetSkippedCells): visited before the sort starts,
   // so nothing waits for them and none is ordered.
   std::vector<uint8_t> skip;
-  if (this->Skipped && this->TetrahedronCells.size() == numberOfTets)
+  if (this->Skipped && tetrahedronCells.size() == numberOfTets)
   {
     skip.assign(numberOfTets, 0);
     const std::vector<uint8_t>& cells = *this->Skipped;
     for (size_t t = 0; t < numberOfTets; ++t)
     {
-      const uint32_t c = this->TetrahedronCells[t];
+      const uint32_t c = tetrahedronCells[t];
       skip[t] = c < cells.size() && cells[c] != 0;
     }
   }
@@ -498,9 +616,7 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
     {
       for (vtkIdType f = begin; f < end; ++f)
       {
-        back[f] =
-          static_cast<int32_t>(side(&this->FacePlanes[4 * f]) > 0.0 ? this->FaceCells[2 * f]
-                                                                    : this->FaceCells[2 * f + 1]);
+        back[f] = faceSide(f) > 0.0 ? this->FaceCells[2 * f] : this->FaceCells[2 * f + 1];
       }
     });
 
@@ -514,7 +630,7 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
     const size_t a = this->SeamFaces[i], b = this->SeamFaces[i + 1];
     const auto ta = static_cast<uint32_t>(this->FaceCells[2 * a]);
     const auto tb = static_cast<uint32_t>(this->FaceCells[2 * b]);
-    if (side(&this->FacePlanes[4 * a]) > 0.0)
+    if (faceSide(a) > 0.0)
     {
       extra.emplace_back(tb, ta);
     }
@@ -532,7 +648,7 @@ void vtkHAVSVisibilityOrder::Sort(const double eye[3], const double direction[3]
     {
       const uint32_t f = this->BoundaryFaces[tc.first];
       const auto t = static_cast<uint32_t>(this->FaceCells[2 * static_cast<size_t>(f)]);
-      if (side(&this->FacePlanes[4 * static_cast<size_t>(f)]) > 0.0)
+      if (faceSide(f) > 0.0)
       {
         extra.emplace_back(tets + tc.second, t);
       }
@@ -707,7 +823,7 @@ void vtkHAVSVisibilityOrder::SetSkippedCells(
 void vtkHAVSVisibilityOrder::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Faces: " << this->FacePlanes.size() / 4
+  os << indent << "Faces: " << this->FaceCells.size() / 2
      << ", tetrahedra: " << this->CellFaces.size() / 4 << "\n";
   os << indent << "Mesh convex: " << (this->MeshConvex ? "yes" : "no") << ", NonConvexMethod: "
      << (this->NonConvexMethod == NonConvexConvexification
@@ -749,9 +865,9 @@ vtkHAVSVisibilityOrder::ViewKey vtkHAVSVisibilityOrder::MakeViewKey(
 //------------------------------------------------------------------------------
 size_t vtkHAVSVisibilityOrder::GetMemoryBytes() const
 {
-  return vtkHAVSMemory::Bytes(this->FaceCells, this->FacePlanes, this->CellFaces,
-           this->TetrahedronCells, this->Order, this->CellOrder, this->Points, this->BoundaryFaces,
-           this->BoundaryFaceVertices, this->SeamFaces, this->FoldedFaces) +
+  return vtkHAVSMemory::Bytes(this->FaceCells, this->CellFaces, this->Order, this->CellOrder,
+           this->Points, this->BoundaryFaces, this->BoundaryFaceVertices, this->SeamFaces,
+           this->FaceFlags) +
     (this->Convexification ? this->Convexification->GetMemoryBytes() : 0);
 }
 

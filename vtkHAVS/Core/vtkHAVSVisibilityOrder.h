@@ -12,9 +12,11 @@
  * @brief   An exact object-space face order: Williams' MPVO (1992) for HAVS.
  *
  * Plain C++, no OpenGL. Build() finds, once per mesh, the two tetrahedra of
- * every internal face of a vtkHAVSFaceSet and each face's plane (double
- * precision, from the grid's points). Sort() then, per view, orients every
- * internal face by the side of its plane the eye is on (the tetrahedron on
+ * every internal face of a vtkHAVSFaceSet and on which side of each face's
+ * plane its first tetrahedron lies. Sort() then, per view, orients every
+ * internal face by the side of its plane the eye is on (the plane made again
+ * from the face's points in double precision, as Build() made it: 32 bytes a
+ * face not kept; the tetrahedron on
  * the eye's side is in front), sorts the tetrahedra topologically front to
  * back (Kahn), and emits each face when the tetrahedron behind it is visited
  * (a boundary face with its only tetrahedron: entries first, then exits).
@@ -60,10 +62,11 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
-#include <array>   // For std::array
-#include <cstdint> // For uint32_t
-#include <utility> // For std::pair
-#include <vector>  // For std::vector
+#include <array>      // For std::array
+#include <cstdint>    // For uint32_t
+#include <functional> // For std::function
+#include <utility>    // For std::pair
+#include <vector>     // For std::vector
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -81,10 +84,19 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * The adjacency of `faces` (built from `grid`, whose points are read).
-   * Returns false, with an error, when a tetrahedron's face is not in the set.
+   * The adjacency of `faces` (built from `grid`, whose points are read; the
+   * face set is kept and must not be built again before the next Build()).
+   * Each tetrahedron's faces are found by binary search in the face set's
+   * order (its faces sorted by their sorted point ids), in parallel.
+   * `progress`, when given, is called with 0 … 1. Returns false, with an
+   * error, when a tetrahedron's face is not in the set.
    */
-  bool Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* grid);
+  bool Build(vtkHAVSFaceSet* faces, vtkUnstructuredGrid* grid)
+  {
+    return this->Build(faces, grid, nullptr);
+  }
+  bool Build(
+    vtkHAVSFaceSet* faces, vtkUnstructuredGrid* grid, const std::function<void(double)>& progress);
 
   enum NonConvexMethods
   {
@@ -186,7 +198,7 @@ public:
   /// Internal faces whose two tetrahedra lie on the same side (inverted or
   /// overlapping cells), found by Build(): no order is exact across them.
   vtkGetMacro(NumberOfFoldedFaces, vtkIdType);
-  bool IsFaceFolded(vtkIdType face) const { return this->FoldedFaces[face] != 0; }
+  bool IsFaceFolded(vtkIdType face) const { return (this->FaceFlags[face] & FaceFolded) != 0; }
 
   /// Pairs of boundary faces found at the same place (seams) by Build().
   vtkIdType GetNumberOfSeamFaces() const
@@ -214,13 +226,18 @@ private:
   void operator=(const vtkHAVSVisibilityOrder&) = delete;
 
   void BuildConvexification();
+  /// Face f's plane (n, d: n.x + d > 0 on the far side from FaceCells[2f]'s
+  /// tetrahedron), from its points in double precision, the same every time.
+  void FacePlane(size_t f, double plane[4]) const;
+  /// Whether the face set is still the one Build() read (an error if not).
+  bool FacesUnchanged();
   void BoundaryLayerRelations(const double eye[3], const double direction[3], bool parallel,
     std::vector<std::pair<uint32_t, uint32_t>>& relations);
 
-  std::vector<int32_t> FaceCells;  // 2 per face: the tetrahedra (-1: none; at most 2^31 - 1)
-  std::vector<double> FacePlanes;  // 4 per face: n, d with n.x + d > 0 on FaceCells[0]'s far side
-  std::vector<uint32_t> CellFaces; // 4 per tetrahedron
-  std::vector<uint32_t> TetrahedronCells;        // the grid cell id of each tetrahedron
+  std::vector<int32_t> FaceCells;        // 2 per face: the tetrahedra (-1: none; at most 2^31 - 1)
+  std::vector<uint32_t> CellFaces;       // 4 per tetrahedron
+  vtkSmartPointer<vtkHAVSFaceSet> Faces; // the face set built on (its vertices and cells read)
+  vtkMTimeType FacesBuildTime = 0;       // its build time then
   const std::vector<uint8_t>* Skipped = nullptr; // per grid cell id (SetSkippedCells)
   vtkMTimeType SkippedVersion = 0;
   vtkIdType NumberOfSkippedFaces = 0;
@@ -232,7 +249,12 @@ private:
   std::vector<uint32_t> SeamFaces; // pairs of boundary faces at the same place (duplicated points)
   bool MeshConvex = true;
   vtkIdType NumberOfFoldedFaces = 0;
-  std::vector<uint8_t> FoldedFaces; // per face
+  enum FaceFlagBits : uint8_t
+  {
+    FaceFolded = 1,  // both tetrahedra on one side of the plane
+    FaceFlipped = 2, // the plane's normal is the winding's reversed
+  };
+  std::vector<uint8_t> FaceFlags; // per face
   int NonConvexMethod = NonConvexBoundaryLayers;
   double ModelToClip[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
   int SampleSize[2] = { 0, 0 };

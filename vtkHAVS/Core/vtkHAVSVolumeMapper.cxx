@@ -60,6 +60,7 @@ const int WarnPath = Inputs::WarnPath, WarnK = Inputs::WarnK;
 vtkHAVSVolumeMapper::vtkHAVSVolumeMapper()
   : vtkHAVSMapperBase("vtkHAVSVolumeMapper")
 {
+  this->FaceOrder->SetProgressCallback([this](double p) { this->UpdateProgress(p); });
 }
 vtkHAVSVolumeMapper::~vtkHAVSVolumeMapper() = default;
 

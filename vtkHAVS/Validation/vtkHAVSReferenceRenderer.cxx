@@ -145,7 +145,13 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
     vtkErrorMacro("The input has no point or cell scalars.");
     return false;
   }
-  if (!this->Faces->Build(this->Input))
+  if (!this->FacesValid || this->FacesInput != this->Input ||
+    this->Faces->GetBuildTime() < this->Input->GetMTime())
+  {
+    this->FacesInput = this->Input;
+    this->FacesValid = this->Faces->Build(this->Input);
+  }
+  if (!this->FacesValid)
   {
     return false;
   }

@@ -190,6 +190,8 @@ public:
   vtkFloatArray* GetImage() { return this->Image; }
 
   /// The faces the fragments refer to.
+  /// The faces of the tetrahedralized input: built again only when that changes
+  /// (orders built on it, vtkHAVSVisibilityOrder, stay valid across renders).
   vtkHAVSFaceSet* GetFaceSet() { return this->Faces; }
 
   ///@{
@@ -259,6 +261,8 @@ private:
   vtkNew<vtkMatrix4x4> VolumeMatrix;
   int Size[2] = { 64, 64 };
   vtkNew<vtkHAVSFaceSet> Faces;
+  vtkUnstructuredGrid* FacesInput = nullptr; // the input Faces was built on (compared only)
+  bool FacesValid = false;
   vtkNew<vtkFloatArray> Image;
   vtkSmartPointer<vtkPlaneCollection> ClippingPlanes;
   bool NearPlaneClipping = true;
