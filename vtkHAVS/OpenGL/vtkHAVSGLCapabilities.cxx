@@ -11,6 +11,7 @@
 
 #include "vtkHAVSOpenGL.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -48,6 +49,49 @@ bool InterlockEmulated()
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   return requested && std::string(requested) == "1" && renderer &&
     std::strstr(renderer, "llvmpipe") != nullptr;
+}
+
+long long FacesPerFinish()
+{
+  if (const char* requested = std::getenv("HAVS_FACES_PER_FINISH"))
+  {
+    return std::max(0LL, std::atoll(requested));
+  }
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const bool software = renderer &&
+    (std::strstr(renderer, "llvmpipe") != nullptr || std::strstr(renderer, "softpipe") != nullptr);
+  return software ? (1LL << 18) : 0;
+}
+
+DrawThrottle::~DrawThrottle()
+{
+  for (void*& fence : this->Fences)
+  {
+    if (fence)
+    {
+      glDeleteSync(static_cast<GLsync>(fence));
+      fence = nullptr;
+    }
+  }
+}
+
+void DrawThrottle::Before()
+{
+  if (void* fence = this->Fences[this->Next])
+  {
+    while (glClientWaitSync(static_cast<GLsync>(fence), GL_SYNC_FLUSH_COMMANDS_BIT,
+             1000000000ull) == GL_TIMEOUT_EXPIRED)
+    {
+    }
+    glDeleteSync(static_cast<GLsync>(fence));
+    this->Fences[this->Next] = nullptr;
+  }
+}
+
+void DrawThrottle::After()
+{
+  this->Fences[this->Next] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+  this->Next ^= 1;
 }
 
 vtkHAVSShaders::InterlockKind AvailableInterlock()

@@ -36,6 +36,36 @@ bool HasExtension(const char* name);
 bool HasVersion(int major, int minor);
 /// Whether HAVS_EMULATE_INTERLOCK=1 asks for the emulated interlock and this is llvmpipe.
 bool InterlockEmulated();
+/**
+ * Faces one piece of a big draw holds (0: no pieces): a software rasterizer
+ * (llvmpipe) bins every queued triangle into scenes it keeps for reuse, and
+ * one draw of millions of faces left it holding about 360 bytes a
+ * tetrahedron after the frame (1M tets, 512^2), against 23 with its
+ * rasterization synchronous (LP_NUM_THREADS=0). There 2^18 faces, drawn
+ * through a DrawThrottle; on a GPU no pieces. HAVS_FACES_PER_FINISH (a
+ * number, 0: none) overrides it.
+ */
+long long FacesPerFinish();
+
+/**
+ * Keeps at most two pieces of a draw queued: Before() waits for the piece
+ * drawn two pieces earlier (a fence), After() fences the piece just drawn.
+ * The rasterizer works on one piece while the next is binned.
+ */
+class DrawThrottle
+{
+public:
+  DrawThrottle() = default;
+  ~DrawThrottle();
+  DrawThrottle(const DrawThrottle&) = delete;
+  DrawThrottle& operator=(const DrawThrottle&) = delete;
+  void Before();
+  void After();
+
+private:
+  void* Fences[2] = { nullptr, nullptr }; // GLsync
+  int Next = 0;
+};
 /// The interlock the context has (ARB, NV), else InterlockNone.
 vtkHAVSShaders::InterlockKind AvailableInterlock();
 }

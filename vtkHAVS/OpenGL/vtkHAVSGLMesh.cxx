@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSGLMesh.h"
 
+#include "vtkHAVSGLCapabilities.h"
+
 #include "vtkHAVSMesh.h"
 
 #include "vtkObjectFactory.h"
@@ -234,14 +236,32 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
   drawSections(true);
   const GLsizei faces = this->IndexCount / 3;
   batches = betweenBatches ? std::max(1, std::min(batches, static_cast<int>(faces))) : 1;
+  const long long perFinish = vtkHAVSGLCapabilities::FacesPerFinish();
   for (int b = 0; b < batches; ++b)
   {
     const GLsizei first = static_cast<GLsizei>(static_cast<long long>(faces) * b / batches);
     const GLsizei last = static_cast<GLsizei>(static_cast<long long>(faces) * (b + 1) / batches);
     glFrontFace(flipFacing ? GL_CW : GL_CCW);
     this->VertexArray.Bind();
-    glDrawElements(GL_TRIANGLES, 3 * (last - first), GL_UNSIGNED_INT,
-      reinterpret_cast<const void*>(3 * sizeof(GLuint) * static_cast<size_t>(first)));
+    // In pieces of perFinish faces, at most two queued (bounds a software
+    // rasterizer's queued scenes; one piece on a GPU).
+    vtkHAVSGLCapabilities::DrawThrottle throttle;
+    for (GLsizei piece = first; piece < last;)
+    {
+      const GLsizei end =
+        perFinish > 0 ? static_cast<GLsizei>(std::min<long long>(last, piece + perFinish)) : last;
+      if (perFinish > 0)
+      {
+        throttle.Before();
+      }
+      glDrawElements(GL_TRIANGLES, 3 * (end - piece), GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(3 * sizeof(GLuint) * static_cast<size_t>(piece)));
+      if (perFinish > 0 && end < last)
+      {
+        throttle.After();
+      }
+      piece = end;
+    }
     glFrontFace(GL_CCW);
     if (b + 1 < batches)
     {

@@ -11,6 +11,7 @@
 
 #include "vtkHAVSExtremumPass.h"
 #include "vtkHAVSFramePlanes.h"
+#include "vtkHAVSGLCapabilities.h"
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLMapperResources.h"
 #include "vtkHAVSGLObjects.h"
@@ -192,6 +193,7 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
     // The near plane's section first: the cells it cuts are the first along
     // their rays (either facing; one triangle per cell entry).
     program->SetUniformi("havsTrianglesPerCell", 1);
+    program->SetUniformi("havsFirstCell", 0);
     program->SetUniformi("havsNearSectionDrawn", 1);
     this->Resources->DrawSection(OrderBinding);
   }
@@ -202,8 +204,27 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   program->SetUniformi("havsTrianglesPerCell", 4);
   program->SetUniformi("havsNearSectionDrawn", sectionTriangles > 0 ? 1 : 0);
   gl.Cells.Bind();
-  glDrawElements(
-    GL_TRIANGLES, static_cast<GLsizei>(12 * gl.UploadedCells), GL_UNSIGNED_INT, nullptr);
+  // In pieces, at most two queued (a software rasterizer's queued scenes:
+  // vtkHAVSGLCapabilities::FacesPerFinish).
+  const long long cellsPerFinish = vtkHAVSGLCapabilities::FacesPerFinish() / 4;
+  const auto cells = static_cast<long long>(gl.UploadedCells);
+  vtkHAVSGLCapabilities::DrawThrottle throttle;
+  for (long long cell = 0; cell < cells;)
+  {
+    const long long end = cellsPerFinish > 0 ? std::min(cells, cell + cellsPerFinish) : cells;
+    if (cellsPerFinish > 0)
+    {
+      throttle.Before();
+    }
+    program->SetUniformi("havsFirstCell", static_cast<int>(cell));
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(12 * (end - cell)), GL_UNSIGNED_INT,
+      reinterpret_cast<const void*>(12 * sizeof(GLuint) * static_cast<size_t>(cell)));
+    if (cellsPerFinish > 0 && end < cells)
+    {
+      throttle.After();
+    }
+    cell = end;
+  }
   vtkHAVSGLVertexArray::Unbind();
   if (frame.MeasureStages)
   {

@@ -41,6 +41,7 @@ uniform vec3 havsDirectionMC;  // the direction of projection in model coordinat
 uniform mat3 havsModelToWorld; // the volume matrix's linear part (lengths in world units)
 uniform int havsWrongExit;     // testing aid: leave through the farthest plane
 uniform int havsTrianglesPerCell; // 4: the cells' faces; 1: near-plane sections
+uniform int havsFirstCell;        // the draw's first cell in the order (draws in pieces)
 uniform int havsNearSectionDrawn; // 1: the near plane's section was drawn this frame
 #if HAVS_CELL_BLEND == 4
 //HAVS::AdditiveLib
@@ -50,7 +51,7 @@ layout(location = 0) out vec4 havsSegmentColor;
 
 void main()
 {
-  int base = int(havsCellOrder[gl_PrimitiveID / havsTrianglesPerCell]) * 5;
+  int base = int(havsCellOrder[havsFirstCell + gl_PrimitiveID / havsTrianglesPerCell]) * 5;
   vec3 p = havsPositionMC;
   vec3 d = havsParallel != 0 ? havsDirectionMC : p - havsEyeMC;
   float tExit = HAVS_EMPTY;
