@@ -4,6 +4,7 @@
     python3 Apps/havs_scale.py [--build build] [--output-dir Documentation/scale]
                                [--sizes 1,5,10,25,50] [--mappers havs,tetraycast,cellproj,pt]
                                [--size 512] [--memory-limit-gb G]
+    python3 Apps/havs_scale.py --check 50 [--check-size 256]
 
 For each size (millions of tetrahedra: a block of n^3 cubes, 5 tetrahedra each,
 vtkHAVSDataSets::MakeGenerated, the field sin(6x) cos(5y) + z) and each mapper,
@@ -24,6 +25,13 @@ is not run; its row says so.
 Writes scale.csv, scale.md (the table) and, with matplotlib, scale.png (time
 and memory against size) in the output directory. Every row says the SMP
 backend (STDThread) and the renderer.
+
+--check M instead renders HAVS (defaults) on the block of about M million
+tetrahedra at --check-size^2 and the exact reference (vtkHAVSReferenceRenderer)
+of the same grid and view, each in its own process, and compares the float
+images against MISSION.md's bound (RMSE < 5e-4, largest difference < 0.01);
+its control, the same HAVS frame with the camera turned half a degree, must
+miss the bound. Writes check.md; exits 1 if either fails.
 """
 import argparse
 import csv
@@ -56,26 +64,39 @@ def status_mb(key):
     return float('nan')
 
 
-def worker(mapper_name, cubes, size):
-    """One configuration; prints one JSON line."""
+def make_scene(mapper_name, cubes, size):
+    """The grid, the mapper, its volume and property, and a window with the scale's camera."""
     import vtkhavs
-    from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
-    from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkVolume,
-                                             vtkVolumeProperty)
+    from vtkmodules.vtkRenderingCore import vtkVolume
     from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLProjectedTetrahedraMapper
 
-    trim = ctypes.CDLL('libc.so.6').malloc_trim
     grid = vtkhavs.vtkHAVSDataSets.MakeGenerated(cubes)
-    tets = grid.GetNumberOfCells()
-    trim(0)
-    base = status_mb('VmRSS:')
-    with open('/proc/self/clear_refs', 'w') as f:
-        f.write('5')  # the peak resident size from here
+    prop = make_property(grid)
     make = {'havs': vtkhavs.vtkHAVSVolumeMapper, 'tetraycast': vtkhavs.vtkHAVSRayCastMapper,
             'cellproj': vtkhavs.vtkHAVSCellProjectionMapper,
             'pt': vtkOpenGLProjectedTetrahedraMapper}[mapper_name]
     mapper = make()
-    mapper.SetInputData(grid)
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    return grid, mapper, volume
+
+
+def make_window(volume, size):
+    """A window of size^2 whose renderer shows `volume` (made after the memory base)."""
+    import vtkhavs
+    from vtkmodules.vtkRenderingCore import vtkRenderer
+    window = vtkhavs.vtkHAVSRenderWindowFactory.CreateRenderWindow()
+    window.SetSize(size, size)
+    renderer = vtkRenderer()
+    window.AddRenderer(renderer)
+    renderer.AddVolume(volume)
+    return window, renderer
+
+
+def make_property(grid):
+    from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+    from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkVolumeProperty
     lo, hi = grid.GetPointData().GetScalars().GetRange()
     color = vtkColorTransferFunction()
     color.AddRGBPoint(lo, 0.2, 0.3, 1.0)
@@ -87,19 +108,177 @@ def worker(mapper_name, cubes, size):
     prop.SetColor(color)
     prop.SetScalarOpacity(opacity)
     prop.SetScalarOpacityUnitDistance(grid.GetLength() / 40.0)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
-    window = vtkhavs.vtkHAVSRenderWindowFactory.CreateRenderWindow()
-    window.SetSize(size, size)
-    renderer = vtkRenderer()
-    window.AddRenderer(renderer)
-    renderer.AddVolume(volume)
+    return prop
+
+
+def set_camera(grid, renderer):
+    """The scale's view: the block's default view turned 20 and 15 degrees."""
     camera = renderer.GetActiveCamera()
-    renderer.ResetCamera()
+    renderer.ResetCamera(grid.GetBounds())
     camera.Azimuth(20)
     camera.Elevation(15)
-    renderer.ResetCameraClippingRange()
+    renderer.ResetCameraClippingRange(grid.GetBounds())
+    return camera
+
+
+def check_worker(kind, cubes, size, out):
+    """The check: `kind` 'reference' (the exact image) or a mapper name (its float
+    result, the scale's view); writes <out>/check-<kind>-<cubes>.f32 (RGBA, bottom
+    row first) and prints one JSON line (seconds, peak memory beyond the grid)."""
+    import vtkhavs
+    from vtkmodules.vtkCommonCore import vtkFloatArray
+
+    trim = ctypes.CDLL('libc.so.6').malloc_trim
+    grid, mapper, volume = make_scene('havs' if kind == 'reference' else kind, cubes, size)
+    tets = grid.GetNumberOfCells()
+    trim(0)
+    base = status_mb('VmRSS:')
+    with open('/proc/self/clear_refs', 'w') as f:
+        f.write('5')
+    window, renderer = make_window(volume, size)
+    camera = set_camera(grid, renderer)
+    t0 = time.time()
+    if kind == 'reference':
+        reference = vtkhavs.vtkHAVSReferenceRenderer()
+        reference.SetInputData(grid)
+        reference.SetProperty(volume.GetProperty())
+        reference.SetCamera(camera)
+        reference.SetSize(size, size)
+        ok = reference.Render()
+        image = reference.GetImage()
+    else:
+        mapper.SetInputData(grid)
+        mapper.KeepFloatResultOn()
+        window.Render()
+        image = vtkFloatArray()
+        dims = [0, 0]
+        ok = mapper.GetFloatResult(image, dims) and dims == [size, size]
+    seconds = time.time() - t0
+    if ok and kind != 'reference':
+        # The control: the same mapper and grid, the camera turned half a degree.
+        save(image, size, os.path.join(out, 'check-%s-%d.f32' % (kind, cubes)))
+        camera.Azimuth(0.5)
+        window.Render()
+        ok = mapper.GetFloatResult(image, dims)
+    peak = status_mb('VmHWM:')
+    if not ok:
+        print('HAVS_CHECK ' + json.dumps({'kind': kind, 'tets': tets, 'failed': True}))
+        return
+    save(image, size, os.path.join(
+        out, 'check-%s-%d.f32' % (kind if kind == 'reference' else kind + '-turned', cubes)))
+    print('HAVS_CHECK ' + json.dumps({'kind': kind, 'tets': tets, 'size': size,
+                                      'seconds': seconds, 'peak_mb': peak - base}), flush=True)
+
+
+def save(image, size, path):
+    """A vtkFloatArray's RGBA values as raw floats."""
+    import array
+    values = array.array('f', (image.GetValue(i) for i in range(4 * size * size)))
+    with open(path, 'wb') as f:
+        values.tofile(f)
+
+
+def compare_images(a_path, b_path, size=0):
+    """RMSE and largest difference over every RGBA component (vtkHAVSImageMetrics');
+    with `size`, also the pixels off by more than 0.01, how many of them lie on
+    the silhouette (a pixel of b's 3x3 neighbourhood empty), and the worst pixel."""
+    import array
+    a, b = array.array('f'), array.array('f')
+    with open(a_path, 'rb') as f:
+        a.frombytes(f.read())
+    with open(b_path, 'rb') as f:
+        b.frombytes(f.read())
+    if len(a) != len(b) or not a:
+        return float('inf'), float('inf')
+    squares = sum((x - y) ** 2 for x, y in zip(a, b))
+    rmse, largest = (squares / len(a)) ** 0.5, max(abs(x - y) for x, y in zip(a, b))
+    if not size:
+        return rmse, largest
+    off, silhouette, worst = 0, 0, (0.0, 0, 0)
+    for y in range(size):
+        for x in range(size):
+            p = 4 * (y * size + x)
+            d = max(abs(a[p + c] - b[p + c]) for c in range(4))
+            if d <= 0.01:
+                continue
+            off += 1
+            worst = max(worst, (d, x, y))
+            if any(b[4 * (v * size + u) + 3] == 0.0 for v in range(max(0, y - 1), min(size, y + 2))
+                   for u in range(max(0, x - 1), min(size, x + 2))):
+                silhouette += 1
+    return rmse, largest, off, silhouette, worst
+
+
+def check(a, env):
+    """HAVS at the largest size against the exact reference at --check-size,
+    with a control: the same HAVS frame with the camera turned half a degree
+    must miss the bound."""
+    cubes = cubes_for(a.check)
+    results = {}
+    for kind in ('havs', 'reference'):
+        r = subprocess.run([sys.executable, os.path.abspath(__file__), '--check-worker', kind,
+                            str(cubes), str(a.check_size), a.output_dir], env=env,
+                           capture_output=True, text=True)
+        line = [l for l in r.stdout.split('\n') if l.startswith('HAVS_CHECK ')]
+        if r.returncode != 0 or not line or 'failed' in line[0]:
+            print('havs_scale: the check\'s %s failed (exit %d): %s %s'
+                  % (kind, r.returncode, line, r.stderr.strip()[-300:]))
+            return 1
+        results[kind] = json.loads(line[0][len('HAVS_CHECK '):])
+        print('check: %s' % line[0], flush=True)
+    path = lambda kind: os.path.join(a.output_dir, 'check-%s-%d.f32' % (kind, cubes))
+    rmse, largest, off, silhouette, worst = compare_images(path('havs'), path('reference'),
+                                                           a.check_size)
+    control_rmse, control_largest = compare_images(path('havs-turned'), path('reference'))
+    exact = rmse < 5e-4 and largest < 0.01
+    control_fails = not (control_rmse < 5e-4 and control_largest < 0.01)
+    h, ref = results['havs'], results['reference']
+    per = 2 ** 20 / h['tets']
+    text = ['# Scale: the largest mesh checked against the exact reference', '',
+            'Made by `python3 Apps/havs_scale.py --check %g --check-size %d` (%s; vtkSMPTools '
+            '%s). vtkHAVSVolumeMapper (defaults) on the block of %s tetrahedra, the scale\'s '
+            'view at %d^2, its float result against vtkHAVSReferenceRenderer\'s exact image of '
+            'the same grid and camera, over every RGBA component (MISSION.md\'s bound: RMSE < '
+            '5e-4, largest difference < 0.01). Each in a process of its own; seconds are the '
+            'first image (HAVS: the mesh, the orders, the table, the draw) and the whole '
+            'reference; memory beyond the loaded grid (the HAVS row: its two frames).'
+            % (a.check, a.check_size, time.strftime('%Y-%m-%d'),
+               env.get('VTK_SMP_BACKEND_IN_USE', 'Sequential'), format(h['tets'], ','),
+               a.check_size), '',
+            '| image | seconds | peak B/tet beyond the grid | RMSE | largest difference | '
+            'within the bound |', '|---|---|---|---|---|---|',
+            '| HAVS | %.1f | %.0f | %.2e | %.2e | %s |' % (
+                h['seconds'], h['peak_mb'] * per, rmse, largest, 'yes' if exact else 'NO'),
+            '| the exact reference | %.1f | %.0f | - | - | - |' % (
+                ref['seconds'], ref['peak_mb'] * per),
+            '| control: HAVS, the camera turned 0.5 degrees | - | - | %.2e | %.2e | %s (must '
+            'be no) |' % (control_rmse, control_largest, 'no' if control_fails else 'YES'), '',
+            'HAVS: %d of the %d pixels off by more than 0.01, %d of them on the silhouette (an '
+            'empty pixel of the reference beside them); the worst, %.4f, at pixel (%d, %d).'
+            % (off, a.check_size ** 2, silhouette, worst[0], worst[1], worst[2]), '']
+    with open(os.path.join(a.output_dir, 'check.md'), 'w') as f:
+        f.write('\n'.join(text))
+    print('\n'.join(text))
+    for kind in ('havs', 'havs-turned', 'reference'):
+        if os.path.exists(path(kind)) and exact and control_fails:
+            os.remove(path(kind))  # (kept for a look when the check fails)
+    return 0 if exact and control_fails else 1
+
+
+def worker(mapper_name, cubes, size):
+    """One configuration; prints one JSON line."""
+    import vtkhavs
+
+    trim = ctypes.CDLL('libc.so.6').malloc_trim
+    grid, mapper, volume = make_scene(mapper_name, cubes, size)
+    tets = grid.GetNumberOfCells()
+    trim(0)
+    base = status_mb('VmRSS:')
+    with open('/proc/self/clear_refs', 'w') as f:
+        f.write('5')  # the peak resident size from here
+    mapper.SetInputData(grid)
+    window, renderer = make_window(volume, size)
+    camera = set_camera(grid, renderer)
 
     def frame():
         t0 = time.time()
@@ -154,10 +333,19 @@ def main():
     p.add_argument('--mappers', default='havs,tetraycast,cellproj,pt')
     p.add_argument('--size', type=int, default=512)
     p.add_argument('--memory-limit-gb', type=float, default=0.0)
+    p.add_argument('--check', type=float, default=0.0,
+                   help='millions of tetrahedra: check HAVS there against the exact reference '
+                        '(writes check.md) instead of the scale table')
+    p.add_argument('--check-size', type=int, default=256)
     p.add_argument('--worker', nargs=3, metavar=('MAPPER', 'CUBES', 'SIZE'))
+    p.add_argument('--check-worker', nargs=4, metavar=('KIND', 'CUBES', 'SIZE', 'OUT'))
     a = p.parse_args()
     if a.worker:
         worker(a.worker[0], int(a.worker[1]), int(a.worker[2]))
+        return 0
+    if a.check_worker:
+        check_worker(a.check_worker[0], int(a.check_worker[1]), int(a.check_worker[2]),
+                     a.check_worker[3])
         return 0
 
     build = os.path.abspath(a.build)
@@ -172,6 +360,8 @@ def main():
         env['LD_PRELOAD'] = os.path.join(build, 'lib', fix[0])
     limit = a.memory_limit_gb or max(1.0, available_gb() - 2.0)
     os.makedirs(a.output_dir, exist_ok=True)
+    if a.check:
+        return check(a, env)
     rows = []
     per_tet = {}  # mapper -> bytes a tetrahedron (peak + grid) at the largest size run
     for millions in [float(s) for s in a.sizes.split(',')]:
