@@ -43,12 +43,16 @@ bool HasVersion(int major, int minor)
   return maj > major || (maj == major && min >= minor);
 }
 
+bool RendererIs(const char* name)
+{
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return renderer && std::strstr(renderer, name) != nullptr;
+}
+
 bool InterlockEmulated()
 {
   const char* requested = std::getenv("HAVS_EMULATE_INTERLOCK");
-  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  return requested && std::string(requested) == "1" && renderer &&
-    std::strstr(renderer, "llvmpipe") != nullptr;
+  return requested && std::string(requested) == "1" && RendererIs("llvmpipe");
 }
 
 long long FacesPerFinish()
@@ -57,41 +61,41 @@ long long FacesPerFinish()
   {
     return std::max(0LL, std::atoll(requested));
   }
-  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const bool software = renderer &&
-    (std::strstr(renderer, "llvmpipe") != nullptr || std::strstr(renderer, "softpipe") != nullptr);
-  return software ? (1LL << 18) : 0;
+  return RendererIs("llvmpipe") || RendererIs("softpipe") ? (1LL << 18) : 0;
 }
 
-DrawThrottle::~DrawThrottle()
+void DrawInPieces(long long first, long long last, long long perPiece,
+  const std::function<void(long long, long long)>& draw)
 {
-  for (void*& fence : this->Fences)
+  GLsync fences[2] = { nullptr, nullptr }; // the last two pieces drawn
+  int next = 0;
+  for (long long piece = first; piece < last;)
+  {
+    const long long end = perPiece > 0 ? std::min(last, piece + perPiece) : last;
+    if (GLsync fence = fences[next])
+    {
+      while (
+        glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 1000000000ull) == GL_TIMEOUT_EXPIRED)
+      {
+      }
+      glDeleteSync(fence);
+      fences[next] = nullptr;
+    }
+    draw(piece, end);
+    if (end < last)
+    {
+      fences[next] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+      next ^= 1;
+    }
+    piece = end;
+  }
+  for (GLsync fence : fences)
   {
     if (fence)
     {
-      glDeleteSync(static_cast<GLsync>(fence));
-      fence = nullptr;
+      glDeleteSync(fence);
     }
   }
-}
-
-void DrawThrottle::Before()
-{
-  if (void* fence = this->Fences[this->Next])
-  {
-    while (glClientWaitSync(static_cast<GLsync>(fence), GL_SYNC_FLUSH_COMMANDS_BIT,
-             1000000000ull) == GL_TIMEOUT_EXPIRED)
-    {
-    }
-    glDeleteSync(static_cast<GLsync>(fence));
-    this->Fences[this->Next] = nullptr;
-  }
-}
-
-void DrawThrottle::After()
-{
-  this->Fences[this->Next] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-  this->Next ^= 1;
 }
 
 vtkHAVSShaders::InterlockKind AvailableInterlock()

@@ -26,6 +26,8 @@
 
 #include "vtkHAVSShaders.h" // For InterlockKind
 
+#include <functional> // For std::function
+
 VTK_ABI_NAMESPACE_BEGIN
 
 namespace vtkHAVSGLCapabilities
@@ -34,6 +36,8 @@ namespace vtkHAVSGLCapabilities
 bool HasExtension(const char* name);
 /// Whether the context's version is at least major.minor.
 bool HasVersion(int major, int minor);
+/// Whether the context's GL_RENDERER names `name` (e.g. llvmpipe).
+bool RendererIs(const char* name);
 /// Whether HAVS_EMULATE_INTERLOCK=1 asks for the emulated interlock and this is llvmpipe.
 bool InterlockEmulated();
 /**
@@ -41,31 +45,19 @@ bool InterlockEmulated();
  * (llvmpipe) bins every queued triangle into scenes it keeps for reuse, and
  * one draw of millions of faces left it holding about 360 bytes a
  * tetrahedron after the frame (1M tets, 512^2), against 23 with its
- * rasterization synchronous (LP_NUM_THREADS=0). There 2^18 faces, drawn
- * through a DrawThrottle; on a GPU no pieces. HAVS_FACES_PER_FINISH (a
- * number, 0: none) overrides it.
+ * rasterization synchronous (LP_NUM_THREADS=0). There 2^18 faces; on a GPU
+ * no pieces. HAVS_FACES_PER_FINISH (a number, 0: none) overrides it.
  */
 long long FacesPerFinish();
 
 /**
- * Keeps at most two pieces of a draw queued: Before() waits for the piece
- * drawn two pieces earlier (a fence), After() fences the piece just drawn.
- * The rasterizer works on one piece while the next is binned.
+ * Draws units [first, last) (cells, faces) in pieces of `perPiece` units
+ * (0: one piece), at most two pieces queued: before each piece it waits for
+ * the fence of the piece two earlier, so the rasterizer works on one piece
+ * while the next is binned. `draw(begin, end)` issues one piece's draw.
  */
-class DrawThrottle
-{
-public:
-  DrawThrottle() = default;
-  ~DrawThrottle();
-  DrawThrottle(const DrawThrottle&) = delete;
-  DrawThrottle& operator=(const DrawThrottle&) = delete;
-  void Before();
-  void After();
-
-private:
-  void* Fences[2] = { nullptr, nullptr }; // GLsync
-  int Next = 0;
-};
+void DrawInPieces(long long first, long long last, long long perPiece,
+  const std::function<void(long long, long long)>& draw);
 /// The interlock the context has (ARB, NV), else InterlockNone.
 vtkHAVSShaders::InterlockKind AvailableInterlock();
 }

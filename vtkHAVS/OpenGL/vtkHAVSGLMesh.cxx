@@ -243,25 +243,13 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
     const GLsizei last = static_cast<GLsizei>(static_cast<long long>(faces) * (b + 1) / batches);
     glFrontFace(flipFacing ? GL_CW : GL_CCW);
     this->VertexArray.Bind();
-    // In pieces of perFinish faces, at most two queued (bounds a software
-    // rasterizer's queued scenes; one piece on a GPU).
-    vtkHAVSGLCapabilities::DrawThrottle throttle;
-    for (GLsizei piece = first; piece < last;)
-    {
-      const GLsizei end =
-        perFinish > 0 ? static_cast<GLsizei>(std::min<long long>(last, piece + perFinish)) : last;
-      if (perFinish > 0)
+    // In pieces, at most two queued (a software rasterizer's queued scenes).
+    vtkHAVSGLCapabilities::DrawInPieces(first, last, perFinish,
+      [](long long begin, long long end)
       {
-        throttle.Before();
-      }
-      glDrawElements(GL_TRIANGLES, 3 * (end - piece), GL_UNSIGNED_INT,
-        reinterpret_cast<const void*>(3 * sizeof(GLuint) * static_cast<size_t>(piece)));
-      if (perFinish > 0 && end < last)
-      {
-        throttle.After();
-      }
-      piece = end;
-    }
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(3 * (end - begin)), GL_UNSIGNED_INT,
+          reinterpret_cast<const void*>(3 * sizeof(GLuint) * static_cast<size_t>(begin)));
+      });
     glFrontFace(GL_CCW);
     if (b + 1 < batches)
     {

@@ -204,27 +204,16 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   program->SetUniformi("havsTrianglesPerCell", 4);
   program->SetUniformi("havsNearSectionDrawn", sectionTriangles > 0 ? 1 : 0);
   gl.Cells.Bind();
-  // In pieces, at most two queued (a software rasterizer's queued scenes:
-  // vtkHAVSGLCapabilities::FacesPerFinish).
-  const long long cellsPerFinish = vtkHAVSGLCapabilities::FacesPerFinish() / 4;
-  const auto cells = static_cast<long long>(gl.UploadedCells);
-  vtkHAVSGLCapabilities::DrawThrottle throttle;
-  for (long long cell = 0; cell < cells;)
-  {
-    const long long end = cellsPerFinish > 0 ? std::min(cells, cell + cellsPerFinish) : cells;
-    if (cellsPerFinish > 0)
+  // In pieces, at most two queued (a software rasterizer's queued scenes),
+  // each told its first cell (gl_PrimitiveID restarts at every draw).
+  vtkHAVSGLCapabilities::DrawInPieces(0, static_cast<long long>(gl.UploadedCells),
+    vtkHAVSGLCapabilities::FacesPerFinish() / 4,
+    [program](long long begin, long long end)
     {
-      throttle.Before();
-    }
-    program->SetUniformi("havsFirstCell", static_cast<int>(cell));
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(12 * (end - cell)), GL_UNSIGNED_INT,
-      reinterpret_cast<const void*>(12 * sizeof(GLuint) * static_cast<size_t>(cell)));
-    if (cellsPerFinish > 0 && end < cells)
-    {
-      throttle.After();
-    }
-    cell = end;
-  }
+      program->SetUniformi("havsFirstCell", static_cast<int>(begin));
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(12 * (end - begin)), GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(12 * sizeof(GLuint) * static_cast<size_t>(begin)));
+    });
   vtkHAVSGLVertexArray::Unbind();
   if (frame.MeasureStages)
   {

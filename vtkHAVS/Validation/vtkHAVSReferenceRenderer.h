@@ -189,9 +189,9 @@ public:
 
   vtkFloatArray* GetImage() { return this->Image; }
 
-  /// The faces the fragments refer to.
-  /// The faces of the tetrahedralized input: built again only when that changes
-  /// (orders built on it, vtkHAVSVisibilityOrder, stay valid across renders).
+  /// The faces the fragments refer to, of the tetrahedralized input: built again
+  /// only when that changes (orders built on it, vtkHAVSVisibilityOrder, stay
+  /// valid across renders).
   vtkHAVSFaceSet* GetFaceSet() { return this->Faces; }
 
   ///@{
