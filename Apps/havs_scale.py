@@ -4,7 +4,7 @@
     python3 Apps/havs_scale.py [--build build] [--output-dir Documentation/scale]
                                [--sizes 1,5,10,25,50] [--mappers havs,tetraycast,cellproj,pt]
                                [--size 512] [--memory-limit-gb G]
-    python3 Apps/havs_scale.py --check 50 [--check-size 256]
+    python3 Apps/havs_scale.py --check 50 [--check-size 256] [--check-mappers havs,tetraycast]
 
 For each size (millions of tetrahedra: a block of n^3 cubes, 5 tetrahedra each,
 vtkHAVSDataSets::MakeGenerated, the field sin(6x) cos(5y) + z) and each mapper,
@@ -26,12 +26,13 @@ Writes scale.csv, scale.md (the table) and, with matplotlib, scale.png (time
 and memory against size) in the output directory. Every row says the SMP
 backend (STDThread) and the renderer.
 
---check M instead renders HAVS (defaults) on the block of about M million
-tetrahedra at --check-size^2 and the exact reference (vtkHAVSReferenceRenderer)
-of the same grid and view, each in its own process, and compares the float
-images against MISSION.md's bound (RMSE < 5e-4, largest difference < 0.01);
-its control, the same HAVS frame with the camera turned half a degree, must
-miss the bound. Writes check.md; exits 1 if either fails.
+--check M instead renders each of --check-mappers (default HAVS) on the block
+of about M million tetrahedra at --check-size^2 and the exact reference
+(vtkHAVSReferenceRenderer) of the same grid and view, each in its own
+process, and compares the float images against MISSION.md's bound (RMSE <
+5e-4, largest difference < 0.01); each one's control, its frame with the
+camera turned half a degree, must miss the bound. Writes check.md; exits 1 if
+any fails.
 """
 import argparse
 import csv
@@ -210,12 +211,13 @@ def compare_images(a_path, b_path, size=0):
 
 
 def check(a, env):
-    """HAVS at the largest size against the exact reference at --check-size,
-    with a control: the same HAVS frame with the camera turned half a degree
-    must miss the bound."""
+    """Each of --check-mappers at the largest size against the exact reference
+    at --check-size, each with a control: the same mapper's frame with the
+    camera turned half a degree must miss the bound."""
     cubes = cubes_for(a.check)
+    mappers = a.check_mappers.split(',')
     results = {}
-    for kind in ('havs', 'reference'):
+    for kind in mappers + ['reference']:
         r = subprocess.run([sys.executable, os.path.abspath(__file__), '--check-worker', kind,
                             str(cubes), str(a.check_size), a.output_dir], env=env,
                            capture_output=True, text=True)
@@ -227,42 +229,53 @@ def check(a, env):
         results[kind] = json.loads(line[0][len('HAVS_CHECK '):])
         print('check: %s' % line[0], flush=True)
     path = lambda kind: os.path.join(a.output_dir, 'check-%s-%d.f32' % (kind, cubes))
-    rmse, largest, off, silhouette, worst = compare_images(path('havs'), path('reference'),
-                                                           a.check_size)
-    control_rmse, control_largest = compare_images(path('havs-turned'), path('reference'))
-    exact = rmse < 5e-4 and largest < 0.01
-    control_fails = not (control_rmse < 5e-4 and control_largest < 0.01)
-    h, ref = results['havs'], results['reference']
-    per = 2 ** 20 / h['tets']
+    ref = results['reference']
+    per = 2 ** 20 / ref['tets']
+    names = ', '.join(MAPPERS[m] for m in mappers)
     text = ['# Scale: the largest mesh checked against the exact reference', '',
-            'Made by `python3 Apps/havs_scale.py --check %g --check-size %d` (%s; vtkSMPTools '
-            '%s). vtkHAVSVolumeMapper (defaults) on the block of %s tetrahedra, the scale\'s '
-            'view at %d^2, its float result against vtkHAVSReferenceRenderer\'s exact image of '
-            'the same grid and camera, over every RGBA component (MISSION.md\'s bound: RMSE < '
+            'Made by `python3 Apps/havs_scale.py --check %g --check-size %d --check-mappers %s` '
+            '(%s; vtkSMPTools %s). %s on the block of %s tetrahedra, the scale\'s view at '
+            '%d^2, each float result against vtkHAVSReferenceRenderer\'s exact image of the '
+            'same grid and camera, over every RGBA component (MISSION.md\'s bound: RMSE < '
             '5e-4, largest difference < 0.01). Each in a process of its own; seconds are the '
-            'first image (HAVS: the mesh, the orders, the table, the draw) and the whole '
-            'reference; memory beyond the loaded grid (the HAVS row: its two frames).'
-            % (a.check, a.check_size, time.strftime('%Y-%m-%d'),
-               env.get('VTK_SMP_BACKEND_IN_USE', 'Sequential'), format(h['tets'], ','),
-               a.check_size), '',
+            'first image (a mapper\'s: the mesh, the orders, the table, the draw) and the whole '
+            'reference; memory beyond the loaded grid (a mapper\'s row: its two frames).'
+            % (a.check, a.check_size, a.check_mappers, time.strftime('%Y-%m-%d'),
+               env.get('VTK_SMP_BACKEND_IN_USE', 'Sequential'), names,
+               format(ref['tets'], ','), a.check_size), '',
             '| image | seconds | peak B/tet beyond the grid | RMSE | largest difference | '
-            'within the bound |', '|---|---|---|---|---|---|',
-            '| HAVS | %.1f | %.0f | %.2e | %.2e | %s |' % (
-                h['seconds'], h['peak_mb'] * per, rmse, largest, 'yes' if exact else 'NO'),
-            '| the exact reference | %.1f | %.0f | - | - | - |' % (
-                ref['seconds'], ref['peak_mb'] * per),
-            '| control: HAVS, the camera turned 0.5 degrees | - | - | %.2e | %.2e | %s (must '
-            'be no) |' % (control_rmse, control_largest, 'no' if control_fails else 'YES'), '',
-            'HAVS: %d of the %d pixels off by more than 0.01, %d of them on the silhouette (an '
-            'empty pixel of the reference beside them); the worst, %.4f, at pixel (%d, %d).'
-            % (off, a.check_size ** 2, silhouette, worst[0], worst[1], worst[2]), '']
+            'within the bound |', '|---|---|---|---|---|---|']
+    notes = []
+    passed = True
+    for m in mappers:
+        rmse, largest, off, silhouette, worst = compare_images(path(m), path('reference'),
+                                                               a.check_size)
+        control_rmse, control_largest = compare_images(path(m + '-turned'), path('reference'))
+        exact = rmse < 5e-4 and largest < 0.01
+        control_fails = not (control_rmse < 5e-4 and control_largest < 0.01)
+        passed = passed and exact and control_fails
+        r = results[m]
+        text.append('| %s | %.1f | %.0f | %.2e | %.2e | %s |' % (
+            MAPPERS[m], r['seconds'], r['peak_mb'] * per, rmse, largest,
+            'yes' if exact else 'NO'))
+        text.append('| control: %s, the camera turned 0.5 degrees | - | - | %.2e | %.2e | %s '
+                    '(must be no) |' % (MAPPERS[m], control_rmse, control_largest,
+                                        'no' if control_fails else 'YES'))
+        notes.append('%s: %d of the %d pixels off by more than 0.01, %d of them on the '
+                     'silhouette (an empty pixel of the reference beside them); the worst, '
+                     '%.4f, at pixel (%d, %d).' % (MAPPERS[m], off, a.check_size ** 2,
+                                                   silhouette, worst[0], worst[1], worst[2]))
+    text.append('| the exact reference | %.1f | %.0f | - | - | - |'
+                % (ref['seconds'], ref['peak_mb'] * per))
+    text += [''] + notes + ['']
     with open(os.path.join(a.output_dir, 'check.md'), 'w') as f:
         f.write('\n'.join(text))
     print('\n'.join(text))
-    for kind in ('havs', 'havs-turned', 'reference'):
-        if os.path.exists(path(kind)) and exact and control_fails:
-            os.remove(path(kind))  # (kept for a look when the check fails)
-    return 0 if exact and control_fails else 1
+    if passed:
+        for kind in [k for m in mappers for k in (m, m + '-turned')] + ['reference']:
+            if os.path.exists(path(kind)):
+                os.remove(path(kind))  # (kept for a look when the check fails)
+    return 0 if passed else 1
 
 
 def worker(mapper_name, cubes, size):
@@ -337,6 +350,8 @@ def main():
                    help='millions of tetrahedra: check HAVS there against the exact reference '
                         '(writes check.md) instead of the scale table')
     p.add_argument('--check-size', type=int, default=256)
+    p.add_argument('--check-mappers', default='havs',
+                   help='the mappers --check compares (havs, tetraycast, cellproj)')
     p.add_argument('--worker', nargs=3, metavar=('MAPPER', 'CUBES', 'SIZE'))
     p.add_argument('--check-worker', nargs=4, metavar=('KIND', 'CUBES', 'SIZE', 'OUT'))
     a = p.parse_args()

@@ -36,6 +36,7 @@
 #include "havsTestMessages.h"
 #include "havsTestScenes.h"
 
+#include "vtkHAVSCellGeometry.h"
 #include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSFaceSet.h"
@@ -547,9 +548,18 @@ int TestHAVSMapperContract(int, char*[])
     m->SetLargestGPUBuffer(static_cast<vtkIdType>(need));
     scene.Window->Render();
     const double off = havstest::Compare(havstest::ReadRGBA(scene.Window), expected).Max;
-    Check(off == 0.0 && messages->Errors == 1 && VolumePixels(expected) > 100,
+    // The ray caster's and the cell projection's cell records (80 bytes a
+    // tetrahedron) then lie in 4 buffers (vtkHAVSGLCellRecords): the same
+    // image as in one.
+    const bool split = name.find("VolumeMapper") != std::string::npos ||
+      need < vtkHAVSCellGeometry::RecordBytes * static_cast<size_t>(TetsOf(m));
+    Check(off == 0.0 && messages->Errors == 1 && VolumePixels(expected) > 100 && split,
       name + ": the limit at the need: drawn as a mapper that never refused (max " +
-        std::to_string(off * 255.0) + "/255)");
+        std::to_string(off * 255.0) + "/255)" +
+        (name.find("VolumeMapper") != std::string::npos
+            ? std::string()
+            : std::string(split ? ", its cell records in several buffers"
+                                : ", but its cell records fit one buffer: no split tested")));
   }
   return havstest::Result();
 }

@@ -15,8 +15,11 @@
 // away from its tetrahedron's fourth vertex) and stands for the face of the
 // tetrahedron behind it; 96 bytes per tetrahedron. Negative control: the
 // table rotated per cell (BreakNeighboursForTesting) fails the symmetry check.
+// vtkHAVSCellGeometry's face windings from one mirrored bit a tetrahedron
+// (control: the bits flipped), and the split of the cell records into buffers.
 #include "havsTestChecks.h"
 
+#include "vtkHAVSCellGeometry.h"
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSRayCastMesh.h"
@@ -150,6 +153,64 @@ int TestHAVSRayCastMesh(int, char*[])
       name + ": as many boundary faces as the face set");
     havstest::Check(inward == 0 && foreign == 0, name + ": boundary faces outward, of their cell");
     havstest::Check(brokenAsymmetric > count, name + ": negative control, a broken table fails");
+
+    // vtkHAVSCellGeometry's windings from one bit a tetrahedron (what the cell
+    // projection's vertex shader winds the faces by): every face j from
+    // FaceCorners and the mirrored bit is Compute's face j, wound outward
+    // (its normal away from vertex j). Control: the bits flipped wind every
+    // face inward.
+    std::vector<float> records;
+    std::vector<uint32_t> faces, mirrored;
+    vtkHAVSCellGeometry::Compute(points, scalars, tets, records, &faces);
+    vtkHAVSCellGeometry::ComputeMirrored(points, tets, mirrored);
+    size_t unlike = 0, wrongWay = 0, flippedOutward = 0, mirroredCount = 0;
+    for (size_t t = 0; t < count; ++t)
+    {
+      const bool m = ((mirrored[t / 32] >> (t % 32)) & 1u) != 0;
+      mirroredCount += m ? 1 : 0;
+      for (int flip = 0; flip < 2; ++flip)
+      {
+        for (int j = 0; j < 4; ++j)
+        {
+          int c[3];
+          vtkHAVSCellGeometry::FaceCorners(j, m != (flip == 1), c[0], c[1], c[2]);
+          double x[3][3], opposite[3], e1[3], e2[3], n[3], out[3];
+          for (int v = 0; v < 3; ++v)
+          {
+            grid->GetPoint(tets[4 * t + c[v]], x[v]);
+            unlike += flip == 0 && faces[12 * t + 3 * j + v] != tets[4 * t + c[v]] ? 1 : 0;
+          }
+          grid->GetPoint(tets[4 * t + j], opposite);
+          vtkMath::Subtract(x[1], x[0], e1);
+          vtkMath::Subtract(x[2], x[0], e2);
+          vtkMath::Cross(e1, e2, n);
+          vtkMath::Subtract(x[0], opposite, out);
+          const bool outward = vtkMath::Dot(n, out) > 0.0;
+          wrongWay += flip == 0 && !outward ? 1 : 0;
+          flippedOutward += flip == 1 && outward ? 1 : 0;
+        }
+      }
+    }
+    std::printf("%s: %zu of %zu tetrahedra mirrored; faces unlike Compute's %zu, inward %zu; "
+                "control, the bits flipped: %zu of %zu faces outward\n",
+      name.c_str(), mirroredCount, count, unlike, wrongWay, flippedOutward, 4 * count);
+    havstest::Check(unlike == 0 && wrongWay == 0,
+      name + ": faces wound from one bit a tetrahedron are Compute's, outward");
+    havstest::Check(flippedOutward == 0, name + ": negative control, the bits flipped wind inward");
   }
+
+  // The cell records' buffers (vtkHAVSGLCellRecords): 80 bytes a record, at
+  // most 4 buffers; the least largest buffer spreads them over the 4, and a
+  // limit one byte under it takes 5 (refused).
+  const size_t n = 49691875;
+  const size_t least = vtkHAVSCellGeometry::LargestRecordBufferNeed(n);
+  havstest::Check(vtkHAVSCellGeometry::RecordBuffers(n, 2147483647) == 2 &&
+      vtkHAVSCellGeometry::CellsPerRecordBuffer(2147483647) == 26843545 &&
+      least == 80 * ((n + 3) / 4) && vtkHAVSCellGeometry::RecordBuffers(n, least) == 4 &&
+      vtkHAVSCellGeometry::RecordBuffers(n, least - 1) == 5 &&
+      vtkHAVSCellGeometry::RecordBuffers(0, 80) == 1 &&
+      vtkHAVSCellGeometry::RecordBuffers(5, 1) == 5,
+    "record buffers: 49.7M tetrahedra in 2 under 2^31 bytes, in 4 at the least largest, 5 under "
+    "it");
   return havstest::Result();
 }

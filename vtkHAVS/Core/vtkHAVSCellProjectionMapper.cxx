@@ -168,17 +168,19 @@ const std::vector<uint32_t>* vtkHAVSCellProjectionMapper::MakeOrder(const vtkHAV
 //------------------------------------------------------------------------------
 vtkHAVSMemory::Part vtkHAVSCellProjectionMapper::GetLargestGPUBufferNeed() const
 {
-  // The cell records (vtkHAVSCellGeometry: planes and field).
-  return { "cell records (80 bytes a tetrahedron)",
-    sizeof(float) * vtkHAVSCellGeometry::FloatsPerCell *
-      static_cast<size_t>(this->Mesh->GetFaceSet()->GetNumberOfTetrahedra()) };
+  // The cell records (vtkHAVSCellGeometry: planes and field, 80 bytes a
+  // tetrahedron, in up to four buffers; the tetrahedra's point ids are 16).
+  return { "cell records (80 bytes a tetrahedron, in at most 4 buffers)",
+    vtkHAVSCellGeometry::LargestRecordBufferNeed(
+      static_cast<size_t>(this->Mesh->GetFaceSet()->GetNumberOfTetrahedra())) };
 }
 
 //------------------------------------------------------------------------------
 void vtkHAVSCellProjectionMapper::AddMemoryParts(std::vector<vtkHAVSMemory::Part>& parts) const
 {
   parts.push_back({ "cell order (MPVO)", this->Order->GetMemoryBytes() });
-  parts.push_back({ "cell records and faces", vtkHAVSMemory::Bytes(this->Cells, this->Faces) });
+  parts.push_back(
+    { "cell records and windings", vtkHAVSMemory::Bytes(this->Cells, this->Mirrored) });
   parts.push_back(
     { "centroid and drawn orders", vtkHAVSMemory::Bytes(this->Centroid, this->Drawn) });
 }
@@ -195,8 +197,10 @@ void vtkHAVSCellProjectionMapper::ResetLastFrame()
 void vtkHAVSCellProjectionMapper::ComputeCells()
 {
   vtkHAVSCellGeometry::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
-    this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, this->Faces,
+    this->Mesh->GetFaceSet()->GetTetrahedra(), this->Cells, nullptr,
     this->Mesh->HasCellScalars() ? &this->Mesh->GetTetrahedronCodes() : nullptr);
+  vtkHAVSCellGeometry::ComputeMirrored(
+    this->Mesh->GetPoints(), this->Mesh->GetFaceSet()->GetTetrahedra(), this->Mirrored);
 }
 
 //------------------------------------------------------------------------------
@@ -243,7 +247,8 @@ void vtkHAVSCellProjectionMapper::RenderView(
   frame.Table = this->Table;
   frame.TableVersion = this->TableBuildTime.GetMTime();
   frame.Cells = &this->Cells;
-  frame.Faces = &this->Faces;
+  frame.Tetrahedra = &this->Mesh->GetFaceSet()->GetTetrahedra();
+  frame.Mirrored = &this->Mirrored;
   frame.GeometryVersion = this->FieldTime.GetMTime();
   frame.Order = order;
   frame.OrderVersion = this->OrderTime.GetMTime();

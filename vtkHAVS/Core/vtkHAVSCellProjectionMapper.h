@@ -143,14 +143,15 @@ public:
     vtkHAVSMesh* Mesh = nullptr;
     vtkHAVSPreIntegrationTable* Table = nullptr;
     vtkMTimeType TableVersion = 0;
-    const std::vector<float>* Cells = nullptr;    ///< vtkHAVSCellGeometry, per tetrahedron
-    const std::vector<uint32_t>* Faces = nullptr; ///< 12 point ids per tetrahedron
-    vtkMTimeType GeometryVersion = 0;             ///< of Points, Cells, Faces
-    const std::vector<uint32_t>* Order = nullptr; ///< tetrahedra, front to back
-    vtkMTimeType OrderVersion = 0;                ///< changes whenever Order does
-    int Blend = 0;                                ///< the blend mode
-    vtkHAVSFramePlanes* Planes = nullptr;         ///< the clipping planes, the near plane's section
-    bool Opaque = false;                          ///< opaque geometry may end the rays
+    const std::vector<float>* Cells = nullptr;         ///< vtkHAVSCellGeometry, per tetrahedron
+    const std::vector<uint32_t>* Tetrahedra = nullptr; ///< 4 point ids each (the mesh's)
+    const std::vector<uint32_t>* Mirrored = nullptr;   ///< vtkHAVSCellGeometry::ComputeMirrored
+    vtkMTimeType GeometryVersion = 0;                  ///< of Points, Cells, Tetrahedra, Mirrored
+    const std::vector<uint32_t>* Order = nullptr;      ///< tetrahedra, front to back
+    vtkMTimeType OrderVersion = 0;                     ///< changes whenever Order does
+    int Blend = 0;                                     ///< the blend mode
+    vtkHAVSFramePlanes* Planes = nullptr; ///< the clipping planes, the near plane's section
+    bool Opaque = false;                  ///< opaque geometry may end the rays
     bool KeepResult = false;
     bool WrongExit = false;
     bool MeasureStages = false;
@@ -198,7 +199,7 @@ private:
   bool OrderBuilt = false;
   std::vector<float> Cells; // freed once uploaded (CellFrame::RestoreCells)
   bool CellsComputed = false;
-  std::vector<uint32_t> Faces;
+  std::vector<uint32_t> Mirrored; // one bit a tetrahedron: its faces' windings
   vtkTimeStamp GeometryTime;      // the cells' geometry (what the order depends on)
   vtkTimeStamp FieldTime;         // the cells' geometry or fields (what the GPU holds)
   std::vector<uint32_t> Centroid; // the centroid cell order

@@ -178,7 +178,8 @@ bool vtkHAVSMapperBase::PrepareMesh(vtkVolume* volume)
                     << " bytes: shaders address buffers with 32-bit offsets). Nothing is drawn; "
                        "draw this mesh in pieces (ParaView's distributed rendering) or with a "
                        "mapper that needs less in one buffer (vtkHAVSVolumeMapper: 12 bytes a "
-                       "face; the ray caster and the cell projection: 80 bytes a tetrahedron).");
+                       "face; the ray caster: 20 bytes a tetrahedron, its cell records in 4 "
+                       "buffers; the cell projection: 48 bytes a tetrahedron).");
     }
     return false;
   }

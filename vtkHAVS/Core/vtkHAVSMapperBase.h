@@ -243,13 +243,16 @@ public:
   ///@{
   /**
    * The largest single GPU buffer the mapper makes, in bytes. A mesh whose
-   * largest buffer (the ray caster's and the cell projection's cell records,
-   * 80 bytes a tetrahedron; HAVS's face indices, 12 bytes a face) would be
-   * larger is not drawn, with one error per mesh that says what to do instead.
+   * largest buffer would be larger is not drawn, with one error per mesh that
+   * says what to do instead: HAVS's face indices, 12 bytes a face; the ray
+   * caster's and the cell projection's cell records, 80 bytes a tetrahedron,
+   * go in up to 4 buffers of at most this size (vtkHAVSCellGeometry), so the
+   * ray caster's largest is 20 bytes a tetrahedron (its neighbours 16) and the
+   * cell projection's its ordered faces' indices, 48 bytes a tetrahedron.
    * Default DefaultLargestGPUBuffer, 2^31 - 1 bytes: shaders address storage
-   * buffers with 32-bit byte offsets, and llvmpipe's crash past 2 GiB (the
-   * ray caster's records of 26.8 million tetrahedra); the limit is what a
-   * buffer can be addressed with, not what the GPU's memory holds.
+   * buffers with 32-bit byte offsets, and llvmpipe's crash past 2 GiB (26.8
+   * million tetrahedra's records in one buffer); the limit is what a buffer
+   * can be addressed with, not what the GPU's memory holds.
    */
   static constexpr vtkIdType DefaultLargestGPUBuffer = 2147483647;
   vtkSetClampMacro(LargestGPUBuffer, vtkIdType, 1, VTK_ID_MAX);

@@ -9,6 +9,7 @@
 =========================================================================*/
 #include "vtkHAVSRayCastMapper.h"
 
+#include "vtkHAVSCellGeometry.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSMapperInputs.h"
@@ -59,10 +60,15 @@ void vtkHAVSRayCastMapper::SetBrokenNeighboursForTesting(bool broken)
 //------------------------------------------------------------------------------
 vtkHAVSMemory::Part vtkHAVSRayCastMapper::GetLargestGPUBufferNeed() const
 {
-  // The cell records: four face planes and the field.
-  return { "cell records (80 bytes a tetrahedron)",
-    vtkHAVSRayCastMesh::CellRecordBytes *
-      static_cast<size_t>(this->Mesh->GetFaceSet()->GetNumberOfTetrahedra()) };
+  // The cell records (four face planes and the field, 80 bytes a
+  // tetrahedron, in up to four buffers) or the neighbours (16 bytes a
+  // tetrahedron, one buffer): the larger.
+  const size_t tets = static_cast<size_t>(this->Mesh->GetFaceSet()->GetNumberOfTetrahedra());
+  const size_t records = vtkHAVSCellGeometry::LargestRecordBufferNeed(tets);
+  const size_t neighbours = 4 * sizeof(int32_t) * tets;
+  return records >= neighbours
+    ? vtkHAVSMemory::Part{ "cell records (80 bytes a tetrahedron, in at most 4 buffers)", records }
+    : vtkHAVSMemory::Part{ "neighbours (16 bytes a tetrahedron)", neighbours };
 }
 
 //------------------------------------------------------------------------------

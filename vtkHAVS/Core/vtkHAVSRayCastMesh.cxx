@@ -81,19 +81,35 @@ size_t vtkHAVSRayCastMesh::ComputeNeighbours(
 void vtkHAVSRayCastMesh::Build(const std::vector<float>& points, const std::vector<float>& scalars,
   const std::vector<uint32_t>& tets, const std::vector<float>* cellScalars)
 {
-  std::vector<uint32_t> faces; // 12 point ids per tetrahedron, face j outward
-  vtkHAVSCellGeometry::Compute(points, scalars, tets, this->Cells, faces, cellScalars);
+  vtkHAVSCellGeometry::Compute(points, scalars, tets, this->Cells, nullptr, cellScalars);
   const size_t boundary = ComputeNeighbours(tets, this->Neighbours);
   this->BoundaryFaces.clear();
   this->BoundaryCells.clear();
   this->BoundaryFaces.reserve(3 * boundary);
   this->BoundaryCells.reserve(boundary);
+  // Each boundary face wound outward as vtkHAVSCellGeometry winds it (no
+  // table of every face's corners: 48 bytes a tetrahedron).
   for (size_t slot = 0; slot < this->Neighbours.size(); ++slot)
   {
     if (this->Neighbours[slot] < 0)
     {
-      this->BoundaryFaces.insert(this->BoundaryFaces.end(), &faces[3 * slot], &faces[3 * slot] + 3);
-      this->BoundaryCells.push_back(static_cast<uint32_t>(slot / 4));
+      const size_t t = slot / 4;
+      double x[4][3];
+      for (int v = 0; v < 4; ++v)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          x[v][c] = points[3 * static_cast<size_t>(tets[4 * t + v]) + c];
+        }
+      }
+      int corner[3];
+      vtkHAVSCellGeometry::FaceCorners(static_cast<int>(slot % 4), vtkHAVSCellGeometry::Mirrored(x),
+        corner[0], corner[1], corner[2]);
+      for (int k = 0; k < 3; ++k)
+      {
+        this->BoundaryFaces.push_back(tets[4 * t + corner[k]]);
+      }
+      this->BoundaryCells.push_back(static_cast<uint32_t>(t));
     }
   }
 }
@@ -103,8 +119,7 @@ void vtkHAVSRayCastMesh::UpdateFields(const std::vector<float>& points,
   const std::vector<float>& scalars, const std::vector<uint32_t>& tets,
   const std::vector<float>* cellScalars)
 {
-  std::vector<uint32_t> faces;
-  vtkHAVSCellGeometry::Compute(points, scalars, tets, this->Cells, faces, cellScalars);
+  vtkHAVSCellGeometry::Compute(points, scalars, tets, this->Cells, nullptr, cellScalars);
 }
 
 //------------------------------------------------------------------------------

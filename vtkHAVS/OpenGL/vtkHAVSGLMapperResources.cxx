@@ -21,6 +21,7 @@
 #include "vtkHAVSViewFrame.h"
 
 #include "vtkCommand.h"
+#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -163,6 +164,20 @@ void vtkHAVSGLMapperResources::SetViewUniforms(vtkShaderProgram* program,
   {
     program->SetUniform3f("havsEyeMC", eyeModel);
     program->SetUniform3f("havsDirectionMC", direction);
+    double clipToModel[16], toModel[16];
+    vtkMatrix4x4::Invert(view.ModelToClip, clipToModel);
+    vtkHAVSViewFrame::ToColumnMajor(clipToModel, m);
+    program->SetUniformMatrix4x4("havsDCMC", m);
+    vtkMatrix4x4::Invert(view.ModelToEyeRelative, toModel);
+    float linear[9];
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        linear[3 * j + i] = static_cast<float>(toModel[4 * i + j]); // column-major
+      }
+    }
+    program->SetUniformMatrix3x3("havsRCMC", linear);
   }
 }
 

@@ -113,8 +113,9 @@ public:
    * The uniforms of the view every cell-projection and ray-casting program
    * reads (havsMCRC, havsDCRC, havsDirectionOfProjection, havsParallel,
    * havsViewportSize, havsPlaneCount, havsPlanesRC) and, with `eye`, the
-   * eye and direction in the mesh's shifted model coordinates (havsEyeMC,
-   * havsDirectionMC).
+   * eye, the direction and the clip-to-model matrix in the mesh's shifted
+   * model coordinates (havsEyeMC, havsDirectionMC, havsDCMC) and the linear
+   * part of eye-relative world to model (havsRCMC): the pixels' rays.
    */
   static void SetViewUniforms(vtkShaderProgram* program, const vtkHAVSViewFrame& view,
     vtkHAVSFramePlanes* planes, const double shift[3], bool eye);

@@ -9,6 +9,7 @@
 =========================================================================*/
 #include "vtkHAVSGLObjects.h"
 
+#include "vtkHAVSCellGeometry.h"
 #include "vtkHAVSFramePlanes.h"
 
 #include <algorithm>
@@ -114,6 +115,54 @@ void vtkHAVSGLBuffer::Release()
   LiveBufferBytes -= this->Bytes;
   this->Bytes = 0;
   this->Version = 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSGLCellRecords::Update(
+  const std::vector<float>& records, size_t cellsPerBuffer, vtkMTimeType version)
+{
+  constexpr size_t per = vtkHAVSCellGeometry::FloatsPerCell;
+  const size_t cells = records.size() / per;
+  cellsPerBuffer = std::max<size_t>(cellsPerBuffer, 1);
+  const size_t count = std::max<size_t>((cells + cellsPerBuffer - 1) / cellsPerBuffer, 1);
+  if (count > vtkHAVSCellGeometry::MaximumRecordBuffers)
+  {
+    return false;
+  }
+  if (version != 0 && version == this->GetVersion() && cellsPerBuffer == this->CellsPerBuffer)
+  {
+    return false;
+  }
+  this->Release();
+  for (size_t i = 0; i < count; ++i)
+  {
+    const size_t first = i * cellsPerBuffer;
+    const size_t n = std::min(cellsPerBuffer, cells - std::min(first, cells));
+    this->Buffers[i].Update(
+      GL_SHADER_STORAGE_BUFFER, records.data() + per * first, per * n * sizeof(float), version);
+  }
+  this->Count = static_cast<int>(count);
+  this->CellsPerBuffer = cellsPerBuffer;
+  return true;
+}
+
+void vtkHAVSGLCellRecords::Bind() const
+{
+  this->Buffers[0].BindBase(GL_SHADER_STORAGE_BUFFER, FirstBinding);
+  for (int i = 1; i < this->Count; ++i)
+  {
+    this->Buffers[i].BindBase(GL_SHADER_STORAGE_BUFFER, MoreBindings + static_cast<GLuint>(i - 1));
+  }
+}
+
+void vtkHAVSGLCellRecords::Release()
+{
+  for (vtkHAVSGLBuffer& buffer : this->Buffers)
+  {
+    buffer.Release();
+  }
+  this->Count = 1;
+  this->CellsPerBuffer = 0;
 }
 
 //------------------------------------------------------------------------------

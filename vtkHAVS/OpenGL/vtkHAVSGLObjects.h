@@ -83,6 +83,40 @@ private:
   vtkMTimeType Version = 0;
 };
 
+/**
+ * The cells' records (vtkHAVSCellGeometry, 80 bytes a tetrahedron) in up to
+ * vtkHAVSCellGeometry::MaximumRecordBuffers storage buffers of at most a
+ * given size each (a shader addresses one buffer with 32-bit byte offsets),
+ * bound where vtkHAVSCellRecordsLib.glsl reads them: binding 4, then 10, 11, 12.
+ */
+class vtkHAVSGLCellRecords
+{
+public:
+  static constexpr GLuint FirstBinding = 4;
+  static constexpr GLuint MoreBindings = 10; ///< buffers 1, 2, 3: 10, 11, 12
+
+  /**
+   * Uploads `records` (vtkHAVSCellGeometry::FloatsPerCell floats a cell) in
+   * buffers of `cellsPerBuffer` cells (the last the rest) unless they hold
+   * `version` in that split already. Returns whether it uploaded; false too
+   * when they would take more than MaximumRecordBuffers buffers (nothing then).
+   */
+  bool Update(const std::vector<float>& records, size_t cellsPerBuffer, vtkMTimeType version);
+  /// Every buffer bound at its binding.
+  void Bind() const;
+  /// The buffers in use (the shaders' HAVS_CELL_BUFFERS), at least 1.
+  int GetBufferCount() const { return this->Count; }
+  /// The cells in each buffer but the last (the shaders' havsCellsPerBuffer).
+  size_t GetCellsPerBuffer() const { return this->CellsPerBuffer; }
+  vtkMTimeType GetVersion() const { return this->Buffers[0].GetVersion(); }
+  void Release();
+
+private:
+  vtkHAVSGLBuffer Buffers[4];
+  int Count = 1;
+  size_t CellsPerBuffer = 0;
+};
+
 /// A vertex array: float attributes from buffers, optionally indices.
 class vtkHAVSGLVertexArray
 {

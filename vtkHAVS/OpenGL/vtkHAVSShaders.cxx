@@ -17,6 +17,7 @@
 #include "vtkHAVSCellOpticsLib.h"
 #include "vtkHAVSCellProjectionFS.h"
 #include "vtkHAVSCellProjectionVS.h"
+#include "vtkHAVSCellRecordsLib.h"
 #include "vtkHAVSClearFS.h"
 #include "vtkHAVSCompositeFS.h"
 #include "vtkHAVSExtremumDrawFS.h"
@@ -77,7 +78,8 @@ std::string Compose(const char* templ, int k, int pixelStride,
 /// A shader that integrates whole cells' segments (the cell projection's and
 /// the ray caster's): no k-buffer, no violation counter, no tagging; its blend
 /// and the additive blend's library in.
-std::string CellSegmentShader(const char* templ, bool opaque, int blend, bool cellScalars)
+std::string CellSegmentShader(
+  const char* templ, bool opaque, int blend, bool cellScalars, int cellBuffers)
 {
   vtkHAVSShaders::Features features;
   features.CountViolations = false;
@@ -86,6 +88,8 @@ std::string CellSegmentShader(const char* templ, bool opaque, int blend, bool ce
   features.CellScalars = cellScalars;
   std::string source = Compose(templ, 1, 1, features);
   Replace(source, "//HAVS::CellBlend", "#define HAVS_CELL_BLEND " + std::to_string(blend));
+  Replace(source, "//HAVS::CellRecordsLib",
+    "#define HAVS_CELL_BUFFERS " + std::to_string(cellBuffers) + "\n" + vtkHAVSCellRecordsLib);
   Replace(source, "//HAVS::AdditiveLib", vtkHAVSAdditiveLib);
   return source;
 }
@@ -324,9 +328,10 @@ std::string vtkHAVSShaders::CellProjectionVertexShader()
   return vtkHAVSCellProjectionVS;
 }
 
-std::string vtkHAVSShaders::CellProjectionShader(bool opaque, int blend, bool cellScalars)
+std::string vtkHAVSShaders::CellProjectionShader(
+  bool opaque, int blend, bool cellScalars, int cellBuffers)
 {
-  return CellSegmentShader(vtkHAVSCellProjectionFS, opaque, blend, cellScalars);
+  return CellSegmentShader(vtkHAVSCellProjectionFS, opaque, blend, cellScalars, cellBuffers);
 }
 
 std::string vtkHAVSShaders::RayCastPeelShader()
@@ -338,9 +343,9 @@ std::string vtkHAVSShaders::RayCastPeelShader()
   return Compose(vtkHAVSRayCastPeelFS, 1, 1, features);
 }
 
-std::string vtkHAVSShaders::RayCastShader(bool opaque, int blend, bool cellScalars)
+std::string vtkHAVSShaders::RayCastShader(bool opaque, int blend, bool cellScalars, int cellBuffers)
 {
-  return CellSegmentShader(vtkHAVSRayCastFS, opaque, blend, cellScalars);
+  return CellSegmentShader(vtkHAVSRayCastFS, opaque, blend, cellScalars, cellBuffers);
 }
 
 std::string vtkHAVSShaders::RayCastTileVertexShader()

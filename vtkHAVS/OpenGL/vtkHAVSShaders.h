@@ -116,18 +116,22 @@ public:
   /// shader (the k-buffer library's segment look-up; the opaque cut compiled
   /// in with `opaque`; `blend`: vtkHAVSCellProjectionMapper's blend mode:
   /// composite, maximum, minimum or additive; `cellScalars`: the cells'
-  /// fields are cell codes, their segments read the cell optics).
+  /// fields are cell codes, their segments read the cell optics;
+  /// `cellBuffers`: the storage buffers the cell records lie in,
+  /// vtkHAVSGLCellRecords).
   static std::string CellProjectionVertexShader();
-  static std::string CellProjectionShader(bool opaque, int blend = 0, bool cellScalars = false);
+  static std::string CellProjectionShader(
+    bool opaque, int blend = 0, bool cellScalars = false, int cellBuffers = 1);
   ///@}
 
   ///@{
   /// vtkHAVSRayCastMapper: the boundary entries' depth-peeling fragment
   /// shader (with CellProjectionVertexShader), and the ray-casting pass's
   /// (with RayCastTileVertexShader; the opaque cut compiled in with
-  /// `opaque`; `blend` and `cellScalars` as CellProjectionShader's).
+  /// `opaque`; `blend`, `cellScalars` and `cellBuffers` as CellProjectionShader's).
   static std::string RayCastPeelShader();
-  static std::string RayCastShader(bool opaque, int blend = 0, bool cellScalars = false);
+  static std::string RayCastShader(
+    bool opaque, int blend = 0, bool cellScalars = false, int cellBuffers = 1);
   /// The ray-casting pass's vertex shader: one instance per screen tile.
   static std::string RayCastTileVertexShader();
   ///@}

@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkOpenGLHAVSCellProjectionMapper.h"
 
+#include "vtkHAVSCellGeometry.h"
+
 #include "vtkHAVSExtremumPass.h"
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSGLCapabilities.h"
@@ -40,9 +42,12 @@ vtkStandardNewMacro(vtkOpenGLHAVSCellProjectionMapper);
 
 namespace
 {
-/// Storage-buffer bindings of the cell-projection shaders (vtkHAVSCellProjectionVS/FS.glsl).
-constexpr GLuint CellBinding = 4;  // the cells' planes and fields (vtkHAVSCellGeometry)
-constexpr GLuint OrderBinding = 5; // the cell of each drawn triangle's position
+/// Storage-buffer bindings of the cell-projection shaders (vtkHAVSCellProjectionVS/FS.glsl;
+/// the cell records: vtkHAVSGLCellRecords).
+constexpr GLuint OrderBinding = 5;    // the cell of each drawn position
+constexpr GLuint TetBinding = 6;      // the tetrahedra's point ids
+constexpr GLuint MirroredBinding = 7; // one bit a tetrahedron: its faces' windings
+constexpr GLuint PointBinding = 8;    // the points (3 floats each)
 /// Segments longer than this contribute nothing: off (the cell projection has no gaps to skip).
 constexpr float NoGapLength = 3.0e38f;
 }
@@ -50,20 +55,22 @@ constexpr float NoGapLength = 3.0e38f;
 /// The mapper's own GPU objects.
 struct vtkOpenGLHAVSCellProjectionMapper::GLObjects : vtkHAVSGLOwnObjects
 {
-  vtkHAVSGLVertexArray Cells; // the points, the ordered faces' indices
+  vtkHAVSGLVertexArray Cells; // no attributes: the vertex shader pulls the vertices
   vtkHAVSGLBuffer PointBuffer;
-  vtkHAVSGLBuffer IndexBuffer;
-  vtkHAVSGLBuffer CellBuffer;
+  vtkHAVSGLBuffer TetBuffer;
+  vtkHAVSGLBuffer MirroredBuffer;
+  vtkHAVSGLCellRecords Records; // the cells' planes and fields (vtkHAVSCellGeometry)
   vtkHAVSGLBuffer OrderBuffer;
-  size_t UploadedCells = 0; // tetrahedra in the index buffer (12 indices each)
+  size_t UploadedCells = 0; // tetrahedra in the order buffer
 
   void Release(vtkOpenGLRenderWindow*) override
   {
     for (vtkHAVSGLBuffer* b :
-      { &this->PointBuffer, &this->IndexBuffer, &this->CellBuffer, &this->OrderBuffer })
+      { &this->PointBuffer, &this->TetBuffer, &this->MirroredBuffer, &this->OrderBuffer })
     {
       b->Release();
     }
+    this->Records.Release();
     this->Cells.Release();
     this->UploadedCells = 0;
   }
@@ -82,34 +89,29 @@ vtkOpenGLHAVSCellProjectionMapper::~vtkOpenGLHAVSCellProjectionMapper() = defaul
 void vtkOpenGLHAVSCellProjectionMapper::Upload(const CellFrame& frame)
 {
   GLObjects& gl = *this->GL;
-  if (gl.PointBuffer.Update(GL_ARRAY_BUFFER, frame.Mesh->GetPoints(), frame.GeometryVersion))
+  const vtkMTimeType version = frame.GeometryVersion;
+  if (gl.PointBuffer.Update(GL_ARRAY_BUFFER, frame.Mesh->GetPoints(), version))
   {
     if (frame.Cells->empty() && frame.RestoreCells)
     {
       frame.RestoreCells(); // (freed after the last upload)
     }
-    gl.CellBuffer.Update(GL_SHADER_STORAGE_BUFFER, *frame.Cells, frame.GeometryVersion);
-    gl.Cells.SetBuffers(gl.PointBuffer, &gl.IndexBuffer);
+    gl.Records.Update(*frame.Cells,
+      vtkHAVSCellGeometry::CellsPerRecordBuffer(static_cast<size_t>(this->GetLargestGPUBuffer())),
+      version);
+    gl.TetBuffer.Update(GL_SHADER_STORAGE_BUFFER, *frame.Tetrahedra, version);
+    gl.MirroredBuffer.Update(GL_SHADER_STORAGE_BUFFER, *frame.Mirrored, version);
   }
   this->Resources->GetTable()->Update(frame.Table, frame.TableVersion);
-  // The faces of the cells in the frame's order, and the cell of each
-  // position: only when the order changed (not on a redraw or a
-  // transfer-function edit; once per mesh for the unsorted blends).
+  // The cell of each position: only when the order changed (not on a redraw
+  // or a transfer-function edit; once per mesh for the unsorted blends). The
+  // vertex shader winds each cell's four faces from its point ids.
   if (gl.OrderBuffer.GetVersion() == frame.OrderVersion && gl.UploadedCells == frame.Order->size())
   {
     return;
   }
-  const std::vector<uint32_t>& order = *frame.Order;
-  const std::vector<uint32_t>& faces = *frame.Faces;
-  std::vector<uint32_t> indices(12 * order.size()); // (only until uploaded)
-  for (size_t i = 0; i < order.size(); ++i)
-  {
-    std::copy_n(&faces[12 * static_cast<size_t>(order[i])], 12, &indices[12 * i]);
-  }
-  gl.IndexBuffer.Update(GL_ELEMENT_ARRAY_BUFFER, indices, 0, GL_STREAM_DRAW);
-  gl.OrderBuffer.Update(GL_SHADER_STORAGE_BUFFER, order, frame.OrderVersion, GL_STREAM_DRAW);
-  gl.Cells.SetBuffers(gl.PointBuffer, &gl.IndexBuffer);
-  gl.UploadedCells = order.size();
+  gl.OrderBuffer.Update(GL_SHADER_STORAGE_BUFFER, *frame.Order, frame.OrderVersion, GL_STREAM_DRAW);
+  gl.UploadedCells = frame.Order->size();
 }
 
 //------------------------------------------------------------------------------
@@ -135,6 +137,11 @@ void vtkOpenGLHAVSCellProjectionMapper::SetUniforms(
   }
   program->SetUniformMatrix3x3("havsModelToWorld", linear);
   program->SetUniformi("havsWrongExit", frame.WrongExit ? 1 : 0);
+  if (this->GL->Records.GetBufferCount() > 1)
+  {
+    program->SetUniformi(
+      "havsCellsPerBuffer", static_cast<int>(this->GL->Records.GetCellsPerBuffer()));
+  }
   program->SetUniformf("havsGapLength", NoGapLength);
 }
 
@@ -158,8 +165,8 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   // 2. The program, its textures and uniforms.
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
     vtkHAVSShaders::CellProjectionVertexShader().c_str(),
-    vtkHAVSShaders::CellProjectionShader(
-      opaque, frame.Blend, this->Resources->GetTable()->HasCellOptics())
+    vtkHAVSShaders::CellProjectionShader(opaque, frame.Blend,
+      this->Resources->GetTable()->HasCellOptics(), gl.Records.GetBufferCount())
       .c_str(),
     "");
   if (!program || !program->GetCompiled())
@@ -182,7 +189,7 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   const float zero[4] = { 0, 0, 0, 0 };
   glClearBufferfv(GL_COLOR, 0, zero);
   this->Resources->SetBlending(frame.Blend);
-  gl.CellBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, CellBinding);
+  gl.Records.Bind();
   if (frame.MeasureStages)
   {
     glFinish();
@@ -193,6 +200,7 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
     // The near plane's section first: the cells it cuts are the first along
     // their rays (either facing; one triangle per cell entry).
     program->SetUniformi("havsTrianglesPerCell", 1);
+    program->SetUniformi("havsPullVertices", 0);
     program->SetUniformi("havsFirstCell", 0);
     program->SetUniformi("havsNearSectionDrawn", 1);
     this->Resources->DrawSection(OrderBinding);
@@ -201,18 +209,23 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   state->vtkglCullFace(GL_BACK);
   glFrontFace(view.FlipFacing ? GL_CW : GL_CCW);
   gl.OrderBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, OrderBinding);
+  gl.TetBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, TetBinding);
+  gl.MirroredBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, MirroredBinding);
+  gl.PointBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, PointBinding);
   program->SetUniformi("havsTrianglesPerCell", 4);
   program->SetUniformi("havsNearSectionDrawn", sectionTriangles > 0 ? 1 : 0);
+  program->SetUniformi("havsPullVertices", 1);
   gl.Cells.Bind();
   // In pieces, at most two queued (a software rasterizer's queued scenes),
-  // each told its first cell (gl_PrimitiveID restarts at every draw).
+  // each told its first cell (gl_PrimitiveID restarts at every draw; the
+  // vertex shader's gl_VertexID does not).
   vtkHAVSGLCapabilities::DrawInPieces(0, static_cast<long long>(gl.UploadedCells),
     vtkHAVSGLCapabilities::FacesPerFinish() / 4,
     [program](long long begin, long long end)
     {
       program->SetUniformi("havsFirstCell", static_cast<int>(begin));
-      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(12 * (end - begin)), GL_UNSIGNED_INT,
-        reinterpret_cast<const void*>(12 * sizeof(GLuint) * static_cast<size_t>(begin)));
+      glDrawArrays(
+        GL_TRIANGLES, static_cast<GLint>(12 * begin), static_cast<GLsizei>(12 * (end - begin)));
     });
   vtkHAVSGLVertexArray::Unbind();
   if (frame.MeasureStages)

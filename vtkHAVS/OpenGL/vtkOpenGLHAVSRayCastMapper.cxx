@@ -9,6 +9,7 @@
 =========================================================================*/
 #include "vtkOpenGLHAVSRayCastMapper.h"
 
+#include "vtkHAVSCellGeometry.h"
 #include "vtkHAVSExtremumPass.h"
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSGLFrameTargets.h"
@@ -54,7 +55,6 @@ enum ImageUnit : GLuint
 /// Storage-buffer bindings of the ray-casting shaders.
 enum StorageBinding : GLuint
 {
-  CellBinding = 4,      // the cells' planes and fields (vtkHAVSRayCastMesh)
   FaceCellBinding = 5,  // the cell of each boundary face (or section triangle)
   NeighbourBinding = 6, // each cell's face neighbours
   CountBinding = 7,     // rays started, cells crossed, fold re-entries
@@ -78,7 +78,8 @@ struct vtkOpenGLHAVSRayCastMapper::GLObjects : vtkHAVSGLOwnObjects
 {
   vtkHAVSGLVertexArray Boundary; // the points, the boundary faces
   vtkHAVSGLVertexArray Tiles;    // no attributes: the tiles' corners come from their ids
-  vtkHAVSGLBuffer Points, Faces, FaceCells, Cells, Neighbours, Counts, TilePasses, PeelTiles;
+  vtkHAVSGLBuffer Points, Faces, FaceCells, Neighbours, Counts, TilePasses, PeelTiles;
+  vtkHAVSGLCellRecords Records; // the cells' planes and fields
   vtkHAVSGLImage EntryKey, EntryCell, RayState;
   vtkHAVSGLStencilTarget PeelTarget; // a stencil only: the tiles a pass peels
   int BoundaryFaces = 0;
@@ -86,8 +87,9 @@ struct vtkOpenGLHAVSRayCastMapper::GLObjects : vtkHAVSGLOwnObjects
 
   void Release(vtkOpenGLRenderWindow*) override
   {
-    for (vtkHAVSGLBuffer* b : { &this->Points, &this->Faces, &this->FaceCells, &this->Cells,
-           &this->Neighbours, &this->Counts, &this->TilePasses, &this->PeelTiles })
+    this->Records.Release();
+    for (vtkHAVSGLBuffer* b : { &this->Points, &this->Faces, &this->FaceCells, &this->Neighbours,
+           &this->Counts, &this->TilePasses, &this->PeelTiles })
     {
       b->Release();
     }
@@ -125,7 +127,9 @@ void vtkOpenGLHAVSRayCastMapper::Upload(const RayFrame& frame)
     }
     gl.Faces.Update(GL_ELEMENT_ARRAY_BUFFER, mesh.GetBoundaryFaces(), version);
     gl.FaceCells.Update(GL_SHADER_STORAGE_BUFFER, mesh.GetBoundaryCells(), version);
-    gl.Cells.Update(GL_SHADER_STORAGE_BUFFER, mesh.GetCells(), version);
+    gl.Records.Update(mesh.GetCells(),
+      vtkHAVSCellGeometry::CellsPerRecordBuffer(static_cast<size_t>(this->GetLargestGPUBuffer())),
+      version);
     gl.Neighbours.Update(GL_SHADER_STORAGE_BUFFER, mesh.GetNeighbours(), version);
     gl.Counts.Update(GL_SHADER_STORAGE_BUFFER, nullptr, NumberOfCounts * sizeof(uint32_t), version);
     gl.Boundary.SetBuffers(gl.Points, &gl.Faces);
@@ -144,8 +148,8 @@ bool vtkOpenGLHAVSRayCastMapper::MakePrograms(
     vtkHAVSShaders::RayCastPeelShader().c_str(), "");
   programs.Cast = programs.Peel && programs.Peel->GetCompiled()
     ? cache->ReadyShaderProgram(vtkHAVSShaders::RayCastTileVertexShader().c_str(),
-        vtkHAVSShaders::RayCastShader(
-          frame.Opaque, frame.Blend, this->Resources->GetTable()->HasCellOptics())
+        vtkHAVSShaders::RayCastShader(frame.Opaque, frame.Blend,
+          this->Resources->GetTable()->HasCellOptics(), this->GL->Records.GetBufferCount())
           .c_str(),
         "")
     : nullptr;
@@ -199,12 +203,13 @@ void vtkOpenGLHAVSRayCastMapper::SetUniforms(vtkOpenGLRenderWindow* window,
   this->Resources->SetTextureUniforms(cast);
   cast->SetUniformf("havsTerminationOpacity", frame.TerminationOpacity);
   cast->SetUniformf("havsGapLength", NoGapLength);
-  double clipToModel[16];
-  vtkMatrix4x4::Invert(view.ModelToClip, clipToModel);
-  vtkHAVSViewFrame::ToColumnMajor(clipToModel, m);
-  cast->SetUniformMatrix4x4("havsDCMC", m);
   cast->SetUniformi("havsMaxSteps", this->GL->Tetrahedra + ExtraSteps);
   cast->SetUniformi("havsFolds", frame.FoldReentries ? 1 : 0);
+  if (this->GL->Records.GetBufferCount() > 1)
+  {
+    cast->SetUniformi(
+      "havsCellsPerBuffer", static_cast<int>(this->GL->Records.GetCellsPerBuffer()));
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -226,7 +231,7 @@ void vtkOpenGLHAVSRayCastMapper::ClearRays(const TileGrid& grid)
   gl.RayState.BindImage(RayStateUnit);
   const GLuint zeroCounts[NumberOfCounts] = { 0, 0, 0 };
   gl.Counts.Write(0, zeroCounts, sizeof(zeroCounts));
-  gl.Cells.BindBase(GL_SHADER_STORAGE_BUFFER, CellBinding);
+  gl.Records.Bind();
   gl.FaceCells.BindBase(GL_SHADER_STORAGE_BUFFER, FaceCellBinding);
   gl.Neighbours.BindBase(GL_SHADER_STORAGE_BUFFER, NeighbourBinding);
   gl.Counts.BindBase(GL_SHADER_STORAGE_BUFFER, CountBinding);

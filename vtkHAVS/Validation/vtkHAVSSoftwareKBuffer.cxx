@@ -112,6 +112,18 @@ private:
 
   void Advance(const Entry& p)
   {
+    // As the GPU's k-buffer: a fragment behind the front (out of order)
+    // leaves the front where it is (nothing is integrated twice) and gives it
+    // only a boundary fragment's role.
+    if (this->HaveFront && p.Distance < this->Front.Distance)
+    {
+      if (p.Exit || p.Entering)
+      {
+        this->Front.Exit = p.Exit;
+        this->Front.Entering = p.Entering;
+      }
+      return;
+    }
     if (this->HaveFront && !this->Front.Exit)
     {
       const double length = p.Distance - this->Front.Distance;

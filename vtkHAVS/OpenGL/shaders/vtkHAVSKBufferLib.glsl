@@ -268,6 +268,26 @@ void havsAdvance(inout vec4 color, inout vec2 front, vec2 p, float opaqueDistanc
   {
     return;
   }
+  // A fragment behind the front (out of order): the ray is integrated past
+  // it, so the front stays where it is (never again over a stretch
+  // composited already) and takes only a boundary fragment's role. At a pixel
+  // centre on or near a face's edge the rasterizer (vertices snapped to
+  // sub-pixel units) can cover it with a face the exact ray misses, whose
+  // cell the exact order draws later; moving the front back to it counted
+  // the stretch between twice (the 49.7M block at 256^2, a ray within 1e-4 px
+  // of faces seen almost edge-on: 0.020 too opaque). With cell scalars a
+  // near-tie (HAVS_CELL_TIE) still moves the front: the fragment that leaves
+  // last gives the next segment its cell (see havsCellTieLeaves).
+#if HAVS_CELL_SCALARS
+  bool behind = front.x > HAVS_NO_FRONT && p.x < front.x - HAVS_CELL_TIE * abs(front.x);
+#else
+  bool behind = front.x > HAVS_NO_FRONT && p.x < front.x;
+#endif
+  if (behind)
+  {
+    front.y = p.y < 1.5 ? front.y : havsScalarOf(front.y) + (p.y - havsScalarOf(p.y));
+    return;
+  }
   vec2 back = p;
 #if HAVS_OPAQUE
   bool reached = p.x > opaqueDistance;
@@ -545,6 +565,14 @@ void havsRetreat(inout vec4 color, inout vec2 back, vec2 p, float opaqueDistance
     havsCountViolation();
   }
 #endif
+#if HAVS_CELL_SCALARS
+  if (back.x > HAVS_NO_FRONT && p.x > back.x + HAVS_CELL_TIE * abs(back.x))
+#else
+  if (back.x > HAVS_NO_FRONT && p.x > back.x)
+#endif
+  {
+    return; // beyond the back (out of order): see havsAdvance
+  }
   if (back.x > HAVS_NO_FRONT && p.x < opaqueDistance)
   {
     vec2 b = back;
