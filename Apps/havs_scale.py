@@ -261,10 +261,11 @@ def check(a, env):
         text.append('| control: %s, the camera turned 0.5 degrees | - | - | %.2e | %.2e | %s '
                     '(must be no) |' % (MAPPERS[m], control_rmse, control_largest,
                                         'no' if control_fails else 'YES'))
-        notes.append('%s: %d of the %d pixels off by more than 0.01, %d of them on the '
-                     'silhouette (an empty pixel of the reference beside them); the worst, '
-                     '%.4f, at pixel (%d, %d).' % (MAPPERS[m], off, a.check_size ** 2,
-                                                   silhouette, worst[0], worst[1], worst[2]))
+        notes.append('%s: %d of the %d pixels off by more than 0.01' % (
+            MAPPERS[m], off, a.check_size ** 2) + (
+            ', %d of them on the silhouette (an empty pixel of the reference beside them); '
+            'the worst, %.4f, at pixel (%d, %d).' % (silhouette, worst[0], worst[1], worst[2])
+            if off else '.'))
     text.append('| the exact reference | %.1f | %.0f | - | - | - |'
                 % (ref['seconds'], ref['peak_mb'] * per))
     text += [''] + notes + ['']

@@ -35,6 +35,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <vector>
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -56,6 +57,8 @@ constexpr float NoGapLength = 3.0e38f;
 struct vtkOpenGLHAVSCellProjectionMapper::GLObjects : vtkHAVSGLOwnObjects
 {
   vtkHAVSGLVertexArray Cells; // no attributes: the vertex shader pulls the vertices
+  vtkHAVSGLBuffer Pattern;    // the faces of PatternCells cells: corner ids 4 slot + k
+  size_t PatternCells = 0;
   vtkHAVSGLBuffer PointBuffer;
   vtkHAVSGLBuffer TetBuffer;
   vtkHAVSGLBuffer MirroredBuffer;
@@ -71,6 +74,8 @@ struct vtkOpenGLHAVSCellProjectionMapper::GLObjects : vtkHAVSGLOwnObjects
       b->Release();
     }
     this->Records.Release();
+    this->Pattern.Release();
+    this->PatternCells = 0;
     this->Cells.Release();
     this->UploadedCells = 0;
   }
@@ -215,18 +220,55 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   program->SetUniformi("havsTrianglesPerCell", 4);
   program->SetUniformi("havsNearSectionDrawn", sectionTriangles > 0 ? 1 : 0);
   program->SetUniformi("havsPullVertices", 1);
-  gl.Cells.Bind();
-  // In pieces, at most two queued (a software rasterizer's queued scenes),
-  // each told its first cell (gl_PrimitiveID restarts at every draw; the
-  // vertex shader's gl_VertexID does not).
-  vtkHAVSGLCapabilities::DrawInPieces(0, static_cast<long long>(gl.UploadedCells),
-    vtkHAVSGLCapabilities::FacesPerFinish() / 4,
-    [program](long long begin, long long end)
+  // The faces of a run of cells as one pattern of indices, drawn again for
+  // every run with its first corner as the base vertex: each cell's 4
+  // corners are shaded once (the vertex cache), and no index buffer in draw
+  // order exists. Runs of at most PatternCells cells: a software
+  // rasterizer's pieces (at most two queued, its binned scenes stay
+  // bounded), else 2^20.
+  const long long perPiece = vtkHAVSGLCapabilities::FacesPerFinish() / 4;
+  const size_t patternCells = static_cast<size_t>(perPiece > 0 ? perPiece : (1LL << 20));
+  if (gl.PatternCells != patternCells)
+  {
+    // Face f of a cell, opposite its corner f, counter-clockwise seen from
+    // outside a tetrahedron of positive volume (the vertex shader swaps
+    // corners 2 and 3 of a mirrored one).
+    static constexpr GLuint Faces[12] = { 1, 2, 3, 2, 0, 3, 3, 0, 1, 0, 2, 1 };
+    std::vector<GLuint> pattern(12 * patternCells);
+    for (size_t c = 0; c < patternCells; ++c)
     {
-      program->SetUniformi("havsFirstCell", static_cast<int>(begin));
-      glDrawArrays(
-        GL_TRIANGLES, static_cast<GLint>(12 * begin), static_cast<GLsizei>(12 * (end - begin)));
-    });
+      for (int i = 0; i < 12; ++i)
+      {
+        pattern[12 * c + i] = static_cast<GLuint>(4 * c) + Faces[i];
+      }
+    }
+    gl.Pattern.Update(GL_ELEMENT_ARRAY_BUFFER, pattern, 0);
+    gl.PatternCells = patternCells;
+    gl.Cells.SetIndices(&gl.Pattern);
+  }
+  gl.Cells.Bind();
+  // Each draw told its first cell (gl_PrimitiveID restarts at every draw).
+  const auto drawRun = [program](long long begin, long long end)
+  {
+    program->SetUniformi("havsFirstCell", static_cast<int>(begin));
+    glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(12 * (end - begin)),
+      GL_UNSIGNED_INT, nullptr, static_cast<GLint>(4 * begin));
+  };
+  if (perPiece > 0)
+  {
+    vtkHAVSGLCapabilities::DrawInPieces(
+      0, static_cast<long long>(gl.UploadedCells), perPiece, drawRun);
+  }
+  else
+  {
+    for (long long begin = 0; begin < static_cast<long long>(gl.UploadedCells);
+         begin += static_cast<long long>(patternCells))
+    {
+      drawRun(begin,
+        std::min(
+          static_cast<long long>(gl.UploadedCells), begin + static_cast<long long>(patternCells)));
+    }
+  }
   vtkHAVSGLVertexArray::Unbind();
   if (frame.MeasureStages)
   {

@@ -26,6 +26,11 @@ in vec3 havsPositionMC;
 in vec3 havsPositionRC;
 
 //HAVS::CellRecordsLib
+// One bit a tetrahedron: mirrored (vtkHAVSCellGeometry::ComputeMirrored).
+layout(std430, binding = 7) readonly buffer HAVSMirrored
+{
+  uint havsMirrored[];
+};
 // The tetrahedron of each drawn position (4 faces each): the cell order.
 layout(std430, binding = 5) readonly buffer HAVSCellOrder
 {
@@ -45,6 +50,41 @@ uniform int havsNearSectionDrawn; // 1: the near plane's section was drawn this 
 #endif
 
 layout(location = 0) out vec4 havsSegmentColor;
+
+// The stretch of the ray o + t d in the cell narrowed by `plane` unless the
+// ray runs almost along it (|n.d| below `grazing`: see havsBoundGrazing).
+void havsBound(vec4 plane, vec3 o, vec3 d, float grazing, inout float tEnter, inout float tExit,
+  inout float tFarthest)
+{
+  float towards = dot(plane.xyz, d);
+  float t = -(dot(plane.xyz, o) + plane.w) / towards;
+  bool bounds = abs(towards) >= grazing;
+  tExit = bounds && towards > 0.0 ? min(tExit, t) : tExit;
+  tFarthest = bounds && towards > 0.0 ? max(tFarthest, t) : tFarthest;
+  tEnter = bounds && towards < 0.0 ? max(tEnter, t) : tEnter;
+}
+
+// A plane the ray runs almost along narrows the stretch unless the ray lies
+// within the rasterizer's band of it at both `ends` of the stretch the others
+// left (`bands`: the band there); exactly parallel (|n.d| at most
+// `parallelToRay`), it keeps the ray only on its inner side. True where the
+// fragment is left out: the ray runs outside an exactly parallel plane, or
+// within the band of the plane of the fragment's own face (`own`).
+bool havsBoundGrazing(vec4 plane, bool own, vec3 o, vec3 d, float grazing, float parallelToRay,
+  vec2 ends, vec2 bands, inout float tEnter, inout float tExit, inout float tFarthest)
+{
+  float towards = dot(plane.xyz, d);
+  float f = dot(plane.xyz, o) + plane.w;
+  bool near = abs(towards) < grazing;
+  bool banded = near && bands.x > 0.0 && abs(f + towards * ends.x) < bands.x &&
+    abs(f + towards * ends.y) < bands.y;
+  bool bounds = near && !banded;
+  float t = -f / towards;
+  tExit = bounds && towards > parallelToRay ? min(tExit, t) : tExit;
+  tFarthest = bounds && towards > parallelToRay ? max(tFarthest, t) : tFarthest;
+  tEnter = bounds && towards < -parallelToRay ? max(tEnter, t) : tEnter;
+  return (banded && own) || (bounds && abs(towards) <= parallelToRay && f > 0.0);
+}
 
 void main()
 {
@@ -67,9 +107,12 @@ void main()
   vec3 dRC = havsParallel != 0 ? havsModelToWorld * havsDirectionMC : toNearRC;
   vec3 spacing0 = max(abs(dFdx(o)), abs(dFdy(o)));
   vec3 spacingPerT = max(abs(dFdx(d)), abs(dFdy(d)));
-  // The face this fragment is of: the cell's triangle j is its face plane j
-  // (-1: a near-plane section).
+  // The face this fragment is of, -1 on a near-plane section: the cell's
+  // triangle f lies opposite its corner f as the vertex shader pulled them,
+  // which on a mirrored tetrahedron swaps corners 2 and 3: face plane j.
   int own = havsTrianglesPerCell == 4 ? gl_PrimitiveID % 4 : -1;
+  bool mirrored = ((havsMirrored[uint(cell) >> 5u] >> (uint(cell) & 31u)) & 1u) != 0u;
+  own = mirrored && own >= 2 ? 5 - own : own;
   // The ray meets the cell where it is inside all four face planes: from the
   // farthest plane it enters by to the nearest it leaves by (Weiler, Kraus and
   // Ertl's exit, and the entry found the same way, not taken as the
@@ -86,55 +129,47 @@ void main()
   // (Before: the entry taken as the fragment's position and the exit from
   // every plane the ray moves towards; the 49.7M block at 256^2 had a ray
   // within 1e-4 px of such faces that came out 0.012 too opaque.)
-  float f[4], towards[4];
-  for (int j = 0; j < 4; ++j)
-  {
-    vec4 plane = havsCell(cell, j);
-    f[j] = dot(plane.xyz, o) + plane.w;
-    towards[j] = dot(plane.xyz, d);
-  }
   // Exactly parallel to the ray: |towards| below float noise, at most about
   // 3 * 2^-24 |d| for a three-term dot product of a unit normal and d (the
   // bound is twice that, so that a needle, a face 1e6 times longer than wide
   // turned 1e-6 from the ray, still bounds it): the plane keeps the ray only
   // on its inner side. Almost parallel (below 1e-2: 0.6 degrees), the plane
-  // is looked at after the others have bounded the stretch.
+  // is looked at after the others have bounded the stretch. (Two loops over
+  // the planes, no arrays: llvmpipe keeps an array indexed in a loop in
+  // memory, and the draw took 1.5 times as long.)
   float parallelToRay = 4e-7 * length(d);
   float grazing = 1e-2 * length(d);
   float tEnter = -HAVS_EMPTY;
   float tExit = HAVS_EMPTY;
   float tFarthest = 0.0;
-  bool outside = own >= 0 && !(towards[own] < -parallelToRay); // (its face seen from behind)
-  for (int pass = 0; pass < 2; ++pass)
+  vec4 planes[4] = vec4[4](havsCell(cell, 0), havsCell(cell, 1), havsCell(cell, 2), havsCell(cell, 3));
+  havsBound(planes[0], o, d, grazing, tEnter, tExit, tFarthest);
+  havsBound(planes[1], o, d, grazing, tEnter, tExit, tFarthest);
+  havsBound(planes[2], o, d, grazing, tEnter, tExit, tFarthest);
+  havsBound(planes[3], o, d, grazing, tEnter, tExit, tFarthest);
+  // The almost parallel planes: each bounds the stretch unless the ray stays
+  // within the band of it at both ends of the stretch the others left.
+  bool finite = tEnter > -HAVS_EMPTY && tExit < HAVS_EMPTY;
+  vec2 ends = vec2(tEnter, tExit);
+  vec2 bands = finite ? vec2(length(spacing0 + tEnter * spacingPerT),
+                          length(spacing0 + tExit * spacingPerT)) / 256.0
+                      : vec2(0.0);
+  bool outside = own >= 0 &&
+    !(dot((own == 0 ? planes[0] : (own == 1 ? planes[1] : (own == 2 ? planes[2] : planes[3]))).xyz,
+        d) < -parallelToRay); // (its face seen from behind)
+  // (Skipped where no plane is almost parallel: nearly everywhere.)
+  bool anyNear = min(min(abs(dot(planes[0].xyz, d)), abs(dot(planes[1].xyz, d))),
+                   min(abs(dot(planes[2].xyz, d)), abs(dot(planes[3].xyz, d)))) < grazing;
+  if (anyNear)
   {
-    for (int j = 0; j < 4; ++j)
-    {
-      if ((abs(towards[j]) < grazing) != (pass == 1))
-      {
-        continue;
-      }
-      if (pass == 1 &&
-        abs(f[j] + towards[j] * tEnter) < length(spacing0 + tEnter * spacingPerT) / 256.0 &&
-        abs(f[j] + towards[j] * tExit) < length(spacing0 + tExit * spacingPerT) / 256.0)
-      {
-        outside = outside || j == own;
-        continue;
-      }
-      float t = -f[j] / towards[j];
-      if (towards[j] > parallelToRay)
-      {
-        tExit = min(tExit, t);
-        tFarthest = max(tFarthest, t);
-      }
-      else if (towards[j] < -parallelToRay)
-      {
-        tEnter = max(tEnter, t);
-      }
-      else
-      {
-        outside = outside || f[j] > 0.0;
-      }
-    }
+  outside = havsBoundGrazing(planes[0], own == 0, o, d, grazing, parallelToRay, ends, bands,
+              tEnter, tExit, tFarthest) || outside;
+  outside = havsBoundGrazing(planes[1], own == 1, o, d, grazing, parallelToRay, ends, bands,
+              tEnter, tExit, tFarthest) || outside;
+  outside = havsBoundGrazing(planes[2], own == 2, o, d, grazing, parallelToRay, ends, bands,
+              tEnter, tExit, tFarthest) || outside;
+  outside = havsBoundGrazing(planes[3], own == 3, o, d, grazing, parallelToRay, ends, bands,
+              tEnter, tExit, tFarthest) || outside;
   }
   // A near-plane section: the ray starts on it (where the fragment is).
   tEnter = own < 0 ? max(tEnter, dot(havsPositionMC - o, d) / dot(d, d)) : tEnter;

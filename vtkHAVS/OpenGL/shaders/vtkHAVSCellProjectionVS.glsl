@@ -4,14 +4,15 @@
 // fragment shader needs the position in model coordinates (where the cells'
 // planes and fields are) and relative to the eye (its distance).
 //
-// The cells' faces are pulled, not indexed (havsPullVertices): vertex i of
-// the draw is corner i % 3 of face (i / 3) % 4 of the cell at position i / 12
-// of the order, its point read from the tetrahedra's point ids, so that no
-// index buffer in draw order (48 bytes a tetrahedron, made again for every
-// view) exists. Face j's corners are vertices (j+1, j+2, j+3) mod 4, the last
-// two swapped for even j on a mirrored tetrahedron and for odd j on another
-// (vtkHAVSCellGeometry::FaceCorners): counter-clockwise seen from outside.
-// The near plane's section (havsPullVertices 0) comes as vertices.
+// The cells' corners are pulled (havsPullVertices): vertex 4 i + k of the
+// draw (gl_VertexID, the base vertex included) is corner k of the cell at
+// position i of the order, its point read from the tetrahedra's point ids,
+// corners 2 and 3 swapped on a mirrored tetrahedron (negative volume in its
+// vertex order, vtkHAVSCellGeometry::ComputeMirrored), so that one pattern of
+// indices winds every cell's faces outward (vtkOpenGLHAVSCellProjectionMapper)
+// and no index buffer in draw order (48 bytes a tetrahedron, made again for
+// every view) exists. The near plane's section (havsPullVertices 0) comes as
+// vertices.
 layout(location = 0) in vec3 vertexMC;
 
 layout(std430, binding = 5) readonly buffer HAVSCellOrder
@@ -43,15 +44,12 @@ void main()
   vec3 position = vertexMC;
   if (havsPullVertices != 0)
   {
-    int slot = gl_VertexID / 12;
-    int corner = gl_VertexID - 12 * slot;
-    int face = corner / 3;
-    int k = corner - 3 * face;
+    int slot = gl_VertexID >> 2;
+    uint corner = uint(gl_VertexID & 3);
     uint cell = havsCellOrder[slot];
     bool mirrored = ((havsMirrored[cell >> 5u] >> (cell & 31u)) & 1u) != 0u;
-    bool swapped = ((face & 1) == 0) == mirrored;
-    int vertex = face + (k == 0 ? 1 : (k == 1 ? (swapped ? 3 : 2) : (swapped ? 2 : 3)));
-    uint id = havsTetrahedra[4u * cell + uint(vertex & 3)];
+    corner = mirrored && corner >= 2u ? 5u - corner : corner;
+    uint id = havsTetrahedra[4u * cell + corner];
     position = vec3(havsPoints[3u * id], havsPoints[3u * id + 1u], havsPoints[3u * id + 2u]);
   }
   havsPositionMC = position;
