@@ -95,10 +95,12 @@ def make_window(volume, size):
     return window, renderer
 
 
-def make_property(grid):
+def make_property(grid, scalar_range=None, length=None):
+    """The scale's transfer function over the grid's scalar range, its opacity
+    unit a 40th of the grid's length (or over `scalar_range` and `length`)."""
     from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
     from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkVolumeProperty
-    lo, hi = grid.GetPointData().GetScalars().GetRange()
+    lo, hi = scalar_range or grid.GetPointData().GetScalars().GetRange()
     color = vtkColorTransferFunction()
     color.AddRGBPoint(lo, 0.2, 0.3, 1.0)
     color.AddRGBPoint(hi, 1.0, 0.4, 0.1)
@@ -108,7 +110,7 @@ def make_property(grid):
     prop = vtkVolumeProperty()
     prop.SetColor(color)
     prop.SetScalarOpacity(opacity)
-    prop.SetScalarOpacityUnitDistance(grid.GetLength() / 40.0)
+    prop.SetScalarOpacityUnitDistance((length or grid.GetLength()) / 40.0)
     return prop
 
 

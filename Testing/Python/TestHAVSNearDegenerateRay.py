@@ -13,12 +13,13 @@ import os
 import sys
 
 from vtkmodules.vtkCommonCore import vtkFloatArray
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
-from vtkmodules.vtkRenderingCore import (
-    vtkColorTransferFunction, vtkRenderer, vtkVolume, vtkVolumeProperty)
+from vtkmodules.vtkRenderingCore import vtkRenderer, vtkVolume
 
 import vtkhavs
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'Apps'))
+import havs_scale  # noqa: E402  (the scale's transfer function)
 
 failures = []
 
@@ -40,17 +41,7 @@ size = view['size']
 px, py = view['pixel']
 
 # The scale's transfer function over the whole block's range and length.
-lo, hi = view['scalar_range']
-color = vtkColorTransferFunction()
-color.AddRGBPoint(lo, 0.2, 0.3, 1.0)
-color.AddRGBPoint(hi, 1.0, 0.4, 0.1)
-opacity = vtkPiecewiseFunction()
-opacity.AddPoint(lo, 0.0)
-opacity.AddPoint(hi, 0.8)
-prop = vtkVolumeProperty()
-prop.SetColor(color)
-prop.SetScalarOpacity(opacity)
-prop.SetScalarOpacityUnitDistance(view['length'] / 40.0)
+prop = havs_scale.make_property(grid, view['scalar_range'], view['length'])
 
 window = vtkhavs.vtkHAVSRenderWindowFactory.CreateRenderWindow()
 window.SetSize(size, size)
