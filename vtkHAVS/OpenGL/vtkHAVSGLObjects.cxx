@@ -12,6 +12,8 @@
 #include "vtkHAVSCellGeometry.h"
 #include "vtkHAVSFramePlanes.h"
 
+#include "vtkShaderProgram.h"
+
 #include <algorithm>
 #include <atomic>
 
@@ -119,11 +121,11 @@ void vtkHAVSGLBuffer::Release()
 
 //------------------------------------------------------------------------------
 bool vtkHAVSGLCellRecords::Update(
-  const std::vector<float>& records, size_t cellsPerBuffer, vtkMTimeType version)
+  const std::vector<float>& records, size_t largestBuffer, vtkMTimeType version)
 {
   constexpr size_t per = vtkHAVSCellGeometry::FloatsPerCell;
   const size_t cells = records.size() / per;
-  cellsPerBuffer = std::max<size_t>(cellsPerBuffer, 1);
+  const size_t cellsPerBuffer = vtkHAVSCellGeometry::CellsPerRecordBuffer(largestBuffer);
   const size_t count = std::max<size_t>((cells + cellsPerBuffer - 1) / cellsPerBuffer, 1);
   if (count > vtkHAVSCellGeometry::MaximumRecordBuffers)
   {
@@ -152,6 +154,14 @@ void vtkHAVSGLCellRecords::Bind() const
   for (int i = 1; i < this->Count; ++i)
   {
     this->Buffers[i].BindBase(GL_SHADER_STORAGE_BUFFER, MoreBindings + static_cast<GLuint>(i - 1));
+  }
+}
+
+void vtkHAVSGLCellRecords::SetUniforms(vtkShaderProgram* program) const
+{
+  if (this->Count > 1)
+  {
+    program->SetUniformi("havsCellsPerBuffer", static_cast<int>(this->CellsPerBuffer));
   }
 }
 

@@ -38,6 +38,7 @@
 VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSFramePlanes;
+class vtkShaderProgram;
 
 /// A GL buffer object and the version of what it holds.
 class vtkHAVSGLBuffer
@@ -97,11 +98,14 @@ public:
 
   /**
    * Uploads `records` (vtkHAVSCellGeometry::FloatsPerCell floats a cell) in
-   * buffers of `cellsPerBuffer` cells (the last the rest) unless they hold
+   * buffers of at most `largestBuffer` bytes (vtkHAVSCellGeometry::
+   * CellsPerRecordBuffer cells each, the last the rest) unless they hold
    * `version` in that split already. Returns whether it uploaded; false too
    * when they would take more than MaximumRecordBuffers buffers (nothing then).
    */
-  bool Update(const std::vector<float>& records, size_t cellsPerBuffer, vtkMTimeType version);
+  bool Update(const std::vector<float>& records, size_t largestBuffer, vtkMTimeType version);
+  /// havsCellsPerBuffer set in `program` where there are several buffers.
+  void SetUniforms(vtkShaderProgram* program) const;
   /// Every buffer bound at its binding.
   void Bind() const;
   /// The buffers in use (the shaders' HAVS_CELL_BUFFERS), at least 1.

@@ -9,8 +9,6 @@
 =========================================================================*/
 #include "vtkOpenGLHAVSCellProjectionMapper.h"
 
-#include "vtkHAVSCellGeometry.h"
-
 #include "vtkHAVSExtremumPass.h"
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSGLCapabilities.h"
@@ -101,9 +99,7 @@ void vtkOpenGLHAVSCellProjectionMapper::Upload(const CellFrame& frame)
     {
       frame.RestoreCells(); // (freed after the last upload)
     }
-    gl.Records.Update(*frame.Cells,
-      vtkHAVSCellGeometry::CellsPerRecordBuffer(static_cast<size_t>(this->GetLargestGPUBuffer())),
-      version);
+    gl.Records.Update(*frame.Cells, static_cast<size_t>(this->GetLargestGPUBuffer()), version);
     gl.TetBuffer.Update(GL_SHADER_STORAGE_BUFFER, *frame.Tetrahedra, version);
     gl.MirroredBuffer.Update(GL_SHADER_STORAGE_BUFFER, *frame.Mirrored, version);
   }
@@ -142,11 +138,7 @@ void vtkOpenGLHAVSCellProjectionMapper::SetUniforms(
   }
   program->SetUniformMatrix3x3("havsModelToWorld", linear);
   program->SetUniformi("havsWrongExit", frame.WrongExit ? 1 : 0);
-  if (this->GL->Records.GetBufferCount() > 1)
-  {
-    program->SetUniformi(
-      "havsCellsPerBuffer", static_cast<int>(this->GL->Records.GetCellsPerBuffer()));
-  }
+  this->GL->Records.SetUniforms(program);
   program->SetUniformf("havsGapLength", NoGapLength);
 }
 

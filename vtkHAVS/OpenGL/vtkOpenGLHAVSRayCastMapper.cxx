@@ -9,7 +9,6 @@
 =========================================================================*/
 #include "vtkOpenGLHAVSRayCastMapper.h"
 
-#include "vtkHAVSCellGeometry.h"
 #include "vtkHAVSExtremumPass.h"
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSGLFrameTargets.h"
@@ -127,9 +126,7 @@ void vtkOpenGLHAVSRayCastMapper::Upload(const RayFrame& frame)
     }
     gl.Faces.Update(GL_ELEMENT_ARRAY_BUFFER, mesh.GetBoundaryFaces(), version);
     gl.FaceCells.Update(GL_SHADER_STORAGE_BUFFER, mesh.GetBoundaryCells(), version);
-    gl.Records.Update(mesh.GetCells(),
-      vtkHAVSCellGeometry::CellsPerRecordBuffer(static_cast<size_t>(this->GetLargestGPUBuffer())),
-      version);
+    gl.Records.Update(mesh.GetCells(), static_cast<size_t>(this->GetLargestGPUBuffer()), version);
     gl.Neighbours.Update(GL_SHADER_STORAGE_BUFFER, mesh.GetNeighbours(), version);
     gl.Counts.Update(GL_SHADER_STORAGE_BUFFER, nullptr, NumberOfCounts * sizeof(uint32_t), version);
     gl.Boundary.SetBuffers(gl.Points, &gl.Faces);
@@ -205,11 +202,7 @@ void vtkOpenGLHAVSRayCastMapper::SetUniforms(vtkOpenGLRenderWindow* window,
   cast->SetUniformf("havsGapLength", NoGapLength);
   cast->SetUniformi("havsMaxSteps", this->GL->Tetrahedra + ExtraSteps);
   cast->SetUniformi("havsFolds", frame.FoldReentries ? 1 : 0);
-  if (this->GL->Records.GetBufferCount() > 1)
-  {
-    cast->SetUniformi(
-      "havsCellsPerBuffer", static_cast<int>(this->GL->Records.GetCellsPerBuffer()));
-  }
+  this->GL->Records.SetUniforms(cast);
 }
 
 //------------------------------------------------------------------------------

@@ -52,8 +52,9 @@ uniform int havsNearSectionDrawn; // 1: the near plane's section was drawn this 
 layout(location = 0) out vec4 havsSegmentColor;
 
 // The stretch of the ray o + t d in the cell narrowed by `plane` unless the
-// ray runs almost along it (|n.d| below `grazing`: see havsBoundGrazing).
-void havsBound(vec4 plane, vec3 o, vec3 d, float grazing, inout float tEnter, inout float tExit,
+// ray runs almost along it (|n.d| below `grazing`: see havsBoundGrazing);
+// returns |n.d|.
+float havsBound(vec4 plane, vec3 o, vec3 d, float grazing, inout float tEnter, inout float tExit,
   inout float tFarthest)
 {
   float towards = dot(plane.xyz, d);
@@ -62,6 +63,7 @@ void havsBound(vec4 plane, vec3 o, vec3 d, float grazing, inout float tEnter, in
   tExit = bounds && towards > 0.0 ? min(tExit, t) : tExit;
   tFarthest = bounds && towards > 0.0 ? max(tFarthest, t) : tFarthest;
   tEnter = bounds && towards < 0.0 ? max(tEnter, t) : tEnter;
+  return abs(towards);
 }
 
 // A plane the ray runs almost along narrows the stretch unless the ray lies
@@ -143,10 +145,10 @@ void main()
   float tExit = HAVS_EMPTY;
   float tFarthest = 0.0;
   vec4 planes[4] = vec4[4](havsCell(cell, 0), havsCell(cell, 1), havsCell(cell, 2), havsCell(cell, 3));
-  havsBound(planes[0], o, d, grazing, tEnter, tExit, tFarthest);
-  havsBound(planes[1], o, d, grazing, tEnter, tExit, tFarthest);
-  havsBound(planes[2], o, d, grazing, tEnter, tExit, tFarthest);
-  havsBound(planes[3], o, d, grazing, tEnter, tExit, tFarthest);
+  float least = min(min(havsBound(planes[0], o, d, grazing, tEnter, tExit, tFarthest),
+                         havsBound(planes[1], o, d, grazing, tEnter, tExit, tFarthest)),
+    min(havsBound(planes[2], o, d, grazing, tEnter, tExit, tFarthest),
+      havsBound(planes[3], o, d, grazing, tEnter, tExit, tFarthest)));
   // The almost parallel planes: each bounds the stretch unless the ray stays
   // within the band of it at both ends of the stretch the others left.
   bool finite = tEnter > -HAVS_EMPTY && tExit < HAVS_EMPTY;
@@ -158,9 +160,7 @@ void main()
     !(dot((own == 0 ? planes[0] : (own == 1 ? planes[1] : (own == 2 ? planes[2] : planes[3]))).xyz,
         d) < -parallelToRay); // (its face seen from behind)
   // (Skipped where no plane is almost parallel: nearly everywhere.)
-  bool anyNear = min(min(abs(dot(planes[0].xyz, d)), abs(dot(planes[1].xyz, d))),
-                   min(abs(dot(planes[2].xyz, d)), abs(dot(planes[3].xyz, d)))) < grazing;
-  if (anyNear)
+  if (least < grazing)
   {
   outside = havsBoundGrazing(planes[0], own == 0, o, d, grazing, parallelToRay, ends, bands,
               tEnter, tExit, tFarthest) || outside;
