@@ -65,6 +65,7 @@ struct CellCounts
   vtkIdType Invalid = 0;
   vtkIdType Ghost = 0;
   vtkIdType Thin = 0; ///< of Degenerate: thinner than the relative bound (DropThinCells)
+  vtkIdType Collapsed = 0; ///< of Degenerate: a point id repeated (a collapsed cell's piece)
   double LongestEdgeSquared = 0.0;
   double Bounds[6] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),
     std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),
@@ -244,6 +245,7 @@ struct ReadCells
           {
             table.Status[cell] = DegenerateTetrahedron;
             ++local.Degenerate;
+            local.Collapsed += repeated ? 1 : 0;
             continue;
           }
           table.Status[cell] = UsedTetrahedron;
@@ -626,6 +628,7 @@ void vtkHAVSFaceSet::Clear()
   this->NumberOfTetrahedra = 0;
   this->NumberOfSkippedCells = 0;
   this->NumberOfDegenerateTetrahedra = 0;
+  this->NumberOfCollapsedTetrahedra = 0;
   this->NumberOfThinTetrahedra = 0;
   this->NumberOfInvalidCells = 0;
   this->NumberOfDuplicateTetrahedra = 0;
@@ -716,6 +719,7 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
       cells.Used += local.Used;
       cells.Skipped += local.Skipped;
       cells.Degenerate += local.Degenerate;
+      cells.Collapsed += local.Collapsed;
       cells.Invalid += local.Invalid;
       cells.Ghost += local.Ghost;
       for (int k = 0; k < 3; ++k)
@@ -743,6 +747,7 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
   this->NumberOfSkippedCells = cells.Skipped;
   this->NumberOfDegenerateTetrahedra = cells.Degenerate;
   this->NumberOfThinTetrahedra = cells.Thin;
+  this->NumberOfCollapsedTetrahedra = cells.Collapsed;
   this->NumberOfInvalidCells = cells.Invalid;
   this->NumberOfGhostCells = cells.Ghost;
   if (cells.Used == 0)
@@ -826,6 +831,7 @@ void vtkHAVSFaceSet::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
   os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
   os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";
+  os << indent << "NumberOfCollapsedTetrahedra: " << this->NumberOfCollapsedTetrahedra << "\n";
   os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra
      << " (thinner than the bound: " << this->NumberOfThinTetrahedra << ")\n";
   os << indent << "MinimumRelativeThickness: " << this->MinimumRelativeThickness << "\n";

@@ -104,6 +104,10 @@ public:
   /// Of the degenerate tetrahedra, those of non-zero volume thinner than
   /// MinimumRelativeThickness.
   vtkGetMacro(NumberOfThinTetrahedra, vtkIdType);
+  /// Of the degenerate tetrahedra, those with a point id repeated: pieces of
+  /// collapsed cells (a wedge with two corners merged, as a clip through a
+  /// vertex leaves), which any tetrahedralization of such cells gives.
+  vtkGetMacro(NumberOfCollapsedTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfDuplicateTetrahedra, vtkIdType);
   /// Cells with a point id out of range (< 0 or >= the number of points, as a
   /// corrupt file gives): skipped, their points never read.
@@ -191,6 +195,7 @@ private:
   vtkIdType NumberOfTetrahedra = 0;
   vtkIdType NumberOfSkippedCells = 0;
   vtkIdType NumberOfDegenerateTetrahedra = 0;
+  vtkIdType NumberOfCollapsedTetrahedra = 0;
   vtkIdType NumberOfThinTetrahedra = 0;
   double MinimumRelativeThickness = DefaultMinimumRelativeThickness;
   vtkIdType NumberOfInvalidCells = 0;

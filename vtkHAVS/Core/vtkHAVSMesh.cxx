@@ -678,13 +678,17 @@ bool vtkHAVSMesh::Build(vtkDataObject* input, const ScalarSelection& selection,
   {
     this->Warnings.push_back(InvalidCellsWarning(this->Faces->GetNumberOfInvalidCells()));
   }
-  const vtkIdType degenerate = this->Faces->GetNumberOfDegenerateTetrahedra();
+  // Collapsed pieces (a point id repeated) are what degenerate cells give
+  // wherever they are split; they say nothing about the mesh and are not
+  // counted towards the warning.
+  const vtkIdType degenerate =
+    this->Faces->GetNumberOfDegenerateTetrahedra() - this->Faces->GetNumberOfCollapsedTetrahedra();
   if (degenerate >
     DegenerateWarningShare * static_cast<double>(degenerate + this->Faces->GetNumberOfTetrahedra()))
   {
     std::ostringstream w;
     w << degenerate << " of " << degenerate + this->Faces->GetNumberOfTetrahedra()
-      << " tetrahedra are degenerate and were dropped (zero volume, or "
+      << " tetrahedra are degenerate and were dropped (zero volume with distinct points, or "
       << this->Faces->GetNumberOfThinTetrahedra() << " thinner than "
       << this->Faces->GetMinimumRelativeThickness()
       << " of the mesh's extent across them): more than " << 100.0 * DegenerateWarningShare

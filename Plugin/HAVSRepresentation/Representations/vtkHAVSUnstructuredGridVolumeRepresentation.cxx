@@ -16,14 +16,21 @@
 #include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSVolumeMapper.h"
+#include "vtkBoundingBox.h"
 #include "vtkInformation.h"
+#include "vtkMatrix4x4.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODVolume.h"
 #include "vtkPVRenderView.h"
+#include "vtkPVRenderViewDataDeliveryManager.h"
+#include "vtkPlane.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <dlfcn.h>
 
 #include <algorithm>
+#include <cmath>
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -38,6 +45,15 @@ bool ExpatBreaksVTKXML()
 {
   return dlsym(RTLD_DEFAULT, "XML_SetReparseDeferralEnabled") != nullptr &&
     dlsym(RTLD_DEFAULT, "vtkHAVSExpatFixParserCount") == nullptr;
+}
+
+/// The view's data delivery manager, which knows the kd-tree's cuts (one box
+/// per rank, in the data's coordinates); nullptr outside a render view.
+vtkPVRenderViewDataDeliveryManager* DeliveryManager(vtkInformation* inInfo)
+{
+  auto* view = vtkPVView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
+  return view ? vtkPVRenderViewDataDeliveryManager::SafeDownCast(view->GetDeliveryManager())
+              : nullptr;
 }
 }
 
@@ -73,6 +89,12 @@ vtkHAVSUnstructuredGridVolumeRepresentation::vtkHAVSUnstructuredGridVolumeRepres
     }
   }
   this->SetActiveVolumeMapper("HAVS");
+  // Exactly coincident points only (a cut through a vertex makes a new point
+  // on it); the point data of the first is kept (they are equal there).
+  this->PieceMerge->ToleranceIsAbsoluteOn();
+  this->PieceMerge->SetAbsoluteTolerance(0.0);
+  this->PieceMerge->RemoveUnusedPointsOff();
+  this->PieceMerge->AveragePointDataOff();
 }
 
 //------------------------------------------------------------------------------
@@ -252,6 +274,166 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::GetHAVSLastOrderViolations()
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetRedistribution(int mode)
+{
+  if (mode < RedistributionWholeCells || mode > RedistributionClip)
+  {
+    vtkErrorMacro("Unknown redistribution " << mode << " (0 whole cells, 1 split, 2 clip); kept "
+                                            << this->Redistribution << ".");
+    return;
+  }
+  if (mode != this->Redistribution)
+  {
+    this->Redistribution = mode;
+    this->MarkModified(); // the view redistributes again
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSUnstructuredGridVolumeRepresentation::UpdateRegionPlanes(
+  vtkInformation* inInfo, vtkHAVSMapperBase* active)
+{
+  // Only planes this representation put there are removed: a user's own
+  // collection on a mapper is left alone.
+  for (const auto& named : this->Mappers)
+  {
+    if (named.second != active && named.second->GetClippingPlanes() == this->RegionPlanes)
+    {
+      named.second->SetClippingPlanes(static_cast<vtkPlaneCollection*>(nullptr));
+    }
+  }
+  this->RegionPlanes->RemoveAllItems();
+  this->LastRegionPlanes = 0;
+  auto* controller = vtkMultiProcessController::GetGlobalController();
+  auto* delivery = DeliveryManager(inInfo);
+  const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+  const int rank = controller ? controller->GetLocalProcessId() : 0;
+  const bool clip = this->Redistribution == RedistributionClip && !this->UseDataPartitions &&
+    ranks > 1 && delivery && static_cast<int>(delivery->GetCuts().size()) == ranks;
+  if (!clip)
+  {
+    if (active->GetClippingPlanes() == this->RegionPlanes)
+    {
+      active->SetClippingPlanes(static_cast<vtkPlaneCollection*>(nullptr));
+    }
+    return;
+  }
+  // This rank's kd box, clipped only where it meets another rank's (the
+  // outer faces hold the whole grid). The cuts are in the data's
+  // coordinates, the mappers' planes in world coordinates: through the
+  // volume's matrix (points by M, normals by M^-T).
+  const std::vector<vtkBoundingBox>& cuts = delivery->GetCuts();
+  vtkBoundingBox whole;
+  for (const vtkBoundingBox& cut : cuts)
+  {
+    if (cut.IsValid())
+    {
+      whole.AddBox(cut);
+    }
+  }
+  const vtkBoundingBox& box = cuts[rank];
+  if (!box.IsValid() || !whole.IsValid())
+  {
+    return;
+  }
+  vtkNew<vtkMatrix4x4> matrix;
+  this->Actor->GetMatrix(matrix);
+  vtkNew<vtkMatrix4x4> inverseTranspose;
+  vtkMatrix4x4::Invert(matrix, inverseTranspose);
+  inverseTranspose->Transpose();
+  const double tolerance = 1e-9 * whole.GetDiagonalLength();
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int side = 0; side < 2; ++side)
+    {
+      const double at = side == 0 ? box.GetMinPoint()[axis] : box.GetMaxPoint()[axis];
+      const double outer = side == 0 ? whole.GetMinPoint()[axis] : whole.GetMaxPoint()[axis];
+      if (std::abs(at - outer) <= tolerance)
+      {
+        continue;
+      }
+      double origin[4] = { 0.0, 0.0, 0.0, 1.0 };
+      box.GetCenter(origin);
+      origin[axis] = at;
+      double normal[4] = { 0.0, 0.0, 0.0, 0.0 };
+      normal[axis] = side == 0 ? 1.0 : -1.0; // into the box: that side is kept
+      matrix->MultiplyPoint(origin, origin);
+      inverseTranspose->MultiplyPoint(normal, normal);
+      vtkNew<vtkPlane> plane;
+      plane->SetOrigin(origin[0] / origin[3], origin[1] / origin[3], origin[2] / origin[3]);
+      plane->SetNormal(normal[0], normal[1], normal[2]);
+      this->RegionPlanes->AddItem(plane);
+      ++this->LastRegionPlanes;
+    }
+  }
+  if (active->GetClippingPlanes() != this->RegionPlanes)
+  {
+    if (active->GetClippingPlanes() && active->GetClippingPlanes()->GetNumberOfItems() > 0)
+    {
+      vtkWarningMacro("The HAVS mapper's own clipping planes are replaced by this rank's kd box "
+                      "(Redistribution: clip to the region); use the split redistribution to "
+                      "keep them.");
+    }
+    active->SetClippingPlanes(this->RegionPlanes);
+  }
+  this->RegionPlanes->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSUnstructuredGridVolumeRepresentation::WarnIfPartitionsOverlap(vtkInformation* inInfo)
+{
+  // With UseDataPartitions ParaView composites the ranks in the order of
+  // their pieces' bounding boxes (the cuts are those boxes): exact when they
+  // are disjoint, not when two overlap (a ray may cross one, the other, then
+  // the first again).
+  auto* controller = vtkMultiProcessController::GetGlobalController();
+  auto* delivery = DeliveryManager(inInfo);
+  if (this->WarnedOverlap || !this->UseDataPartitions || !controller ||
+    controller->GetNumberOfProcesses() < 2 || !delivery)
+  {
+    return;
+  }
+  const std::vector<vtkBoundingBox>& cuts = delivery->GetCuts();
+  vtkBoundingBox whole;
+  for (const vtkBoundingBox& cut : cuts)
+  {
+    if (cut.IsValid())
+    {
+      whole.AddBox(cut);
+    }
+  }
+  const double tolerance = 1e-6 * whole.GetDiagonalLength();
+  for (size_t i = 0; i < cuts.size(); ++i)
+  {
+    for (size_t j = i + 1; j < cuts.size(); ++j)
+    {
+      if (!cuts[i].IsValid() || !cuts[j].IsValid())
+      {
+        continue;
+      }
+      bool overlap = true;
+      for (int axis = 0; axis < 3 && overlap; ++axis)
+      {
+        const double lo = std::max(cuts[i].GetMinPoint()[axis], cuts[j].GetMinPoint()[axis]);
+        const double hi = std::min(cuts[i].GetMaxPoint()[axis], cuts[j].GetMaxPoint()[axis]);
+        overlap = hi - lo > tolerance;
+      }
+      if (overlap)
+      {
+        this->WarnedOverlap = true;
+        vtkWarningMacro("UseDataPartitions: the pieces of ranks "
+          << i << " and " << j
+          << " have overlapping bounding boxes, so ParaView's compositing in the order of "
+             "those boxes cannot be exact (seams where they overlap). Turn UseDataPartitions "
+             "off to let ParaView redistribute the grid (split at its kd-tree's cuts), or "
+             "partition the data into disjoint boxes.");
+        return;
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
   vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
 {
@@ -259,11 +441,25 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
   {
     return 0;
   }
+  if (request_type == vtkPVView::REQUEST_UPDATE() && !this->UseDataPartitions)
+  {
+    // The superclass asked for whole cells (ASSIGN_TO_ONE_REGION); replace it.
+    if (this->Redistribution == RedistributionSplit)
+    {
+      vtkPVRenderView::SetRedistributionModeToSplitBoundaryCells(inInfo, this);
+    }
+    else if (this->Redistribution == RedistributionClip)
+    {
+      vtkPVRenderView::SetRedistributionModeToDuplicateBoundaryCells(inInfo, this);
+    }
+  }
   vtkAbstractVolumeMapper* active = this->GetActiveVolumeMapper();
   if (request_type != vtkPVView::REQUEST_RENDER() || !vtkHAVSMapperBase::SafeDownCast(active))
   {
     return 1;
   }
+  this->UpdateRegionPlanes(inInfo, vtkHAVSMapperBase::SafeDownCast(active));
+  this->WarnIfPartitionsOverlap(inInfo);
   vtkAlgorithmOutput* producer = vtkPVRenderView::GetPieceProducer(inInfo, this);
   vtkDataSet* piece =
     producer ? vtkDataSet::SafeDownCast(producer->GetProducer()->GetOutputDataObject(0)) : nullptr;
@@ -271,6 +467,16 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
   {
     this->Actor->SetMapper(nullptr); // an empty piece of a parallel run: nothing to draw
     return 1;
+  }
+  auto* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1 && !this->UseDataPartitions &&
+    this->Redistribution == RedistributionSplit && vtkUnstructuredGrid::SafeDownCast(piece))
+  {
+    // The cells split at the cuts meet their neighbours through points
+    // ParaView's clip made anew on existing vertices: merged, or the faces
+    // there would not match (false boundary faces, zero-volume tetrahedra).
+    this->PieceMerge->SetInputConnection(producer);
+    active->SetInputConnection(this->PieceMerge->GetOutputPort());
   }
   if (active == this->HAVSMapper)
   {
@@ -305,6 +511,8 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::PrintSelf(ostream& os, vtkInde
   os << indent << "InteractiveLOD: " << this->InteractiveLOD << "\n";
   os << indent << "InteractiveKBufferSize: " << this->InteractiveKBufferSize << "\n";
   os << indent << "InteractiveTargetSeconds: " << this->InteractiveTargetSeconds << "\n";
+  os << indent << "Redistribution: " << this->Redistribution << "\n";
+  os << indent << "LastRegionPlanes: " << this->LastRegionPlanes << "\n";
   for (const auto& named : this->Mappers)
   {
     os << indent << named.first << ":\n";

@@ -23,6 +23,25 @@
  * work as for the stock "Volume" representation; the plugin's XML shows it as
  * the "HAVS Volume" representation type.
  *
+ * Under MPI (pvbatch, pvserver) ParaView splits the grid over the ranks
+ * along a kd-tree and IceT composites the ranks' images in the order of
+ * their kd boxes. That order is exact only when each rank's piece lies in
+ * its box; ParaView's stock representation sends a cell that straddles a
+ * cut whole to one rank, and the parts that stick out are blended in the
+ * wrong order (a seam along the cuts). This representation asks for the
+ * cells on the cuts to be split there instead (SetRedistribution,
+ * RedistributionSplit, the default), or for every cell that touches a box to
+ * go to its rank and each rank to clip its piece to its box with the
+ * mappers' clipping planes (RedistributionClip); RedistributionWholeCells is
+ * ParaView's stock behaviour, kept as a control. The split leaves points
+ * where a cut passes through a vertex as new points on the vertex (clipped
+ * edges at parameter 0): the split piece's exactly coincident points are
+ * merged before the mapper sees it, so the cells still meet face to face.
+ * With UseDataPartitions on
+ * (the user's own partition, nothing moved) the image is exact when the
+ * ranks' pieces' bounding boxes do not overlap; when they do the
+ * representation warns once and says so.
+ *
  * Level of detail: while the user interacts ParaView would swap the volume
  * for its LOD geometry (an outline or a surface); HAVS stays interactive
  * instead, so this representation keeps the volume and renders it with
@@ -42,6 +61,9 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSRepresentationsModule.h" // For export macro
+#include "vtkNew.h" // For vtkNew
+#include "vtkPlaneCollection.h" // For vtkNew<vtkPlaneCollection>
+#include "vtkStaticCleanUnstructuredGrid.h" // For vtkNew<vtkStaticCleanUnstructuredGrid>
 #include "vtkUnstructuredGridVolumeRepresentation.h"
 
 #include <string>  // For std::string
@@ -149,6 +171,29 @@ public:
   /// The k of the last frame this rank rendered (0 before one).
   int GetHAVSActiveKBufferSize();
 
+  /// How cells that straddle the kd-tree's cuts are distributed over MPI ranks.
+  enum Redistributions
+  {
+    RedistributionWholeCells = 0, ///< ParaView's stock: whole to one rank (seams)
+    RedistributionSplit = 1,      ///< split at the cuts (exact; the default)
+    RedistributionClip = 2        ///< sent to every box they touch, clipped there (exact)
+  };
+
+  ///@{
+  /**
+   * How the grid is distributed over the ranks for ordered compositing (see
+   * Redistributions; RedistributionSplit by default). Serial runs are not
+   * affected. RedistributionClip uses up to six of the mappers' clipping
+   * planes (the user's own planes, if any, share vtkHAVS's limit of six).
+   */
+  void SetRedistribution(int mode);
+  vtkGetMacro(Redistribution, int);
+  ///@}
+
+  /// The clipping planes this rank's mapper got from its kd box in the last
+  /// frame (RedistributionClip; 0 otherwise).
+  vtkGetMacro(LastRegionPlanes, int);
+
   /**
    * This representation always renders with the mapper SetHAVSMapper chose:
    * any name (e.g. a default pushed by an inherited proxy definition)
@@ -169,6 +214,8 @@ private:
   void operator=(const vtkHAVSUnstructuredGridVolumeRepresentation&) = delete;
 
   vtkHAVSMapperBase* FindMapper(const std::string& name) const;
+  void UpdateRegionPlanes(vtkInformation* inInfo, vtkHAVSMapperBase* active);
+  void WarnIfPartitionsOverlap(vtkInformation* inInfo);
 
   vtkHAVSVolumeMapper* HAVSMapper;
   vtkHAVSRayCastMapper* RayCastMapper;
@@ -179,6 +226,11 @@ private:
   int InteractiveKBufferSize = 2;
   bool InteractiveLOD = true;
   double InteractiveTargetSeconds = 0.1;
+  int Redistribution = RedistributionSplit;
+  int LastRegionPlanes = 0;
+  bool WarnedOverlap = false;
+  vtkNew<vtkPlaneCollection> RegionPlanes; // this rank's kd box (RedistributionClip)
+  vtkNew<vtkStaticCleanUnstructuredGrid> PieceMerge; // the split piece's coincident points
 };
 
 VTK_ABI_NAMESPACE_END
