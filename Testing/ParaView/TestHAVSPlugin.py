@@ -5,7 +5,7 @@ Loads the plugin, shows the LOX post (post.vtk, tetrahedralized) as "HAVS Volume
 checks that the representation renders with vtkHAVSVolumeMapper, that k set from Python
 reaches the mapper (on every rank), compares the screenshot with the exact reference
 (vtkHAVSReferenceRenderer, RMSE bound), with a baseline (regression, tolerance) and, under
-MPI, checks that both ranks rendered non-empty, disjoint pieces and that the composited
+MPI, checks that both ranks rendered non-empty pieces that cover the grid and that the composited
 image equals the serial one (written by the serial run) within a tolerance. Serial and
 under MPI, the same scene through the ray caster ("HAVS Ray Cast") against the exact
 reference; control: one peeling pass.
@@ -99,9 +99,11 @@ if args.mode == "mpi":
     counts = [total.GetValue(i) for i in range(ranks)]
     whole = grid.GetNumberOfCells()
     check(all(c > 0 for c in counts), "every rank holds a non-empty piece: %s" % counts)
-    check(sum(counts) == whole,
-          "the pieces are disjoint and complete: %d + ... = %d of %d tetrahedra"
-          % (counts[0], sum(counts), whole))
+    # The cells on the kd cuts are split there (issue 44): the pieces hold more cells
+    # than the grid, the pieces' images are checked against the exact one below.
+    check(sum(counts) >= whole,
+          "the pieces cover the grid, split at the cuts: %s = %d tetrahedra for the grid's %d"
+          % (" + ".join(str(c) for c in counts), sum(counts), whole))
 
 # The image: a screenshot (collective; rank 0 writes the composited image).
 name = os.path.join(args.out, "havs_plugin_%s.png" % args.mode)

@@ -64,7 +64,7 @@ struct CellCounts
   vtkIdType Degenerate = 0;
   vtkIdType Invalid = 0;
   vtkIdType Ghost = 0;
-  vtkIdType Thin = 0; ///< of Degenerate: thinner than the relative bound (DropThinCells)
+  vtkIdType Thin = 0;      ///< of Degenerate: thinner than the relative bound (DropThinCells)
   vtkIdType Collapsed = 0; ///< of Degenerate: a point id repeated (a collapsed cell's piece)
   double LongestEdgeSquared = 0.0;
   double Bounds[6] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),

@@ -11,12 +11,12 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
+#include "vtkBoundingBox.h"
 #include "vtkDataSet.h"
 #include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSVolumeMapper.h"
-#include "vtkBoundingBox.h"
 #include "vtkInformation.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiProcessController.h"

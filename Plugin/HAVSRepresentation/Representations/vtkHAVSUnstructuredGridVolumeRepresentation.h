@@ -60,9 +60,9 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
-#include "vtkHAVSRepresentationsModule.h" // For export macro
-#include "vtkNew.h" // For vtkNew
-#include "vtkPlaneCollection.h" // For vtkNew<vtkPlaneCollection>
+#include "vtkHAVSRepresentationsModule.h"   // For export macro
+#include "vtkNew.h"                         // For vtkNew
+#include "vtkPlaneCollection.h"             // For vtkNew<vtkPlaneCollection>
 #include "vtkStaticCleanUnstructuredGrid.h" // For vtkNew<vtkStaticCleanUnstructuredGrid>
 #include "vtkUnstructuredGridVolumeRepresentation.h"
 
@@ -229,7 +229,7 @@ private:
   int Redistribution = RedistributionSplit;
   int LastRegionPlanes = 0;
   bool WarnedOverlap = false;
-  vtkNew<vtkPlaneCollection> RegionPlanes; // this rank's kd box (RedistributionClip)
+  vtkNew<vtkPlaneCollection> RegionPlanes;           // this rank's kd box (RedistributionClip)
   vtkNew<vtkStaticCleanUnstructuredGrid> PieceMerge; // the split piece's coincident points
 };
 
