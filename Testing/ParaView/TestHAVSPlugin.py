@@ -16,17 +16,15 @@ Environment: HAVS_DATA_DIR (shared/data). Run under Xvfb (Debian's ParaView is G
 import argparse
 import os
 import sys
-import traceback
 
 from paraview.simple import Hide, LoadPlugin, PLOT3DReader, Render, SaveScreenshot, Show
 from vtkmodules.vtkCommonCore import vtkIdTypeArray
 from vtkmodules.vtkFiltersCore import vtkAppendFilter
 from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkIOParallel import vtkMultiBlockPLOT3DReader
-from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
 import vtkhavs
-from havs_plugin_scene import (SIZE, compare, png_rgb, read_lox_post, reference_rgb,
+from havs_plugin_scene import (SIZE, compare, mpi_setup, png_rgb, read_lox_post, reference_rgb,
                                require_working_expat, show_lox_post, style_havs_volume)
 
 parser = argparse.ArgumentParser()
@@ -40,18 +38,7 @@ args, _ = parser.parse_known_args()
 failures = []
 
 
-def abort_on_exception(kind, value, trace):
-    # An exception on one rank must end the job, not leave the others waiting
-    # in a collective call.
-    traceback.print_exception(kind, value, trace)
-    sys.stderr.flush()
-    os._exit(2)
-
-
-sys.excepthook = abort_on_exception
-controller = vtkMultiProcessController.GetGlobalController()
-rank = controller.GetLocalProcessId() if controller else 0
-ranks = controller.GetNumberOfProcesses() if controller else 1
+controller, rank, ranks = mpi_setup()
 
 
 def check(condition, what):

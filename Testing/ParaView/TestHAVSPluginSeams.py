@@ -33,7 +33,6 @@ import math
 import os
 import sys
 import time
-import traceback
 
 import numpy
 from paraview.simple import (Render, SaveScreenshot, Show, XMLUnstructuredGridReader, LoadPlugin)
@@ -44,14 +43,14 @@ from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
 from vtkmodules.vtkIOParallel import vtkMultiBlockPLOT3DReader
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
 from vtkmodules.vtkRenderingCore import vtkCamera, vtkVolumeProperty
-from vtkmodules.vtkParallelCore import vtkDummyController, vtkMultiProcessController
+from vtkmodules.vtkParallelCore import vtkDummyController
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkDelaunay3D
 
 import vtkhavs
-from havs_plugin_scene import new_view, require_working_expat, style_havs_volume
+from havs_plugin_scene import mpi_setup, new_view, require_working_expat, style_havs_volume
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -90,17 +89,7 @@ VIEWS = [(30.0, 20.0), (120.0, -15.0), (215.0, 50.0), (300.0, 5.0), (75.0, 70.0)
          (160.0, -60.0), (250.0, 25.0), (340.0, -35.0)]
 
 
-def abort_on_exception(kind, value, trace):
-    # An exception on one rank must end the job, not leave the others waiting.
-    traceback.print_exception(kind, value, trace)
-    sys.stderr.flush()
-    os._exit(2)
-
-
-sys.excepthook = abort_on_exception
-controller = vtkMultiProcessController.GetGlobalController()
-rank = controller.GetLocalProcessId() if controller else 0
-ranks = controller.GetNumberOfProcesses() if controller else 1
+controller, rank, ranks = mpi_setup()
 MAX_BOUND = 1.0 + math.ceil(math.log2(max(ranks, 2)))
 failures = []
 

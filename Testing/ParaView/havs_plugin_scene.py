@@ -6,17 +6,37 @@ import ctypes
 import math
 import os
 import subprocess
+import sys
+import traceback
 
 from paraview.simple import (CreateRenderView, GetColorTransferFunction,
                              GetOpacityTransferFunction, LegacyVTKReader, Show, Tetrahedralize)
 from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
 from vtkmodules.vtkRenderingCore import vtkVolumeProperty
 
 import vtkhavs
 
 SIZE = 200
+
+
+def mpi_setup():
+    """The global controller, this rank and the number of ranks (None, 0, 1 serially). An
+    exception on one rank then ends the job instead of leaving the others waiting in a
+    collective call."""
+
+    def abort_on_exception(kind, value, trace):
+        traceback.print_exception(kind, value, trace)
+        sys.stderr.flush()
+        os._exit(2)
+
+    sys.excepthook = abort_on_exception
+    controller = vtkMultiProcessController.GetGlobalController()
+    rank = controller.GetLocalProcessId() if controller else 0
+    ranks = controller.GetNumberOfProcesses() if controller else 1
+    return controller, rank, ranks
 
 
 def expat_status():

@@ -47,6 +47,20 @@ bool ExpatBreaksVTKXML()
     dlsym(RTLD_DEFAULT, "vtkHAVSExpatFixParserCount") == nullptr;
 }
 
+/// The box around every rank's (valid) kd box.
+vtkBoundingBox UnionOfCuts(const std::vector<vtkBoundingBox>& cuts)
+{
+  vtkBoundingBox whole;
+  for (const vtkBoundingBox& cut : cuts)
+  {
+    if (cut.IsValid())
+    {
+      whole.AddBox(cut);
+    }
+  }
+  return whole;
+}
+
 /// The view's data delivery manager, which knows the kd-tree's cuts (one box
 /// per rank, in the data's coordinates); nullptr outside a render view.
 vtkPVRenderViewDataDeliveryManager* DeliveryManager(vtkInformation* inInfo)
@@ -323,14 +337,7 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::UpdateRegionPlanes(
   // coordinates, the mappers' planes in world coordinates: through the
   // volume's matrix (points by M, normals by M^-T).
   const std::vector<vtkBoundingBox>& cuts = delivery->GetCuts();
-  vtkBoundingBox whole;
-  for (const vtkBoundingBox& cut : cuts)
-  {
-    if (cut.IsValid())
-    {
-      whole.AddBox(cut);
-    }
-  }
+  const vtkBoundingBox whole = UnionOfCuts(cuts);
   const vtkBoundingBox& box = cuts[rank];
   if (!box.IsValid() || !whole.IsValid())
   {
@@ -394,15 +401,7 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::WarnIfPartitionsOverlap(vtkInf
     return;
   }
   const std::vector<vtkBoundingBox>& cuts = delivery->GetCuts();
-  vtkBoundingBox whole;
-  for (const vtkBoundingBox& cut : cuts)
-  {
-    if (cut.IsValid())
-    {
-      whole.AddBox(cut);
-    }
-  }
-  const double tolerance = 1e-6 * whole.GetDiagonalLength();
+  const double tolerance = 1e-6 * UnionOfCuts(cuts).GetDiagonalLength();
   for (size_t i = 0; i < cuts.size(); ++i)
   {
     for (size_t j = i + 1; j < cuts.size(); ++j)

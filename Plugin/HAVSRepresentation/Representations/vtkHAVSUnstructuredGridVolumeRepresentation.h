@@ -176,7 +176,7 @@ public:
   {
     RedistributionWholeCells = 0, ///< ParaView's stock: whole to one rank (seams)
     RedistributionSplit = 1,      ///< split at the cuts (exact; the default)
-    RedistributionClip = 2        ///< sent to every box they touch, clipped there (not yet verified)
+    RedistributionClip = 2 ///< sent to every box they touch, clipped there (not yet verified)
   };
 
   ///@{
