@@ -42,15 +42,15 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
 from vtkmodules.vtkIOParallel import vtkMultiBlockPLOT3DReader
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
-from vtkmodules.vtkRenderingCore import vtkCamera, vtkVolumeProperty
+from vtkmodules.vtkRenderingCore import vtkCamera
 from vtkmodules.vtkParallelCore import vtkDummyController
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkDelaunay3D
 
-import vtkhavs
-from havs_plugin_scene import mpi_setup, new_view, require_working_expat, style_havs_volume
+from havs_plugin_scene import (mpi_setup, new_view, reference_image, require_working_expat,
+                               style_havs_volume)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -265,18 +265,8 @@ def render_all(mode):
 
 def exact_rgba(data, camera):
     """The exact premultiplied RGBA image of `data` (size x size x 4, bottom row first)."""
-    prop = vtkVolumeProperty()
-    prop.SetColor(lut.GetClientSideObject())
-    prop.SetScalarOpacity(pwf.GetClientSideObject())
-    prop.SetScalarOpacityUnitDistance(display.ScalarOpacityUnitDistance)
-    reference = vtkhavs.vtkHAVSReferenceRenderer()
-    reference.SetInputData(data)
-    reference.SetProperty(prop)
-    reference.SetCamera(camera)
-    reference.SetSize(args.size, args.size)
-    reference.Render()
-    return vtk_to_numpy(reference.GetImage()).astype(numpy.float64).reshape(
-        args.size, args.size, 4)
+    image = reference_image(data, lut, pwf, display.ScalarOpacityUnitDistance, camera, args.size)
+    return vtk_to_numpy(image).astype(numpy.float64).reshape(args.size, args.size, 4)
 
 
 def read_piece(path):
@@ -335,9 +325,7 @@ cameras = {}
 modes = [args.redistribution] + (["whole"] if args.control else [])
 results = {}
 for mode in modes:
-    start = time.perf_counter()
     results[mode] = render_all(mode)
-    results[mode] += (time.perf_counter() - start,)
 
 if rank == 0:
     exact = {v: exact_rgba(grid, cameras[v]) for v in range(args.views)}
@@ -352,7 +340,7 @@ if rank == 0:
             split_boxes = {r: pieces[mode][r].GetBounds() for r in pieces[mode]}
     rows = []
     for mode in modes:
-        shots, cells, first, total = results[mode]
+        shots, cells, first = results[mode]
         print("%s: cells per rank %s (%d in all, %d in the grid), first frame %.2f s"
               % (mode, [int(c) for c in cells], int(sum(cells)), grid.GetNumberOfCells(), first),
               flush=True)

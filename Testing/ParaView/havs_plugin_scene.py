@@ -168,9 +168,9 @@ def compare(a, b):
     return math.sqrt(sum(d * d for d in diffs) / len(diffs)), max(diffs)
 
 
-def reference_rgb(grid, lut, pwf, unit_distance, camera, size=SIZE):
+def reference_image(grid, lut, pwf, unit_distance, camera, size=SIZE):
     """The exact image (vtkHAVSReferenceRenderer) of `grid` with ParaView's colour and opacity
-    maps, as RGB over black, clamped to 1."""
+    maps: premultiplied RGBA, size x size tuples, bottom row first."""
     prop = vtkVolumeProperty()
     prop.SetColor(lut.GetClientSideObject())
     prop.SetScalarOpacity(pwf.GetClientSideObject())
@@ -181,5 +181,10 @@ def reference_rgb(grid, lut, pwf, unit_distance, camera, size=SIZE):
     reference.SetCamera(camera)
     reference.SetSize(size, size)
     reference.Render()
-    exact = reference.GetImage()
+    return reference.GetImage()
+
+
+def reference_rgb(grid, lut, pwf, unit_distance, camera, size=SIZE):
+    """reference_image as RGB over black, clamped to 1 (a list of pixels)."""
+    exact = reference_image(grid, lut, pwf, unit_distance, camera, size)
     return [[min(1.0, exact.GetComponent(i, k)) for k in range(3)] for i in range(size * size)]
