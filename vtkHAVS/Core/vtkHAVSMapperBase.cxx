@@ -41,7 +41,10 @@ vtkHAVSMapperBase::vtkHAVSMapperBase(const char* mapperName)
 {
 }
 
-vtkHAVSMapperBase::~vtkHAVSMapperBase() = default;
+vtkHAVSMapperBase::~vtkHAVSMapperBase()
+{
+  this->SetCaptureDirectory(nullptr);
+}
 
 //------------------------------------------------------------------------------
 bool vtkHAVSMapperBase::IsBlendModeSupported(int mode)
@@ -364,6 +367,9 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastMeshUpdate: " << GetMeshUpdateName(this->LastMeshUpdate) << " ("
      << this->LastMeshSeconds << " s)\n";
   os << indent << "LastFrameAborted: " << this->LastFrameAborted << "\n";
+  os << indent
+     << "CaptureDirectory: " << (this->CaptureDirectory ? this->CaptureDirectory : "(none)")
+     << ", last capture " << (this->LastCaptureSucceeded ? "written" : "none") << "\n";
   os << indent << "DegenerateTetrahedra (dropped): " << this->GetNumberOfDegenerateTetrahedra()
      << "\n";
   os << indent << "ShaderHooks: " << this->ShaderHooks.Fragment.size()

@@ -261,6 +261,20 @@ public:
   /// The largest GPU buffer the prepared mesh needs (what it holds, its bytes).
   virtual vtkHAVSMemory::Part GetLargestGPUBufferNeed() const { return {}; }
 
+  ///@{
+  /**
+   * Benchmark aid: the next frame writes the GPU inputs it drew from, its
+   * shaders, uniforms and float result into this directory (a frame case of
+   * Apps/GPUBench/havs_gpu_bench, described in Apps/GPUBench/README.md); the
+   * setting is cleared after that frame. GetLastCaptureSucceeded() says
+   * whether it was written (an error says why not). The GL mappers write it;
+   * this base only holds the setting.
+   */
+  vtkSetStringMacro(CaptureDirectory);
+  vtkGetStringMacro(CaptureDirectory);
+  vtkGetMacro(LastCaptureSucceeded, bool);
+  ///@}
+
 protected:
   vtkHAVSMapperBase(const char* mapperName);
   ~vtkHAVSMapperBase() override;
@@ -309,6 +323,8 @@ protected:
   bool PlaneSections = true;
   vtkIdType LargestGPUBuffer = DefaultLargestGPUBuffer;
   vtkIdType LastSectionTriangles = 0;
+  char* CaptureDirectory = nullptr;
+  bool LastCaptureSucceeded = false;
 
   vtkSmartPointer<vtkHAVSMesh> Mesh;
   vtkNew<vtkHAVSPreIntegrationTable> Table;

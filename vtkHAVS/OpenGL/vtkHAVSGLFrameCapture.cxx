@@ -30,25 +30,64 @@ VTK_ABI_NAMESPACE_BEGIN
 
 namespace
 {
-template <typename T>
-bool WriteBinary(const std::string& path, const std::vector<T>& values)
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSGLFrameCapture::WriteBytes(const std::string& path, const void* data, size_t bytes)
 {
   std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(values.data()),
-    static_cast<std::streamsize>(values.size() * sizeof(T)));
+  out.write(static_cast<const char*>(data), static_cast<std::streamsize>(bytes));
   return static_cast<bool>(out);
 }
 
-bool WriteText(const std::string& path, const std::string& text)
+//------------------------------------------------------------------------------
+bool vtkHAVSGLFrameCapture::WriteText(const std::string& path, const std::string& text)
 {
   std::ofstream out(path);
   out << text;
   return static_cast<bool>(out);
 }
 
-/// Every active non-sampler uniform of `program`: "uniform name type count values...".
-std::string UniformLines(GLuint program)
+//------------------------------------------------------------------------------
+bool vtkHAVSGLFrameCapture::MakeDirectory(const std::string& directory, std::string& error)
 {
+  if (!vtksys::SystemTools::MakeDirectory(directory))
+  {
+    error = "cannot make " + directory;
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkHAVSGLFrameCapture::Header(
+  const std::string& mapper, int width, int height, const int tableSize[3])
+{
+  std::ostringstream text;
+  text << "# vtkHAVS frame case (Apps/GPUBench/README.md): the stand-alone GPU program's input\n"
+       << "format 2\nmapper " << mapper << "\nwidth " << width << "\nheight " << height
+       << "\ntable " << tableSize[0] << " " << tableSize[1] << " " << tableSize[2] << "\n";
+  return text.str();
+}
+
+//------------------------------------------------------------------------------
+std::vector<float> vtkHAVSGLFrameCapture::ReadTable(vtkTextureObject* table, int size[3])
+{
+  size[0] = table->GetWidth();
+  size[1] = table->GetHeight();
+  size[2] = table->GetDepth();
+  std::vector<float> values(static_cast<size_t>(size[0]) * size[1] * size[2] * 4);
+  table->Activate();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, values.data());
+  table->Deactivate();
+  return values;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkHAVSGLFrameCapture::UniformLines(const std::string& programName, unsigned int handle)
+{
+  const GLuint program = handle;
   std::ostringstream lines;
   lines.precision(9);
   GLint count = 0, longest = 0;
@@ -83,12 +122,21 @@ std::string UniformLines(GLuint program)
       case GL_FLOAT_VEC4:
         components = 4, typeName = "vec4";
         break;
+      case GL_FLOAT_MAT3:
+        components = 9, typeName = "mat3";
+        break;
       case GL_FLOAT_MAT4:
         components = 16, typeName = "mat4";
         break;
       case GL_INT:
       case GL_BOOL:
         components = 1, integer = true, typeName = "int";
+        break;
+      case GL_INT_VEC2:
+        components = 2, integer = true, typeName = "ivec2";
+        break;
+      case GL_UNSIGNED_INT:
+        components = 1, integer = true, typeName = "uint";
         break;
       default: // samplers and images: bound by the program that draws
         continue;
@@ -101,12 +149,15 @@ std::string UniformLines(GLuint program)
       {
         continue;
       }
-      lines << "uniform " << element << " " << typeName << " " << components;
+      lines << "uniform " << programName << " " << element << " " << typeName << " " << components;
       if (integer)
       {
-        GLint value = 0;
-        glGetUniformiv(program, location, &value);
-        lines << " " << value;
+        GLint values[4] = {};
+        glGetUniformiv(program, location, values);
+        for (int c = 0; c < components; ++c)
+        {
+          lines << " " << (type == GL_UNSIGNED_INT ? static_cast<GLuint>(values[c]) : values[c]);
+        }
       }
       else
       {
@@ -121,7 +172,6 @@ std::string UniformLines(GLuint program)
     }
   }
   return lines.str();
-}
 }
 
 //------------------------------------------------------------------------------
@@ -150,9 +200,8 @@ bool vtkHAVSGLFrameCapture::Write(
             "captured (the stand-alone program draws the faces alone)";
     return false;
   }
-  if (!vtksys::SystemTools::MakeDirectory(directory))
+  if (!MakeDirectory(directory, error))
   {
-    error = "cannot make " + directory;
     return false;
   }
   const std::string dir = directory + "/";
@@ -170,26 +219,19 @@ bool vtkHAVSGLFrameCapture::Write(
     error = "the draw program is not available";
     return false;
   }
-  const std::string uniforms = UniformLines(program->GetHandle());
+  const std::string uniforms = UniformLines("draw", program->GetHandle());
 
   std::vector<float> points, scalars, result;
   std::vector<uint32_t> indices;
   context.Mesh->ReadBack(points, scalars, indices);
-  vtkTextureObject* tableTexture = context.Table->GetTable();
-  std::vector<float> table(static_cast<size_t>(tableTexture->GetWidth()) *
-    tableTexture->GetHeight() * tableTexture->GetDepth() * 4);
-  tableTexture->Activate();
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, table.data());
-  tableTexture->Deactivate();
+  int tableSize[3];
+  const std::vector<float> table = ReadTable(context.Table->GetTable(), tableSize);
   context.Targets->ReadResult(result);
 
   std::ostringstream text;
-  text << "# vtkHAVS frame case (vtkHAVSGLFrameCapture): the stand-alone GPU program's input\n"
-       << "width " << context.Width() << "\nheight " << context.Height() << "\nk " << k
+  text << Header("havs", context.Width(), context.Height(), tableSize) << "k " << k
        << "\ncells " << cells << "\nvertices " << scalars.size() << "\nindices " << indices.size()
-       << "\ntable " << tableTexture->GetWidth() << " " << tableTexture->GetHeight() << " "
-       << tableTexture->GetDepth() << "\nflip_facing " << (request.View->FlipFacing ? 1 : 0)
+       << "\nflip_facing " << (request.View->FlipFacing ? 1 : 0)
        << "\ntagging " << (features.Tagging ? 1 : 0) << "\ncaptured_path "
        << (fetch ? "fetch" : "interlock") << "\nfetch_attachments " << Shaders::FetchAttachments(k)
        << "\ninterlock_stride " << Shaders::InterlockPixelStride(k) << "\n"
@@ -197,9 +239,9 @@ bool vtkHAVSGLFrameCapture::Write(
 
   const int fetchPath = vtkHAVSFrameRequest::PathFramebufferFetch;
   const int interlockPath = vtkHAVSFrameRequest::PathFragmentShaderInterlock;
-  bool ok = WriteText(dir + "case.txt", text.str()) && WriteBinary(dir + "points.f32", points) &&
-    WriteBinary(dir + "scalars.f32", scalars) && WriteBinary(dir + "indices.u32", indices) &&
-    WriteBinary(dir + "table.f32", table) && WriteBinary(dir + "result.f32", result) &&
+  bool ok = WriteText(dir + "case.txt", text.str()) && WriteArray(dir + "points.f32", points) &&
+    WriteArray(dir + "scalars.f32", scalars) && WriteArray(dir + "indices.u32", indices) &&
+    WriteArray(dir + "table.f32", table) && WriteArray(dir + "result.f32", result) &&
     WriteText(dir + "face.vert", Shaders::FaceVertexShader()) &&
     WriteText(dir + "quad.vert", Shaders::QuadVertexShader()) &&
     WriteText(dir + "trivial.frag", Shaders::TrivialShader()) &&

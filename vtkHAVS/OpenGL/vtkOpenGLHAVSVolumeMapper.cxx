@@ -85,7 +85,6 @@ vtkOpenGLHAVSVolumeMapper::vtkOpenGLHAVSVolumeMapper()
 vtkOpenGLHAVSVolumeMapper::~vtkOpenGLHAVSVolumeMapper()
 {
   this->ReleaseGraphicsResources(nullptr);
-  this->SetCaptureDirectory(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -332,10 +331,6 @@ bool vtkOpenGLHAVSVolumeMapper::CompositeKeptResult(vtkRenderer* renderer)
 void vtkOpenGLHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-
-  os << indent
-     << "CaptureDirectory: " << (this->CaptureDirectory ? this->CaptureDirectory : "(none)")
-     << ", last capture " << (this->LastCaptureSucceeded ? "written" : "none") << "\n";
   this->GLMesh->PrintSelf(os, indent.GetNextIndent());
   this->Resources->PrintSelf(os, indent.GetNextIndent());
 }

@@ -63,18 +63,6 @@ public:
 
   bool IsKBufferPathSupported(vtkRenderWindow* window, int path) override;
 
-  ///@{
-  /**
-   * Benchmark aid: the next frame drawn through the framebuffer-fetch or
-   * interlock k-buffer writes its GPU inputs, shaders and result into this
-   * directory (vtkHAVSGLFrameCapture, for Apps/GPUBench/havs_gpu_bench); the
-   * setting is cleared after that frame. GetLastCaptureSucceeded() says
-   * whether it was written.
-   */
-  vtkSetStringMacro(CaptureDirectory);
-  vtkGetStringMacro(CaptureDirectory);
-  vtkGetMacro(LastCaptureSucceeded, bool);
-  ///@}
 
 protected:
   vtkOpenGLHAVSVolumeMapper();
@@ -103,8 +91,6 @@ private:
   vtkNew<vtkHAVSGLMapperResources> Resources;
   vtkNew<vtkHAVSExtremumPass> Extremum;
   vtkNew<vtkHAVSRasterBoundPass> RasterBound;
-  char* CaptureDirectory = nullptr;
-  bool LastCaptureSucceeded = false;
 };
 
 VTK_ABI_NAMESPACE_END
