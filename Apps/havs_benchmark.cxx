@@ -12,11 +12,12 @@
 //   havs_benchmark [--quick] [--size N | --sizes a,b] [--views N] [--repeats N]
 //                  [--datasets a,b,...] [--configs a,b,...] [--output-dir DIR]
 //                  [--cache-dir DIR] [--budget SECONDS] [--from-csv FILE]
-//                  [--dump-case DIR] [--rounds N]
+//                  [--dump-case DIR [--dump-kinds a,b]] [--rounds N]
 // (--rounds N: every configuration N times, round-robin, each time the median
 // over the rounds: this machine's slow drifts hit every configuration alike.)
-// (--dump-case DIR: only write view 0 of each data set, drawn by the default
-// mapper, as a frame case for Apps/GPUBench/havs_gpu_bench.)
+// (--dump-case DIR: only write view 0 of each data set, drawn by each mapper
+// of --dump-kinds (havs_k2, havs_k6, cellprojection, raycast: all by default),
+// as frame cases for Apps/GPUBench/havs_gpu_bench, with the exact image.)
 // (--from-csv a.csv,b.csv: only make the report again from earlier runs' CSVs;
 // rows without a size column take --size.)
 //
@@ -140,6 +141,7 @@ struct Options
   std::string OutputDir = "Documentation";
   std::string CacheDir = "build/benchmark-cache";
   std::string DumpCase; // --dump-case DIR: the GPU program's input, then exit
+  std::vector<std::string> DumpKinds = { "havs_k2", "havs_k6", "cellprojection", "raycast" };
   std::string Self;
 };
 
@@ -372,44 +374,93 @@ double Median(std::vector<double> v)
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-/// One (data set, configuration): prints a RESULT line.
-/// --dump-case DIR: view 0 of each data set at --size with the default
-/// mapper, its GPU inputs written into DIR/<data set> (vtkHAVSGLFrameCapture)
-/// for Apps/GPUBench/havs_gpu_bench.
+/// --dump-case DIR: view 0 of each data set at --size, drawn by each mapper
+/// of --dump-kinds with its defaults (HAVS at k = 2 and 6), written as frame
+/// cases DIR/<data set>_<size>_<kind> (Apps/GPUBench/README.md) with the
+/// exact reference's image and folded-pixel mask, for havs_gpu_bench.
 int DumpCases(const Options& o)
 {
   int failures = 0;
   for (const std::string& dataset : o.DataSets)
   {
     vtkSmartPointer<vtkUnstructuredGrid> grid = LoadDataSet(dataset);
-    vtkSmartPointer<vtkRenderWindow> window;
-    window.TakeReference(vtkHAVSRenderWindowFactory::CreateRenderWindow());
-    if (!grid || grid->GetNumberOfCells() == 0 || !window)
+    if (!grid || grid->GetNumberOfCells() == 0)
     {
-      std::cerr << "cannot load " << dataset << " or make a window" << std::endl;
+      std::cerr << "cannot load " << dataset << std::endl;
       ++failures;
       continue;
     }
-    window->SetSize(o.Size, o.Size);
-    vtkNew<vtkRenderer> renderer;
-    renderer->SetBackground(0, 0, 0);
-    window->AddRenderer(renderer);
-    vtkNew<vtkOpenGLHAVSVolumeMapper> mapper; // the defaults, as a user gets them
-    mapper->SetInputData(grid);
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(MakeProperty(grid, VariantOf(dataset)));
-    renderer->AddVolume(volume);
-    PlaceView(renderer->GetActiveCamera(), grid, 0, dataset);
-    window->Render();
-    const std::string dir = o.DumpCase + "/" + dataset + "_" + std::to_string(o.Size);
-    mapper->SetCaptureDirectory(dir.c_str());
-    window->Render();
-    const bool ok = mapper->GetLastCaptureSucceeded();
-    std::cout << (ok ? "wrote " : "FAILED ") << dir << " (" << grid->GetNumberOfCells()
-              << " cells, " << mapper->GetActiveKBufferPathName()
-              << ", k = " << mapper->GetKBufferSize() << ")" << std::endl;
-    failures += ok ? 0 : 1;
+    auto property = MakeProperty(grid, VariantOf(dataset));
+    vtkNew<vtkCamera> camera;
+    PlaceView(camera, grid, 0, dataset);
+    const std::vector<float> exact = ReferenceImage(o, dataset, grid, property, camera, 0);
+    const std::vector<uint8_t> folded = FoldedPixels(o, dataset, grid, camera, 0, true);
+    for (const std::string& kind : o.DumpKinds)
+    {
+      vtkSmartPointer<vtkHAVSMapperBase> mapper;
+      if (kind == "havs_k2" || kind == "havs_k6")
+      {
+        auto m = vtkSmartPointer<vtkOpenGLHAVSVolumeMapper>::New(); // the defaults
+        m->SetKBufferSize(kind == "havs_k2" ? 2 : 6);
+        mapper = m;
+      }
+      else if (kind == "cellprojection")
+      {
+        mapper = vtkSmartPointer<vtkHAVSCellProjectionMapper>::New();
+      }
+      else if (kind == "raycast")
+      {
+        mapper = vtkSmartPointer<vtkHAVSRayCastMapper>::New();
+      }
+      else
+      {
+        std::cerr << "unknown case kind " << kind
+                  << " (havs_k2, havs_k6, cellprojection, raycast)" << std::endl;
+        ++failures;
+        continue;
+      }
+      vtkSmartPointer<vtkRenderWindow> window;
+      window.TakeReference(vtkHAVSRenderWindowFactory::CreateRenderWindow());
+      if (!window)
+      {
+        std::cerr << "cannot make a window" << std::endl;
+        return EXIT_FAILURE;
+      }
+      window->SetSize(o.Size, o.Size);
+      vtkNew<vtkRenderer> renderer;
+      renderer->SetBackground(0, 0, 0);
+      window->AddRenderer(renderer);
+      mapper->SetInputData(grid);
+      vtkNew<vtkVolume> volume;
+      volume->SetMapper(mapper);
+      volume->SetProperty(property);
+      renderer->AddVolume(volume);
+      renderer->GetActiveCamera()->DeepCopy(camera);
+      renderer->ResetCameraClippingRange();
+      window->Render();
+      const std::string dir =
+        o.DumpCase + "/" + dataset + "_" + std::to_string(o.Size) + "_" + kind;
+      mapper->SetCaptureDirectory(dir.c_str());
+      window->Render();
+      bool ok = mapper->GetLastCaptureSucceeded();
+      if (ok)
+      {
+        std::ofstream(dir + "/reference.f32", std::ios::binary)
+          .write(reinterpret_cast<const char*>(exact.data()),
+            static_cast<std::streamsize>(exact.size() * sizeof(float)));
+        if (!folded.empty())
+        {
+          std::ofstream(dir + "/folded.u8", std::ios::binary)
+            .write(reinterpret_cast<const char*>(folded.data()),
+              static_cast<std::streamsize>(folded.size()));
+        }
+        std::ofstream(dir + "/case.txt", std::ios::app)
+          << "dataset " << dataset << "\nview 0\n";
+      }
+      std::cout << (ok ? "wrote " : "FAILED ") << dir << " (" << grid->GetNumberOfCells()
+                << " cells)" << std::endl;
+      failures += ok ? 0 : 1;
+    }
   }
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
@@ -427,6 +478,7 @@ std::string TraceText(const std::vector<double>& ms)
   return text.empty() ? "-" : text;
 }
 
+/// One (data set, configuration): prints a RESULT line.
 int RunWorker(const Options& o)
 {
   const std::string dataset = o.DataSets.at(0), config = o.Configs.at(0);
@@ -1867,12 +1919,15 @@ int main(int argc, char* argv[])
       fromCsv = next();
     else if (a == "--dump-case")
       o.DumpCase = next();
+    else if (a == "--dump-kinds")
+      o.DumpKinds = havsapp::SplitList(next());
     else
     {
       std::cout
         << "usage: havs_benchmark [--quick] [--size N | --sizes a,b] [--views N] [--repeats N] "
            "[--datasets a,b] [--configs a,b] [--output-dir DIR] [--cache-dir DIR] "
-           "[--budget SECONDS] [--from-csv FILE] [--dump-case DIR] [--rounds N]\n";
+           "[--budget SECONDS] [--from-csv FILE] [--dump-case DIR [--dump-kinds a,b]] "
+           "[--rounds N]\n";
       return a == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
     }
   }
