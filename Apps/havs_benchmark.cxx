@@ -71,6 +71,7 @@
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFaceSorter.h"
 #include "vtkHAVSFrameStatistics.h"
+#include "vtkHAVSGeneratedBlock.h"
 #include "vtkHAVSImageMetrics.h"
 #include "vtkHAVSInternalFaceRanking.h"
 #include "vtkHAVSRayCastMapper.h"
@@ -88,6 +89,7 @@
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkMultiBlockPLOT3DReader.h"
@@ -374,6 +376,86 @@ double Median(std::vector<double> v)
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+/// A .havsmesh file (read by Apps/GPUBench/havs_gpu_cases): a text line,
+/// then the points (doubles), the tetrahedra (4 uint32 ids each) and the
+/// active point scalars (doubles). False when the grid is not all tetrahedra.
+bool WriteMeshFile(vtkUnstructuredGrid* grid, const std::string& path)
+{
+  const vtkIdType points = grid->GetNumberOfPoints(), cells = grid->GetNumberOfCells();
+  vtkDataArray* scalars = grid->GetPointData()->GetScalars();
+  if (!scalars)
+  {
+    return false;
+  }
+  std::vector<double> xyz(3 * static_cast<size_t>(points)), values(static_cast<size_t>(points));
+  for (vtkIdType i = 0; i < points; ++i)
+  {
+    grid->GetPoint(i, &xyz[3 * i]);
+    values[i] = scalars->GetComponent(i, 0);
+  }
+  std::vector<uint32_t> ids(4 * static_cast<size_t>(cells));
+  vtkNew<vtkIdList> cell;
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    grid->GetCellPoints(c, cell);
+    if (grid->GetCellType(c) != VTK_TETRA || cell->GetNumberOfIds() != 4)
+    {
+      return false;
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+      ids[4 * c + k] = static_cast<uint32_t>(cell->GetId(k));
+    }
+  }
+  std::ofstream out(path, std::ios::binary);
+  out << "havsmesh 1 points " << points << " tetrahedra " << cells << " scalars point\n";
+  out.write(
+    reinterpret_cast<const char*>(xyz.data()), static_cast<std::streamsize>(xyz.size() * 8));
+  out.write(
+    reinterpret_cast<const char*>(ids.data()), static_cast<std::streamsize>(ids.size() * 4));
+  out.write(
+    reinterpret_cast<const char*>(values.data()), static_cast<std::streamsize>(values.size() * 8));
+  return static_cast<bool>(out);
+}
+
+/// The lines of case.txt that let havs_gpu_cases render the same frame: the
+/// mesh, the camera and the transfer functions, at full precision.
+std::string FrameDescription(
+  const std::string& mesh, vtkCamera* camera, vtkVolumeProperty* property)
+{
+  std::ostringstream d;
+  d.precision(17);
+  auto triple = [&d](const char* key, const double* v)
+  { d << key << " " << v[0] << " " << v[1] << " " << v[2] << "\n"; };
+  d << "mesh " << mesh << "\n";
+  triple("camera_position", camera->GetPosition());
+  triple("camera_focal_point", camera->GetFocalPoint());
+  triple("camera_view_up", camera->GetViewUp());
+  d << "camera_view_angle " << camera->GetViewAngle() << "\ncamera_parallel "
+    << camera->GetParallelProjection() << "\ncamera_parallel_scale " << camera->GetParallelScale()
+    << "\ncamera_clipping_range " << camera->GetClippingRange()[0] << " "
+    << camera->GetClippingRange()[1] << "\n";
+  vtkColorTransferFunction* color = property->GetRGBTransferFunction(0);
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  for (int i = 0; i < color->GetSize(); ++i)
+  {
+    double node[6];
+    color->GetNodeValue(i, node);
+    d << "tf_color " << node[0] << " " << node[1] << " " << node[2] << " " << node[3] << " "
+      << node[4] << " " << node[5] << "\n";
+  }
+  for (int i = 0; i < opacity->GetSize(); ++i)
+  {
+    double node[4];
+    opacity->GetNodeValue(i, node);
+    d << "tf_opacity " << node[0] << " " << node[1] << " " << node[2] << " " << node[3] << "\n";
+  }
+  d << "tf_color_space " << color->GetColorSpace() << "\ntf_clamping " << color->GetClamping()
+    << "\ntf_unit_distance " << property->GetScalarOpacityUnitDistance() << "\ntf_shade "
+    << property->GetShade() << "\ntf_interpolation " << property->GetInterpolationType() << "\n";
+  return d.str();
+}
+
 /// --dump-case DIR: view 0 of each data set at --size, drawn by each mapper
 /// of --dump-kinds with its defaults (HAVS at k = 2 and 6), written as frame
 /// cases DIR/<data set>_<size>_<kind> (Apps/GPUBench/README.md) with the
@@ -395,6 +477,20 @@ int DumpCases(const Options& o)
     PlaceView(camera, grid, 0, dataset);
     const std::vector<float> exact = ReferenceImage(o, dataset, grid, property, camera, 0);
     const std::vector<uint8_t> folded = FoldedPixels(o, dataset, grid, camera, 0, true);
+    // The mesh, for havs_gpu_cases where the case travels without its arrays.
+    std::string mesh = "generated " + std::to_string(vtkHAVSGeneratedBlock::CubesOf(dataset));
+    if (!vtkHAVSGeneratedBlock::CubesOf(dataset))
+    {
+      mesh = dataset + ".havsmesh";
+      std::system(("mkdir -p '" + o.DumpCase + "'").c_str());
+      if (!WriteMeshFile(grid, o.DumpCase + "/" + mesh))
+      {
+        std::cerr << "cannot write " << o.DumpCase << "/" << mesh << " (tetrahedra and point "
+                  << "scalars only)" << std::endl;
+        ++failures;
+        continue;
+      }
+    }
     for (const std::string& kind : o.DumpKinds)
     {
       vtkSmartPointer<vtkHAVSMapperBase> mapper;
@@ -414,8 +510,8 @@ int DumpCases(const Options& o)
       }
       else
       {
-        std::cerr << "unknown case kind " << kind
-                  << " (havs_k2, havs_k6, cellprojection, raycast)" << std::endl;
+        std::cerr << "unknown case kind " << kind << " (havs_k2, havs_k6, cellprojection, raycast)"
+                  << std::endl;
         ++failures;
         continue;
       }
@@ -455,7 +551,8 @@ int DumpCases(const Options& o)
               static_cast<std::streamsize>(folded.size()));
         }
         std::ofstream(dir + "/case.txt", std::ios::app)
-          << "dataset " << dataset << "\nview 0\n";
+          << "dataset " << dataset << "\nview 0\n"
+          << FrameDescription(mesh, renderer->GetActiveCamera(), property);
       }
       std::cout << (ok ? "wrote " : "FAILED ") << dir << " (" << grid->GetNumberOfCells()
                 << " cells)" << std::endl;

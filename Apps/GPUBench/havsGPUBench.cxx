@@ -507,7 +507,6 @@ void DrawBuffers(size_t n)
   gl.DrawBuffers(static_cast<GLsizei>(n), buffers.data());
 }
 
-
 GLuint Buffer(GLenum target, const void* data, size_t bytes, GLenum usage)
 {
   GLuint buffer = 0;

@@ -156,9 +156,9 @@ struct Case
   std::map<std::string, std::string> Keys;
   std::vector<Uniform> Uniforms;
   int Width = 0, Height = 0, TableSize[3] = { 0, 0, 0 };
-  long long Cells = 0;         ///< tetrahedra drawn (what tets/s counts)
-  std::vector<float> Result;   ///< the mapper's float result where captured (RGBA, bottom row first)
-  std::vector<float> Exact;    ///< the exact reference's image (empty: none stored)
+  long long Cells = 0;       ///< tetrahedra drawn (what tets/s counts)
+  std::vector<float> Result; ///< the mapper's float result where captured (RGBA, bottom row first)
+  std::vector<float> Exact;  ///< the exact reference's image (empty: none stored)
   std::vector<uint8_t> Folded; ///< 1: a pixel left out of the comparison (empty: none)
 
   std::string Shader(const std::string& name) const;
@@ -187,8 +187,8 @@ bool ReadArray(const std::string& path, std::vector<T>& out)
 /// A program of the case's shaders, its uniforms set from the case's lines of
 /// `program` (the name in "uniform PROGRAM ..."), havsTable at unit 0 and
 /// havsViewportSize from the case. 0, with the log printed, when it fails.
-GLuint Program(
-  const Case& c, const std::string& vertex, const std::string& fragment, const std::string& program);
+GLuint Program(const Case& c, const std::string& vertex, const std::string& fragment,
+  const std::string& program);
 GLuint FloatTexture(int w, int h);
 GLuint Framebuffer(const std::vector<GLuint>& colors);
 void DrawBuffers(size_t n);
@@ -208,8 +208,8 @@ std::vector<float> ReadImage(GLuint framebuffer, int width, int height);
 struct Options
 {
   int Frames = 10;
-  std::string Paths;       ///< the paths asked for (empty: all)
-  bool Control = false;    ///< the control: each part's own wrong order (README.md)
+  std::string Paths;                  ///< the paths asked for (empty: all)
+  bool Control = false;               ///< the control: each part's own wrong order (README.md)
   double MaxDifference = 2.0 / 255.0; ///< against the mapper's own result
   bool Wanted(const std::string& path) const
   {

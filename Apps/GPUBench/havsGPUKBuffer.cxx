@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <memory>
 
 namespace havsgpu
 {
@@ -51,8 +52,7 @@ bool MakeKBufferPaths(Case& c, const Options& o, const Device& device, Paths& pa
   gl.EnableVertexAttribArray(0);
   gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
   gl.BindBuffer(GL_ARRAY_BUFFER, buffers[1]);
-  gl.BufferData(
-    GL_ARRAY_BUFFER, scalars.size() * sizeof(float), scalars.data(), GL_STATIC_DRAW);
+  gl.BufferData(GL_ARRAY_BUFFER, scalars.size() * sizeof(float), scalars.data(), GL_STATIC_DRAW);
   gl.EnableVertexAttribArray(1);
   gl.VertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
   gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[2]);
@@ -90,7 +90,7 @@ bool MakeKBufferPaths(Case& c, const Options& o, const Device& device, Paths& pa
   const GLuint result = FloatTexture(c.Width, c.Height);
   const GLuint resultFbo = Framebuffer({ result });
 
-    if (o.Wanted("fetch") && device.Fetch)
+  if (o.Wanted("fetch") && device.Fetch)
   {
     Path p;
     p.Name = "framebuffer fetch";
@@ -190,6 +190,84 @@ bool MakeKBufferPaths(Case& c, const Options& o, const Device& device, Paths& pa
   else if (o.Wanted("interlock"))
   {
     paths.NotRun.push_back("interlock (no ARB or NV fragment_shader_interlock)");
+  }
+  if (o.Wanted("lists"))
+  {
+    // Fragment lists (vtkHAVSFragmentListKBuffer): every fragment appended
+    // to its pixel's list (heads: an R32UI image at unit 0; nodes of 16
+    // bytes at binding 1, their counter at 2), sorted and integrated by the
+    // resolve. The pool is sized by a first draw, as the mapper grows it.
+    Path p;
+    const bool vote = HasExtension("GL_ARB_shader_group_vote");
+    p.Name = std::string("fragment lists") + (vote ? " (group vote)" : "");
+    const GLuint draw = Program(c, "face.vert", "list_draw.frag", "draw");
+    const GLuint resolve =
+      Program(c, "quad.vert", vote ? "list_resolve_vote.frag" : "list_resolve.frag", "draw");
+    if (!draw || !resolve)
+    {
+      return false;
+    }
+    GLuint heads = 0;
+    gl.GenTextures(1, &heads);
+    gl.BindTexture(GL_TEXTURE_2D, heads);
+    gl.TexStorage2D(GL_TEXTURE_2D, 1, GL_R32UI, c.Width, c.Height);
+    const GLuint counter =
+      Buffer(GL_SHADER_STORAGE_BUFFER, nullptr, sizeof(GLuint), GL_DYNAMIC_READ);
+    auto capacity = std::make_shared<GLuint>(static_cast<GLuint>(
+      std::max<size_t>(static_cast<size_t>(c.Width) * c.Height * 4, size_t(1) << 20)));
+    auto nodes = std::make_shared<GLuint>(
+      Buffer(GL_SHADER_STORAGE_BUFFER, nullptr, size_t(*capacity) * 16, GL_DYNAMIC_COPY));
+    p.Clear = [=]()
+    {
+      const GLuint noNode = 0xFFFFFFFFu, zero = 0;
+      gl.ClearTexImage(heads, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &noNode);
+      gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, counter);
+      gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &zero);
+      gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resultFbo);
+      DrawBuffers(1);
+    };
+    p.Draw = [=]()
+    {
+      for (int attempt = 0; attempt < 2; ++attempt)
+      {
+        if (attempt > 0)
+        {
+          p.Clear();
+        }
+        gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, *nodes);
+        gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, counter);
+        gl.BindImageTexture(0, heads, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        gl.UseProgram(draw);
+        gl.Uniform1i(
+          gl.GetUniformLocation(draw, "havsNodeCapacity"), static_cast<GLint>(*capacity));
+        gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        drawFaces(draw);
+        gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+          GL_BUFFER_UPDATE_BARRIER_BIT);
+        GLuint count = 0;
+        gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, counter);
+        gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &count);
+        if (count <= *capacity)
+        {
+          break;
+        }
+        *capacity = count + count / 4; // the pool overflowed: grow it, draw again
+        gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, *nodes);
+        gl.BufferData(GL_SHADER_STORAGE_BUFFER, size_t(*capacity) * 16, nullptr, GL_DYNAMIC_COPY);
+      }
+    };
+    p.Resolve = [=]()
+    {
+      gl.BindImageTexture(0, heads, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, *nodes);
+      gl.UseProgram(resolve);
+      gl.Uniform1i(
+        gl.GetUniformLocation(resolve, "havsNodeCapacity"), static_cast<GLint>(*capacity));
+      drawQuad(resolve);
+    };
+    p.Image = [=]() { return ReadImage(resultFbo, c.Width, c.Height); };
+    paths.Run.push_back(p);
   }
   if (o.Wanted("raster"))
   {

@@ -238,12 +238,12 @@ int RunCase(const std::string& dir, const Options& o, const Device& device, std:
     if (csv)
     {
       *csv << dir << "," << c.Mapper << "," << c.Width << "," << c.Keys["k"] << ",\"" << p.Name
-           << "\"," << 1e3 * t.Frame << "," << 1e3 * t.Draw << "," << c.Cells << ","
-           << t.Fragments << "," << (t.VsMapper.Known ? t.VsMapper.RMSE : NAN) << ","
+           << "\"," << 1e3 * t.Frame << "," << 1e3 * t.Draw << "," << c.Cells << "," << t.Fragments
+           << "," << (t.VsMapper.Known ? t.VsMapper.RMSE : NAN) << ","
            << (t.VsMapper.Known ? t.VsMapper.Max : NAN) << ","
            << (t.VsExact.Known ? t.VsExact.RMSE : NAN) << ","
-           << (t.VsExact.Known ? t.VsExact.Max : NAN) << "," << t.VsExact.LeftOut << ","
-           << verdict << "," << (o.Control ? 1 : 0) << "\n";
+           << (t.VsExact.Known ? t.VsExact.Max : NAN) << "," << t.VsExact.LeftOut << "," << verdict
+           << "," << (o.Control ? 1 : 0) << "\n";
       csv->flush();
     }
   }

@@ -787,4 +787,50 @@ size_t vtkHAVSMesh::GetMemoryBytes() const
       this->Sources.StencilWeights, this->Sources.Cells);
 }
 
+//------------------------------------------------------------------------------
+size_t vtkHAVSMesh::MakeTaggedVertices(const std::vector<float>& points,
+  const std::vector<float>& scalars, int components, const std::vector<uint32_t>& triangles,
+  const std::vector<uint8_t>& boundary, std::vector<float>& taggedPoints,
+  std::vector<float>& taggedScalars, std::vector<uint32_t>& indices)
+{
+  const size_t faces = triangles.size() / 3;
+  const size_t nc = static_cast<size_t>(components);
+  size_t boundaryFaces = 0;
+  for (size_t f = 0; f < faces && f < boundary.size(); ++f)
+  {
+    boundaryFaces += boundary[f] ? 1 : 0;
+  }
+  taggedPoints.assign(9 * boundaryFaces, 0.0f);
+  taggedScalars.assign(3 * nc * boundaryFaces, 0.0f);
+  if (boundaryFaces == 0)
+  {
+    indices.clear(); // nothing rewritten: the triangles are drawn as they are
+    return 0;
+  }
+  indices = triangles;
+  uint32_t next = static_cast<uint32_t>(points.size() / 3);
+  size_t b = 0;
+  for (size_t f = 0; f < faces && f < boundary.size(); ++f)
+  {
+    if (!boundary[f])
+    {
+      continue;
+    }
+    // A face wound the other way than its vertices' cell-scalar pairs
+    // (flag 2: out of a visible cell next to an invisible one) swaps them.
+    const bool swapPair = boundary[f] == 2 && nc == 2;
+    for (int v = 0; v < 3; ++v, ++b)
+    {
+      const uint32_t p = triangles[3 * f + v];
+      std::copy_n(&points[3 * size_t(p)], 3, &taggedPoints[3 * b]);
+      for (size_t c = 0; c < nc; ++c)
+      {
+        taggedScalars[nc * b + c] = scalars[nc * p + (swapPair ? 1 - c : c)] + 2.0f;
+      }
+      indices[3 * f + v] = next++;
+    }
+  }
+  return boundaryFaces;
+}
+
 VTK_ABI_NAMESPACE_END

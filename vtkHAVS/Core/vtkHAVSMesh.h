@@ -200,6 +200,23 @@ public:
   const std::vector<uint32_t>& GetFaceVertexIds() const;
   int GetVertexScalarComponents() const { return this->CellScalars ? 2 : 1; }
   ///@}
+
+  /**
+   * Boundary tagging's vertices: every face of `triangles` (3 vertex ids
+   * each, in draw order) flagged in `boundary` gets three vertices of its
+   * own, appended in draw order after the `points`' (GetVertexPoints()):
+   * their points in `taggedPoints`, their scalars plus 2 (the tag the draw
+   * shader reads; flag 2 with two components swaps the pair) in
+   * `taggedScalars`; `indices` is `triangles` with those faces' ids
+   * rewritten (empty without boundary faces: `triangles` are drawn as they
+   * are). What the GPU draws with tagging on (vtkHAVSGLMesh) and what
+   * the stand-alone GPU program's cases hold (Apps/GPUBench). Returns the
+   * number of boundary faces.
+   */
+  static size_t MakeTaggedVertices(const std::vector<float>& points,
+    const std::vector<float>& scalars, int components, const std::vector<uint32_t>& triangles,
+    const std::vector<uint8_t>& boundary, std::vector<float>& taggedPoints,
+    std::vector<float>& taggedScalars, std::vector<uint32_t>& indices);
   const double* GetShift() const { return this->Shift; }
   /// The points' bounds in model coordinates (shifted).
   const double* GetBounds() const { return this->Bounds; }

@@ -229,16 +229,18 @@ bool vtkHAVSGLFrameCapture::Write(
   context.Targets->ReadResult(result);
 
   std::ostringstream text;
-  text << Header("havs", context.Width(), context.Height(), tableSize) << "k " << k
-       << "\ncells " << cells << "\nvertices " << scalars.size() << "\nindices " << indices.size()
-       << "\nflip_facing " << (request.View->FlipFacing ? 1 : 0)
-       << "\ntagging " << (features.Tagging ? 1 : 0) << "\ncaptured_path "
-       << (fetch ? "fetch" : "interlock") << "\nfetch_attachments " << Shaders::FetchAttachments(k)
-       << "\ninterlock_stride " << Shaders::InterlockPixelStride(k) << "\n"
+  text << Header("havs", context.Width(), context.Height(), tableSize) << "k " << k << "\ncells "
+       << cells << "\nvertices " << scalars.size() << "\nindices " << indices.size()
+       << "\nflip_facing " << (request.View->FlipFacing ? 1 : 0) << "\ntagging "
+       << (features.Tagging ? 1 : 0) << "\ncaptured_path " << (fetch ? "fetch" : "interlock")
+       << "\nfetch_attachments " << Shaders::FetchAttachments(k) << "\ninterlock_stride "
+       << Shaders::InterlockPixelStride(k) << "\nlist_capacity " << Shaders::ListResolveCapacity
+       << "\n"
        << uniforms;
 
   const int fetchPath = vtkHAVSFrameRequest::PathFramebufferFetch;
   const int interlockPath = vtkHAVSFrameRequest::PathFragmentShaderInterlock;
+  const int listPath = vtkHAVSFrameRequest::PathFragmentLists;
   bool ok = WriteText(dir + "case.txt", text.str()) && WriteArray(dir + "points.f32", points) &&
     WriteArray(dir + "scalars.f32", scalars) && WriteArray(dir + "indices.u32", indices) &&
     WriteArray(dir + "table.f32", table) && WriteArray(dir + "result.f32", result) &&
@@ -255,7 +257,10 @@ bool vtkHAVSGLFrameCapture::Write(
       Shaders::InterlockDrawShader(k, Shaders::InterlockNone, features)) &&
     WriteText(dir + "interlock_clear.frag", Shaders::InterlockClearShader(k)) &&
     WriteText(
-      dir + "interlock_resolve.frag", Shaders::ResolveShader(interlockPath, k, false, features));
+      dir + "interlock_resolve.frag", Shaders::ResolveShader(interlockPath, k, false, features)) &&
+    WriteText(dir + "list_draw.frag", Shaders::ListDrawShader(features)) &&
+    WriteText(dir + "list_resolve.frag", Shaders::ResolveShader(listPath, k, false, features)) &&
+    WriteText(dir + "list_resolve_vote.frag", Shaders::ResolveShader(listPath, k, true, features));
   if (!ok)
   {
     error = "cannot write the case into " + directory;

@@ -90,46 +90,17 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
     vtkErrorMacro("UploadFaceOrder before UploadGeometry.");
     return false;
   }
-  const size_t faces = triangles.size() / 3;
   const size_t numPoints = this->Points.size() / 3;
   const int nc = this->Components;
-  size_t boundaryFaces = 0;
-  if (tagged)
-  {
-    for (size_t f = 0; f < faces && f < boundary.size(); ++f)
-    {
-      boundaryFaces += boundary[f] ? 1 : 0;
-    }
-  }
   const std::vector<uint32_t>* indices = &triangles;
   std::vector<uint32_t> rewritten;
+  std::vector<float> points, scalars;
+  const size_t boundaryFaces = tagged ? vtkHAVSMesh::MakeTaggedVertices(this->Points, this->Scalars,
+                                          nc, triangles, boundary, points, scalars, rewritten)
+                                      : 0;
   if (boundaryFaces > 0)
   {
     // The boundary faces' own vertices, in draw order, after the points.
-    std::vector<float> points(9 * boundaryFaces), scalars(3 * nc * boundaryFaces);
-    rewritten = triangles;
-    uint32_t next = static_cast<uint32_t>(numPoints);
-    size_t b = 0;
-    for (size_t f = 0; f < faces && f < boundary.size(); ++f)
-    {
-      if (!boundary[f])
-      {
-        continue;
-      }
-      // A face wound the other way than its vertices' cell-scalar pairs
-      // (flag 2: out of a visible cell next to an invisible one) swaps them.
-      const bool swapPair = boundary[f] == 2 && nc == 2;
-      for (int v = 0; v < 3; ++v, ++b)
-      {
-        const uint32_t p = triangles[3 * f + v];
-        std::copy_n(&this->Points[3 * p], 3, &points[3 * b]);
-        for (int c = 0; c < nc; ++c)
-        {
-          scalars[nc * b + c] = this->Scalars[nc * p + (swapPair ? 1 - c : c)] + 2.0f;
-        }
-        rewritten[3 * f + v] = next++;
-      }
-    }
     const size_t vertices = numPoints + 3 * boundaryFaces;
     if (vertices > this->VertexCapacity)
     {

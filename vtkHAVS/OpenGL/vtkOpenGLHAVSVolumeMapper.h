@@ -63,7 +63,6 @@ public:
 
   bool IsKBufferPathSupported(vtkRenderWindow* window, int path) override;
 
-
 protected:
   vtkOpenGLHAVSVolumeMapper();
   ~vtkOpenGLHAVSVolumeMapper() override;

@@ -18,6 +18,7 @@
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
 #include "vtkExtractCells.h"
+#include "vtkHAVSGeneratedBlock.h"
 #include "vtkHAVSTetrahedralizer.h"
 #include "vtkHAVSVTKCompat.h"
 #include "vtkIdList.h"
@@ -314,17 +315,9 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::Load(const std::string& na
     }
     return ReadPlot3D(dir + "/" + d.Stem + "xyz.bin", dir + "/" + d.Stem + "q.bin", d.Function);
   }
-  if (name == "gen1M")
+  if (const int cubes = vtkHAVSGeneratedBlock::CubesOf(name))
   {
-    return MakeGenerated(60);
-  }
-  if (name == "gen4M")
-  {
-    return MakeGenerated(94);
-  }
-  if (name == "gen10M")
-  {
-    return MakeGenerated(127);
+    return MakeGenerated(cubes);
   }
   if (name == "box")
   {
@@ -534,20 +527,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::MakeBox(
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::MakeGenerated(int n)
 {
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(n + 1, n + 1, n + 1);
-  image->SetSpacing(1.0 / n, 1.0 / n, 1.0 / n);
-  vtkNew<vtkDoubleArray> field;
-  field->SetName("field");
-  field->SetNumberOfTuples(image->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
-  {
-    double x[3];
-    image->GetPoint(i, x);
-    field->SetValue(i, std::sin(6 * x[0]) * std::cos(5 * x[1]) + x[2]);
-  }
-  image->GetPointData()->SetScalars(field);
-  return Tetrahedralize(image);
+  return Tetrahedralize(vtkHAVSGeneratedBlock::Make(n)); // (tetrahedra: taken as they are)
 }
 
 //------------------------------------------------------------------------------
