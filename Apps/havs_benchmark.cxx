@@ -541,9 +541,17 @@ int DumpCases(const Options& o)
       bool ok = mapper->GetLastCaptureSucceeded();
       if (ok)
       {
-        std::ofstream(dir + "/reference.f32", std::ios::binary)
-          .write(reinterpret_cast<const char*>(exact.data()),
-            static_cast<std::streamsize>(exact.size() * sizeof(float)));
+        // The exact image in 16-bit steps (1/65535: far below the exact
+        // bound's 5e-4 RMSE), so that a bundle carries it small.
+        std::vector<uint16_t> steps(exact.size());
+        for (size_t i = 0; i < exact.size(); ++i)
+        {
+          const float v = std::isfinite(exact[i]) ? std::min(1.0f, std::max(0.0f, exact[i])) : 0.0f;
+          steps[i] = static_cast<uint16_t>(std::lround(65535.0f * v));
+        }
+        std::ofstream(dir + "/reference.u16", std::ios::binary)
+          .write(reinterpret_cast<const char*>(steps.data()),
+            static_cast<std::streamsize>(steps.size() * sizeof(uint16_t)));
         if (!folded.empty())
         {
           std::ofstream(dir + "/folded.u8", std::ios::binary)

@@ -367,9 +367,15 @@ bool ReadCase(const std::string& dir, Case& c)
   {
     return false;
   }
-  if (c.Has("reference.f32") && !ReadArray(dir + "/reference.f32", c.Exact))
+  std::vector<uint16_t> steps;
+  if (c.Has("reference.u16") && !ReadArray(dir + "/reference.u16", steps))
   {
     return false;
+  }
+  c.Exact.resize(steps.size());
+  for (size_t i = 0; i < steps.size(); ++i)
+  {
+    c.Exact[i] = static_cast<float>(steps[i]) / 65535.0f;
   }
   if (c.Has("folded.u8") && !ReadArray(dir + "/folded.u8", c.Folded))
   {

@@ -164,8 +164,14 @@ std::string Figure(const Error& e, bool rmse)
 }
 
 /// One case: its paths made, run, reported; the number of failures.
-int RunCase(const std::string& dir, const Options& o, const Device& device, std::ofstream* csv)
+int RunCase(const std::string& path, const Options& o, const Device& device, std::ofstream* csv)
 {
+  std::string dir = path;
+  while (dir.size() > 1 && dir.back() == '/')
+  {
+    dir.pop_back();
+  }
+  const std::string name = dir.substr(dir.find_last_of('/') + 1);
   Case c;
   if (!ReadCase(dir, c))
   {
@@ -181,7 +187,7 @@ int RunCase(const std::string& dir, const Options& o, const Device& device, std:
     made = MakeRayCastPaths(c, o, device, paths);
   else
     Fail("unknown mapper '" + c.Mapper + "' in " + dir);
-  std::printf("\n## %s: %s, %d x %d, %lld tetrahedra, table %d x %d x %d%s%s%s\n", dir.c_str(),
+  std::printf("\n## %s: %s, %d x %d, %lld tetrahedra, table %d x %d x %d%s%s%s\n", name.c_str(),
     c.Mapper.c_str(), c.Width, c.Height, c.Cells, c.TableSize[0], c.TableSize[1], c.TableSize[2],
     c.Keys.count("k") ? (", k = " + c.Keys["k"]).c_str() : "",
     c.Exact.empty() ? ", NO exact reference stored" : "",
@@ -237,7 +243,7 @@ int RunCase(const std::string& dir, const Options& o, const Device& device, std:
       Figure(t.VsExact, false).c_str(), verdict.c_str());
     if (csv)
     {
-      *csv << dir << "," << c.Mapper << "," << c.Width << "," << c.Keys["k"] << ",\"" << p.Name
+      *csv << name << "," << c.Mapper << "," << c.Width << "," << c.Keys["k"] << ",\"" << p.Name
            << "\"," << 1e3 * t.Frame << "," << 1e3 * t.Draw << "," << c.Cells << "," << t.Fragments
            << "," << (t.VsMapper.Known ? t.VsMapper.RMSE : NAN) << ","
            << (t.VsMapper.Known ? t.VsMapper.Max : NAN) << ","

@@ -18,16 +18,17 @@
 // vtkHAVSGeneratedBlock.h). This program renders that frame through the
 // GL-free core mappers of vtkHAVS::Core (no OpenGL, no window): their draw
 // writes the arrays the GPU would have drawn from instead of drawing them
-// (Apps/GPUBench/README.md): HAVS's vertices with the boundary faces' own
-// and its faces in draw order; the cell projection's points, tetrahedra,
-// windings, cell records and order; the ray caster's points, boundary,
-// neighbours and cell records. The same core code made them where the case
-// was captured, so havs_gpu_bench then draws the captured frame.
+// (Apps/GPUBench/README.md) and the pre-integration table: HAVS's vertices
+// with the boundary faces' own and its faces in draw order; the cell projection's points,
+// tetrahedra, windings, cell records and order; the ray caster's points, boundary, neighbours and
+// cell records. The same core code made them where the case was captured, so havs_gpu_bench then
+// draws the captured frame.
 // --check: compare with the arrays already in the case instead of writing
 // (each file byte for byte; exits 1 on a difference).
 #include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSGeneratedBlock.h"
 #include "vtkHAVSMesh.h"
+#include "vtkHAVSPreIntegrationTable.h"
 #include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSRayCastMesh.h"
 #include "vtkHAVSVolumeMapper.h"
@@ -92,6 +93,15 @@ struct Sink
     }
     ++this->Written;
   }
+
+  /// The pre-integration table as the GPU holds it (vtkHAVSGLTable uploads
+  /// the core table's floats as they are).
+  void PutTable(vtkHAVSPreIntegrationTable* table)
+  {
+    const size_t n = static_cast<size_t>(table->GetScalarResolution()) *
+      table->GetScalarResolution() * table->GetLengthResolution() * 4;
+    this->Put("table.f32", std::vector<float>(table->GetTable(), table->GetTable() + n));
+  }
 };
 
 // --- the core mappers, drawing into files ------------------------------------------
@@ -129,6 +139,7 @@ protected:
     this->Out->Put("points.f32", points);
     this->Out->Put("scalars.f32", scalars);
     this->Out->Put("indices.u32", indices);
+    this->Out->PutTable(request.Table);
     return true;
   }
 };
@@ -153,6 +164,7 @@ protected:
     this->Out->Put("mirrored.u32", *frame.Mirrored);
     this->Out->Put("cells.f32", *frame.Cells);
     this->Out->Put("order.u32", *frame.Order);
+    this->Out->PutTable(frame.Table);
     *drawSeconds = 0.0;
     return true;
   }
@@ -179,6 +191,7 @@ protected:
     this->Out->Put("boundary_cells.u32", mesh.GetBoundaryCells());
     this->Out->Put("neighbours.i32", mesh.GetNeighbours());
     this->Out->Put("cells.f32", mesh.GetCells());
+    this->Out->PutTable(frame.Table);
     return true;
   }
 };
@@ -494,7 +507,14 @@ int main(int argc, char* argv[])
       return a == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
     }
     else
-      dirs.push_back(a);
+    {
+      std::string dir = a;
+      while (dir.size() > 1 && dir.back() == '/')
+      {
+        dir.pop_back(); // the mesh file lies beside the case's directory
+      }
+      dirs.push_back(dir);
+    }
   }
   std::printf("havs_gpu_cases: vtkSMPTools backend %s, %d threads\n",
     vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "?",

@@ -23,7 +23,8 @@
  *
  * Meshes made here:
  * - gen1M, gen4M, gen10M: blocks of 60^3, 94^3, 127^3 cubes (1.08M, 4.15M,
- *   10.2M tets), field sin(6x) cos(5y) + z;
+ *   10.2M tets), field sin(6x) cos(5y) + z; block<N> (e.g. block24): the
+ *   same block of N^3 cubes (vtkHAVSGeneratedBlock.h), for tests;
  * - box: a 8^3 block of the unit cube, field z;
  * - wavelet: vtkRTAnalyticSource (17^3) thresholded at RTData >= 160 (holes
  *   and pockets);

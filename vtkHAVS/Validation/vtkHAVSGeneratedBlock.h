@@ -33,9 +33,16 @@
 namespace vtkHAVSGeneratedBlock
 {
 /// The number of cubes along an edge of the block `name` names (gen1M: 60,
-/// gen4M: 94, gen10M: 127); 0 for any other name.
+/// gen4M: 94, gen10M: 127; "block<N>": N, from 1 to 400, for tests); 0 for
+/// any other name.
 inline int CubesOf(const std::string& name)
 {
+  if (name.rfind("block", 0) == 0 && name.size() > 5 &&
+    name.find_first_not_of("0123456789", 5) == std::string::npos && name.size() <= 8)
+  {
+    const int n = std::stoi(name.substr(5));
+    return n >= 1 && n <= 400 ? n : 0;
+  }
   return name == "gen1M" ? 60 : (name == "gen4M" ? 94 : (name == "gen10M" ? 127 : 0));
 }
 
