@@ -9,9 +9,11 @@
 =========================================================================*/
 #include "vtkOpenGLHAVSCellProjectionMapper.h"
 
+#include "vtkHAVSCellGeometry.h"
 #include "vtkHAVSExtremumPass.h"
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSGLCapabilities.h"
+#include "vtkHAVSGLFrameCapture.h"
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLMapperResources.h"
 #include "vtkHAVSGLObjects.h"
@@ -33,6 +35,8 @@
 
 #include <algorithm>
 #include <memory>
+#include <sstream>
+#include <string>
 #include <vector>
 
 VTK_ABI_NAMESPACE_BEGIN
@@ -270,8 +274,99 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   glFrontFace(GL_CCW);
   state->vtkglDisable(GL_CULL_FACE);
 
+  // The frame case (a benchmark aid, SetCaptureDirectory): the result as
+  // drawn, before the composite.
+  if (this->CaptureDirectory)
+  {
+    std::string error;
+    this->LastCaptureSucceeded =
+      this->WriteCase(frame, program, patternCells, sectionTriangles, error);
+    if (!this->LastCaptureSucceeded)
+    {
+      vtkErrorMacro("No frame capture: " << error << ".");
+    }
+    this->SetCaptureDirectory(nullptr);
+  }
+
   // 4. The extremum blends' resolve, the result composited into the window.
   return this->Resources->EndFrame(frame.Blend, frame.KeepResult, view, this);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLHAVSCellProjectionMapper::WriteCase(const CellFrame& frame, vtkShaderProgram* program,
+  size_t patternCells, int sectionTriangles, std::string& error)
+{
+  // What the stand-alone replay draws: the cells' faces alone, composited
+  // front to back (Apps/GPUBench/havsGPUCellProjection.cxx).
+  using Capture = vtkHAVSGLFrameCapture;
+  vtkHAVSGLTable* table = this->Resources->GetTable();
+  const bool cellScalars = table->HasCellOptics();
+  if (frame.Blend != COMPOSITE_BLEND)
+  {
+    error = "only composite frames of the cell projection are captured";
+    return false;
+  }
+  if (frame.Opaque || frame.Planes->GetNumberOfPlanes() > 0 || sectionTriangles > 0)
+  {
+    error = "frames with opaque geometry, clipping planes or the near plane's section are not "
+            "captured (the stand-alone program draws the cells' faces alone)";
+    return false;
+  }
+  if (cellScalars || frame.Mesh->HasCellScalars())
+  {
+    error = "frames of cell scalars are not captured (the stand-alone program has no cell optics)";
+    return false;
+  }
+  // The records as the GPU holds them: the host copy is freed after its
+  // upload, made again here (vtkHAVSCellGeometry::Compute, as uploaded).
+  if (frame.Cells->empty() && frame.RestoreCells)
+  {
+    frame.RestoreCells();
+  }
+  const std::vector<float>& points = frame.Mesh->GetPoints();
+  const size_t tetrahedra = frame.Tetrahedra->size() / 4;
+  if (frame.Cells->size() != tetrahedra * vtkHAVSCellGeometry::FloatsPerCell)
+  {
+    error = "the cell records are not available";
+    return false;
+  }
+  if (!Capture::MakeDirectory(this->CaptureDirectory, error))
+  {
+    return false;
+  }
+  const std::string dir = std::string(this->CaptureDirectory) + "/";
+  const GLObjects& gl = *this->GL;
+  int tableSize[3];
+  const std::vector<float> values = Capture::ReadTable(table->GetTable(), tableSize);
+  std::vector<float> result;
+  this->Resources->GetTargets()->ReadResult(result);
+  const vtkHAVSViewFrame& view = *frame.View;
+
+  std::ostringstream text;
+  text << Capture::Header("cellprojection", view.Width, view.Height, tableSize) << "cells "
+       << frame.Order->size() << "\npoints " << points.size() / 3 << "\ntetrahedra " << tetrahedra
+       << "\nflip_facing " << (view.FlipFacing ? 1 : 0) << "\nrecord_buffers "
+       << gl.Records.GetBufferCount() << "\ncells_per_record_buffer "
+       << gl.Records.GetCellsPerBuffer() << "\npattern_cells " << patternCells << "\n"
+       << Capture::UniformLines("cells", program->GetHandle());
+  const bool ok = Capture::WriteText(dir + "case.txt", text.str()) &&
+    Capture::WriteArray(dir + "points.f32", points) &&
+    Capture::WriteArray(dir + "tetrahedra.u32", *frame.Tetrahedra) &&
+    Capture::WriteArray(dir + "mirrored.u32", *frame.Mirrored) &&
+    Capture::WriteArray(dir + "cells.f32", *frame.Cells) &&
+    Capture::WriteArray(dir + "order.u32", *frame.Order) &&
+    Capture::WriteArray(dir + "table.f32", values) &&
+    Capture::WriteArray(dir + "result.f32", result) &&
+    Capture::WriteText(dir + "cellprojection.vert", vtkHAVSShaders::CellProjectionVertexShader()) &&
+    Capture::WriteText(dir + "cellprojection.frag",
+      vtkHAVSShaders::CellProjectionShader(
+        frame.Opaque, frame.Blend, cellScalars, gl.Records.GetBufferCount())) &&
+    Capture::WriteText(dir + "trivial.frag", vtkHAVSShaders::TrivialShader());
+  if (!ok)
+  {
+    error = "cannot write the case into " + dir;
+  }
+  return ok;
 }
 
 //------------------------------------------------------------------------------

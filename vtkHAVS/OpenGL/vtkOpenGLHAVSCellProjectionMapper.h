@@ -30,6 +30,7 @@
 #include "vtkNew.h"              // For vtkNew
 
 #include <memory> // For std::unique_ptr
+#include <string> // For std::string
 #include <vector> // For std::vector
 
 VTK_ABI_NAMESPACE_BEGIN
@@ -58,6 +59,11 @@ private:
   void Upload(const CellFrame& frame);
   /// Every uniform of the frame's program (the view, the planes, the table).
   void SetUniforms(vtkShaderProgram* program, const CellFrame& frame);
+  /// The frame just drawn with `program` (its result still in the targets)
+  /// as a frame case in CaptureDirectory (Apps/GPUBench/README.md); false,
+  /// with `error` set, when the frame cannot be represented or written.
+  bool WriteCase(const CellFrame& frame, vtkShaderProgram* program, size_t patternCells,
+    int sectionTriangles, std::string& error);
 
   vtkNew<vtkHAVSGLMapperResources> Resources; // the window, the table, the targets
   struct GLObjects;                           // the mapper's own buffers (vtkHAVSGLObjects)

@@ -9,8 +9,11 @@
 =========================================================================*/
 #include "vtkOpenGLHAVSRayCastMapper.h"
 
+#include "vtkHAVSCellGeometry.h"
 #include "vtkHAVSExtremumPass.h"
 #include "vtkHAVSFramePlanes.h"
+#include "vtkHAVSFrameRequest.h"
+#include "vtkHAVSGLFrameCapture.h"
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLMapperResources.h"
 #include "vtkHAVSGLObjects.h"
@@ -35,6 +38,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <sstream>
+#include <string>
 #include <vector>
 
 VTK_ABI_NAMESPACE_BEGIN
@@ -298,7 +303,9 @@ void vtkOpenGLHAVSRayCastMapper::Peel(vtkOpenGLRenderWindow* window, const Progr
     {
       queries.EndSamples();
     }
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    // The entry images, and the tiles' storage the cast's vertex shader
+    // reads (written by stage 1): both need their barrier.
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   }
   vtkHAVSGLVertexArray::Unbind();
   glFrontFace(GL_CCW);
@@ -454,8 +461,103 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
     vtkHAVSGLImage::UnbindImage(unit);
   }
 
-  // 6. The extremum blends' resolve, the result composited into the window.
+  // 6. The frame case (a benchmark aid), the extremum blends' resolve, the
+  // result composited into the window.
+  if (this->GetCaptureDirectory())
+  {
+    std::string error;
+    this->LastCaptureSucceeded =
+      this->Capture(this->GetCaptureDirectory(), frame, programs, grid, *counts, error);
+    if (!this->LastCaptureSucceeded)
+    {
+      vtkErrorMacro("No frame capture: " << error << ".");
+    }
+    this->SetCaptureDirectory(nullptr);
+  }
   return this->Resources->EndFrame(frame.Blend, frame.KeepResult, view, this);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLHAVSRayCastMapper::Capture(const std::string& directory, const RayFrame& frame,
+  const Programs& programs, const TileGrid& grid, const RayCounts& counts, std::string& error)
+{
+  using CaseFiles = vtkHAVSGLFrameCapture;
+  GLObjects& gl = *this->GL;
+  if (frame.Blend != vtkHAVSFrameRequest::CompositeBlend || frame.Opaque ||
+    frame.Planes->GetNumberOfPlanes() > 0 || this->Resources->GetSectionTriangles() > 0)
+  {
+    error = "only composite frames without opaque geometry, clipping planes or a near-plane "
+            "section are captured (the stand-alone program draws the boundary and the rays alone)";
+    return false;
+  }
+  const bool cellOptics = this->Resources->GetTable()->HasCellOptics();
+  if (cellOptics)
+  {
+    error = "frames of cell scalars are not captured (the stand-alone program has no cell optics)";
+    return false;
+  }
+  if (!CaseFiles::MakeDirectory(directory, error))
+  {
+    return false;
+  }
+  // The cell records were freed after the last upload: made again from the
+  // mesh (the same vtkHAVSCellGeometry::Compute as uploaded; freed again
+  // after the frame by vtkHAVSRayCastMapper::RenderView).
+  const vtkHAVSRayCastMesh& mesh = *frame.RayMesh;
+  if (mesh.GetCells().empty() && mesh.GetNumberOfTetrahedra() > 0 && frame.RestoreCells)
+  {
+    frame.RestoreCells();
+  }
+  if (mesh.GetCells().size() != vtkHAVSCellGeometry::FloatsPerCell * mesh.GetNumberOfTetrahedra())
+  {
+    error = "the cell records could not be made again";
+    return false;
+  }
+  int tableSize[3];
+  const std::vector<float> table =
+    CaseFiles::ReadTable(this->Resources->GetTable()->GetTable(), tableSize);
+  std::vector<float> result;
+  this->Resources->GetTargets()->ReadResult(result);
+
+  const size_t largest = static_cast<size_t>(this->GetLargestGPUBuffer());
+  std::ostringstream text;
+  text.precision(9);
+  text << CaseFiles::Header("raycast", frame.View->Width, frame.View->Height, tableSize) << "cells "
+       << mesh.GetNumberOfTetrahedra() << "\npoints " << frame.Mesh->GetPoints().size() / 3
+       << "\nboundary_faces " << mesh.GetNumberOfBoundaryFaces() << "\nflip_facing "
+       << (frame.View->FlipFacing ? 1 : 0) << "\ntile_size " << frame.TileSize << "\ntile_grid "
+       << grid.Count[0] << " " << grid.Count[1] << "\nmaximum_passes " << frame.MaximumPasses
+       << "\nfold_reentries " << (frame.FoldReentries ? 1 : 0) << "\ntermination_opacity "
+       << frame.TerminationOpacity << "\nlargest_gpu_buffer " << largest << "\nrecord_buffers "
+       << gl.Records.GetBufferCount() << "\ncells_per_record_buffer "
+       << gl.Records.GetCellsPerBuffer() << "\nmapper_passes " << counts.Passes << "\nmapper_rays "
+       << counts.Rays << "\nmapper_cells_crossed " << counts.Cells << "\nmapper_fold_reentries "
+       << counts.FoldReentries << "\n"
+       << CaseFiles::UniformLines("peel", programs.Peel->GetHandle())
+       << CaseFiles::UniformLines("cast", programs.Cast->GetHandle())
+       << CaseFiles::UniformLines("mask", programs.Mask->GetHandle());
+
+  using Shaders = vtkHAVSShaders;
+  const std::string dir = directory + "/";
+  const bool ok = CaseFiles::WriteText(dir + "case.txt", text.str()) &&
+    CaseFiles::WriteArray(dir + "points.f32", frame.Mesh->GetPoints()) &&
+    CaseFiles::WriteArray(dir + "boundary_faces.u32", mesh.GetBoundaryFaces()) &&
+    CaseFiles::WriteArray(dir + "boundary_cells.u32", mesh.GetBoundaryCells()) &&
+    CaseFiles::WriteArray(dir + "neighbours.i32", mesh.GetNeighbours()) &&
+    CaseFiles::WriteArray(dir + "cells.f32", mesh.GetCells()) &&
+    CaseFiles::WriteArray(dir + "table.f32", table) &&
+    CaseFiles::WriteArray(dir + "result.f32", result) &&
+    CaseFiles::WriteText(dir + "peel.vert", Shaders::CellProjectionVertexShader()) &&
+    CaseFiles::WriteText(dir + "peel.frag", Shaders::RayCastPeelShader()) &&
+    CaseFiles::WriteText(dir + "tile.vert", Shaders::RayCastTileVertexShader()) &&
+    CaseFiles::WriteText(dir + "cast.frag",
+      Shaders::RayCastShader(frame.Opaque, frame.Blend, cellOptics, gl.Records.GetBufferCount())) &&
+    CaseFiles::WriteText(dir + "trivial.frag", Shaders::TrivialShader());
+  if (!ok)
+  {
+    error = "cannot write the case into " + directory;
+  }
+  return ok;
 }
 
 //------------------------------------------------------------------------------

@@ -38,6 +38,7 @@
 #include "vtkNew.h" // For vtkNew
 
 #include <memory> // For std::unique_ptr
+#include <string> // For std::string
 #include <vector> // For std::vector
 
 VTK_ABI_NAMESPACE_BEGIN
@@ -96,6 +97,14 @@ private:
     const TileGrid& grid, int pass);
   /// The frame's counts: rays, cells, fold re-entries, the tiles' passes, the GPU times.
   void ReadCounts(const TileGrid& grid, vtkHAVSGLQueries& queries, RayCounts* counts);
+  /**
+   * The frame just drawn written as a frame case into `directory`
+   * (Apps/GPUBench/README.md: the Core arrays, the shaders, the uniforms, the
+   * table, the float result); `counts`: the frame's passes, rays, cells
+   * crossed, fold re-entries. False, with `error` set, when it cannot.
+   */
+  bool Capture(const std::string& directory, const RayFrame& frame, const Programs& programs,
+    const TileGrid& grid, const RayCounts& counts, std::string& error);
 
   vtkNew<vtkHAVSGLMapperResources> Resources; // the window, the table, the targets
   struct GLObjects;                           // the mapper's own buffers and images
