@@ -53,7 +53,7 @@ int ShaderRecordBuffers(const std::string& source)
 }
 }
 
-bool MakeCellProjectionPaths(Case& c, const Options& o, const Device&, Paths& paths)
+bool MakeCellProjectionPaths(Case& c, const Options& o, const Device& device, Paths& paths)
 {
   const bool wantCells = o.Wanted("cells"), wantRaster = o.Wanted("raster");
   if (!wantCells && !wantRaster)
@@ -163,7 +163,11 @@ bool MakeCellProjectionPaths(Case& c, const Options& o, const Device&, Paths& pa
   // The pattern of indices: pattern_cells cells' faces (corner ids 4 slot +
   // k), drawn again for every run of as many cells with its first corner as
   // the base vertex; no attributes (the vertex shader pulls the corners).
-  const long long patternKey = LongKey(c, "pattern_cells", 1LL << 20);
+  // The mapper draws runs of 2^20 cells on a GPU and smaller ones on a
+  // software rasterizer (vtkHAVSGLCapabilities::FacesPerFinish): the
+  // captured run length on llvmpipe, the GPU's elsewhere.
+  const long long patternKey =
+    device.Llvmpipe ? LongKey(c, "pattern_cells", 1LL << 20) : (1LL << 20);
   const size_t cellCount = order.size();
   const size_t patternCells = std::max<size_t>(
     1, std::min(cellCount, static_cast<size_t>(patternKey > 0 ? patternKey : (1LL << 20))));
