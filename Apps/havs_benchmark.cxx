@@ -16,7 +16,8 @@
 // (--rounds N: every configuration N times, round-robin, each time the median
 // over the rounds: this machine's slow drifts hit every configuration alike.)
 // (--dump-case DIR: only write view 0 of each data set, drawn by each mapper
-// of --dump-kinds (havs_k2, havs_k6, cellprojection, raycast: all by default),
+// of --dump-kinds (havs_k2, havs_k6, cellprojection, raycast by default;
+// havs_k2_t43, havs_k6_t43: HAVS with the thesis' Table 4.3 settings),
 // as frame cases for Apps/GPUBench/havs_gpu_bench, with the exact image.)
 // (--from-csv a.csv,b.csv: only make the report again from earlier runs' CSVs;
 // rows without a size column take --size.)
@@ -494,10 +495,22 @@ int DumpCases(const Options& o)
     for (const std::string& kind : o.DumpKinds)
     {
       vtkSmartPointer<vtkHAVSMapperBase> mapper;
-      if (kind == "havs_k2" || kind == "havs_k6")
+      std::string settings; // what havs_gpu_cases sets beyond the defaults
+      if (kind == "havs_k2" || kind == "havs_k6" || kind == "havs_k2_t43" ||
+        kind == "havs_k6_t43")
       {
         auto m = vtkSmartPointer<vtkOpenGLHAVSVolumeMapper>::New(); // the defaults
-        m->SetKBufferSize(kind == "havs_k2" ? 2 : 6);
+        m->SetKBufferSize(kind.rfind("havs_k2", 0) == 0 ? 2 : 6);
+        if (kind.find("_t43") != std::string::npos)
+        {
+          // The thesis' Table 4.3 settings: a 128^3 table, early ray
+          // termination off (the order stays the exact default).
+          m->AutomaticTableResolutionOff();
+          m->SetTableScalarResolution(128);
+          m->SetTableLengthResolution(128);
+          m->SetEarlyRayTerminationOpacity(1.0);
+          settings = "havs_table_resolution 128\nhavs_termination_opacity 1\n";
+        }
         mapper = m;
       }
       else if (kind == "cellprojection")
@@ -560,7 +573,7 @@ int DumpCases(const Options& o)
         }
         std::ofstream(dir + "/case.txt", std::ios::app)
           << "dataset " << dataset << "\nview 0\n"
-          << FrameDescription(mesh, renderer->GetActiveCamera(), property);
+          << FrameDescription(mesh, renderer->GetActiveCamera(), property) << settings;
       }
       std::cout << (ok ? "wrote " : "FAILED ") << dir << " (" << grid->GetNumberOfCells()
                 << " cells)" << std::endl;

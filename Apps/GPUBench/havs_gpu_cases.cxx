@@ -26,6 +26,7 @@
 // --check: compare with the arrays already in the case instead of writing
 // (each file byte for byte; exits 1 on a difference).
 #include "vtkHAVSCellProjectionMapper.h"
+#include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSGeneratedBlock.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSPreIntegrationTable.h"
@@ -440,6 +441,17 @@ bool MakeCase(const std::string& dir, bool check,
   {
     auto m = vtkSmartPointer<CaseHAVSMapper>::New();
     m->SetKBufferSize(std::atoi(d.First("k").c_str()));
+    if (!d.First("havs_table_resolution").empty())
+    {
+      const int resolution = std::atoi(d.First("havs_table_resolution").c_str());
+      m->AutomaticTableResolutionOff();
+      m->SetTableScalarResolution(resolution);
+      m->SetTableLengthResolution(resolution);
+    }
+    if (!d.First("havs_termination_opacity").empty())
+    {
+      m->SetEarlyRayTerminationOpacity(std::atof(d.First("havs_termination_opacity").c_str()));
+    }
     m->Out = &sink;
     mapper = m;
   }
@@ -481,6 +493,18 @@ bool MakeCase(const std::string& dir, bool check,
   mapper->Render(renderer, volume);
   std::printf("%s: %s, %d arrays %s (%.2f s)\n", dir.c_str(), mapperKind.c_str(), sink.Written,
     check ? "checked" : "written", vtkTimerLog::GetUniversalTime() - t0);
+  // The CPU's part of the frame, reported apart from the GPU's draw.
+  if (auto* havs = vtkHAVSVolumeMapper::SafeDownCast(mapper))
+  {
+    vtkHAVSFrameStatistics* f = havs->GetLastFrameStatistics();
+    std::printf("  CPU: mesh %.1f ms, table %.1f ms, order (sort) %.1f ms, gather %.1f ms\n",
+      1e3 * f->GetMeshSeconds(), 1e3 * f->GetTableSeconds(), 1e3 * f->GetSortSeconds(),
+      1e3 * f->GetGatherSeconds());
+  }
+  else if (auto* cells = vtkHAVSCellProjectionMapper::SafeDownCast(mapper))
+  {
+    std::printf("  CPU: order %.1f ms\n", 1e3 * cells->GetLastOrderSeconds());
+  }
   *differences += sink.Differences;
   if (sink.Written == 0)
   {

@@ -82,19 +82,25 @@ if ! "${cases_env[@]}" "$b/bin/havs_gpu_cases" --help > /dev/null 2>&1; then
   exit 1
 fi
 
-# The cases by frame size, then by mesh size: the small ones first.
+# The cases grouped by data set and size (one mesh, one frame size), the
+# groups by frame size, then by mesh size: the small ones first.
+declare -A members
+for d in "$b"/cases/*/; do
+  group=$(awk '$1 == "dataset" { s = $2 } $1 == "width" { w = $2 } END { print s "_" w }' \
+    "$d/case.txt")
+  members[$group]+="$d "
+done
 mapfile -t groups < <(
-  for d in "$b"/cases/*/; do
-    name=$(basename "$d")
-    size=$(awk '$1 == "width" { print $2 }' "$d/case.txt")
-    cells=$(awk '$1 == "cells" { print $2 }' "$d/case.txt")
-    echo "$size ${cells:-0} ${name%_*}"
-  done | sort -n -k1,1 -k2,2 -u | awk '{ print $3 }' | sed 's/_havs$//' | uniq)
+  for group in "${!members[@]}"; do
+    first=${members[$group]%% *}
+    cells=$(awk '$1 == "cells" { print $2 }' "$first/case.txt")
+    echo "${group##*_} ${cells:-0} $group"
+  done | sort -n -k1,1 -k2,2 | awk '{ print $3 }')
 failures=0
 notrun=()
 first=1
 for group in "${groups[@]}"; do
-  dirs=("$b"/cases/"$group"_*/)
+  read -r -a dirs <<< "${members[$group]}"
   if [ "$(left)" -le 10 ]; then
     notrun+=("$group (the time budget was spent)")
     continue
