@@ -496,8 +496,7 @@ int DumpCases(const Options& o)
     {
       vtkSmartPointer<vtkHAVSMapperBase> mapper;
       std::string settings; // what havs_gpu_cases sets beyond the defaults
-      if (kind == "havs_k2" || kind == "havs_k6" || kind == "havs_k2_t43" ||
-        kind == "havs_k6_t43")
+      if (kind == "havs_k2" || kind == "havs_k6" || kind == "havs_k2_t43" || kind == "havs_k6_t43")
       {
         auto m = vtkSmartPointer<vtkOpenGLHAVSVolumeMapper>::New(); // the defaults
         m->SetKBufferSize(kind.rfind("havs_k2", 0) == 0 ? 2 : 6);

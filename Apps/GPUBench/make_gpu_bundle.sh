@@ -67,6 +67,19 @@ for d in "$b"/cases/*/; do
     "$d"/{cells.f32,boundary_faces.u32,boundary_cells.u32,neighbours.i32,result.f32}
 done
 
+# The cases of one data set and size share their exact image and mask: one
+# copy, hard links (tar stores a link once).
+declare -A seen
+for f in "$b"/cases/*/reference.u16 "$b"/cases/*/folded.u8; do
+  [ -f "$f" ] || continue
+  sum=$(md5sum < "$f" | cut -d' ' -f1)
+  if [ -n "${seen[$sum]:-}" ]; then
+    ln -f "${seen[$sum]}" "$f"
+  else
+    seen[$sum]=$f
+  fi
+done
+
 cp "$build/bin/havs_gpu_bench" "$build/bin/havs_gpu_cases" "$b/bin/"
 # havs_gpu_cases' libraries: vtkHAVS::Core and the VTK modules it links.
 ldd "$build/bin/havs_gpu_cases" | awk '/=> \// { print $3 }' | grep '/libvtk' |
@@ -80,7 +93,7 @@ cp "$here/run_gpu_bundle.sh" "$here/README.md" "$b/"
 strip --strip-unneeded "$b"/bin/* "$b"/lib/vtk/* 2>/dev/null || true
 
 tar -C "$stage" -cf - havs-gpu | xz -T2 -6 > "$out/havs-gpu-bundle.tar.xz"
-size_of() { du -sb "$@" | awk '{ s += $1 } END { printf "%.1f", s / 1048576 }'; }
+size_of() { du -sb "$@" | awk '{ s += $1 } END { printf "%.1f", s / 1048576 }'; } # (links once)
 xz_of() { tar -C "$b" -cf - "$@" | xz -T2 -6 | wc -c | awk '{ printf "%.1f", $1 / 1048576 }'; }
 (
   cd "$b"
