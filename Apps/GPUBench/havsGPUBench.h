@@ -211,6 +211,7 @@ struct Options
   std::string Paths;                  ///< the paths asked for (empty: all)
   bool Control = false;               ///< the control: each part's own wrong order (README.md)
   double MaxDifference = 2.0 / 255.0; ///< against the mapper's own result
+  std::string SaveImages;             ///< a directory for each path's image (empty: none)
   bool Wanted(const std::string& path) const
   {
     return this->Paths.empty() || this->Paths.find(path) != std::string::npos;

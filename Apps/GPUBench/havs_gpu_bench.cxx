@@ -10,7 +10,7 @@
 // havs_gpu_bench: the mappers' frames on a GPU, with no VTK (issues 16, 47).
 //
 //   havs_gpu_bench CASE_DIR... [--frames N] [--paths NAMES] [--control]
-//                  [--max-difference D] [--csv FILE]
+//                  [--max-difference D] [--csv FILE] [--save-images DIR]
 //
 // Reads frame cases (README.md beside this file: written by
 // `havs_benchmark --dump-case DIR`, their large arrays made again by
@@ -32,7 +32,8 @@
 // bound: RMSE < 5e-4, max < 0.01, folded pixels left out and counted). A path
 // that misses either fails the run; a path this GPU cannot run is reported as
 // not run, never as passed. --control draws each part's wrong order (README.md):
-// its images must then miss.
+// its images must then miss. --save-images DIR writes each path's float image
+// (RGBA, bottom row first) as DIR/<case>_<path number>.f32.
 #include "havsGPUBench.h"
 
 #include <algorithm>
@@ -104,7 +105,7 @@ struct Timing
   Error VsMapper, VsExact;
 };
 
-Timing Run(const Case& c, Path& p, int frames)
+Timing Run(const Case& c, Path& p, int frames, const std::string& saveAs)
 {
   Timing t;
   GLuint query = 0;
@@ -145,6 +146,12 @@ Timing Run(const Case& c, Path& p, int frames)
   if (p.Image)
   {
     const std::vector<float> image = p.Image();
+    if (!saveAs.empty())
+    {
+      std::ofstream(saveAs, std::ios::binary)
+        .write(reinterpret_cast<const char*>(image.data()),
+          static_cast<std::streamsize>(image.size() * sizeof(float)));
+    }
     const size_t pixels = static_cast<size_t>(c.Width) * c.Height;
     t.VsMapper = Compare(image, c.Result, {}, pixels);
     t.VsExact = Compare(image, c.Exact, c.Folded, pixels);
@@ -207,7 +214,13 @@ int RunCase(const std::string& path, const Options& o, const Device& device, std
   double rasterDraw = 0;
   for (Path& p : paths.Run)
   {
-    timings.push_back(Run(c, p, o.Frames));
+    std::string saveAs;
+    if (!o.SaveImages.empty())
+    {
+      saveAs = o.SaveImages + "/" + name + "_" + std::to_string(&p - paths.Run.data()) + ".f32";
+      std::printf("image of %s: %s\n", p.Name.c_str(), saveAs.c_str());
+    }
+    timings.push_back(Run(c, p, o.Frames, saveAs));
     if (p.RasterBound)
     {
       rasterDraw = timings.back().Draw;
@@ -286,7 +299,8 @@ int main(int argc, char* argv[])
   if (argc < 2 || argv[1][0] == '-')
   {
     std::printf("usage: havs_gpu_bench CASE_DIR... [--frames N] [--paths NAMES] [--control] "
-                "[--max-difference D] [--csv FILE]\n  NAMES: any of fetch, interlock, lists, "
+                "[--max-difference D] [--csv FILE] [--save-images DIR]\n  NAMES: any of fetch, "
+                "interlock, lists, "
                 "raster, cells, rays (default: all)\n");
     return argc < 2 ? EXIT_FAILURE : EXIT_SUCCESS;
   }
@@ -307,6 +321,8 @@ int main(int argc, char* argv[])
       o.MaxDifference = std::atof(next().c_str());
     else if (a == "--csv")
       csvPath = next();
+    else if (a == "--save-images")
+      o.SaveImages = next();
     else if (!a.empty() && a[0] == '-')
     {
       std::fprintf(stderr, "havs_gpu_bench: unknown option %s\n", a.c_str());

@@ -44,8 +44,10 @@ left() { echo $((budget - ($(date +%s) - start))); }
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/havs-gpu.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-if ! tar -C "$work" -xJf "$bundle"; then
-  say "FAILED: cannot unpack $bundle"
+if ! tar -C "$work" -xJf "$bundle" 2> /dev/null &&
+  ! python3 -c 'import sys, tarfile; tarfile.open(sys.argv[1]).extractall(sys.argv[2])' \
+    "$bundle" "$work"; then # (an image without xz: Python's lzma)
+  say "FAILED: cannot unpack $bundle (tar with xz, or python3)"
   exit 1
 fi
 b="$work/havs-gpu"

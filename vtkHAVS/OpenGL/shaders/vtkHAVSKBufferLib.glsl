@@ -587,11 +587,30 @@ void havsRetreat(inout vec4 color, inout vec2 back, vec2 p, float opaqueDistance
   back = p;
 }
 
+// Back to front, the grazing exit's rule of havsAdvance read the other way:
+// an internal fragment that leaves with an exit just in front of it (`next`,
+// the one to leave after it, within HAVS_GRAZE) takes the exit's role, so the
+// segment behind it is empty, as front to back. (The fragment-list resolve:
+// blunt fin, 1024^2, view 0, pixel (524, 363) was 0.142 off without it.)
+vec2 havsGrazeRole(vec2 leaving, vec2 next)
+{
+#if HAVS_TAGGING
+  if (next.x < HAVS_EMPTY && havsIsExit(next.y) && leaving.y < 1.5 &&
+    leaving.x - next.x < HAVS_GRAZE * abs(next.x))
+  {
+    leaving.y += 2.0;
+  }
+#endif
+  return leaving;
+}
+
 void havsInsertBackToFront(inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float opaqueDistance)
 {
   vec2 leaving = f;
   int farthest = 0;
   float leavingKey = havsLeaveKey(f);
+  vec2 next = vec2(HAVS_EMPTY, 0.0); // the farthest of those that stay
+  float nextKey = HAVS_NO_FRONT;
   for (int i = 1; i < HAVS_K; ++i)
   {
     if (E[i].x >= HAVS_EMPTY)
@@ -602,38 +621,53 @@ void havsInsertBackToFront(inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float
     float key = havsLeaveKey(E[i]);
     if (key > leavingKey)
     {
+      next = leaving;
+      nextKey = leavingKey;
       leaving = E[i];
       leavingKey = key;
       farthest = i;
+    }
+    else if (key > nextKey)
+    {
+      next = E[i];
+      nextKey = key;
     }
   }
   if (farthest > 0)
   {
     E[farthest] = f;
   }
-  havsRetreat(color, E[0], leaving, opaqueDistance);
+  havsRetreat(color, E[0], havsGrazeRole(leaving, next), opaqueDistance);
 }
 
 void havsFlushBackToFront(inout vec4 color, inout vec2 E[HAVS_K], float opaqueDistance)
 {
   for (int n = 1; n < HAVS_K; ++n)
   {
-    int farthest = 0;
-    float farthestKey = HAVS_NO_FRONT;
+    int farthest = 0, second = 0;
+    float farthestKey = HAVS_NO_FRONT, secondKey = HAVS_NO_FRONT;
     for (int i = 1; i < HAVS_K; ++i)
     {
       float key = E[i].x < HAVS_EMPTY ? havsLeaveKey(E[i]) : HAVS_NO_FRONT;
       if (key > farthestKey)
       {
+        second = farthest;
+        secondKey = farthestKey;
         farthestKey = key;
         farthest = i;
+      }
+      else if (key > secondKey)
+      {
+        secondKey = key;
+        second = i;
       }
     }
     if (farthest == 0)
     {
       return;
     }
-    havsRetreat(color, E[0], E[farthest], opaqueDistance);
+    vec2 next = second > 0 ? E[second] : vec2(HAVS_EMPTY, 0.0);
+    havsRetreat(color, E[0], havsGrazeRole(E[farthest], next), opaqueDistance);
     E[farthest].x = HAVS_EMPTY;
   }
 }
