@@ -340,10 +340,12 @@ bool ReadCase(const std::string& dir, Case& c)
       Uniform u;
       int n = 0;
       words >> u.Program >> u.Name >> u.Type >> n;
-      u.Values.resize(static_cast<size_t>(std::max(0, n)));
-      for (float& v : u.Values)
+      for (int i = 0; i < n; ++i)
       {
-        words >> v;
+        std::string value;
+        words >> value;
+        u.Values.push_back(std::strtof(value.c_str(), nullptr));
+        u.Integers.push_back(std::strtoll(value.c_str(), nullptr, 10));
       }
       c.Uniforms.push_back(u);
       continue;
@@ -445,11 +447,11 @@ GLuint Program(
       continue;
     }
     if (u.Type == "int")
-      gl.Uniform1i(location, static_cast<GLint>(u.Values[0]));
+      gl.Uniform1i(location, static_cast<GLint>(u.Integers[0]));
     else if (u.Type == "uint")
-      gl.Uniform1ui(location, static_cast<GLuint>(u.Values[0]));
+      gl.Uniform1ui(location, static_cast<GLuint>(u.Integers[0]));
     else if (u.Type == "ivec2" && u.Values.size() >= 2)
-      gl.Uniform2i(location, static_cast<GLint>(u.Values[0]), static_cast<GLint>(u.Values[1]));
+      gl.Uniform2i(location, static_cast<GLint>(u.Integers[0]), static_cast<GLint>(u.Integers[1]));
     else if (u.Type == "float")
       gl.Uniform1fv(location, 1, u.Values.data());
     else if (u.Type == "vec2")
@@ -556,5 +558,90 @@ std::vector<float> ReadImage(GLuint framebuffer, int width, int height)
   gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
   gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, image.data());
   return image;
+}
+
+void ClearTarget(GLuint framebuffer)
+{
+  gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+  DrawBuffers(1);
+  gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  const float zero[4] = { 0, 0, 0, 0 };
+  gl.ClearBufferfv(GL_COLOR, 0, zero);
+}
+
+void SetCompositeBlending()
+{
+  gl.Enable(GL_BLEND);
+  gl.BlendEquation(GL_FUNC_ADD);
+  gl.BlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+}
+
+void SetInt(GLuint program, const char* name, int value)
+{
+  gl.UseProgram(program);
+  const GLint location = gl.GetUniformLocation(program, name);
+  if (location >= 0)
+  {
+    gl.Uniform1i(location, value);
+  }
+}
+
+void ParkUnreadSamplers(GLuint program)
+{
+  SetInt(program, "havsOpaqueDepth", 1);
+  SetInt(program, "havsAdditive", 2);
+  SetInt(program, "havsCellOptics", 3);
+}
+
+constexpr GLuint CellRecords::Bindings[4];
+
+bool CellRecords::Split(const Case& c, size_t tetrahedra, const std::string& shader)
+{
+  const double perBufferKey = c.Double("cells_per_record_buffer");
+  this->CellsPerBuffer =
+    perBufferKey > 0 ? static_cast<size_t>(perBufferKey) : std::max<size_t>(tetrahedra, 1);
+  this->Count = std::max<size_t>((tetrahedra + this->CellsPerBuffer - 1) / this->CellsPerBuffer, 1);
+  const std::string define = "#define HAVS_CELL_BUFFERS ";
+  const std::string source = c.Shader(shader);
+  const size_t at = source.find(define);
+  const size_t defined =
+    at == std::string::npos ? 0 : std::strtoul(source.c_str() + at + define.size(), nullptr, 10);
+  if (this->Count > 4 || this->Count != defined ||
+    (c.Keys.count("record_buffers") && static_cast<size_t>(c.Int("record_buffers")) != this->Count))
+  {
+    return Fail("the cell records' split of " + c.Dir +
+      " (record_buffers, cells_per_record_buffer, " + shader + "'s HAVS_CELL_BUFFERS) disagrees");
+  }
+  return true;
+}
+
+void CellRecords::Upload(const std::vector<float>& records)
+{
+  const size_t tetrahedra = records.size() / FloatsPerCell;
+  this->Buffers.clear();
+  for (size_t i = 0; i < this->Count; ++i)
+  {
+    const size_t first = i * this->CellsPerBuffer;
+    const size_t n = std::min(this->CellsPerBuffer, tetrahedra - std::min(first, tetrahedra));
+    this->Buffers.push_back(Buffer(GL_SHADER_STORAGE_BUFFER, records.data() + FloatsPerCell * first,
+      FloatsPerCell * n * sizeof(float)));
+  }
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+void CellRecords::Bind() const
+{
+  for (size_t i = 0; i < this->Buffers.size(); ++i)
+  {
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, Bindings[i], this->Buffers[i]);
+  }
+}
+
+void CellRecords::SetUniforms(GLuint program) const
+{
+  if (this->Buffers.size() > 1)
+  {
+    SetInt(program, "havsCellsPerBuffer", static_cast<int>(this->CellsPerBuffer));
+  }
 }
 }

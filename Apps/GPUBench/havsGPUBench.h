@@ -145,7 +145,8 @@ bool HasExtension(const char* name);
 struct Uniform
 {
   std::string Program, Name, Type;
-  std::vector<float> Values;
+  std::vector<float> Values;       ///< as floats (the float types)
+  std::vector<long long> Integers; ///< as integers, exactly (int, uint, ivec2: past 2^24 too)
 };
 
 /// A frame case (README.md): case.txt's keys and uniforms, its files read on demand.
@@ -203,6 +204,41 @@ GLuint Buffer(GLenum target, const std::vector<T>& values, GLenum usage = GL_STA
 GLuint TableTexture(const Case& c);
 /// RGBA floats of colour attachment 0 of `framebuffer` (bottom row first).
 std::vector<float> ReadImage(GLuint framebuffer, int width, int height);
+/// Sets the int uniform `name` of `program` where the program has it.
+void SetInt(GLuint program, const char* name, int value);
+/// Binds `framebuffer`'s colour attachment 0 for drawing and clears it to 0.
+void ClearTarget(GLuint framebuffer);
+/// vtkHAVSGLMapperResources::SetBlending(composite): what is drawn goes under
+/// what is in front (premultiplied).
+void SetCompositeBlending();
+/// The samplers a cell-projection or ray-casting shader declares besides the
+/// table (opaque depth, additive table, cell optics), on units of their own:
+/// none is read in a captured frame, and two sampler types on one unit are an
+/// error where the compiler kept them.
+void ParkUnreadSamplers(GLuint program);
+
+/// The cell records (vtkHAVSCellGeometry: FloatsPerCell floats a tetrahedron)
+/// as vtkHAVSGLCellRecords holds them: buffers of `cells_per_record_buffer`
+/// cells (case.txt; absent: one buffer), the last the rest, at bindings 4,
+/// 10, 11, 12.
+struct CellRecords
+{
+  static constexpr size_t FloatsPerCell = 20;
+  static constexpr GLuint Bindings[4] = { 4, 10, 11, 12 };
+  std::vector<GLuint> Buffers;
+  size_t CellsPerBuffer = 0;
+  size_t Count = 0; ///< buffers
+
+  /// The split of `tetrahedra` cells (CellsPerBuffer, Count); false (with the
+  /// reason printed) when it disagrees with case.txt's `record_buffers` or
+  /// with HAVS_CELL_BUFFERS in the case's shader `shader`.
+  bool Split(const Case& c, size_t tetrahedra, const std::string& shader);
+  /// The buffers of `records` (FloatsPerCell floats a cell), as split.
+  void Upload(const std::vector<float>& records);
+  void Bind() const;
+  /// havsCellsPerBuffer, where the records lie in several buffers.
+  void SetUniforms(GLuint program) const;
+};
 
 // --- the paths a mapper's part offers --------------------------------------------
 struct Options

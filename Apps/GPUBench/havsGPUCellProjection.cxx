@@ -31,10 +31,6 @@ constexpr GLuint OrderBinding = 5;
 constexpr GLuint TetBinding = 6;
 constexpr GLuint MirroredBinding = 7;
 constexpr GLuint PointBinding = 8;
-/// The cell records (vtkHAVSCellRecordsLib.glsl, vtkHAVSGLCellRecords): buffer 0 at 4, 1 to 3 at 10
-/// to 12.
-constexpr GLuint RecordBindings[4] = { 4, 10, 11, 12 };
-constexpr size_t FloatsPerCell = 20; ///< vtkHAVSCellGeometry: 4 planes, the field
 /// Face f of a cell, opposite its corner f (vtkOpenGLHAVSCellProjectionMapper::DrawCells).
 constexpr GLuint Faces[12] = { 1, 2, 3, 2, 0, 3, 3, 0, 1, 0, 2, 1 };
 
@@ -44,13 +40,6 @@ long long LongKey(const Case& c, const std::string& key, long long otherwise)
   return it == c.Keys.end() ? otherwise : std::atoll(it->second.c_str());
 }
 
-/// HAVS_CELL_BUFFERS as the fragment shader defines it (0: not found).
-int ShaderRecordBuffers(const std::string& source)
-{
-  const std::string define = "#define HAVS_CELL_BUFFERS ";
-  const size_t at = source.find(define);
-  return at == std::string::npos ? 0 : std::atoi(source.c_str() + at + define.size());
-}
 }
 
 bool MakeCellProjectionPaths(Case& c, const Options& o, const Device& device, Paths& paths)
@@ -73,8 +62,8 @@ bool MakeCellProjectionPaths(Case& c, const Options& o, const Device& device, Pa
   const size_t pointCount = points.size() / 3, tetCount = tetrahedra.size() / 4;
   if (points.size() != 3 * static_cast<size_t>(LongKey(c, "points", pointCount)) ||
     tetrahedra.size() != 4 * static_cast<size_t>(LongKey(c, "tetrahedra", tetCount)) ||
-    records.size() != FloatsPerCell * tetCount || mirrored.size() < (tetCount + 31) / 32 ||
-    order.size() != static_cast<size_t>(c.Cells))
+    records.size() != CellRecords::FloatsPerCell * tetCount ||
+    mirrored.size() < (tetCount + 31) / 32 || order.size() != static_cast<size_t>(c.Cells))
   {
     return Fail("the arrays of " + c.Dir + " do not match case.txt's counts");
   }
@@ -90,19 +79,11 @@ bool MakeCellProjectionPaths(Case& c, const Options& o, const Device& device, Pa
     std::reverse(order.begin(), order.end());
   }
 
-  // The records' split (vtkHAVSGLCellRecords::Update): buffers of
-  // cells_per_record_buffer cells, the last the rest.
-  const long long perBufferKey = LongKey(c, "cells_per_record_buffer", 0);
-  const size_t perBuffer =
-    perBufferKey > 0 ? static_cast<size_t>(perBufferKey) : std::max<size_t>(tetCount, 1);
-  const size_t bufferCount = std::max<size_t>((tetCount + perBuffer - 1) / perBuffer, 1);
-  const std::string fragment = c.Shader("cellprojection.frag");
-  if (bufferCount > 4 ||
-    static_cast<long long>(bufferCount) != LongKey(c, "record_buffers", bufferCount) ||
-    ShaderRecordBuffers(fragment) != static_cast<int>(bufferCount))
+  // The records' split (vtkHAVSGLCellRecords), checked against the capture's.
+  CellRecords recordBuffers;
+  if (!recordBuffers.Split(c, tetCount, "cellprojection.frag"))
   {
-    return Fail("the record buffers of " + c.Dir +
-      " (record_buffers, cells_per_record_buffer, the shader's HAVS_CELL_BUFFERS) disagree");
+    return false;
   }
 
   // What the GPU must have: storage blocks in the vertex shader (GL 4.3
@@ -112,9 +93,10 @@ bool MakeCellProjectionPaths(Case& c, const Options& o, const Device& device, Pa
   gl.GetIntegerv(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS, &fragmentBlocks);
   gl.GetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &bindings);
   gl.GetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &blockSize);
+  const size_t perBuffer = recordBuffers.CellsPerBuffer, bufferCount = recordBuffers.Count;
   const size_t largest =
     std::max({ points.size() * sizeof(float), tetrahedra.size() * sizeof(uint32_t),
-      std::min(perBuffer, tetCount) * FloatsPerCell * sizeof(float) });
+      std::min(perBuffer, tetCount) * CellRecords::FloatsPerCell * sizeof(float) });
   std::string missing;
   if (vertexBlocks < 4)
   {
@@ -126,9 +108,9 @@ bool MakeCellProjectionPaths(Case& c, const Options& o, const Device& device, Pa
     missing = "the fragment shader needs " + std::to_string(2 + bufferCount) +
       " storage blocks, the GPU has " + std::to_string(fragmentBlocks);
   }
-  else if (bindings <= static_cast<GLint>(RecordBindings[bufferCount - 1]))
+  else if (bindings <= static_cast<GLint>(CellRecords::Bindings[bufferCount - 1]))
   {
-    missing = "binding " + std::to_string(RecordBindings[bufferCount - 1]) +
+    missing = "binding " + std::to_string(CellRecords::Bindings[bufferCount - 1]) +
       " needs more storage-buffer bindings than the GPU's " + std::to_string(bindings);
   }
   else if (blockSize > 0 && largest > static_cast<size_t>(blockSize))
@@ -150,14 +132,7 @@ bool MakeCellProjectionPaths(Case& c, const Options& o, const Device& device, Pa
   const GLuint tetBuffer = Buffer(GL_SHADER_STORAGE_BUFFER, tetrahedra);
   const GLuint mirroredBuffer = Buffer(GL_SHADER_STORAGE_BUFFER, mirrored);
   const GLuint pointBuffer = Buffer(GL_SHADER_STORAGE_BUFFER, points);
-  std::vector<GLuint> recordBuffers;
-  for (size_t i = 0; i < bufferCount; ++i)
-  {
-    const size_t first = i * perBuffer, n = std::min(perBuffer, tetCount - first);
-    recordBuffers.push_back(Buffer(GL_SHADER_STORAGE_BUFFER, records.data() + FloatsPerCell * first,
-      FloatsPerCell * n * sizeof(float)));
-  }
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  recordBuffers.Upload(records);
   std::vector<float>().swap(records);
 
   // The pattern of indices: pattern_cells cells' faces (corner ids 4 slot +
@@ -203,14 +178,7 @@ bool MakeCellProjectionPaths(Case& c, const Options& o, const Device& device, Pa
     {
       return 0;
     }
-    auto set = [&](const char* name, int value)
-    {
-      const GLint location = gl.GetUniformLocation(program, name);
-      if (location >= 0)
-      {
-        gl.Uniform1i(location, value);
-      }
-    };
+    auto set = [program](const char* name, int value) { SetInt(program, name, value); };
     set("havsTrianglesPerCell", 4);
     set("havsPullVertices", 1);
     set("havsNearSectionDrawn", 0);
@@ -221,15 +189,8 @@ bool MakeCellProjectionPaths(Case& c, const Options& o, const Device& device, Pa
       // plane (the mapper's testing aid), which a thin medium cannot hide.
       set("havsWrongExit", 1);
     }
-    if (bufferCount > 1)
-    {
-      set("havsCellsPerBuffer", static_cast<int>(perBuffer));
-    }
-    // Samplers the frame does not read, off the table's unit (two sampler
-    // types on one unit are an error where the compiler kept them).
-    set("havsOpaqueDepth", 1);
-    set("havsAdditive", 2);
-    set("havsCellOptics", 3);
+    recordBuffers.SetUniforms(program);
+    ParkUnreadSamplers(program);
     return program;
   };
 
@@ -240,18 +201,11 @@ bool MakeCellProjectionPaths(Case& c, const Options& o, const Device& device, Pa
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TetBinding, tetBuffer);
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, MirroredBinding, mirroredBuffer);
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PointBinding, pointBuffer);
-    for (size_t i = 0; i < recordBuffers.size(); ++i)
-    {
-      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, RecordBindings[i], recordBuffers[i]);
-    }
+    recordBuffers.Bind();
     gl.UseProgram(program);
     const GLint firstCell = gl.GetUniformLocation(program, "havsFirstCell");
     gl.BindVertexArray(vao);
-    // vtkHAVSGLMapperResources::SetBlending(composite): what is drawn goes
-    // under what is in front (premultiplied).
-    gl.Enable(GL_BLEND);
-    gl.BlendEquation(GL_FUNC_ADD);
-    gl.BlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+    SetCompositeBlending();
     gl.Enable(GL_CULL_FACE);
     gl.CullFace(GL_BACK);
     gl.FrontFace(flip ? GL_CW : GL_CCW);
@@ -270,14 +224,7 @@ bool MakeCellProjectionPaths(Case& c, const Options& o, const Device& device, Pa
     gl.Disable(GL_BLEND);
     gl.BindVertexArray(0);
   };
-  auto clear = [=]()
-  {
-    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resultFbo);
-    DrawBuffers(1);
-    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    const float zero[4] = { 0, 0, 0, 0 };
-    gl.ClearBufferfv(GL_COLOR, 0, zero);
-  };
+  auto clear = [resultFbo]() { ClearTarget(resultFbo); };
 
   if (wantCells)
   {

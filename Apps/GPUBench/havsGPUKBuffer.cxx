@@ -278,13 +278,7 @@ bool MakeKBufferPaths(Case& c, const Options& o, const Device& device, Paths& pa
     {
       return false;
     }
-    p.Clear = [=]()
-    {
-      gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resultFbo);
-      DrawBuffers(1);
-      const float zero[4] = { 0, 0, 0, 0 };
-      gl.ClearBufferfv(GL_COLOR, 0, zero);
-    };
+    p.Clear = [=]() { ClearTarget(resultFbo); };
     p.Draw = [=]() { drawFaces(draw); };
     p.Resolve = []() {};
     p.RasterBound = true;

@@ -41,9 +41,6 @@ namespace
 constexpr GLuint EntryKeyUnit = 0, EntryCellUnit = 1, RayStateUnit = 2;
 constexpr GLuint FaceCellBinding = 5, NeighbourBinding = 6, CountBinding = 7, TileBinding = 8,
                  PeelTileBinding = 9;
-/// The cell records' bindings (vtkHAVSGLCellRecords): buffer 0 at 4, the others at 10, 11, 12.
-constexpr GLuint FirstRecordBinding = 4, MoreRecordBindings = 10;
-constexpr size_t FloatsPerCell = 20, MaximumRecordBuffers = 4;
 constexpr GLsizei TileVertices = 6;
 
 /// What the last frame drawn counted (reported with the image).
@@ -52,16 +49,6 @@ struct Counts
   int Passes = 0;
   GLuint Values[3] = { 0, 0, 0 }; // rays started, cells crossed, fold re-entries
 };
-
-void SetInt(GLuint program, const char* name, int value)
-{
-  gl.UseProgram(program);
-  const GLint location = gl.GetUniformLocation(program, name);
-  if (location >= 0)
-  {
-    gl.Uniform1i(location, value);
-  }
-}
 }
 
 bool MakeRayCastPaths(Case& c, const Options& o, const Device&, Paths& paths)
@@ -101,8 +88,8 @@ bool MakeRayCastPaths(Case& c, const Options& o, const Device&, Paths& paths)
   }
   const size_t tetrahedra = static_cast<size_t>(c.Cells);
   const size_t boundaryFaces = faceCells.size();
-  if (neighbours.size() != 4 * tetrahedra || cells.size() != FloatsPerCell * tetrahedra ||
-    faces.size() != 3 * boundaryFaces ||
+  if (neighbours.size() != 4 * tetrahedra ||
+    cells.size() != CellRecords::FloatsPerCell * tetrahedra || faces.size() != 3 * boundaryFaces ||
     (c.Keys.count("boundary_faces") && c.Int("boundary_faces") != static_cast<int>(boundaryFaces)))
   {
     return Fail("the ray caster's arrays do not match case.txt's counts in " + c.Dir);
@@ -116,24 +103,11 @@ bool MakeRayCastPaths(Case& c, const Options& o, const Device&, Paths& paths)
     }
   }
 
-  // The records' split (vtkHAVSGLCellRecords::Update): buffers of at most
-  // largest_gpu_buffer bytes, whole records each, the last the rest.
-  const double largestKey = c.Double("largest_gpu_buffer");
-  const size_t largest = largestKey > 0 ? static_cast<size_t>(largestKey) : size_t(2147483647);
-  const size_t recordBytes = FloatsPerCell * sizeof(float);
-  const size_t cellsPerBuffer = std::max<size_t>(largest / recordBytes, 1);
-  if (c.Keys.count("cells_per_record_buffer") &&
-    std::atof(c.Keys["cells_per_record_buffer"].c_str()) != static_cast<double>(cellsPerBuffer))
+  // The records' split (vtkHAVSGLCellRecords), checked against the capture's.
+  CellRecords records;
+  if (!records.Split(c, tetrahedra, "cast.frag"))
   {
-    return Fail("cells_per_record_buffer does not match largest_gpu_buffer in " + c.Dir);
-  }
-  const size_t recordBuffers =
-    std::max<size_t>((tetrahedra + cellsPerBuffer - 1) / cellsPerBuffer, 1);
-  if (recordBuffers > MaximumRecordBuffers ||
-    (c.Keys.count("record_buffers") && static_cast<int>(recordBuffers) != recordBuffersKey))
-  {
-    return Fail("the cell records' split (" + std::to_string(recordBuffers) +
-      " buffers) does not match case.txt's record_buffers in " + c.Dir);
+    return false;
   }
 
   // The tile grid (DrawRays): tile_size pixels a tile, else one tile over the viewport.
@@ -179,14 +153,7 @@ bool MakeRayCastPaths(Case& c, const Options& o, const Device&, Paths& paths)
   const std::vector<GLuint> noPass(static_cast<size_t>(tiles), 0u);
   const GLuint tilePasses = Buffer(GL_SHADER_STORAGE_BUFFER, noPass, GL_STREAM_DRAW);
   const GLuint peelTiles = Buffer(GL_SHADER_STORAGE_BUFFER, noPass, GL_STREAM_DRAW);
-  std::vector<GLuint> records;
-  for (size_t i = 0; i < recordBuffers; ++i)
-  {
-    const size_t first = i * cellsPerBuffer;
-    const size_t n = std::min(cellsPerBuffer, tetrahedra - std::min(first, tetrahedra));
-    records.push_back(Buffer(GL_SHADER_STORAGE_BUFFER, cells.data() + FloatsPerCell * first,
-      FloatsPerCell * n * sizeof(float)));
-  }
+  records.Upload(cells);
   std::vector<float>().swap(cells);
 
   // The images (immutable storage, bound only as images).
@@ -266,13 +233,8 @@ bool MakeRayCastPaths(Case& c, const Options& o, const Device&, Paths& paths)
       }
       SetInt(program, "havsTileSize", gridSize);
     }
-    if (recordBuffers > 1)
-    {
-      SetInt(cast, "havsCellsPerBuffer", static_cast<int>(cellsPerBuffer));
-    }
-    SetInt(cast, "havsOpaqueDepth", 1);
-    SetInt(cast, "havsAdditive", 2);
-    SetInt(cast, "havsCellOptics", 3);
+    records.SetUniforms(cast);
+    ParkUnreadSamplers(cast);
     auto counts = std::make_shared<Counts>();
 
     // ClearRays, and the result cleared.
@@ -296,12 +258,7 @@ bool MakeRayCastPaths(Case& c, const Options& o, const Device&, Paths& paths)
       gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, countBuffer);
       gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(zero), zero);
       gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, FirstRecordBinding, records[0]);
-      for (size_t i = 1; i < records.size(); ++i)
-      {
-        gl.BindBufferBase(
-          GL_SHADER_STORAGE_BUFFER, MoreRecordBindings + static_cast<GLuint>(i - 1), records[i]);
-      }
+      records.Bind();
       gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, FaceCellBinding, faceCellBuffer);
       gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, NeighbourBinding, neighbourBuffer);
       gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, CountBinding, countBuffer);
@@ -312,12 +269,8 @@ bool MakeRayCastPaths(Case& c, const Options& o, const Device&, Paths& paths)
       gl.DepthMask(GL_FALSE);
       gl.Disable(GL_BLEND);
       gl.Disable(GL_STENCIL_TEST);
-      gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resultFbo);
-      DrawBuffers(1);
       gl.Viewport(0, 0, width, height);
-      gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-      const float clear[4] = { 0, 0, 0, 0 };
-      gl.ClearBufferfv(GL_COLOR, 0, clear);
+      ClearTarget(resultFbo);
     };
 
     // The passes: peel the entries, cast from them, until a pass starts no ray.
@@ -371,9 +324,7 @@ bool MakeRayCastPaths(Case& c, const Options& o, const Device&, Paths& paths)
         gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resultFbo);
         gl.UseProgram(cast);
         gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        gl.Enable(GL_BLEND);
-        gl.BlendEquation(GL_FUNC_ADD);
-        gl.BlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+        SetCompositeBlending();
         gl.Uniform1i(gl.GetUniformLocation(cast, "havsPass"), pass + 1);
         gl.BindVertexArray(tileArray);
         gl.DrawArraysInstanced(GL_TRIANGLES, 0, TileVertices, tiles);
@@ -422,11 +373,7 @@ bool MakeRayCastPaths(Case& c, const Options& o, const Device&, Paths& paths)
     {
       gl.Disable(GL_BLEND);
       gl.Disable(GL_STENCIL_TEST);
-      gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resultFbo);
-      DrawBuffers(1);
-      gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-      const float zero[4] = { 0, 0, 0, 0 };
-      gl.ClearBufferfv(GL_COLOR, 0, zero);
+      ClearTarget(resultFbo);
     };
     p.Draw = [=]() { drawBoundary(draw); };
     p.Resolve = []() {};

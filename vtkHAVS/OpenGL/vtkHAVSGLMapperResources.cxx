@@ -13,6 +13,7 @@
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSFrameRequest.h"
 #include "vtkHAVSGLCapabilities.h"
+#include "vtkHAVSGLFrameCapture.h"
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLObjects.h"
 #include "vtkHAVSGLTable.h"
@@ -251,6 +252,44 @@ void vtkHAVSGLMapperResources::PrintSelf(ostream& os, vtkIndent indent)
 size_t vtkHAVSGLMapperResources::GetMemoryBytes() const
 {
   return vtkHAVSGLBuffer::GetLiveBytes();
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSGLMapperResources::BeginCapture(const std::string& directory, const char* mapper,
+  int blend, bool opaque, vtkHAVSFramePlanes* planes, const vtkHAVSViewFrame& view,
+  const vtkHAVSGLCellRecords& records, std::string& header, std::string& error)
+{
+  using Capture = vtkHAVSGLFrameCapture;
+  if (blend != vtkHAVSFrameRequest::CompositeBlend || opaque || planes->GetNumberOfPlanes() > 0 ||
+    this->SectionTriangles > 0)
+  {
+    error = "only composite frames without opaque geometry, clipping planes or the near plane's "
+            "section are captured (the stand-alone program draws the cells alone)";
+    return false;
+  }
+  if (this->Table->HasCellOptics())
+  {
+    error = "frames of cell scalars are not captured (the stand-alone program has no cell optics)";
+    return false;
+  }
+  if (!Capture::MakeDirectory(directory, error))
+  {
+    return false;
+  }
+  int tableSize[3];
+  const std::vector<float> table = Capture::ReadTable(this->Table->GetTable(), tableSize);
+  std::vector<float> result;
+  this->Targets->ReadResult(result);
+  if (!Capture::WriteArray(directory + "/table.f32", table) ||
+    !Capture::WriteArray(directory + "/result.f32", result))
+  {
+    error = "cannot write the case into " + directory;
+    return false;
+  }
+  header = Capture::Header(mapper, view.Width, view.Height, tableSize) + "record_buffers " +
+    std::to_string(records.GetBufferCount()) + "\ncells_per_record_buffer " +
+    std::to_string(records.GetCellsPerBuffer()) + "\n";
+  return true;
 }
 
 VTK_ABI_NAMESPACE_END

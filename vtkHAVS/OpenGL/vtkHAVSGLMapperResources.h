@@ -36,10 +36,12 @@
 #include "vtkNew.h"                // For vtkNew
 
 #include <memory> // For std::unique_ptr
+#include <string> // For std::string
 
 VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSFramePlanes;
+class vtkHAVSGLCellRecords;
 class vtkHAVSGLFrameTargets;
 class vtkHAVSGLSection;
 class vtkHAVSGLTable;
@@ -129,6 +131,19 @@ public:
    * composited into the window. False, with an error, when it failed.
    */
   bool EndFrame(int blend, bool keep, const vtkHAVSViewFrame& view, vtkObject* mapper);
+
+  /**
+   * The common part of the cell projection's and the ray caster's frame
+   * cases (Apps/GPUBench/README.md, vtkHAVSGLFrameCapture), after the draw:
+   * refuses, with `error`, a frame the stand-alone program does not draw
+   * (another blend, opaque geometry, clipping planes, the near plane's
+   * section, cell scalars); else makes `directory`, writes its table.f32 and
+   * result.f32 and returns in `header` the first lines of case.txt (the
+   * format, `mapper`, the size, the table's size, the records' split).
+   */
+  bool BeginCapture(const std::string& directory, const char* mapper, int blend, bool opaque,
+    vtkHAVSFramePlanes* planes, const vtkHAVSViewFrame& view, const vtkHAVSGLCellRecords& records,
+    std::string& header, std::string& error);
 
   vtkOpenGLRenderWindow* GetWindow() const { return this->Window; }
   vtkHAVSGLTable* GetTable() { return this->Table; }

@@ -279,8 +279,7 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   if (this->CaptureDirectory)
   {
     std::string error;
-    this->LastCaptureSucceeded =
-      this->WriteCase(frame, program, patternCells, sectionTriangles, error);
+    this->LastCaptureSucceeded = this->WriteCase(frame, program, patternCells, error);
     if (!this->LastCaptureSucceeded)
     {
       vtkErrorMacro("No frame capture: " << error << ".");
@@ -293,28 +292,22 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLHAVSCellProjectionMapper::WriteCase(const CellFrame& frame, vtkShaderProgram* program,
-  size_t patternCells, int sectionTriangles, std::string& error)
+bool vtkOpenGLHAVSCellProjectionMapper::WriteCase(
+  const CellFrame& frame, vtkShaderProgram* program, size_t patternCells, std::string& error)
 {
   // What the stand-alone replay draws: the cells' faces alone, composited
   // front to back (Apps/GPUBench/havsGPUCellProjection.cxx).
   using Capture = vtkHAVSGLFrameCapture;
-  vtkHAVSGLTable* table = this->Resources->GetTable();
-  const bool cellScalars = table->HasCellOptics();
-  if (frame.Blend != COMPOSITE_BLEND)
-  {
-    error = "only composite frames of the cell projection are captured";
-    return false;
-  }
-  if (frame.Opaque || frame.Planes->GetNumberOfPlanes() > 0 || sectionTriangles > 0)
-  {
-    error = "frames with opaque geometry, clipping planes or the near plane's section are not "
-            "captured (the stand-alone program draws the cells' faces alone)";
-    return false;
-  }
-  if (cellScalars || frame.Mesh->HasCellScalars())
+  const GLObjects& gl = *this->GL;
+  if (frame.Mesh->HasCellScalars())
   {
     error = "frames of cell scalars are not captured (the stand-alone program has no cell optics)";
+    return false;
+  }
+  std::string header;
+  if (!this->Resources->BeginCapture(this->CaptureDirectory, "cellprojection", frame.Blend,
+        frame.Opaque, frame.Planes, *frame.View, gl.Records, header, error))
+  {
     return false;
   }
   // The records as the GPU holds them: the host copy is freed after its
@@ -330,24 +323,11 @@ bool vtkOpenGLHAVSCellProjectionMapper::WriteCase(const CellFrame& frame, vtkSha
     error = "the cell records are not available";
     return false;
   }
-  if (!Capture::MakeDirectory(this->CaptureDirectory, error))
-  {
-    return false;
-  }
   const std::string dir = std::string(this->CaptureDirectory) + "/";
-  const GLObjects& gl = *this->GL;
-  int tableSize[3];
-  const std::vector<float> values = Capture::ReadTable(table->GetTable(), tableSize);
-  std::vector<float> result;
-  this->Resources->GetTargets()->ReadResult(result);
-  const vtkHAVSViewFrame& view = *frame.View;
-
   std::ostringstream text;
-  text << Capture::Header("cellprojection", view.Width, view.Height, tableSize) << "cells "
-       << frame.Order->size() << "\npoints " << points.size() / 3 << "\ntetrahedra " << tetrahedra
-       << "\nflip_facing " << (view.FlipFacing ? 1 : 0) << "\nrecord_buffers "
-       << gl.Records.GetBufferCount() << "\ncells_per_record_buffer "
-       << gl.Records.GetCellsPerBuffer() << "\npattern_cells " << patternCells << "\n"
+  text << header << "cells " << frame.Order->size() << "\npoints " << points.size() / 3
+       << "\ntetrahedra " << tetrahedra << "\nflip_facing " << (frame.View->FlipFacing ? 1 : 0)
+       << "\npattern_cells " << patternCells << "\n"
        << Capture::UniformLines("cells", program->GetHandle());
   const bool ok = Capture::WriteText(dir + "case.txt", text.str()) &&
     Capture::WriteArray(dir + "points.f32", points) &&
@@ -355,12 +335,10 @@ bool vtkOpenGLHAVSCellProjectionMapper::WriteCase(const CellFrame& frame, vtkSha
     Capture::WriteArray(dir + "mirrored.u32", *frame.Mirrored) &&
     Capture::WriteArray(dir + "cells.f32", *frame.Cells) &&
     Capture::WriteArray(dir + "order.u32", *frame.Order) &&
-    Capture::WriteArray(dir + "table.f32", values) &&
-    Capture::WriteArray(dir + "result.f32", result) &&
     Capture::WriteText(dir + "cellprojection.vert", vtkHAVSShaders::CellProjectionVertexShader()) &&
     Capture::WriteText(dir + "cellprojection.frag",
       vtkHAVSShaders::CellProjectionShader(
-        frame.Opaque, frame.Blend, cellScalars, gl.Records.GetBufferCount())) &&
+        frame.Opaque, frame.Blend, false, gl.Records.GetBufferCount())) &&
     Capture::WriteText(dir + "trivial.frag", vtkHAVSShaders::TrivialShader());
   if (!ok)
   {

@@ -62,8 +62,8 @@ private:
   /// The frame just drawn with `program` (its result still in the targets)
   /// as a frame case in CaptureDirectory (Apps/GPUBench/README.md); false,
   /// with `error` set, when the frame cannot be represented or written.
-  bool WriteCase(const CellFrame& frame, vtkShaderProgram* program, size_t patternCells,
-    int sectionTriangles, std::string& error);
+  bool WriteCase(
+    const CellFrame& frame, vtkShaderProgram* program, size_t patternCells, std::string& error);
 
   vtkNew<vtkHAVSGLMapperResources> Resources; // the window, the table, the targets
   struct GLObjects;                           // the mapper's own buffers (vtkHAVSGLObjects)

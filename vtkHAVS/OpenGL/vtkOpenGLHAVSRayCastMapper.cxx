@@ -483,20 +483,9 @@ bool vtkOpenGLHAVSRayCastMapper::Capture(const std::string& directory, const Ray
 {
   using CaseFiles = vtkHAVSGLFrameCapture;
   GLObjects& gl = *this->GL;
-  if (frame.Blend != vtkHAVSFrameRequest::CompositeBlend || frame.Opaque ||
-    frame.Planes->GetNumberOfPlanes() > 0 || this->Resources->GetSectionTriangles() > 0)
-  {
-    error = "only composite frames without opaque geometry, clipping planes or a near-plane "
-            "section are captured (the stand-alone program draws the boundary and the rays alone)";
-    return false;
-  }
-  const bool cellOptics = this->Resources->GetTable()->HasCellOptics();
-  if (cellOptics)
-  {
-    error = "frames of cell scalars are not captured (the stand-alone program has no cell optics)";
-    return false;
-  }
-  if (!CaseFiles::MakeDirectory(directory, error))
+  std::string header;
+  if (!this->Resources->BeginCapture(directory, "raycast", frame.Blend, frame.Opaque, frame.Planes,
+        *frame.View, gl.Records, header, error))
   {
     return false;
   }
@@ -513,26 +502,18 @@ bool vtkOpenGLHAVSRayCastMapper::Capture(const std::string& directory, const Ray
     error = "the cell records could not be made again";
     return false;
   }
-  int tableSize[3];
-  const std::vector<float> table =
-    CaseFiles::ReadTable(this->Resources->GetTable()->GetTable(), tableSize);
-  std::vector<float> result;
-  this->Resources->GetTargets()->ReadResult(result);
-
   const size_t largest = static_cast<size_t>(this->GetLargestGPUBuffer());
   std::ostringstream text;
   text.precision(9);
-  text << CaseFiles::Header("raycast", frame.View->Width, frame.View->Height, tableSize) << "cells "
-       << mesh.GetNumberOfTetrahedra() << "\npoints " << frame.Mesh->GetPoints().size() / 3
-       << "\nboundary_faces " << mesh.GetNumberOfBoundaryFaces() << "\nflip_facing "
-       << (frame.View->FlipFacing ? 1 : 0) << "\ntile_size " << frame.TileSize << "\ntile_grid "
-       << grid.Count[0] << " " << grid.Count[1] << "\nmaximum_passes " << frame.MaximumPasses
-       << "\nfold_reentries " << (frame.FoldReentries ? 1 : 0) << "\ntermination_opacity "
-       << frame.TerminationOpacity << "\nlargest_gpu_buffer " << largest << "\nrecord_buffers "
-       << gl.Records.GetBufferCount() << "\ncells_per_record_buffer "
-       << gl.Records.GetCellsPerBuffer() << "\nmapper_passes " << counts.Passes << "\nmapper_rays "
-       << counts.Rays << "\nmapper_cells_crossed " << counts.Cells << "\nmapper_fold_reentries "
-       << counts.FoldReentries << "\n"
+  text << header << "cells " << mesh.GetNumberOfTetrahedra() << "\npoints "
+       << frame.Mesh->GetPoints().size() / 3 << "\nboundary_faces "
+       << mesh.GetNumberOfBoundaryFaces() << "\nflip_facing " << (frame.View->FlipFacing ? 1 : 0)
+       << "\ntile_size " << frame.TileSize << "\ntile_grid " << grid.Count[0] << " "
+       << grid.Count[1] << "\nmaximum_passes " << frame.MaximumPasses << "\nfold_reentries "
+       << (frame.FoldReentries ? 1 : 0) << "\ntermination_opacity " << frame.TerminationOpacity
+       << "\nlargest_gpu_buffer " << largest << "\nmapper_passes " << counts.Passes
+       << "\nmapper_rays " << counts.Rays << "\nmapper_cells_crossed " << counts.Cells
+       << "\nmapper_fold_reentries " << counts.FoldReentries << "\n"
        << CaseFiles::UniformLines("peel", programs.Peel->GetHandle())
        << CaseFiles::UniformLines("cast", programs.Cast->GetHandle())
        << CaseFiles::UniformLines("mask", programs.Mask->GetHandle());
@@ -545,13 +526,11 @@ bool vtkOpenGLHAVSRayCastMapper::Capture(const std::string& directory, const Ray
     CaseFiles::WriteArray(dir + "boundary_cells.u32", mesh.GetBoundaryCells()) &&
     CaseFiles::WriteArray(dir + "neighbours.i32", mesh.GetNeighbours()) &&
     CaseFiles::WriteArray(dir + "cells.f32", mesh.GetCells()) &&
-    CaseFiles::WriteArray(dir + "table.f32", table) &&
-    CaseFiles::WriteArray(dir + "result.f32", result) &&
     CaseFiles::WriteText(dir + "peel.vert", Shaders::CellProjectionVertexShader()) &&
     CaseFiles::WriteText(dir + "peel.frag", Shaders::RayCastPeelShader()) &&
     CaseFiles::WriteText(dir + "tile.vert", Shaders::RayCastTileVertexShader()) &&
     CaseFiles::WriteText(dir + "cast.frag",
-      Shaders::RayCastShader(frame.Opaque, frame.Blend, cellOptics, gl.Records.GetBufferCount())) &&
+      Shaders::RayCastShader(frame.Opaque, frame.Blend, false, gl.Records.GetBufferCount())) &&
     CaseFiles::WriteText(dir + "trivial.frag", Shaders::TrivialShader());
   if (!ok)
   {
