@@ -14,6 +14,10 @@
 //   against IntegrateSegment within a stated bound at 128^3, with a negative
 //   control (an 8^3 table must miss the bound);
 // - IntegrateSegment composes: (f -> b, L) = (f -> m, L/2) over (m -> b, L/2);
+// - the windowed composites (issue 45): every entry of 41 x 41 x 17 tables
+//   (linear and logarithmic length axes) equals the table's quadrature of
+//   that one segment (IntegrateSubSteps) to 1e-6; controls: the neighbouring
+//   layer's length, and half the sub-steps, must miss;
 // - the logarithmic length axis: short segments against IntegrateSegment;
 //   long, optically thick ones (200 to 1e5 units) against a brute-force
 //   integral, with a negative control (the former mean-colour rule);
@@ -229,6 +233,60 @@ int TestHAVSPreIntegrationTable(int, char*[])
     composed = std::max(composed, std::fabs(whole[c] - (front[c] + (1 - front[3]) * back[c])));
   }
   havstest::Check(composed < 1e-5, "IntegrateSegment composes front to back");
+
+  // The windowed composites against the quadrature of each segment alone.
+  // 41 scalars, 4 sub-steps: the fine grid has steps of 1/160, on which
+  // Fancy's nodes (0.35, 0.4, 0.6) lie, so no node is added to it.
+  for (const double maxLength : { 1.0, 1e3 })
+  {
+    const int ns = 41, nl = 17, sub = 4;
+    vtkNew<vtkHAVSPreIntegrationTable> windowed;
+    windowed->SetScalarResolution(ns);
+    windowed->SetLengthResolution(nl);
+    windowed->SetSubdivisionsPerInterval(sub);
+    windowed->Build(fancy, 0, range, maxLength);
+    double worstEntry = 0.0, worstNeighbour = 0.0, worstHalf = 0.0;
+    for (int l = 1; l < nl; ++l)
+    {
+      const double length = windowed->LengthAt(static_cast<double>(l) / (nl - 1));
+      const double next =
+        windowed->LengthAt(static_cast<double>(std::min(l + 1, nl - 1)) / (nl - 1));
+      for (int b = 0; b < ns; ++b)
+      {
+        for (int f = 0; f < ns; ++f)
+        {
+          const double sf = static_cast<double>(f) / (ns - 1),
+                       sb = static_cast<double>(b) / (ns - 1);
+          const int n = std::max(1, std::abs(b - f) * sub);
+          double alone[4], neighbour[4], half[4];
+          vtkHAVSPreIntegrationTable::IntegrateSubSteps(fancy, 0, sf, sb, length, n, alone);
+          const float* e = windowed->GetTable() + 4 * ((static_cast<size_t>(l) * ns + b) * ns + f);
+          for (int c = 0; c < 4; ++c)
+          {
+            worstEntry = std::max(worstEntry, std::fabs(e[c] - alone[c]));
+          }
+          if (l + 1 < nl && (f + b + l) % 7 == 0)
+          {
+            vtkHAVSPreIntegrationTable::IntegrateSubSteps(fancy, 0, sf, sb, next, n, neighbour);
+            vtkHAVSPreIntegrationTable::IntegrateSubSteps(
+              fancy, 0, sf, sb, length, std::max(1, n / 2), half);
+            for (int c = 0; c < 4; ++c)
+            {
+              worstNeighbour = std::max(worstNeighbour, std::fabs(e[c] - neighbour[c]));
+              worstHalf = std::max(worstHalf, std::fabs(e[c] - half[c]));
+            }
+          }
+        }
+      }
+    }
+    std::cout << "windowed composites, max length " << maxLength
+              << (windowed->GetLengthLogScale() > 0.0 ? " (logarithmic)" : " (linear)")
+              << ": each segment alone " << worstEntry << "; controls: the next layer "
+              << worstNeighbour << ", half the sub-steps " << worstHalf << std::endl;
+    havstest::Check(worstEntry < 1e-6, "windowed entries equal each segment's own quadrature");
+    havstest::Check(worstNeighbour > 1e-3, "control: the next layer's length misses");
+    havstest::Check(worstHalf > 1e-5, "control: half the sub-steps miss");
+  }
 
   // NeedsRebuild.
   table->Build(fancy, 0, range, 1.0);

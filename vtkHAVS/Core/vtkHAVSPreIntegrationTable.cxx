@@ -49,10 +49,6 @@ OpticalSample Evaluate(vtkVolumeProperty* property, int component, double s)
   return out;
 }
 
-/// Below this transmittance the table's quadrature stops: what lies behind
-/// changes an entry by less than this times the largest colour.
-constexpr double OpaqueTransmittance = 1e-12;
-
 /// Composites one sub-step between samples a and b of optical depth `depth`
 /// (its mean extinction times its length; attenuation = exp(-depth);
 /// inverseDepth = 1 / depth, from the callers' reciprocals: a multiplication
@@ -124,6 +120,58 @@ void IntegrateSteps(vtkVolumeProperty* property, int component, double sf, doubl
   rgba[2] = color[2];
   rgba[3] = 1.0 - transmittance;
 }
+
+/// Below this a sub-step's attenuation is taken as 0 (what it lets through
+/// changes no entry; no denormals in the products of attenuations).
+constexpr double TinyAttenuation = 1e-200;
+
+/// A composited stretch of a segment: premultiplied colour and transmittance.
+struct Composite
+{
+  double Color[3];
+  double Transmittance;
+};
+
+/// Front composited over back (associative).
+inline Composite Over(const Composite& front, const Composite& back)
+{
+  Composite out;
+  for (int c = 0; c < 3; ++c)
+  {
+    out.Color[c] = front.Color[c] + front.Transmittance * back.Color[c];
+  }
+  out.Transmittance = front.Transmittance * back.Transmittance;
+  return out;
+}
+
+/// The composites of every window of `width` consecutive items of `items`
+/// (count of them), front to back, passed to emit(start, composite): the
+/// items cut into blocks of `width`, a window is the suffix of one block
+/// over the prefix of the next (van Herk / Gil-Werman), so each costs at most
+/// 3 Over() whatever its width. prefix and suffix: scratch of count items.
+template <typename Emit>
+void WindowComposites(
+  const Composite* items, int count, int width, Composite* prefix, Composite* suffix, Emit&& emit)
+{
+  for (int block = 0; block < count; block += width)
+  {
+    const int last = std::min(block + width, count) - 1;
+    prefix[block] = items[block];
+    for (int p = block + 1; p <= last; ++p)
+    {
+      prefix[p] = Over(prefix[p - 1], items[p]);
+    }
+    suffix[last] = items[last];
+    for (int p = last - 1; p >= block; --p)
+    {
+      suffix[p] = Over(items[p], suffix[p + 1]);
+    }
+  }
+  for (int s = 0; s + width <= count; ++s)
+  {
+    emit(s, s % width == 0 ? suffix[s] : Over(suffix[s], prefix[s + width - 1]));
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -164,6 +212,13 @@ void vtkHAVSPreIntegrationTable::GetFunctionNodes(
       nodes.push_back(node[0]);
     }
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSPreIntegrationTable::IntegrateSubSteps(vtkVolumeProperty* property, int component,
+  double sf, double sb, double length, int n, double rgba[4])
+{
+  IntegrateSteps(property, component, sf, sb, length, std::max(n, 1), rgba);
 }
 
 //------------------------------------------------------------------------------
@@ -372,74 +427,111 @@ bool vtkHAVSPreIntegrationTable::Build(
   }
   else
   {
-    // For a (front, back) pair the sub-steps are the same at every length:
-    // a sub-step's attenuation at layer l is its layer-1 attenuation to the
-    // power l, updated by one multiplication per layer.
-    vtkSMPTools::For(0, static_cast<vtkIdType>(ns) * ns,
+    // Windowed composites (see the class description). A segment from table
+    // scalar f to b (f != b) of length L crosses whole fine sub-steps, each
+    // of world length L * (its scalar span) / (the segment's scalar span):
+    // for j = |b - f| and L both fixed, a sub-step's optical depth, and so its
+    // composite, is the same in every segment that crosses it. Per (j,
+    // direction, length): the sub-steps' composites, the table intervals'
+    // composites (their sub-steps, front to back), and every entry of that j
+    // as the composite of j consecutive intervals: a sliding window, 3
+    // compositing operations an entry however long the segment.
+    const int cells = ns - 1;
+    const int steps = fineCount - 1;
+    // The sub-steps' extinction integrals over their scalar span (normalized).
+    std::vector<double> stepDepth(steps);
+    for (int k = 0; k < steps; ++k)
+    {
+      stepDepth[k] = 0.5 * (fine[k].Tau + fine[k + 1].Tau) * (positions[k + 1] - positions[k]);
+    }
+    // The diagonal (f == b): one sub-step of the constant optics at f.
+    vtkSMPTools::For(0, ns,
       [&](vtkIdType begin, vtkIdType end)
       {
-        std::vector<double> unitDepth, inverseUnitDepth, unitAttenuation, attenuation;
-        for (vtkIdType pair = begin; pair < end; ++pair)
+        for (vtkIdType f = begin; f < end; ++f)
         {
-          const int f = static_cast<int>(pair % ns), b = static_cast<int>(pair / ns);
-          const int first = tableSample[f];
-          const int steps = std::max(1, std::abs(tableSample[b] - first));
-          const int direction = b >= f ? 1 : -1;
-          auto at = [&](int j) { return f == b ? first : first + direction * j; };
-          auto sample = [&](int j) -> const OpticalSample& { return fine[at(j)]; };
-          const double whole = std::fabs(positions[tableSample[b]] - positions[first]);
-          unitDepth.resize(steps);
-          inverseUnitDepth.resize(steps);
-          unitAttenuation.resize(steps);
-          attenuation.assign(steps, 1.0);
-          for (int j = 0; j < steps; ++j)
-          {
-            // The sub-step's share of the segment's length (its scalar span's share).
-            const double share =
-              f == b ? 1.0 : std::fabs(positions[at(j + 1)] - positions[at(j)]) / whole;
-            // The optical depth per unit segment length. Linear axis: the
-            // attenuation per layer too, raised by one multiplication per
-            // layer; logarithmic: exponentiated at each layer's length.
-            unitDepth[j] = 0.5 * (sample(j).Tau + sample(j + 1).Tau) * share;
-            // (0 where the depth is 0: CompositeStep then uses its series.)
-            inverseUnitDepth[j] = unitDepth[j] > 0.0 ? 1.0 / unitDepth[j] : 0.0;
-            unitAttenuation[j] = logarithmic ? 0.0 : std::exp(-unitDepth[j] * lengthStep);
-          }
-          // Early termination: once the transmittance is below
-          // OpaqueTransmittance the sub-steps behind it add less than that
-          // (times the largest colour) to any channel. The transmittance
-          // after sub-step j only falls as the length grows, so a sub-step
-          // cut at one layer is cut at every longer one: `active` only
-          // shrinks, and the attenuations beyond it are never needed again.
-          int active = steps;
+          const OpticalSample& a = fine[tableSample[f]];
           for (int l = 1; l < nl; ++l)
           {
+            const double depth = a.Tau * layerLength[l];
             double color[3] = { 0, 0, 0 };
             double transmittance = 1.0;
-            for (int j = 0; j < active; ++j)
-            {
-              const double depth = unitDepth[j] * layerLength[l];
-              if (logarithmic)
-              {
-                attenuation[j] = std::exp(-depth);
-              }
-              else
-              {
-                attenuation[j] *= unitAttenuation[j];
-              }
-              CompositeStep(sample(j), sample(j + 1), depth,
-                inverseUnitDepth[j] * inverseLayerLength[l], attenuation[j], color, transmittance);
-              if (transmittance < OpaqueTransmittance)
-              {
-                active = j + 1;
-                break;
-              }
-            }
-            float* out = entry(f, b, l);
+            CompositeStep(
+              a, a, depth, depth > 0.0 ? 1.0 / depth : 0.0, std::exp(-depth), color, transmittance);
+            float* out = entry(static_cast<int>(f), static_cast<int>(f), l);
             out[0] = static_cast<float>(color[0]);
             out[1] = static_cast<float>(color[1]);
             out[2] = static_cast<float>(color[2]);
             out[3] = static_cast<float>(1.0 - transmittance);
+          }
+        }
+      });
+    // One task per (j, direction): task t is j = t / 2 + 1, forward when t is even.
+    vtkSMPTools::For(0, 2 * static_cast<vtkIdType>(cells),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        std::vector<Composite> step(steps), cell(cells), prefix(cells), suffix(cells);
+        std::vector<double> unitAttenuation(steps), attenuation(steps);
+        for (vtkIdType task = begin; task < end; ++task)
+        {
+          const int j = static_cast<int>(task / 2) + 1;
+          const bool forward = task % 2 == 0;
+          // World length per unit normalized scalar, per unit segment length.
+          const double density = static_cast<double>(cells) / j;
+          for (int k = 0; k < steps; ++k)
+          {
+            unitAttenuation[k] = logarithmic ? 0.0 : std::exp(-stepDepth[k] * density * lengthStep);
+            attenuation[k] = 1.0;
+          }
+          for (int l = 1; l < nl; ++l)
+          {
+            const double scale = density * layerLength[l];
+            const double inverseScale = 1.0 / scale;
+            for (int k = 0; k < steps; ++k)
+            {
+              const double depth = stepDepth[k] * scale;
+              attenuation[k] = logarithmic ? std::exp(-depth) : attenuation[k] * unitAttenuation[k];
+              if (attenuation[k] < TinyAttenuation)
+              {
+                attenuation[k] = 0.0; // no denormals in the products below
+              }
+              const double inverseDepth = stepDepth[k] > 0.0 ? inverseScale / stepDepth[k] : 0.0;
+              const OpticalSample& front = forward ? fine[k] : fine[k + 1];
+              const OpticalSample& back = forward ? fine[k + 1] : fine[k];
+              Composite& c = step[k];
+              c.Color[0] = c.Color[1] = c.Color[2] = 0.0;
+              c.Transmittance = 1.0;
+              CompositeStep(
+                front, back, depth, inverseDepth, attenuation[k], c.Color, c.Transmittance);
+            }
+            // The intervals, front to back: forward, interval i's sub-steps in
+            // increasing order; backward (b < f), cell m is interval
+            // cells - 1 - m, its sub-steps in decreasing order, so that a
+            // window of cells is again front to back.
+            for (int m = 0; m < cells; ++m)
+            {
+              const int i = forward ? m : cells - 1 - m;
+              const int first = tableSample[i], last = tableSample[i + 1];
+              Composite c = forward ? step[first] : step[last - 1];
+              for (int k = first + 1; k < last; ++k)
+              {
+                c = Over(c, step[forward ? k : first + last - 1 - k]);
+              }
+              cell[m] = c;
+            }
+            WindowComposites(cell.data(), cells, j, prefix.data(), suffix.data(),
+              [&](int s, const Composite& w)
+              {
+                // Forward: entry (s, s + j); backward: cells s .. s + j - 1 are
+                // intervals cells - 1 - s down to cells - s - j: entry
+                // (cells - s, cells - s - j).
+                const int f = forward ? s : cells - s;
+                float* out = entry(f, forward ? f + j : f - j, l);
+                out[0] = static_cast<float>(w.Color[0]);
+                out[1] = static_cast<float>(w.Color[1]);
+                out[2] = static_cast<float>(w.Color[2]);
+                out[3] = static_cast<float>(1.0 - w.Transmittance);
+              });
           }
         }
       });

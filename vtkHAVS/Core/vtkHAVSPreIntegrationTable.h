@@ -34,10 +34,20 @@
  * SubdivisionsPerInterval, and holds for long, optically thick segments
  * (issue 20). ExactIntegration integrates each entry adaptively
  * from the functions instead (IntegrateSegment, error <= 1e-6; slow).
- * An entry's quadrature stops where the transmittance falls below 1e-12
- * (what lies behind changes it by less than that times the largest colour):
- * long, opaque segments cost a few sub-steps, not all of them.
- * Rows are filled in parallel (vtkSMPTools).
+ *
+ * The quadrature is built by windowed composites (issue 45): for a segment
+ * from table scalar f to b, j = |b - f| intervals long, of length L, each
+ * sub-step's share of L is its scalar span times (NS - 1) / j, the same in
+ * every segment of that j and L. So per (j, direction, length) the
+ * sub-steps are composited once, then each table interval (its sub-steps,
+ * front to back), and every entry of that j is the composite of j
+ * consecutive intervals, taken as a sliding window (each block of j
+ * intervals' prefix and suffix composites; an entry is one suffix over one
+ * prefix). The entry is the same front-to-back composite of the same
+ * sub-steps as integrating it alone, in another association: O(NS^2 NL)
+ * compositing operations and O(NS NL (NS SubdivisionsPerInterval)) sub-steps,
+ * instead of O(NS^3 NL SubdivisionsPerInterval) sub-steps. (j, direction)
+ * pairs are built in parallel (vtkSMPTools).
  *
  * The length axis is linear (L = u MaxLength) unless the longest segment
  * spans many optical lengths (MaxLength * tau_max > 16, tau_max the largest
@@ -167,6 +177,15 @@ public:
    */
   static void GetFunctionNodes(
     vtkVolumeProperty* property, int component, std::vector<double>& nodes);
+
+  /**
+   * The table's own quadrature of one segment: n uniform sub-steps from the
+   * functions, each composited as the table's are. Where the functions' nodes
+   * lie on the table's fine grid, entry (f, b, l) equals it with
+   * n = |b - f| SubdivisionsPerInterval (n = 1 where f == b).
+   */
+  static void IntegrateSubSteps(vtkVolumeProperty* property, int component, double sf, double sb,
+    double length, int n, double rgba[4]);
 
   /**
    * Double-precision reference: the segment integrated adaptively from the
