@@ -66,36 +66,50 @@ OpticalSample Evaluate(vtkVolumeProperty* property, int component, double s)
 /// (The unnormalized closed form (tau_a c_a ca + tau_b c_b cb) / kappa tends
 /// to c_a tau_a / kappa for an opaque sub-step: wrong by the extinction's
 /// change across it, and black where tau_a = 0.)
-inline void CompositeStep(const OpticalSample& a, const OpticalSample& b, double depth,
-  double inverseDepth, double attenuation, double color[3], double& transmittance)
+/// The sub-step's end weights ca / x (front) and cb / x (back) before the
+/// extinctions: their series below x = 1e-3 (where 1 - (1 - A) / x cancels;
+/// truncation < 2e-14 relative), else the closed form.
+inline void StepWeights(
+  double depth, double inverseDepth, double attenuation, double& front, double& back)
 {
-  const double stepAlpha = 1.0 - attenuation;
-  // ca / x and cb / x: their series below x = 1e-3 (where 1 - (1 - A) / x
-  // cancels; truncation < 2e-14 relative), else the closed form.
-  double wa, wb;
   const double x = depth;
   if (x < 1e-3)
   {
-    wa = 0.5 - x * (1.0 / 6 - x * (1.0 / 24 - x * (1.0 / 120)));
-    wb = 0.5 - x * (1.0 / 3 - x * (1.0 / 8 - x * (1.0 / 30)));
+    front = 0.5 - x * (1.0 / 6 - x * (1.0 / 24 - x * (1.0 / 120)));
+    back = 0.5 - x * (1.0 / 3 - x * (1.0 / 8 - x * (1.0 / 30)));
   }
   else
   {
-    const double r = stepAlpha * inverseDepth;
-    wa = 1.0 - r;
-    wb = r - attenuation;
+    const double r = (1.0 - attenuation) * inverseDepth;
+    front = 1.0 - r;
+    back = r - attenuation;
   }
-  wa *= a.Tau;
-  wb *= b.Tau;
+}
+
+/// The sub-step's colour (premultiplied, seen through `transmittance`) from
+/// its weights (StepWeights) and ends a (front) and b (back).
+inline void StepColor(const OpticalSample& a, const OpticalSample& b, double front, double back,
+  double attenuation, double transmittance, double color[3])
+{
+  const double wa = front * a.Tau;
+  const double wb = back * b.Tau;
   const double w = wa + wb;
   if (w > 0.0)
   {
-    const double k = transmittance * stepAlpha / w;
+    const double k = transmittance * (1.0 - attenuation) / w;
     for (int c = 0; c < 3; ++c)
     {
       color[c] += k * (wa * a.Color[c] + wb * b.Color[c]);
     }
   }
+}
+
+inline void CompositeStep(const OpticalSample& a, const OpticalSample& b, double depth,
+  double inverseDepth, double attenuation, double color[3], double& transmittance)
+{
+  double front, back;
+  StepWeights(depth, inverseDepth, attenuation, front, back);
+  StepColor(a, b, front, back, attenuation, transmittance, color);
   transmittance *= attenuation;
 }
 
@@ -466,16 +480,18 @@ bool vtkHAVSPreIntegrationTable::Build(
           }
         }
       });
-    // One task per (j, direction): task t is j = t / 2 + 1, forward when t is even.
-    vtkSMPTools::For(0, 2 * static_cast<vtkIdType>(cells),
+    // One task per j, both directions: a sub-step's depth, attenuation and
+    // weights are the same either way; only its ends swap.
+    vtkSMPTools::For(1, static_cast<vtkIdType>(cells) + 1,
       [&](vtkIdType begin, vtkIdType end)
       {
-        std::vector<Composite> step(steps), cell(cells), prefix(cells), suffix(cells);
+        std::vector<Composite> step[2] = { std::vector<Composite>(steps),
+          std::vector<Composite>(steps) };
+        std::vector<Composite> cell(cells), prefix(cells), suffix(cells);
         std::vector<double> unitAttenuation(steps), attenuation(steps);
         for (vtkIdType task = begin; task < end; ++task)
         {
-          const int j = static_cast<int>(task / 2) + 1;
-          const bool forward = task % 2 == 0;
+          const int j = static_cast<int>(task);
           // World length per unit normalized scalar, per unit segment length.
           const double density = static_cast<double>(cells) / j;
           for (int k = 0; k < steps; ++k)
@@ -496,42 +512,51 @@ bool vtkHAVSPreIntegrationTable::Build(
                 attenuation[k] = 0.0; // no denormals in the products below
               }
               const double inverseDepth = stepDepth[k] > 0.0 ? inverseScale / stepDepth[k] : 0.0;
-              const OpticalSample& front = forward ? fine[k] : fine[k + 1];
-              const OpticalSample& back = forward ? fine[k + 1] : fine[k];
-              Composite& c = step[k];
-              c.Color[0] = c.Color[1] = c.Color[2] = 0.0;
-              c.Transmittance = 1.0;
-              CompositeStep(
-                front, back, depth, inverseDepth, attenuation[k], c.Color, c.Transmittance);
-            }
-            // The intervals, front to back: forward, interval i's sub-steps in
-            // increasing order; backward (b < f), cell m is interval
-            // cells - 1 - m, its sub-steps in decreasing order, so that a
-            // window of cells is again front to back.
-            for (int m = 0; m < cells; ++m)
-            {
-              const int i = forward ? m : cells - 1 - m;
-              const int first = tableSample[i], last = tableSample[i + 1];
-              Composite c = forward ? step[first] : step[last - 1];
-              for (int k = first + 1; k < last; ++k)
+              double front, back;
+              StepWeights(depth, inverseDepth, attenuation[k], front, back);
+              for (int d = 0; d < 2; ++d)
               {
-                c = Over(c, step[forward ? k : first + last - 1 - k]);
+                // d = 0: forward (increasing scalar), 1: backward.
+                Composite& c = step[d][k];
+                c.Color[0] = c.Color[1] = c.Color[2] = 0.0;
+                c.Transmittance = attenuation[k];
+                StepColor(d == 0 ? fine[k] : fine[k + 1], d == 0 ? fine[k + 1] : fine[k], front,
+                  back, attenuation[k], 1.0, c.Color);
               }
-              cell[m] = c;
             }
-            WindowComposites(cell.data(), cells, j, prefix.data(), suffix.data(),
-              [&](int s, const Composite& w)
+            for (int d = 0; d < 2; ++d)
+            {
+              const bool forward = d == 0;
+              const std::vector<Composite>& stepsOfDirection = step[d];
+              // The intervals, front to back: forward, interval i's sub-steps in
+              // increasing order; backward (b < f), cell m is interval
+              // cells - 1 - m, its sub-steps in decreasing order, so that a
+              // window of cells is again front to back.
+              for (int m = 0; m < cells; ++m)
               {
-                // Forward: entry (s, s + j); backward: cells s .. s + j - 1 are
-                // intervals cells - 1 - s down to cells - s - j: entry
-                // (cells - s, cells - s - j).
-                const int f = forward ? s : cells - s;
-                float* out = entry(f, forward ? f + j : f - j, l);
-                out[0] = static_cast<float>(w.Color[0]);
-                out[1] = static_cast<float>(w.Color[1]);
-                out[2] = static_cast<float>(w.Color[2]);
-                out[3] = static_cast<float>(1.0 - w.Transmittance);
-              });
+                const int i = forward ? m : cells - 1 - m;
+                const int first = tableSample[i], last = tableSample[i + 1];
+                Composite c = forward ? stepsOfDirection[first] : stepsOfDirection[last - 1];
+                for (int k = first + 1; k < last; ++k)
+                {
+                  c = Over(c, stepsOfDirection[forward ? k : first + last - 1 - k]);
+                }
+                cell[m] = c;
+              }
+              WindowComposites(cell.data(), cells, j, prefix.data(), suffix.data(),
+                [&](int s, const Composite& w)
+                {
+                  // Forward: entry (s, s + j); backward: cells s .. s + j - 1 are
+                  // intervals cells - 1 - s down to cells - s - j: entry
+                  // (cells - s, cells - s - j).
+                  const int f = forward ? s : cells - s;
+                  float* out = entry(f, forward ? f + j : f - j, l);
+                  out[0] = static_cast<float>(w.Color[0]);
+                  out[1] = static_cast<float>(w.Color[1]);
+                  out[2] = static_cast<float>(w.Color[2]);
+                  out[3] = static_cast<float>(1.0 - w.Transmittance);
+                });
+            }
           }
         }
       });

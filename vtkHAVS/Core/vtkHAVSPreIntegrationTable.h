@@ -46,8 +46,8 @@
  * prefix). The entry is the same front-to-back composite of the same
  * sub-steps as integrating it alone, in another association: O(NS^2 NL)
  * compositing operations and O(NS NL (NS SubdivisionsPerInterval)) sub-steps,
- * instead of O(NS^3 NL SubdivisionsPerInterval) sub-steps. (j, direction)
- * pairs are built in parallel (vtkSMPTools).
+ * instead of O(NS^3 NL SubdivisionsPerInterval) sub-steps. Each j, both
+ * directions, is a task run in parallel (vtkSMPTools).
  *
  * The length axis is linear (L = u MaxLength) unless the longest segment
  * spans many optical lengths (MaxLength * tau_max > 16, tau_max the largest
