@@ -55,6 +55,10 @@
 // VTK's vtkProjectedTetrahedraMapper, vtkUnstructuredGridVolumeZSweepMapper and
 // vtkUnstructuredGridVolumeRayCastMapper (ImageSampleDistance 1,
 // AutoAdjustSampleDistances off, vtkUnstructuredGridLinearRayIntegrator).
+// edit-<configuration> (e.g. edit-havs-default, edit-tetraycast, edit-cellproj,
+// edit-pt): that configuration, then at view 0 still redraws and
+// transfer-function edits (one opacity node moved), with the edit's parts
+// (MeasureEdits); their own report section.
 //
 // Each (data set, configuration) runs in its own child process (peak memory
 // only grows), renders the fixed viewpoints (the 6 axis directions and the 8
@@ -75,6 +79,7 @@
 #include "vtkHAVSGeneratedBlock.h"
 #include "vtkHAVSImageMetrics.h"
 #include "vtkHAVSInternalFaceRanking.h"
+#include "vtkHAVSMapperBase.h"
 #include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSRenderWindowFactory.h"
@@ -596,9 +601,75 @@ std::string TraceText(const std::vector<double>& ms)
 }
 
 /// One (data set, configuration): prints a RESULT line.
+/// edit-*: at view 0, 5 frames that rebuild nothing (the still redraw) and 5
+/// transfer-function edits, each one opacity node (the middle one) moved by
+/// 10 % of its value and back, as a dragged node would, the camera still;
+/// medians are taken by the caller. An edit's parts: the table (every
+/// project mapper: GetLastTableSeconds), and HAVS's cell visibility, face
+/// gather, uploads and draw (its stage times); the cell projection's and
+/// the ray caster's draw (left empty where a mapper has no such part).
+void MeasureEdits(vtkRenderWindow* window, vtkCamera* camera, vtkUnstructuredGrid* grid,
+  const std::string& dataset, vtkVolumeProperty* property, vtkUnstructuredGridVolumeMapper* mapper,
+  std::vector<double>& stillMs, std::vector<double>& editMs, std::vector<double>& table,
+  std::vector<double>& visibility, std::vector<double>& gather, std::vector<double>& upload,
+  std::vector<double>& draw)
+{
+  auto* base = vtkHAVSMapperBase::SafeDownCast(mapper);
+  auto* havs = vtkHAVSVolumeMapper::SafeDownCast(mapper);
+  auto* cellProjection = vtkHAVSCellProjectionMapper::SafeDownCast(mapper);
+  auto* rayCast = vtkHAVSRayCastMapper::SafeDownCast(mapper);
+  PlaceView(camera, grid, 0, dataset);
+  window->Render(); // the view, once: what the still frames then redraw
+  window->WaitForCompletion();
+  auto timed = [window]()
+  {
+    const double t0 = vtkTimerLog::GetUniversalTime();
+    window->Render();
+    window->WaitForCompletion();
+    return 1000.0 * (vtkTimerLog::GetUniversalTime() - t0);
+  };
+  for (int i = 0; i < 5; ++i)
+  {
+    stillMs.push_back(timed());
+  }
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity();
+  const int node = opacity->GetSize() / 2;
+  double value[4];
+  opacity->GetNodeValue(node, value);
+  const double original = value[1];
+  for (int i = 0; i < 5; ++i)
+  {
+    value[1] = original * (i % 2 == 0 ? 0.9 : 1.0);
+    opacity->SetNodeValue(node, value);
+    editMs.push_back(timed());
+    if (base)
+    {
+      table.push_back(1000.0 * base->GetLastTableSeconds());
+    }
+    if (havs)
+    {
+      vtkHAVSFrameStatistics* stats = havs->GetLastFrameStatistics();
+      visibility.push_back(1000.0 * stats->GetVisibilitySeconds());
+      gather.push_back(1000.0 * stats->GetGatherSeconds());
+      upload.push_back(1000.0 * stats->GetUploadSeconds());
+      draw.push_back(1000.0 * stats->GetDrawSeconds());
+    }
+    else if (cellProjection || rayCast)
+    {
+      draw.push_back(1000.0 *
+        (cellProjection ? cellProjection->GetLastDrawSeconds() : rayCast->GetLastDrawSeconds()));
+    }
+  }
+  value[1] = original;
+  opacity->SetNodeValue(node, value);
+}
+
 int RunWorker(const Options& o)
 {
-  const std::string dataset = o.DataSets.at(0), config = o.Configs.at(0);
+  // edit-<configuration>: that configuration, and transfer-function edits at view 0.
+  const std::string dataset = o.DataSets.at(0), rowConfig = o.Configs.at(0);
+  const bool edits = rowConfig.rfind("edit-", 0) == 0;
+  const std::string config = edits ? rowConfig.substr(5) : rowConfig;
   vtkSmartPointer<vtkUnstructuredGrid> grid = LoadDataSet(dataset);
   if (!grid || grid->GetNumberOfCells() == 0 || !grid->GetPointData()->GetScalars())
   {
@@ -629,6 +700,9 @@ int RunWorker(const Options& o)
   // the share of the screen tiles in which rays started and their mean passes
   // (vtkHAVSRayCastMapper's last-frame counters).
   std::vector<double> peelPasses, cellsPerRay, tilesUsed, tilePasses, peelMs, castMs;
+  // edit-*: at view 0, frames that rebuild nothing (still) and frames after
+  // one opacity node moved (edit), and the edits' parts.
+  std::vector<double> stillMs, editMs, editTable, editVisibility, editGather, editUpload, editDraw;
   if (config == "reference")
   {
     // The exact images of every view, computed once and cached before any
@@ -1082,6 +1156,11 @@ int RunWorker(const Options& o)
         break;
       }
     }
+    if (edits && config != "zsweep" && config != "raycast")
+    {
+      MeasureEdits(window, camera, grid, dataset, property, mapper, stillMs, editMs, editTable,
+        editVisibility, editGather, editUpload, editDraw);
+    }
     if (havs) // the table HAVS drew with: N (fixed) or N:error (chosen automatically)
     {
       skipped = static_cast<long long>(havs->GetLastFrameStatistics()->GetInvisibleCells());
@@ -1114,9 +1193,12 @@ int RunWorker(const Options& o)
               "lod_fraction=%.4f ranking_s=%.3f ranking_mb=%.1f lod_target_ms=%.0f "
               "lod_within25=%.3f lod_still=%.3f lod_trace=%s peel_passes=%.1f cells_per_ray=%.2f "
               "tiles_used=%.4f tile_passes=%.3f float_rmse=%.6f float_max=%.6f floor_rmse=%.6f "
-              "folded_px=%.0f peel_ms=%.3f cast_ms=%.3f\n",
-    dataset.c_str(), config.c_str(), o.Size, static_cast<long long>(tets), viewsDone, frame.size(),
-    Median(frame), frame.empty() ? NAN : *std::min_element(frame.begin(), frame.end()),
+              "folded_px=%.0f peel_ms=%.3f cast_ms=%.3f still_ms=%.3f edit_ms=%.3f "
+              "edit_table_ms=%.3f edit_visibility_ms=%.3f edit_gather_ms=%.3f "
+              "edit_upload_ms=%.3f edit_draw_ms=%.3f\n",
+    dataset.c_str(), rowConfig.c_str(), o.Size, static_cast<long long>(tets), viewsDone,
+    frame.size(), Median(frame),
+    frame.empty() ? NAN : *std::min_element(frame.begin(), frame.end()),
     frame.empty() ? NAN : *std::max_element(frame.begin(), frame.end()), Median(sort),
     Median(gather), Median(draw), Median(flush), Median(composite), Median(upload),
     Median(readback), Median(layers), rmse, maxError, pixels > 0 ? over1 / pixels : NAN,
@@ -1124,7 +1206,9 @@ int RunWorker(const Options& o)
     tableText.c_str(), skipped, culled, Median(lodFractions), rankingSeconds, rankingMB,
     1000.0 * lodTarget, lodWithin, lodStill, TraceText(lodTrace).c_str(), Median(peelPasses),
     Median(cellsPerRay), Median(tilesUsed), Median(tilePasses), floatRmse, floatMax, floorRmse,
-    foldedPixels, Median(peelMs), Median(castMs));
+    foldedPixels, Median(peelMs), Median(castMs), Median(stillMs), Median(editMs),
+    Median(editTable), Median(editVisibility), Median(editGather), Median(editUpload),
+    Median(editDraw));
   return EXIT_SUCCESS;
 }
 
@@ -1152,7 +1236,8 @@ const char* const kColumns[] = { "dataset", "config", "size", "tets", "views", "
   "threads", "table", "skipped", "culled", "lod_fraction", "ranking_s", "ranking_mb",
   "lod_target_ms", "lod_within25", "lod_still", "lod_trace", "peel_passes", "cells_per_ray",
   "tiles_used", "tile_passes", "float_rmse", "float_max", "floor_rmse", "folded_px", "peel_ms",
-  "cast_ms", "rounds", "command" };
+  "cast_ms", "still_ms", "edit_ms", "edit_table_ms", "edit_visibility_ms", "edit_gather_ms",
+  "edit_upload_ms", "edit_draw_ms", "rounds", "command" };
 
 /// A CSV field, quoted where it holds a comma or a quote.
 std::string CsvField(const std::string& text)
@@ -1456,6 +1541,53 @@ bool IsLevelOfDetail(const Row& r)
     (r.count("command") && r.at("command").find("havs-lod-") != std::string::npos);
 }
 
+/// A row of the transfer-function edits' section: an edit-* configuration.
+bool IsEdit(const Row& r)
+{
+  return r.count("config") && r.at("config").rfind("edit-", 0) == 0;
+}
+
+/// The transfer-function edits' section (issue 45): per data set, size and
+/// mapper, a new view, a still redraw, an edit and the edit's parts.
+std::string EditReport(const std::vector<Row>& allRows)
+{
+  std::vector<Row> rows;
+  std::copy_if(allRows.begin(), allRows.end(), std::back_inserter(rows), IsEdit);
+  if (rows.empty())
+  {
+    return std::string();
+  }
+  std::ostringstream md;
+  md << "\n## Transfer-function edits\n\n"
+     << "edit-<configuration>: that configuration's views as above (a new view: the median "
+        "frame, the camera moved), then at view 0 five frames that rebuild nothing (a still "
+        "redraw) and five edits, each the middle opacity node moved by 10 % of its value and "
+        "back, the camera still (medians). An edit's parts: the table (every project mapper's "
+        "`GetLastTableSeconds`: the pre-integrated table, with HAVS's automatic resolution its "
+        "candidates and their error probes), HAVS's cell visibility, face gather, uploads and "
+        "draw (its stage times, `MeasureStageTimes` on for HAVS and the cell projection: each "
+        "stage ends with the GPU's work), the other two mappers' draw. The target (issue 45): "
+        "an edit costs at most 1.1 times a still redraw.\n\n"
+     << "| data set | size | configuration | tets | new view ms | still ms | edit ms | edit / "
+        "still | edit / view | table ms | visibility ms | gather ms | upload ms | draw ms |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Row& r : rows)
+  {
+    const double still = Value(r, "still_ms"), edit = Value(r, "edit_ms"),
+                 view = Value(r, "ms_median");
+    char ratios[64];
+    std::snprintf(ratios, sizeof(ratios), "%.2f | %.2f", edit / still, edit / view);
+    md << "| " << r.at("dataset") << " | " << (r.count("size") ? r.at("size") : "-") << " | "
+       << r.at("config").substr(5) << " | " << Cell(r, "tets", "%.0f") << " | "
+       << Cell(r, "ms_median", "%.1f") << " | " << Cell(r, "still_ms", "%.1f") << " | "
+       << Cell(r, "edit_ms", "%.1f") << " | " << ratios << " | " << Cell(r, "edit_table_ms", "%.1f")
+       << " | " << Cell(r, "edit_visibility_ms", "%.1f") << " | "
+       << Cell(r, "edit_gather_ms", "%.1f") << " | " << Cell(r, "edit_upload_ms", "%.1f") << " | "
+       << Cell(r, "edit_draw_ms", "%.1f") << " |\n";
+  }
+  return md.str();
+}
+
 /// The level of detail's section (issue 18): per data set and size, each
 /// strategy's time and error at each fixed share of internal faces beside the
 /// full frame (havs-default), and the rotations with a frame budget.
@@ -1595,7 +1727,7 @@ std::string Report(const std::vector<Row>& allRows, const Options& o, const std:
   // The level of detail's rows have their own section.
   std::vector<Row> rows;
   std::copy_if(allRows.begin(), allRows.end(), std::back_inserter(rows),
-    [](const Row& r) { return !IsLevelOfDetail(r); });
+    [](const Row& r) { return !IsLevelOfDetail(r) && !IsEdit(r); });
   std::string renderer = "(unknown)";
   {
     vtkSmartPointer<vtkRenderWindow> window;
@@ -1981,6 +2113,7 @@ std::string Report(const std::vector<Row>& allRows, const Options& o, const std:
     }
   }
   md << LevelOfDetailReport(allRows);
+  md << EditReport(allRows);
   md << "\nCSV: `benchmark.csv`. Plots: `benchmark_time_error.png` (time against RMSE, one "
         "panel per data set, Pareto front dashed, the face-raster bound as a line), "
         "`benchmark_stages.png` (HAVS's stages, stacked), `benchmark_time_tets.png` (time "

@@ -297,6 +297,7 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastMeshUpdate = MeshNotPrepared;
   this->LastMeshSeconds = 0.0;
   this->LastFrameAborted = false;
+  this->LastTableSeconds = 0.0;
   this->LastSectionTriangles = 0;
   this->TableRebuilt = false;
   this->ResetLastFrame();
@@ -319,7 +320,9 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
     }
     if (this->PrepareMesh(volume) && !this->AbortRequested(renderer))
     {
+      const double tableStart = vtkTimerLog::GetUniversalTime();
       const bool tableBuilt = this->PrepareTable(volume);
+      this->LastTableSeconds = vtkTimerLog::GetUniversalTime() - tableStart;
       if (this->TableRebuilt)
       {
         this->TableBuildTime.Modified();
@@ -367,6 +370,7 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastMeshUpdate: " << GetMeshUpdateName(this->LastMeshUpdate) << " ("
      << this->LastMeshSeconds << " s)\n";
   os << indent << "LastFrameAborted: " << this->LastFrameAborted << "\n";
+  os << indent << "LastTableSeconds: " << this->LastTableSeconds << "\n";
   os << indent
      << "CaptureDirectory: " << (this->CaptureDirectory ? this->CaptureDirectory : "(none)")
      << ", last capture " << (this->LastCaptureSucceeded ? "written" : "none") << "\n";

@@ -217,6 +217,11 @@ public:
   /// Whether the last frame was cut short by the render window's abort flag.
   vtkGetMacro(LastFrameAborted, bool);
 
+  /// The seconds the last frame spent preparing its tables (step 4: the
+  /// pre-integrated table and what depends on the transfer functions alone;
+  /// about 0 when nothing was rebuilt): what a transfer-function edit adds.
+  vtkGetMacro(LastTableSeconds, double);
+
   /**
    * One frame (see the class description): the same skeleton for the three
    * mappers; RenderView() is the mapper's own part.
@@ -343,6 +348,7 @@ private:
   int LastMeshUpdate = MeshNotPrepared;
   double LastMeshSeconds = 0.0;
   bool LastFrameAborted = false;
+  double LastTableSeconds = 0.0;
   vtkHAVSShaderHooks ShaderHooks;
   const vtkShaderProperty* ShaderHooksProperty = nullptr; // compared only, never used
   vtkHAVSMapperGraphics* Graphics = nullptr;
