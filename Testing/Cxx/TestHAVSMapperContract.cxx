@@ -30,7 +30,12 @@
 //    colour in every mapper (control: the uniform at 1 does not), and a
 //    replacement of a tag the mappers lack (//VTK::Shading::Impl) gets
 //    exactly one warning naming it over two frames and changes nothing
-//    (control: a replacement of an honoured tag gets none).
+//    (control: a replacement of an honoured tag gets none);
+// 7. a transfer-function edit redraws at once and exactly: after an opacity
+//    node moved (the table rebuilt and uploaded into the same texture) the
+//    float result equals that of a new mapper drawing the edited property
+//    (control: the image before the edit differs), and the frame's table
+//    time is its own (GetLastTableSeconds: positive in the edit's frame).
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
 #include "havsTestMessages.h"
@@ -51,6 +56,7 @@
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkRenderWindow.h"
@@ -561,5 +567,49 @@ int TestHAVSMapperContract(int, char*[])
             : std::string(split ? ", its cell records in several buffers"
                                 : ", but its cell records fit one buffer: no split tested")));
   }
+  // 7. A transfer-function edit redraws at once, as a new mapper would draw it.
+  for (size_t i = 0; i < mappers.size(); ++i)
+  {
+    const std::string name = mappers[i]->GetClassName();
+    vtkSmartPointer<vtkVolumeProperty> edited = vtkSmartPointer<vtkVolumeProperty>::New();
+    edited->DeepCopy(property);
+    auto fresh = [&](vtkSmartPointer<vtkHAVSMapperBase>& m)
+    {
+      m = mappers[i]->NewInstance();
+      m->Delete();
+      m->KeepFloatResultOn();
+    };
+    vtkSmartPointer<vtkHAVSMapperBase> m, other;
+    fresh(m);
+    fresh(other);
+    havstest::VolumeScene scene = havstest::MakeScene(grid, m, edited, 64, 64);
+    scene.Window->Render();
+    scene.Window->Render();
+    const std::vector<float> before = havstest::FloatResult(m);
+    vtkPiecewiseFunction* opacity = edited->GetScalarOpacity();
+    double node[4];
+    opacity->GetNodeValue(opacity->GetSize() - 1, node);
+    node[1] *= 0.5;
+    opacity->SetNodeValue(opacity->GetSize() - 1, node);
+    scene.Window->Render();
+    const double tableSeconds = m->GetLastTableSeconds();
+    const std::vector<float> after = havstest::FloatResult(m);
+    havstest::VolumeScene second = havstest::MakeScene(grid, other, edited, 64, 64);
+    second.Window->Render();
+    const havstest::ImageDifference same = havstest::Compare(after, havstest::FloatResult(other));
+    const havstest::ImageDifference changed = havstest::Compare(before, after);
+    std::cout << name << ": edit against a new mapper max " << same.Max << ", against before "
+              << changed.Max << ", table " << 1000.0 * tableSeconds << " ms\n";
+    Check(!after.empty() && same.Max < 1e-6,
+      name + ": an edit redraws as a new mapper draws the edited property (max " +
+        std::to_string(same.Max) + ")");
+    Check(changed.Max > 0.01,
+      name + ": control, the image before the edit differs (max " + std::to_string(changed.Max) +
+        ")");
+    Check(tableSeconds > 0.0,
+      name + ": the edit's frame rebuilt its table (" + std::to_string(1000.0 * tableSeconds) +
+        " ms)");
+  }
+
   return havstest::Result();
 }

@@ -59,10 +59,21 @@ void vtkHAVSGLTable::Upload(vtkHAVSPreIntegrationTable* table)
     t->SetWrapT(vtkTextureObject::ClampToEdge);
     t->SetWrapR(vtkTextureObject::ClampToEdge);
   }
-  this->ScalarResolution = table->GetScalarResolution();
-  this->LengthResolution = table->GetLengthResolution();
-  this->Table->Create3DFromRaw(this->ScalarResolution, this->ScalarResolution,
-    this->LengthResolution, 4, VTK_FLOAT, const_cast<float*>(table->GetTable()));
+  const int ns = table->GetBuiltScalarResolution(), nl = table->GetBuiltLengthResolution();
+  if (this->Table->GetHandle() != 0 && ns == this->ScalarResolution && nl == this->LengthResolution)
+  {
+    // A new table of the same size (a transfer-function edit): into the
+    // texture's storage, not a new one.
+    this->Table->Bind();
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, ns, ns, nl, GL_RGBA, GL_FLOAT, table->GetTable());
+  }
+  else
+  {
+    this->Table->Create3DFromRaw(ns, ns, nl, 4, VTK_FLOAT, const_cast<float*>(table->GetTable()));
+  }
+  this->ScalarResolution = ns;
+  this->LengthResolution = nl;
   const std::vector<float>& function = table->GetTransferFunction1D();
   this->TransferFunction1D->Create1DFromRaw(static_cast<unsigned int>(function.size() / 4), 4,
     VTK_FLOAT, const_cast<float*>(function.data()));
