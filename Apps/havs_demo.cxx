@@ -718,6 +718,7 @@ vtkSmartPointer<vtkUnstructuredGridVolumeMapper> MakeMapper(
       run.Label = "vtkHAVSCellProjectionMapper";
       mapper.TakeReference(vtkHAVSCellProjectionMapper::New());
     }
+    mapper->AutomaticTableResolutionOff(); // HAVS's table, as HAVS draws it
     mapper->SetTableScalarResolution(o.Table);
     mapper->SetTableLengthResolution(o.Table);
     return mapper;

@@ -31,7 +31,11 @@
 //    replacement of a tag the mappers lack (//VTK::Shading::Impl) gets
 //    exactly one warning naming it over two frames and changes nothing
 //    (control: a replacement of an honoured tag gets none);
-// 7. a transfer-function edit redraws at once and exactly: after an opacity
+// 7. the memory ledger, and the host copies freed after an upload, made
+//    again after ReleaseGraphicsResources (the same image);
+// 8. a mesh larger than LargestGPUBuffer allows: not drawn, one error; drawn
+//    once the limit allows it (control: the limit at exactly the need);
+// 9. a transfer-function edit redraws at once and exactly: after an opacity
 //    node moved (the table rebuilt and uploaded into the same texture) the
 //    float result equals that of a new mapper drawing the edited property
 //    (control: the image before the edit differs), and the frame's table
@@ -567,7 +571,7 @@ int TestHAVSMapperContract(int, char*[])
             : std::string(split ? ", its cell records in several buffers"
                                 : ", but its cell records fit one buffer: no split tested")));
   }
-  // 7. A transfer-function edit redraws at once, as a new mapper would draw it.
+  // 9. A transfer-function edit redraws at once, as a new mapper would draw it.
   for (size_t i = 0; i < mappers.size(); ++i)
   {
     const std::string name = mappers[i]->GetClassName();

@@ -16,6 +16,7 @@
 #include "vtkHAVSMapperInputs.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSPreIntegrationTable.h"
+#include "vtkHAVSTableResolution.h"
 #include "vtkHAVSViewFrame.h"
 
 #include "vtkAlgorithm.h"
@@ -247,10 +248,47 @@ void vtkHAVSMapperBase::PrepareShaderHooks(vtkVolume* volume)
 //------------------------------------------------------------------------------
 bool vtkHAVSMapperBase::PrepareTable(vtkVolume* volume)
 {
-  return vtkHAVSMapperInputs::PrepareTable(
+  const bool ok = vtkHAVSMapperInputs::PrepareTable(
     this, volume, this->Mesh, this->Table, this->TableScalarResolution, this->TableLengthResolution,
     this->MapperName, [this](int which, const std::string& m) { this->WarnOnce(which, m); },
-    &this->TableRebuilt);
+    &this->TableRebuilt, this->AutomaticTableResolution ? this->TableChooser.Get() : nullptr);
+  // A table built at the fixed size is not the chooser's: with the
+  // automatic choice back on, it chooses again.
+  if (this->TableRebuilt && !this->AutomaticTableResolution)
+  {
+    this->TableChooser->Modified();
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSMapperBase::SetTableErrorBound(double bound)
+{
+  if (bound != this->TableChooser->GetErrorBound())
+  {
+    this->TableChooser->SetErrorBound(bound);
+    this->Modified();
+  }
+}
+
+double vtkHAVSMapperBase::GetTableErrorBound()
+{
+  return this->TableChooser->GetErrorBound();
+}
+
+int vtkHAVSMapperBase::GetLastTableScalarResolution()
+{
+  return this->Table->GetScalarResolution();
+}
+
+int vtkHAVSMapperBase::GetLastTableLengthResolution()
+{
+  return this->Table->GetLengthResolution();
+}
+
+double vtkHAVSMapperBase::GetLastTableError()
+{
+  return this->AutomaticTableResolution ? this->TableChooser->GetLastError() : -1.0;
 }
 
 //------------------------------------------------------------------------------
@@ -361,6 +399,8 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HigherOrderSubdivision: " << this->HigherOrderSubdivision << "\n";
   os << indent << "TableScalarResolution: " << this->TableScalarResolution
      << ", TableLengthResolution: " << this->TableLengthResolution << "\n";
+  os << indent << "AutomaticTableResolution: " << this->AutomaticTableResolution << " (error bound "
+     << this->TableChooser->GetErrorBound() << ")\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
   os << indent << "LargestGPUBuffer: " << this->LargestGPUBuffer << "\n";
   os << indent << "PlaneSections: " << this->PlaneSections

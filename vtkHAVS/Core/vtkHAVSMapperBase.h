@@ -72,6 +72,7 @@ class vtkHAVSFramePlanes;
 class vtkHAVSMapperGraphics;
 class vtkHAVSMesh;
 class vtkHAVSPreIntegrationTable;
+class vtkHAVSTableResolution;
 class vtkHAVSViewFrame;
 
 class VTKHAVSCORE_EXPORT vtkHAVSMapperBase : public vtkUnstructuredGridVolumeMapper
@@ -141,12 +142,37 @@ public:
   /**
    * Size of the pre-integrated table: entries along the front and back
    * scalar axes (default 128) and along the segment length (default 128),
-   * 2 to 1024. HAVS's automatic resolution takes these as the largest allowed.
+   * 2 to 1024. The automatic resolution takes these as the largest allowed.
    */
   vtkSetClampMacro(TableScalarResolution, int, 2, 1024);
   vtkGetMacro(TableScalarResolution, int);
   vtkSetClampMacro(TableLengthResolution, int, 2, 1024);
   vtkGetMacro(TableLengthResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * The cheapest table within an error bound (vtkHAVSTableResolution), for
+   * every mapper: on (default), each table build tries 32, 64, ... up to the
+   * resolutions above and keeps the first whose mean error per unit distance,
+   * measured against the adaptive integral, is at most TableErrorBound
+   * (default 1e-4); a smaller table is built and sampled faster (a
+   * transfer-function edit rebuilds it). Off: the resolutions above are used
+   * as they are.
+   */
+  vtkSetMacro(AutomaticTableResolution, bool);
+  vtkGetMacro(AutomaticTableResolution, bool);
+  vtkBooleanMacro(AutomaticTableResolution, bool);
+  void SetTableErrorBound(double bound);
+  double GetTableErrorBound();
+  ///@}
+
+  ///@{
+  /// The table in use: its resolutions (after the automatic choice) and, when
+  /// chosen automatically, its measured error (else -1).
+  int GetLastTableScalarResolution();
+  int GetLastTableLengthResolution();
+  double GetLastTableError();
   ///@}
 
   ///@{
@@ -333,6 +359,8 @@ protected:
 
   vtkSmartPointer<vtkHAVSMesh> Mesh;
   vtkNew<vtkHAVSPreIntegrationTable> Table;
+  bool AutomaticTableResolution = true;
+  vtkNew<vtkHAVSTableResolution> TableChooser; ///< the automatic resolution's choice
   vtkTimeStamp TableBuildTime; ///< the table's version (changes when it was rebuilt)
   bool TableRebuilt = false;   ///< this frame rebuilt the table
   vtkNew<vtkHAVSFramePlanes> Planes;

@@ -172,16 +172,7 @@ void vtkHAVSVolumeMapper::MeshPrepared(int update, bool rebuilt)
 //------------------------------------------------------------------------------
 bool vtkHAVSVolumeMapper::PrepareTable(vtkVolume* volume)
 {
-  const bool ok = vtkHAVSMapperInputs::PrepareTable(
-    this, volume, this->Mesh, this->Table, this->TableScalarResolution, this->TableLengthResolution,
-    "vtkHAVSVolumeMapper", [this](int which, const std::string& m) { this->WarnOnce(which, m); },
-    &this->TableRebuilt, this->AutomaticTableResolution ? this->TableChooser.Get() : nullptr);
-  // A table built at the fixed size is not the chooser's: with the
-  // automatic choice back on, it chooses again.
-  if (this->TableRebuilt && !this->AutomaticTableResolution)
-  {
-    this->TableChooser->Modified();
-  }
+  const bool ok = this->Superclass::PrepareTable(volume);
   this->LastFrame->SetTableRebuilt(this->TableRebuilt);
   this->LastFrame->SetTableSeconds(this->AutomaticTableResolution
       ? this->TableChooser->GetLastSeconds()
@@ -697,35 +688,6 @@ vtkHAVSFaceSorter* vtkHAVSVolumeMapper::GetFaceSorter()
   return this->FaceOrder->GetCentroidSorter();
 }
 
-void vtkHAVSVolumeMapper::SetTableErrorBound(double bound)
-{
-  if (bound != this->TableChooser->GetErrorBound())
-  {
-    this->TableChooser->SetErrorBound(bound);
-    this->Modified();
-  }
-}
-
-double vtkHAVSVolumeMapper::GetTableErrorBound()
-{
-  return this->TableChooser->GetErrorBound();
-}
-
-int vtkHAVSVolumeMapper::GetLastTableScalarResolution()
-{
-  return this->Table->GetScalarResolution();
-}
-
-int vtkHAVSVolumeMapper::GetLastTableLengthResolution()
-{
-  return this->Table->GetLengthResolution();
-}
-
-double vtkHAVSVolumeMapper::GetLastTableError()
-{
-  return this->AutomaticTableResolution ? this->TableChooser->GetLastError() : -1.0;
-}
-
 //------------------------------------------------------------------------------
 vtkHAVSPreIntegrationTable* vtkHAVSVolumeMapper::GetPreIntegrationTable()
 {
@@ -740,8 +702,6 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << ", AutomaticKBufferSize: " << this->AutomaticKBufferSize << "\n";
   os << indent << "KBufferPath (requested): " << GetKBufferPathName(this->KBufferPath) << "\n";
   os << indent << "EarlyRayTerminationOpacity: " << this->EarlyRayTerminationOpacity << "\n";
-  os << indent << "AutomaticTableResolution: " << this->AutomaticTableResolution << " (error bound "
-     << this->TableChooser->GetErrorBound() << ")\n";
   os << indent << "SkipOffscreenCells: " << this->SkipOffscreenCells << "\n";
   os << indent << "SkipSaturatedPixels: " << this->SkipSaturatedPixels << "\n";
   os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << " (opacity "

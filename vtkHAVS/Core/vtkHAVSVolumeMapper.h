@@ -71,7 +71,6 @@ class vtkHAVSFaceSorter;
 class vtkHAVSInternalFaceRanking;
 class vtkHAVSLevelOfDetailController;
 class vtkHAVSFrameStatistics;
-class vtkHAVSTableResolution;
 class vtkHAVSViewCulling;
 class vtkRenderWindow;
 
@@ -161,24 +160,8 @@ public:
   vtkGetMacro(EarlyRayTerminationOpacity, double);
   ///@}
 
-  // The table's resolutions (vtkHAVSMapperBase): with
-  // AutomaticTableResolution they are the largest allowed.
-
-  ///@{
-  /**
-   * The cheapest table within an error bound (vtkHAVSTableResolution): on
-   * (default), each table build tries 32, 64, ... up to the resolutions above
-   * and keeps the first whose mean error per unit distance, measured against
-   * the adaptive integral, is at most TableErrorBound (default 1e-4); a
-   * smaller table is sampled faster. Off: the resolutions above are used as
-   * they are.
-   */
-  vtkSetMacro(AutomaticTableResolution, bool);
-  vtkGetMacro(AutomaticTableResolution, bool);
-  vtkBooleanMacro(AutomaticTableResolution, bool);
-  void SetTableErrorBound(double bound);
-  double GetTableErrorBound();
-  ///@}
+  // The table's resolutions and its automatic choice (AutomaticTableResolution,
+  // TableErrorBound): vtkHAVSMapperBase.
 
   ///@{
   /**
@@ -292,14 +275,6 @@ public:
   /// The ranking (its preprocessing time and memory) and the controller.
   vtkHAVSInternalFaceRanking* GetLevelOfDetailRanking();
   vtkHAVSLevelOfDetailController* GetLevelOfDetailController();
-  ///@}
-
-  ///@{
-  /// The table in use: its resolutions (after the automatic choice) and, when
-  /// chosen automatically, its measured error (else -1).
-  int GetLastTableScalarResolution();
-  int GetLastTableLengthResolution();
-  double GetLastTableError();
   ///@}
 
   ///@{
@@ -504,7 +479,6 @@ protected:
   bool AutomaticKBufferSize = false;
   int KBufferPath = KBufferPathAutomatic;
   double EarlyRayTerminationOpacity = 0.999;
-  bool AutomaticTableResolution = true;
   bool SkipInvisibleCells = true;
   bool SkipOffscreenCells = true;
   int SkipSaturatedPixels = SkipSaturatedPixelsAutomatic;
@@ -541,7 +515,6 @@ private:
   /// The uploads of one draw added to the frame's (a frame may draw more than once).
   void RecordUploads(const FrameResult& result);
 
-  vtkNew<vtkHAVSTableResolution> TableChooser;
   vtkNew<vtkHAVSFaceOrderPolicy> FaceOrder;
   vtkNew<vtkHAVSCellVisibility> Visibility;
   vtkNew<vtkHAVSViewCulling> Culling;
