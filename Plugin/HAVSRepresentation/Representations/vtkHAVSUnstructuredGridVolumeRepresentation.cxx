@@ -12,6 +12,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkBoundingBox.h"
+#include "vtkCellType.h"
 #include "vtkDataSet.h"
 #include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSFrameStatistics.h"
@@ -25,7 +26,9 @@
 #include "vtkPVRenderView.h"
 #include "vtkPVRenderViewDataDeliveryManager.h"
 #include "vtkPlane.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkVolumeRepresentationPreprocessor.h"
 
 #include <dlfcn.h>
 
@@ -59,6 +62,38 @@ vtkBoundingBox UnionOfCuts(const std::vector<vtkBoundingBox>& cuts)
     }
   }
   return whole;
+}
+
+/// Drops the polyhedron face arrays of a grid without polyhedra; whether it
+/// did. VTK 9.2's vtkXMLPUnstructuredGridReader (ParaView 5.11's .pvtu
+/// reader) gives its cell types array uninitialized to
+/// vtkUnstructuredGrid::SetCells(types, cells), which takes any byte 42
+/// (VTK_POLYHEDRON) left in that memory for a polyhedron and makes empty
+/// Faces and FaceLocations arrays; the reader then fills in the cells and
+/// leaves them empty. vtkDataSetTriangleFilter passes a grid of tetrahedra
+/// through as it is, and vtkRedistributeDataSetFilter::SplitDataSet's
+/// vtkExtractCells reads FaceLocations for every cell it extracts (the range
+/// of an empty array is not [-1, -1]): past the end, a SIGSEGV.
+bool DropStaleFaces(vtkUnstructuredGrid* grid)
+{
+  if (!grid || (!grid->GetFaces() && !grid->GetFaceLocations()))
+  {
+    return false;
+  }
+  vtkUnsignedCharArray* types = grid->GetCellTypesArray();
+  const vtkIdType cells = grid->GetNumberOfCells();
+  if (types)
+  {
+    const unsigned char* type = types->GetPointer(0);
+    if (std::find(type, type + cells, static_cast<unsigned char>(VTK_POLYHEDRON)) != type + cells)
+    {
+      return false; // real polyhedra (not after the preprocessor's tetrahedralization)
+    }
+  }
+  // The grid's own arrays are replaced, not changed: those it shares with
+  // the reader's output stay as they are.
+  grid->SetCells(types, grid->GetCells(), nullptr, nullptr);
+  return true;
 }
 
 /// The view's data delivery manager, which knows the kd-tree's cuts (one box
@@ -118,6 +153,24 @@ vtkHAVSUnstructuredGridVolumeRepresentation::~vtkHAVSUnstructuredGridVolumeRepre
   {
     named.second->Delete();
   }
+}
+
+//------------------------------------------------------------------------------
+int vtkHAVSUnstructuredGridVolumeRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestData(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  // The piece the view delivers and redistributes (ProcessViewRequest's
+  // REQUEST_UPDATE in the superclass): a shallow copy of the tetrahedralized
+  // input, owned by the preprocessor.
+  if (DropStaleFaces(vtkUnstructuredGrid::SafeDownCast(this->Preprocessor->GetOutputDataObject(0))))
+  {
+    vtkDebugMacro("Dropped the input's empty polyhedron face arrays (no polyhedra).");
+  }
+  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -233,7 +286,10 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSHigherOrderSubdivision(
 
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSAutomaticTable(int automatic)
 {
-  this->HAVSMapper->SetAutomaticTableResolution(automatic != 0);
+  for (const auto& named : this->Mappers)
+  {
+    named.second->SetAutomaticTableResolution(automatic != 0);
+  }
   this->Modified();
 }
 

@@ -208,6 +208,12 @@ protected:
   vtkHAVSUnstructuredGridVolumeRepresentation();
   ~vtkHAVSUnstructuredGridVolumeRepresentation() override;
 
+  /// The superclass's, then the piece's stale polyhedron face arrays dropped
+  /// (see DropStaleFaces in the .cxx): ParaView 5.11's redistribution
+  /// crashes on them.
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
 private:
   vtkHAVSUnstructuredGridVolumeRepresentation(
     const vtkHAVSUnstructuredGridVolumeRepresentation&) = delete;
