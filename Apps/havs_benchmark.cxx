@@ -1547,6 +1547,13 @@ bool IsEdit(const Row& r)
   return r.count("config") && r.at("config").rfind("edit-", 0) == 0;
 }
 
+/// A row of an edit run (its edit-* rows and the reference it made): none
+/// of them in the main tables.
+bool IsEditRun(const Row& r)
+{
+  return IsEdit(r) || (r.count("command") && r.at("command").find("edit-") != std::string::npos);
+}
+
 /// The transfer-function edits' section (issue 45): per data set, size and
 /// mapper, a new view, a still redraw, an edit and the edit's parts.
 std::string EditReport(const std::vector<Row>& allRows)
@@ -1727,7 +1734,7 @@ std::string Report(const std::vector<Row>& allRows, const Options& o, const std:
   // The level of detail's rows have their own section.
   std::vector<Row> rows;
   std::copy_if(allRows.begin(), allRows.end(), std::back_inserter(rows),
-    [](const Row& r) { return !IsLevelOfDetail(r) && !IsEdit(r); });
+    [](const Row& r) { return !IsLevelOfDetail(r) && !IsEditRun(r); });
   std::string renderer = "(unknown)";
   {
     vtkSmartPointer<vtkRenderWindow> window;

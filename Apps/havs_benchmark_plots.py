@@ -35,7 +35,12 @@ def level_of_detail(r):
     return r["config"].startswith("havs-lod-") or "havs-lod-" in r.get("command", "")
 
 
-rows = [r for r in all_rows if not level_of_detail(r)]
+def edit_run(r):
+    # An edit-* row or the reference an edit run made: the report's edit section only.
+    return r["config"].startswith("edit-") or "edit-" in r.get("command", "")
+
+
+rows = [r for r in all_rows if not level_of_detail(r) and not edit_run(r)]
 out = sys.argv[2]
 
 
