@@ -26,8 +26,8 @@
 #include "vtkPVRenderView.h"
 #include "vtkPVRenderViewDataDeliveryManager.h"
 #include "vtkPlane.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkVersionMacros.h"
 #include "vtkVolumeRepresentationPreprocessor.h"
 
 #include <dlfcn.h>
@@ -76,23 +76,33 @@ vtkBoundingBox UnionOfCuts(const std::vector<vtkBoundingBox>& cuts)
 /// of an empty array is not [-1, -1]): past the end, a SIGSEGV.
 bool DropStaleFaces(vtkUnstructuredGrid* grid)
 {
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 4, 0)
+  // (VTK 9.4 keeps polyhedron faces in vtkCellArrays; the same repair.)
+  if (!grid || (!grid->GetPolyhedronFaces() && !grid->GetPolyhedronFaceLocations()))
+  {
+    return false;
+  }
+#else
   if (!grid || (!grid->GetFaces() && !grid->GetFaceLocations()))
   {
     return false;
   }
-  vtkUnsignedCharArray* types = grid->GetCellTypesArray();
+#endif
   const vtkIdType cells = grid->GetNumberOfCells();
-  if (types)
+  for (vtkIdType i = 0; i < cells; ++i)
   {
-    const unsigned char* type = types->GetPointer(0);
-    if (std::find(type, type + cells, static_cast<unsigned char>(VTK_POLYHEDRON)) != type + cells)
+    if (grid->GetCellType(i) == VTK_POLYHEDRON)
     {
       return false; // real polyhedra (not after the preprocessor's tetrahedralization)
     }
   }
   // The grid's own arrays are replaced, not changed: those it shares with
   // the reader's output stay as they are.
-  grid->SetCells(types, grid->GetCells(), nullptr, nullptr);
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 4, 0)
+  grid->SetPolyhedralCells(grid->GetCellTypes(), grid->GetCells(), nullptr, nullptr);
+#else
+  grid->SetCells(grid->GetCellTypesArray(), grid->GetCells(), nullptr, nullptr);
+#endif
   return true;
 }
 
