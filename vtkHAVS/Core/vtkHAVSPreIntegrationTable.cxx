@@ -113,26 +113,49 @@ inline void CompositeStep(const OpticalSample& a, const OpticalSample& b, double
   transmittance *= attenuation;
 }
 
-/// The segment (sf -> sb, length) integrated with n sub-steps from the functions.
-void IntegrateSteps(vtkVolumeProperty* property, int component, double sf, double sb, double length,
-  int n, double rgba[4])
+/// The optics at the ends of n uniform sub-steps of (sf -> sb): at
+/// sf + (sb - sf) j / n, j = 0 .. n. Given the samples of n / 2 (`coarser`),
+/// those are the even ones here, bit for bit ((sb - sf) 2j / 2n rounds as
+/// (sb - sf) j / n), and only the odd ones are evaluated.
+void SampleSteps(vtkVolumeProperty* property, int component, double sf, double sb, int n,
+  const std::vector<OpticalSample>* coarser, std::vector<OpticalSample>& out)
+{
+  out.resize(n + 1);
+  for (int j = 0; j <= n; ++j)
+  {
+    out[j] = coarser && j % 2 == 0 ? (*coarser)[j / 2]
+                                   : Evaluate(property, component, sf + (sb - sf) * j / n);
+  }
+}
+
+/// The segment of `length` composited over the sub-steps between `samples`.
+void CompositeSamples(const std::vector<OpticalSample>& samples, double length, double rgba[4])
 {
   double color[3] = { 0, 0, 0 };
   double transmittance = 1.0;
+  const int n = static_cast<int>(samples.size()) - 1;
   const double h = length / n;
-  OpticalSample a = Evaluate(property, component, sf);
   for (int j = 1; j <= n; ++j)
   {
-    const OpticalSample b = Evaluate(property, component, sf + (sb - sf) * j / n);
+    const OpticalSample& a = samples[j - 1];
+    const OpticalSample& b = samples[j];
     const double depth = 0.5 * h * (a.Tau + b.Tau);
     CompositeStep(
       a, b, depth, depth > 0.0 ? 1.0 / depth : 0.0, std::exp(-depth), color, transmittance);
-    a = b;
   }
   rgba[0] = color[0];
   rgba[1] = color[1];
   rgba[2] = color[2];
   rgba[3] = 1.0 - transmittance;
+}
+
+/// The segment (sf -> sb, length) integrated with n sub-steps from the functions.
+void IntegrateSteps(vtkVolumeProperty* property, int component, double sf, double sb, double length,
+  int n, double rgba[4])
+{
+  std::vector<OpticalSample> samples;
+  SampleSteps(property, component, sf, sb, n, nullptr, samples);
+  CompositeSamples(samples, length, rgba);
 }
 
 /// Below this a sub-step's attenuation is taken as 0 (what it lets through
@@ -241,11 +264,16 @@ void vtkHAVSPreIntegrationTable::IntegrateSegment(vtkVolumeProperty* property, i
 {
   // Second-order sub-steps, doubled and Richardson-extrapolated until two
   // successive estimates agree to 1e-7.
+  // Each doubling evaluates the functions at the new (odd) samples only.
   double coarse[4], fine[4], previous[4] = { 0, 0, 0, 0 };
-  IntegrateSteps(property, component, sf, sb, length, 16, coarse);
+  std::vector<OpticalSample> samples, finer;
+  SampleSteps(property, component, sf, sb, 16, nullptr, samples);
+  CompositeSamples(samples, length, coarse);
   for (int n = 32; n <= std::max(maximumSteps, 32); n *= 2)
   {
-    IntegrateSteps(property, component, sf, sb, length, n, fine);
+    SampleSteps(property, component, sf, sb, n, &samples, finer);
+    samples.swap(finer);
+    CompositeSamples(samples, length, fine);
     double estimate[4], change = 0.0;
     for (int c = 0; c < 4; ++c)
     {
