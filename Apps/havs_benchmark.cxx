@@ -600,7 +600,15 @@ std::string TraceText(const std::vector<double>& ms)
   return text.empty() ? "-" : text;
 }
 
-/// One (data set, configuration): prints a RESULT line.
+/// One frame, the GPU's work finished: its seconds.
+double TimedFrame(vtkRenderWindow* window)
+{
+  const double t0 = vtkTimerLog::GetUniversalTime();
+  window->Render();
+  window->WaitForCompletion();
+  return vtkTimerLog::GetUniversalTime() - t0;
+}
+
 /// edit-*: at view 0, 5 frames that rebuild nothing (the still redraw) and 5
 /// transfer-function edits, each one opacity node (the middle one) moved by
 /// 10 % of its value and back, as a dragged node would, the camera still;
@@ -621,16 +629,9 @@ void MeasureEdits(vtkRenderWindow* window, vtkCamera* camera, vtkUnstructuredGri
   PlaceView(camera, grid, 0, dataset);
   window->Render(); // the view, once: what the still frames then redraw
   window->WaitForCompletion();
-  auto timed = [window]()
-  {
-    const double t0 = vtkTimerLog::GetUniversalTime();
-    window->Render();
-    window->WaitForCompletion();
-    return 1000.0 * (vtkTimerLog::GetUniversalTime() - t0);
-  };
   for (int i = 0; i < 5; ++i)
   {
-    stillMs.push_back(timed());
+    stillMs.push_back(1000.0 * TimedFrame(window));
   }
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity();
   const int node = opacity->GetSize() / 2;
@@ -641,7 +642,7 @@ void MeasureEdits(vtkRenderWindow* window, vtkCamera* camera, vtkUnstructuredGri
   {
     value[1] = original * (i % 2 == 0 ? 0.9 : 1.0);
     opacity->SetNodeValue(node, value);
-    editMs.push_back(timed());
+    editMs.push_back(1000.0 * TimedFrame(window));
     if (base)
     {
       table.push_back(1000.0 * base->GetLastTableSeconds());
@@ -664,6 +665,7 @@ void MeasureEdits(vtkRenderWindow* window, vtkCamera* camera, vtkUnstructuredGri
   opacity->SetNodeValue(node, value);
 }
 
+/// One (data set, configuration): prints a RESULT line.
 int RunWorker(const Options& o)
 {
   // edit-<configuration>: that configuration, and transfer-function edits at view 0.
@@ -967,10 +969,7 @@ int RunWorker(const Options& o)
       for (int i = 0; i < frames; ++i)
       {
         camera->Azimuth(3.0);
-        const double t0 = vtkTimerLog::GetUniversalTime();
-        window->Render();
-        window->WaitForCompletion();
-        const double ms = 1000.0 * (vtkTimerLog::GetUniversalTime() - t0);
+        const double ms = 1000.0 * TimedFrame(window);
         lodTrace.push_back(ms);
         if (i >= frames - settled)
         {
@@ -1005,10 +1004,7 @@ int RunWorker(const Options& o)
         {
           havs->InvalidateFaceOrder(); // every frame orders its faces, as when the camera moves
         }
-        const double t0 = vtkTimerLog::GetUniversalTime();
-        window->Render();
-        window->WaitForCompletion();
-        const double seconds = vtkTimerLog::GetUniversalTime() - t0;
+        const double seconds = TimedFrame(window);
         rendering += seconds;
         if (lodTarget > 0.0)
         {

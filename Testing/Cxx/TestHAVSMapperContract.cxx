@@ -115,6 +115,12 @@ vtkSmartPointer<vtkUnstructuredGridVolumeMapper> Upcast(vtkUnstructuredGridVolum
   return vtkSmartPointer<vtkUnstructuredGridVolumeMapper>::Take(m);
 }
 
+/// A new mapper of the same class as `like`, with its defaults.
+vtkSmartPointer<vtkHAVSMapperBase> Another(vtkHAVSMapperBase* like)
+{
+  return vtkSmartPointer<vtkHAVSMapperBase>::Take(like->NewInstance());
+}
+
 /// Volume pixels: where the window differs from the background by more than 2/255.
 int VolumePixels(const std::vector<float>& rgba)
 {
@@ -397,8 +403,7 @@ int TestHAVSMapperContract(int, char*[])
     auto draw = [&](const std::function<void(vtkShaderProperty*)>& customize, int* warnings,
                   std::string* text)
     {
-      vtkSmartPointer<vtkHAVSMapperBase> m = mappers[i]->NewInstance();
-      m->Delete(); // (NewInstance gave one reference, the smart pointer took another)
+      vtkSmartPointer<vtkHAVSMapperBase> m = Another(mappers[i]);
       havstest::VolumeScene scene = havstest::MakeScene(grid, m, property, 64, 64);
       customize(scene.Volume->GetShaderProperty());
       havstest::Messages* messages = havstest::CountMessages(m);
@@ -455,8 +460,7 @@ int TestHAVSMapperContract(int, char*[])
       // Edits between frames of one mapper redraw at once: hooks added after a
       // plain frame apply, and cleared they are gone (the hooks and the composite
       // are read again only when the property changed).
-      vtkSmartPointer<vtkHAVSMapperBase> m = mappers[i]->NewInstance();
-      m->Delete();
+      vtkSmartPointer<vtkHAVSMapperBase> m = Another(mappers[i]);
       havstest::VolumeScene scene = havstest::MakeScene(grid, m, property, 64, 64);
       scene.Window->Render();
       vtkShaderProperty* sp = scene.Volume->GetShaderProperty();
@@ -497,8 +501,7 @@ int TestHAVSMapperContract(int, char*[])
   for (size_t i = 0; i < mappers.size(); ++i)
   {
     const std::string name = mappers[i]->GetClassName();
-    vtkSmartPointer<vtkHAVSMapperBase> m = mappers[i]->NewInstance();
-    m->Delete();
+    vtkSmartPointer<vtkHAVSMapperBase> m = Another(mappers[i]);
     havstest::VolumeScene scene = havstest::MakeScene(grid, m, property, 64, 64);
     scene.Window->Render();
     const std::vector<float> first = havstest::ReadRGBA(scene.Window);
@@ -535,15 +538,13 @@ int TestHAVSMapperContract(int, char*[])
   for (size_t i = 0; i < mappers.size(); ++i)
   {
     const std::string name = mappers[i]->GetClassName();
-    vtkSmartPointer<vtkHAVSMapperBase> plain = mappers[i]->NewInstance();
-    plain->Delete();
+    vtkSmartPointer<vtkHAVSMapperBase> plain = Another(mappers[i]);
     havstest::VolumeScene reference = havstest::MakeScene(grid, plain, property, 64, 64);
     reference.Window->Render();
     const std::vector<float> expected = havstest::ReadRGBA(reference.Window);
     const size_t need = plain->GetLargestGPUBufferNeed().Bytes;
 
-    vtkSmartPointer<vtkHAVSMapperBase> m = mappers[i]->NewInstance();
-    m->Delete();
+    vtkSmartPointer<vtkHAVSMapperBase> m = Another(mappers[i]);
     havstest::Messages* messages = havstest::CountMessages(m);
     m->SetLargestGPUBuffer(static_cast<vtkIdType>(need) - 1);
     havstest::VolumeScene scene = havstest::MakeScene(grid, m, property, 64, 64);
@@ -577,15 +578,10 @@ int TestHAVSMapperContract(int, char*[])
     const std::string name = mappers[i]->GetClassName();
     vtkSmartPointer<vtkVolumeProperty> edited = vtkSmartPointer<vtkVolumeProperty>::New();
     edited->DeepCopy(property);
-    auto fresh = [&](vtkSmartPointer<vtkHAVSMapperBase>& m)
-    {
-      m = mappers[i]->NewInstance();
-      m->Delete();
-      m->KeepFloatResultOn();
-    };
-    vtkSmartPointer<vtkHAVSMapperBase> m, other;
-    fresh(m);
-    fresh(other);
+    vtkSmartPointer<vtkHAVSMapperBase> m = Another(mappers[i]);
+    vtkSmartPointer<vtkHAVSMapperBase> other = Another(mappers[i]);
+    m->KeepFloatResultOn();
+    other->KeepFloatResultOn();
     havstest::VolumeScene scene = havstest::MakeScene(grid, m, edited, 64, 64);
     scene.Window->Render();
     scene.Window->Render();

@@ -49,23 +49,6 @@ OpticalSample Evaluate(vtkVolumeProperty* property, int component, double s)
   return out;
 }
 
-/// Composites one sub-step between samples a and b of optical depth `depth`
-/// (its mean extinction times its length; attenuation = exp(-depth);
-/// inverseDepth = 1 / depth, from the callers' reciprocals: a multiplication
-/// here, not a division).
-/// Extinction and colour are linear inside; the attenuation is exact for
-/// the mean extinction kappa. Within the sub-step the light emitted at
-/// depth t kappa is seen through exp(-kappa t); with the emission tau c
-/// linear, that weighs the ends by tau_a ca and tau_b cb, where
-///   ca = 1 - (1 - A) / x,   cb = (1 - A) / x - A   (x = depth, A = attenuation)
-/// are kappa times the integrals of (1 - t/h) exp(-kappa t) and
-/// (t/h) exp(-kappa t) over the sub-step (ca + cb = 1 - A). The colour is the
-/// weighted mean of the ends' colours, times the sub-step's opacity 1 - A:
-/// exact for a constant colour and for an opaque sub-step (its front
-/// colour), the tau-weighted mean of the trapezoid rule for a thin one.
-/// (The unnormalized closed form (tau_a c_a ca + tau_b c_b cb) / kappa tends
-/// to c_a tau_a / kappa for an opaque sub-step: wrong by the extinction's
-/// change across it, and black where tau_a = 0.)
 /// The sub-step's end weights ca / x (front) and cb / x (back) before the
 /// extinctions: their series below x = 1e-3 (where 1 - (1 - A) / x cancels;
 /// truncation < 2e-14 relative), else the closed form.
@@ -104,6 +87,23 @@ inline void StepColor(const OpticalSample& a, const OpticalSample& b, double fro
   }
 }
 
+/// Composites one sub-step between samples a and b of optical depth `depth`
+/// (its mean extinction times its length; attenuation = exp(-depth);
+/// inverseDepth = 1 / depth, from the callers' reciprocals: a multiplication
+/// here, not a division).
+/// Extinction and colour are linear inside; the attenuation is exact for
+/// the mean extinction kappa. Within the sub-step the light emitted at
+/// depth t kappa is seen through exp(-kappa t); with the emission tau c
+/// linear, that weighs the ends by tau_a ca and tau_b cb, where
+///   ca = 1 - (1 - A) / x,   cb = (1 - A) / x - A   (x = depth, A = attenuation)
+/// are kappa times the integrals of (1 - t/h) exp(-kappa t) and
+/// (t/h) exp(-kappa t) over the sub-step (ca + cb = 1 - A). The colour is the
+/// weighted mean of the ends' colours, times the sub-step's opacity 1 - A:
+/// exact for a constant colour and for an opaque sub-step (its front
+/// colour), the tau-weighted mean of the trapezoid rule for a thin one.
+/// (The unnormalized closed form (tau_a c_a ca + tau_b c_b cb) / kappa tends
+/// to c_a tau_a / kappa for an opaque sub-step: wrong by the extinction's
+/// change across it, and black where tau_a = 0.)
 inline void CompositeStep(const OpticalSample& a, const OpticalSample& b, double depth,
   double inverseDepth, double attenuation, double color[3], double& transmittance)
 {
@@ -436,11 +436,10 @@ bool vtkHAVSPreIntegrationTable::Build(
   }
   this->LengthLogScale = maxLength * tauMax > 16.0 ? 4.0 * tauMax : 0.0;
   const bool logarithmic = this->LengthLogScale > 0.0;
-  std::vector<double> layerLength(nl), inverseLayerLength(nl);
+  std::vector<double> layerLength(nl);
   for (int l = 0; l < nl; ++l)
   {
     layerLength[l] = this->LengthAt(static_cast<double>(l) / (nl - 1));
-    inverseLayerLength[l] = layerLength[l] > 0.0 ? 1.0 / layerLength[l] : 0.0;
   }
 
   float* table = this->Table.data();
@@ -448,6 +447,15 @@ bool vtkHAVSPreIntegrationTable::Build(
   const size_t layer = static_cast<size_t>(ns) * ns * 4;
   auto entry = [&](int f, int b, int l) -> float*
   { return table + static_cast<size_t>(l) * layer + (static_cast<size_t>(b) * ns + f) * 4; };
+  // A composite into entry (f, b, l): its colour and opacity 1 - transmittance.
+  auto store = [&](int f, int b, int l, const Composite& c)
+  {
+    float* out = entry(f, b, l);
+    out[0] = static_cast<float>(c.Color[0]);
+    out[1] = static_cast<float>(c.Color[1]);
+    out[2] = static_cast<float>(c.Color[2]);
+    out[3] = static_cast<float>(1.0 - c.Transmittance);
+  };
 
   if (this->ExactIntegration)
   {
@@ -496,15 +504,10 @@ bool vtkHAVSPreIntegrationTable::Build(
           for (int l = 1; l < nl; ++l)
           {
             const double depth = a.Tau * layerLength[l];
-            double color[3] = { 0, 0, 0 };
-            double transmittance = 1.0;
-            CompositeStep(
-              a, a, depth, depth > 0.0 ? 1.0 / depth : 0.0, std::exp(-depth), color, transmittance);
-            float* out = entry(static_cast<int>(f), static_cast<int>(f), l);
-            out[0] = static_cast<float>(color[0]);
-            out[1] = static_cast<float>(color[1]);
-            out[2] = static_cast<float>(color[2]);
-            out[3] = static_cast<float>(1.0 - transmittance);
+            Composite c = { { 0, 0, 0 }, 1.0 };
+            CompositeStep(a, a, depth, depth > 0.0 ? 1.0 / depth : 0.0, std::exp(-depth), c.Color,
+              c.Transmittance);
+            store(static_cast<int>(f), static_cast<int>(f), l, c);
           }
         }
       });
@@ -578,11 +581,7 @@ bool vtkHAVSPreIntegrationTable::Build(
                   // intervals cells - 1 - s down to cells - s - j: entry
                   // (cells - s, cells - s - j).
                   const int f = forward ? s : cells - s;
-                  float* out = entry(f, forward ? f + j : f - j, l);
-                  out[0] = static_cast<float>(w.Color[0]);
-                  out[1] = static_cast<float>(w.Color[1]);
-                  out[2] = static_cast<float>(w.Color[2]);
-                  out[3] = static_cast<float>(1.0 - w.Transmittance);
+                  store(f, forward ? f + j : f - j, l, w);
                 });
             }
           }
