@@ -13,7 +13,7 @@
 
 #include "vtkCommand.h"
 #include "vtkHAVSFrameStatistics.h"
-#include "vtkHAVSVolumeMapper.h"
+#include "vtkHAVSMapperBase.h"
 #include "vtkRenderer.h"
 #include "vtkTimerLog.h"
 
@@ -53,13 +53,15 @@ void Input::OnRenderEnd()
 {
   this->LastFrameSeconds = vtkTimerLog::GetUniversalTime() - this->FrameStart;
   ++this->Frames;
-  if (auto* havs = vtkHAVSVolumeMapper::SafeDownCast(this->TheScene.GetMapper()))
+  // A level-of-detail frame: a reduced image or (HAVS) a face subset; its
+  // share of the full frame's detail.
+  if (auto* base = vtkHAVSMapperBase::SafeDownCast(this->TheScene.GetMapper()))
   {
-    const double fraction = havs->GetLastFrameStatistics()->GetLevelOfDetailFraction();
-    if (fraction < 1.0)
+    const double detail = base->GetLastDetail();
+    if (detail < 1.0)
     {
       ++this->LevelOfDetailFrames;
-      this->SmallestLevelOfDetail = std::min(this->SmallestLevelOfDetail, fraction);
+      this->SmallestLevelOfDetail = std::min(this->SmallestLevelOfDetail, detail);
     }
   }
 }

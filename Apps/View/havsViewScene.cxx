@@ -11,6 +11,7 @@
 
 #include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSFrameStatistics.h"
+#include "vtkHAVSMapperBase.h"
 #include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSVolumeMapper.h"
 
@@ -176,6 +177,7 @@ vtkAbstractVolumeMapper* Scene::MakeMapper(int kind)
     mapper->SetInputDataObject(this->Grid);
   }
   this->Mappers[kind] = mapper;
+  this->ApplyLevelOfDetail(mapper);
   return mapper;
 }
 
@@ -306,9 +308,26 @@ std::string Scene::NextBlendMode()
 //------------------------------------------------------------------------------
 std::string Scene::ToggleLevelOfDetail()
 {
-  vtkHAVSVolumeMapper* havs = this->GetHAVSMapper();
-  havs->SetLevelOfDetail(!havs->GetLevelOfDetail());
-  return std::string("level of detail: ") + (havs->GetLevelOfDetail() ? "on" : "off");
+  this->LevelOfDetail = !this->LevelOfDetail;
+  for (const auto& mapper : this->Mappers)
+  {
+    this->ApplyLevelOfDetail(mapper);
+  }
+  return std::string("level of detail: ") + (this->LevelOfDetail ? "on" : "off");
+}
+
+//------------------------------------------------------------------------------
+void Scene::ApplyLevelOfDetail(vtkAbstractVolumeMapper* mapper) const
+{
+  // The project's three: the reduced image; HAVS also its face subset.
+  if (auto* base = vtkHAVSMapperBase::SafeDownCast(mapper))
+  {
+    base->SetImageReduction(this->LevelOfDetail);
+  }
+  if (auto* havs = vtkHAVSVolumeMapper::SafeDownCast(mapper))
+  {
+    havs->SetLevelOfDetail(this->LevelOfDetail);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -365,8 +384,13 @@ void Scene::UpdateStatus(double frameSeconds)
     {
       line << "not counted";
     }
-    line << " | LOD " << Format("%.0f %%", 100.0 * stats->GetLevelOfDetailFraction()) << "\n"
+    line << " | LOD " << Format("%.0f %%", 100.0 * stats->GetLevelOfDetailFraction())
+         << " faces, image " << Format("%.0f %%", 100.0 * havs->GetLastImageScale()) << "\n"
          << stats->GetKBufferPathName() << " | ";
+  }
+  else if (auto* base = vtkHAVSMapperBase::SafeDownCast(this->GetMapper()))
+  {
+    line << " | LOD image " << Format("%.0f %%", 100.0 * base->GetLastImageScale()) << "\n";
   }
   else
   {

@@ -112,6 +112,8 @@ private:
   vtkAbstractVolumeMapper* MakeMapper(int kind);
   /// The HAVS mapper, made when first needed (its settings live on it).
   vtkHAVSVolumeMapper* GetHAVSMapper();
+  /// The level of detail (on or off) on a mapper of the project's.
+  void ApplyLevelOfDetail(vtkAbstractVolumeMapper* mapper) const;
 
   vtkSmartPointer<vtkUnstructuredGrid> Grid;
   std::string Name;
@@ -123,6 +125,7 @@ private:
   TransferFunctionEditor Editor;
   vtkSmartPointer<vtkAbstractVolumeMapper> Mappers[NumberOfMappers];
   int Mapper = MapperHAVS;
+  bool LevelOfDetail = true; ///< every project mapper's: the reduced image, HAVS's face subset
   int BlendMode = 0;
   bool Overlay = true;
   std::string LastAction;

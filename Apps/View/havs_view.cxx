@@ -369,8 +369,8 @@ int main(int argc, char* argv[])
         glfwWaitEventsTimeout(0.25);
       }
     }
-    std::printf("havs_view: %d frames, %d with a level of detail (HAVS drew %.1f %% of its "
-                "internal faces at the least)\n",
+    std::printf("havs_view: %d frames, %d with a level of detail (the least drew %.1f %% of "
+                "the full frame's detail)\n",
       input.GetFrames(), input.GetLevelOfDetailFrames(), 100.0 * input.GetSmallestLevelOfDetail());
     glfwSetWindowUserPointer(window->GetGLFWWindow(), nullptr);
   }

@@ -338,8 +338,28 @@ if args.mode == "serial":
     check(min(fractions) < 1.0 and mapper.GetLevelOfDetailStrategy() == 1,
           "interactive renders, 1 ms target: a subset of the internal faces (fractions %s)"
           % ", ".join("%.3f" % f for f in fractions))
+    check(mapper.GetLastImageScale() < 1.0,
+          "interactive renders: HAVS's image reduced too (scale %.3f)" % mapper.GetLastImageScale())
     Render(view)
-    check(stats.GetLevelOfDetailFraction() == 1.0, "still again: every face")
+    check(stats.GetLevelOfDetailFraction() == 1.0 and mapper.GetLastImageScale() == 1.0,
+          "still again: every face, the whole image")
+    # The ray caster and the cell projection: a reduced image while interacting
+    # (they kept ParaView's LOD geometry before), the whole image when still.
+    for name in ("HAVS Ray Cast", "HAVS Cell Projection"):
+        display.HAVSMapper = name
+        Render(view)
+        other = rep.GetActiveVolumeMapper()
+        still_scale = other.GetLastImageScale()
+        scales = []
+        for _ in range(4):
+            view.SMProxy.InteractiveRender()
+            scales.append(other.GetLastImageScale())
+        Render(view)
+        check(still_scale == 1.0 and min(scales) < 1.0 and other.GetLastImageScale() == 1.0,
+              "%s: interactive renders, 1 ms target: a reduced image (scales %s), the whole "
+              "image when still" % (name, ", ".join("%.3f" % x for x in scales)))
+    display.HAVSMapper = "HAVS"
+    Render(view)
     display.HAVSInteractiveTargetTime = 0.1
     display.HAVSLODStrategy = "Area"
 

@@ -234,12 +234,17 @@ private:
   const std::vector<uint8_t>* Culled = nullptr;
   vtkMTimeType CullingVersion = 0;
   vtkMTimeType GatheredCulling = 0;
-  // The faces with a cell that is not culled (the centroid sort's subset),
-  // for the mesh and culling they were listed for.
-  void ListUnculledFaces(vtkHAVSMesh* mesh);
+  // The faces the centroid sort orders when not all are drawn: those with a
+  // cell that is not culled and, with the level of detail's subset, only the
+  // boundary faces (of the mesh, or between a visible and an invisible cell)
+  // and the internal faces ranked below the limit (the faces Gather keeps:
+  // a subset frame sorts what it draws, not every face); for the mesh,
+  // culling, visibility and subset they were listed for.
+  void ListSortedFaces(vtkHAVSMesh* mesh);
   std::vector<uint32_t> UnculledFaces;
   vtkMTimeType UnculledMesh = 0;
   vtkMTimeType UnculledCulling = 0;
+  vtkMTimeType UnculledVisibility = 0;
   vtkTimeStamp UnculledTime;
   struct SubsetKey
   {
@@ -253,6 +258,7 @@ private:
   };
   SubsetKey Subset;
   SubsetKey GatheredSubset;
+  SubsetKey UnculledSubset;
 
   int LastOrder = -1;
   bool LastReused = false;

@@ -18,13 +18,6 @@ VTK_ABI_NAMESPACE_BEGIN
 
 vtkStandardNewMacro(vtkHAVSLevelOfDetailController);
 
-namespace
-{
-// The fraction a step starts from when the last frame drew (nearly) no
-// internal face: the boundary-only frame still tells how much time is left.
-constexpr double kSmallestStep = 0.01;
-}
-
 //------------------------------------------------------------------------------
 double vtkHAVSLevelOfDetailController::Choose(double targetSeconds)
 {
@@ -46,9 +39,13 @@ double vtkHAVSLevelOfDetailController::Choose(double targetSeconds)
   {
     return this->LastFraction;
   }
-  const double from = std::max(this->LastFraction, kSmallestStep);
+  // From a frame that drew (nearly) nothing but its fixed part (a
+  // boundary-only frame) a step starts at the smallest fraction: that frame
+  // still tells how much time is left.
+  const double smallest = this->SmallestFraction;
+  const double from = std::max(this->LastFraction, smallest);
   const double next = from * std::pow(ratio, this->Gain);
-  return std::min(1.0, std::max(0.0, next < kSmallestStep && ratio < 1.0 ? 0.0 : next));
+  return std::min(1.0, std::max(0.0, next < smallest && ratio < 1.0 ? 0.0 : next));
 }
 
 //------------------------------------------------------------------------------
@@ -74,7 +71,8 @@ void vtkHAVSLevelOfDetailController::Reset()
 void vtkHAVSLevelOfDetailController::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Gain: " << this->Gain << ", dead band " << this->Deadband << "\n";
+  os << indent << "Gain: " << this->Gain << ", dead band " << this->Deadband
+     << ", smallest fraction " << this->SmallestFraction << "\n";
   os << indent << "Last frame: fraction " << this->LastFraction << ", " << this->LastSeconds
      << " s; last full frame " << this->FullSeconds << " s\n";
 }

@@ -50,6 +50,15 @@ public:
   ///@}
 
   /**
+   * The smallest fraction above 0 a step goes to (default 0.01): a step
+   * below it while the frames are too slow gives 0, and a step up from 0 (or
+   * from below it) starts there. The image reduction's controller sets the
+   * smallest share of the detail its image can draw.
+   */
+  vtkSetClampMacro(SmallestFraction, double, 1.0e-8, 1.0);
+  vtkGetMacro(SmallestFraction, double);
+
+  /**
    * The fraction of the internal faces the next frame draws (0: the boundary
    * faces only; 1: all) for a frame budget of `targetSeconds`.
    */
@@ -78,6 +87,7 @@ private:
 
   double Gain = 0.7;
   double Deadband = 0.1;
+  double SmallestFraction = 0.01;
   double LastFraction = 1.0;
   double LastSeconds = -1.0;
   double FullSeconds = -1.0;

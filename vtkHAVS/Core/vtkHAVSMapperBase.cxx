@@ -9,6 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSMapperBase.h"
 
+#include "vtkHAVSLevelOfDetailController.h"
+
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSMapperGraphics.h"
 
@@ -31,6 +33,8 @@
 #include "vtkUnstructuredGridBase.h"
 #include "vtkVolume.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 VTK_ABI_NAMESPACE_BEGIN
@@ -209,6 +213,10 @@ bool vtkHAVSMapperBase::PrepareMesh(vtkVolume* volume)
   {
     this->LastMeshSeconds = this->Mesh->GetLastUpdateSeconds();
   }
+  if (rebuilt)
+  {
+    this->ImageControl->Reset(); // the last frames' times were another mesh's
+  }
   this->MeshPrepared(this->LastMeshUpdate, rebuilt);
   return true;
 }
@@ -328,6 +336,49 @@ void vtkHAVSMapperBase::UpdatePlanes(const vtkHAVSViewFrame& view)
 }
 
 //------------------------------------------------------------------------------
+vtkHAVSLevelOfDetailController* vtkHAVSMapperBase::GetImageReductionController()
+{
+  return this->ImageControl;
+}
+
+//------------------------------------------------------------------------------
+double vtkHAVSMapperBase::PixelShare(double detail) const
+{
+  return detail;
+}
+
+//------------------------------------------------------------------------------
+double vtkHAVSMapperBase::SmallestDetail() const
+{
+  return this->MinimumImageScale * this->MinimumImageScale;
+}
+
+//------------------------------------------------------------------------------
+double vtkHAVSMapperBase::ChooseImageScale(vtkVolume* volume)
+{
+  // The detail: the controller's share of the full frame for the budget (1
+  // when the last full frame fits it, as a still frame's budget does). The
+  // image takes PixelShare of it (never below the smallest image), HAVS's
+  // faces the rest; the detail recorded is what the frame draws.
+  double detail = 1.0;
+  if (this->ImageReduction)
+  {
+    const double target = this->LevelOfDetailTargetSeconds > 0.0 ? this->LevelOfDetailTargetSeconds
+                                                                 : volume->GetAllocatedRenderTime();
+    const double smallest = this->SmallestDetail();
+    this->ImageControl->SetSmallestFraction(smallest);
+    detail = std::min(1.0, std::max(this->ImageControl->Choose(target), smallest));
+  }
+  const double pixels = std::min(1.0, std::max(this->PixelShare(detail), 0.0));
+  this->FaceShare = pixels > 0.0 ? std::min(1.0, detail / pixels) : 0.0;
+  double scale = std::max(std::sqrt(pixels), this->MinimumImageScale);
+  scale = std::min(scale, this->ImageScale);
+  this->LastImageScale = scale;
+  this->LastDetail = scale * scale * this->FaceShare;
+  return scale;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
   // 1. The frame starts (VTK's volume mapper event).
@@ -365,11 +416,12 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
       {
         this->TableBuildTime.Modified();
       }
-      // 5. The view: every coordinate frame, once; 6. the mapper's own part.
+      // 5. The view: every coordinate frame, once, at the level of detail's
+      // image scale; 6. the mapper's own part.
       if (tableBuilt && !this->AbortRequested(renderer))
       {
-        const vtkHAVSViewFrame view =
-          vtkHAVSViewFrame::Make(renderer, volume, this->Mesh->GetShift());
+        const vtkHAVSViewFrame view = vtkHAVSViewFrame::Make(
+          renderer, volume, this->Mesh->GetShift(), this->ChooseImageScale(volume));
         if (view.HasPixels())
         {
           this->RenderView(renderer, volume, view);
@@ -383,6 +435,10 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->TimeToDraw = vtkTimerLog::GetUniversalTime() - start;
   if (viewDrawn)
   {
+    if (this->ImageReduction)
+    {
+      this->ImageControl->FrameDrawn(this->LastDetail, this->TimeToDraw);
+    }
     this->FrameFinished(this->TimeToDraw);
   }
   this->InvokeEvent(vtkCommand::VolumeMapperRenderEndEvent, nullptr);
@@ -420,6 +476,13 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
      << " fragment replacements applied, custom uniforms "
      << (this->ShaderHooks.FragmentUniforms ? "applied" : "none") << ", "
      << this->ShaderHooks.Ignored.size() << " parts left out\n";
+  os << indent << "ImageReduction: " << this->ImageReduction
+     << ", MinimumImageScale: " << this->MinimumImageScale << ", ImageScale: " << this->ImageScale
+     << ", LevelOfDetailTargetSeconds: " << this->LevelOfDetailTargetSeconds << "\n";
+  os << indent << "LastImageScale: " << this->LastImageScale << ", LastDetail: " << this->LastDetail
+     << "\n";
+  os << indent << "ImageReductionController:\n";
+  this->ImageControl->PrintSelf(os, indent.GetNextIndent());
   os << indent << "TimeToDraw: " << this->TimeToDraw << "\n";
   os << indent << "Memory:";
   for (const vtkHAVSMemory::Part& part : this->GetMemoryParts())

@@ -69,6 +69,7 @@ VTK_ABI_NAMESPACE_BEGIN
 
 class vtkFloatArray;
 class vtkHAVSFramePlanes;
+class vtkHAVSLevelOfDetailController;
 class vtkHAVSMapperGraphics;
 class vtkHAVSMesh;
 class vtkHAVSPreIntegrationTable;
@@ -248,6 +249,52 @@ public:
   /// about 0 when nothing was rebuilt): what a transfer-function edit adds.
   vtkGetMacro(LastTableSeconds, double);
 
+  ///@{
+  /**
+   * Level of detail by a reduced image (all three mappers; on by default).
+   * When the frame budget (LevelOfDetailTargetSeconds, else VTK's allocated
+   * render time: vtkProp::GetAllocatedRenderTime, from the render window's
+   * desired update rate, which VTK's interactor lowers while the user
+   * interacts) is less than the last full frame took, a frame draws the volume
+   * at a reduced scale of the viewport along each axis, as many pixels as the
+   * last frames' times say fit (a vtkHAVSLevelOfDetailController on the share
+   * of the full frame's detail), and the composite upsamples it (bilinear,
+   * premultiplied) over the viewport. A still frame (a budget the last full
+   * frame fits) draws the whole viewport: the exact image. HAVS shares the
+   * detail between the image and its face subset when its own LevelOfDetail
+   * is on (vtkHAVSVolumeMapper: each takes the square root of the share).
+   * Off: every frame draws the whole viewport (HAVS's face subset then has its
+   * own controller, as before).
+   */
+  vtkSetMacro(ImageReduction, bool);
+  vtkGetMacro(ImageReduction, bool);
+  vtkBooleanMacro(ImageReduction, bool);
+  /// The smallest scale a reduced image takes, per axis (default 0.1: 1 % of the pixels).
+  vtkSetClampMacro(MinimumImageScale, double, 0.01, 1.0);
+  vtkGetMacro(MinimumImageScale, double);
+  /**
+   * The largest scale any frame draws, per axis (default 1). Below 1 every
+   * frame draws at most that, whatever the time: for tests, benchmarks and a
+   * fixed interactive quality.
+   */
+  vtkSetClampMacro(ImageScale, double, 0.01, 1.0);
+  vtkGetMacro(ImageScale, double);
+  /**
+   * The frame budget the level of detail aims at, in seconds: 0 (the
+   * default) takes VTK's allocated render time; above 0 this budget instead
+   * (ParaView's representation sets its interactive target here while the
+   * user interacts, and an unlimited budget when still).
+   */
+  vtkSetClampMacro(LevelOfDetailTargetSeconds, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(LevelOfDetailTargetSeconds, double);
+  /// The last frame's image scale (per axis; 1: the whole viewport) and its
+  /// share of the full frame's detail (pixels, and HAVS's faces).
+  vtkGetMacro(LastImageScale, double);
+  vtkGetMacro(LastDetail, double);
+  /// The reduced image's controller (its gain and dead band).
+  vtkHAVSLevelOfDetailController* GetImageReductionController();
+  ///@}
+
   /**
    * One frame (see the class description): the same skeleton for the three
    * mappers; RenderView() is the mapper's own part.
@@ -333,6 +380,18 @@ protected:
     vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) = 0;
   /// Called with the frame's time (TimeToDraw) after a frame that reached RenderView.
   virtual void FrameFinished(double vtkNotUsed(seconds)) {}
+  /**
+   * The share of the pixels a frame of this detail draws (the detail: the
+   * share of the full frame's work the level of detail allows, in (0, 1]).
+   * The base draws the detail in pixels alone; HAVS with its face subset
+   * takes part of it in faces (GetLastDetail() / this share).
+   */
+  virtual double PixelShare(double detail) const;
+  /// The smallest detail a frame draws: the one whose pixels are the smallest
+  /// image's (MinimumImageScale squared for the base).
+  virtual double SmallestDetail() const;
+  /// The frame's image scale: 1 unless the image reduction's budget asks for less.
+  double ChooseImageScale(vtkVolume* volume);
   /// The graphics layer's kept float result (nullptr without one).
   const std::vector<float>* GetKeptResult(int size[2]);
   /// The graphics layer (the GL mapper's; not owned: it lives as long as the mapper).
@@ -364,6 +423,14 @@ protected:
   vtkTimeStamp TableBuildTime; ///< the table's version (changes when it was rebuilt)
   bool TableRebuilt = false;   ///< this frame rebuilt the table
   vtkNew<vtkHAVSFramePlanes> Planes;
+  bool ImageReduction = true;
+  double MinimumImageScale = 0.1;
+  double ImageScale = 1.0;
+  double LevelOfDetailTargetSeconds = 0.0;
+  double LastImageScale = 1.0;
+  double LastDetail = 1.0;
+  double FaceShare = 1.0; ///< the share of the frame's detail HAVS's faces take (1: none)
+  vtkNew<vtkHAVSLevelOfDetailController> ImageControl;
 
 private:
   vtkHAVSMapperBase(const vtkHAVSMapperBase&) = delete;

@@ -23,10 +23,17 @@ VTK_ABI_NAMESPACE_BEGIN
 
 //------------------------------------------------------------------------------
 vtkHAVSViewFrame vtkHAVSViewFrame::Make(
-  vtkRenderer* renderer, vtkVolume* volume, const double shift[3])
+  vtkRenderer* renderer, vtkVolume* volume, const double shift[3], double imageScale)
 {
   vtkHAVSViewFrame f;
-  renderer->GetTiledSizeAndOrigin(&f.Width, &f.Height, &f.OriginX, &f.OriginY);
+  renderer->GetTiledSizeAndOrigin(&f.FullWidth, &f.FullHeight, &f.OriginX, &f.OriginY);
+  f.Width = f.FullWidth;
+  f.Height = f.FullHeight;
+  if (imageScale > 0.0 && imageScale < 1.0 && f.FullWidth > 0 && f.FullHeight > 0)
+  {
+    f.Width = std::max(1, static_cast<int>(std::lround(imageScale * f.FullWidth)));
+    f.Height = std::max(1, static_cast<int>(std::lround(imageScale * f.FullHeight)));
+  }
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->GetPosition(f.EyeWorld);
   camera->GetDirectionOfProjection(f.DirectionWorld);

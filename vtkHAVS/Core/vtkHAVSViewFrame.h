@@ -52,9 +52,14 @@ class VTKHAVSCORE_EXPORT vtkHAVSViewFrame
 public:
   /**
    * The frame of `renderer`'s active camera and tiled viewport for `volume`,
-   * with the mesh shifted by `shift` (model = grid - shift).
+   * with the mesh shifted by `shift` (model = grid - shift). `imageScale` in
+   * (0, 1]: the image is drawn at that scale of the viewport along each axis
+   * (the level of detail's reduced image; Width and Height then the drawn
+   * size, at least 1, FullWidth and FullHeight the viewport's). The
+   * projection stays the viewport's: the drawn image covers the viewport.
    */
-  static vtkHAVSViewFrame Make(vtkRenderer* renderer, vtkVolume* volume, const double shift[3]);
+  static vtkHAVSViewFrame Make(
+    vtkRenderer* renderer, vtkVolume* volume, const double shift[3], double imageScale = 1.0);
 
   double ModelToEyeRelative[16]; ///< model -> world - eye
   double ModelToClip[16];        ///< model -> clip
@@ -70,13 +75,20 @@ public:
   bool Parallel = false;
   bool FlipFacing = false; ///< the volume's matrix mirrors (negative determinant)
 
-  int Width = 0; ///< the renderer's tiled viewport
+  int Width = 0; ///< the image drawn: the renderer's tiled viewport times the image scale
   int Height = 0;
+  int FullWidth = 0; ///< the renderer's tiled viewport
+  int FullHeight = 0;
   int OriginX = 0;
   int OriginY = 0;
 
   /// Whether the viewport has pixels.
   bool HasPixels() const { return this->Width > 0 && this->Height > 0; }
+  /// Whether the image is drawn at less than the viewport's size.
+  bool IsReduced() const
+  {
+    return this->Width != this->FullWidth || this->Height != this->FullHeight;
+  }
 
   /// A row-major double matrix as OpenGL's column-major floats.
   static void ToColumnMajor(const double rowMajor[16], float columnMajor[16]);

@@ -207,7 +207,11 @@ double vtkHAVSVolumeMapper::ChooseLevelOfDetail(
   if (this->BlendMode == COMPOSITE_BLEND)
   {
     fraction = this->LevelOfDetailFraction;
-    if (this->LevelOfDetail)
+    if (this->LevelOfDetail && this->ImageReduction)
+    {
+      fraction = std::min(fraction, this->FaceShare); // the base's detail, shared (PixelShare)
+    }
+    else if (this->LevelOfDetail)
     {
       const double target = this->LevelOfDetailTargetSeconds > 0.0
         ? this->LevelOfDetailTargetSeconds
@@ -612,6 +616,19 @@ void vtkHAVSVolumeMapper::FrameFinished(double seconds)
 }
 
 //------------------------------------------------------------------------------
+double vtkHAVSVolumeMapper::PixelShare(double detail) const
+{
+  return this->LevelOfDetail && this->BlendMode == COMPOSITE_BLEND ? std::sqrt(detail) : detail;
+}
+
+//------------------------------------------------------------------------------
+double vtkHAVSVolumeMapper::SmallestDetail() const
+{
+  const double pixels = this->Superclass::SmallestDetail();
+  return this->LevelOfDetail && this->BlendMode == COMPOSITE_BLEND ? pixels * pixels : pixels;
+}
+
+//------------------------------------------------------------------------------
 vtkHAVSFrameStatistics* vtkHAVSVolumeMapper::GetLastFrameStatistics()
 {
   return this->LastFrame;
@@ -710,8 +727,7 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FaceRasterBoundMode: " << this->FaceRasterBoundMode << "\n";
   os << indent << "LevelOfDetail: " << this->LevelOfDetail
      << ", LevelOfDetailFraction: " << this->LevelOfDetailFraction
-     << ", LevelOfDetailStrategy: " << this->LevelOfDetailStrategy
-     << ", LevelOfDetailTargetSeconds: " << this->LevelOfDetailTargetSeconds << "\n";
+     << ", LevelOfDetailStrategy: " << this->LevelOfDetailStrategy << "\n";
   const char* orders[] = { "Centroid", "MPVO", "Automatic" };
   const char* methods[] = { "Ignore", "BoundaryLayers", "Convexification" };
   os << indent << "VisibilityOrder: " << orders[this->VisibilityOrder] << "\n";

@@ -238,7 +238,12 @@ public:
    * segments longer than any cell: those frames read a second table built
    * over the mesh's bounding-box diagonal (the thesis' method). A still frame
    * (the full budget) draws every face with the exact table: the exact image.
-   * Off: every frame draws every face.
+   * Off: every frame draws every face. With the base's ImageReduction on (the
+   * default) the frame's detail is shared: the face subset takes the square
+   * root of the share the budget allows and the reduced image the other
+   * (PixelShare); the budget is vtkHAVSMapperBase::LevelOfDetailTargetSeconds.
+   * With ImageReduction off the face subset alone meets the budget, by its
+   * own controller (GetLevelOfDetailController).
    */
   vtkSetMacro(LevelOfDetail, bool);
   vtkGetMacro(LevelOfDetail, bool);
@@ -263,15 +268,6 @@ public:
   void SetLevelOfDetailStrategyToField() { this->SetLevelOfDetailStrategy(2); }
   void SetLevelOfDetailStrategyToArea() { this->SetLevelOfDetailStrategy(3); }
   void SetLevelOfDetailStrategyToRandom() { this->SetLevelOfDetailStrategy(4); }
-  /**
-   * The frame budget the level of detail aims at, in seconds: 0 (the
-   * default) takes VTK's allocated render time (vtkProp::GetAllocatedRenderTime,
-   * from the render window's desired update rate); above 0 this budget
-   * instead (ParaView's representation sets its interactive target here while
-   * the user interacts, and an unlimited budget when still).
-   */
-  vtkSetClampMacro(LevelOfDetailTargetSeconds, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(LevelOfDetailTargetSeconds, double);
   /// The ranking (its preprocessing time and memory) and the controller.
   vtkHAVSInternalFaceRanking* GetLevelOfDetailRanking();
   vtkHAVSLevelOfDetailController* GetLevelOfDetailController();
@@ -460,6 +456,10 @@ protected:
   bool PrepareTable(vtkVolume* volume) override;
   void RenderView(vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) override;
   void FrameFinished(double seconds) override;
+  /// With LevelOfDetail (composite blend): the square root of the detail, the faces the rest.
+  double PixelShare(double detail) const override;
+  /// With LevelOfDetail: the smallest image's pixels times as small a share of the faces.
+  double SmallestDetail() const override;
   ///@}
 
   ///@{
@@ -485,7 +485,6 @@ protected:
   bool LevelOfDetail = true;
   double LevelOfDetailFraction = 1.0;
   int LevelOfDetailStrategy = 3; // vtkHAVSInternalFaceRanking::Area
-  double LevelOfDetailTargetSeconds = 0.0;
   bool MeasureStageTimes = false;
   bool FaceRasterBoundMode = false;
   int BoundaryMode = BoundaryAutomatic;

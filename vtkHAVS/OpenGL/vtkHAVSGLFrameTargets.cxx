@@ -45,16 +45,17 @@ vtkSmartPointer<vtkTextureObject> vtkHAVSGLFrameTargets::NewFloatTexture(
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSGLFrameTargets::Resize(int width, int height)
+void vtkHAVSGLFrameTargets::Resize(int fullWidth, int fullHeight, int width, int height)
 {
-  if (this->Size[0] == width && this->Size[1] == height && this->Result)
+  if (this->Size[0] == width && this->Size[1] == height && this->FullSize[0] == fullWidth &&
+    this->FullSize[1] == fullHeight && this->Result)
   {
     return;
   }
   this->ReleaseSizeDependent(this->Window);
   this->OpaqueDepth = vtkSmartPointer<vtkTextureObject>::New();
   this->OpaqueDepth->SetContext(this->Window);
-  this->OpaqueDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
+  this->OpaqueDepth->AllocateDepth(fullWidth, fullHeight, vtkTextureObject::Float32);
   this->OpaqueDepthFormat = vtkTextureObject::Float32;
   this->Result = NewFloatTexture(this->Window, width, height);
   this->ResultFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
@@ -65,6 +66,17 @@ void vtkHAVSGLFrameTargets::Resize(int width, int height)
   this->Window->GetState()->PopFramebufferBindings();
   this->Size[0] = width;
   this->Size[1] = height;
+  this->FullSize[0] = fullWidth;
+  this->FullSize[1] = fullHeight;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::SetDepthScaleUniform(vtkShaderProgram* program) const
+{
+  const float scale[2] = { this->Size[0] > 0 ? static_cast<float>(this->FullSize[0]) / this->Size[0]
+                                             : 1.0f,
+    this->Size[1] > 0 ? static_cast<float>(this->FullSize[1]) / this->Size[1] : 1.0f };
+  program->SetUniform2f("havsOpaqueDepthScale", scale);
 }
 
 //------------------------------------------------------------------------------
@@ -288,6 +300,14 @@ bool vtkHAVSGLFrameTargets::Composite(int originX, int originY)
   program->SetUniformi("havsResultTexture", this->Result->GetTextureUnit());
   const float origin[2] = { static_cast<float>(originX), static_cast<float>(originY) };
   program->SetUniform2f("havsViewportOrigin", origin);
+  // The drawn pixels per viewport pixel: 1 reads the result texel for texel.
+  const float scale[2] = {
+    this->FullSize[0] > 0 ? static_cast<float>(this->Size[0]) / this->FullSize[0] : 1.0f,
+    this->FullSize[1] > 0 ? static_cast<float>(this->Size[1]) / this->FullSize[1] : 1.0f
+  };
+  program->SetUniform2f("havsResultScale", scale);
+  program->SetUniformi(
+    "havsResultReduced", this->Size[0] != this->FullSize[0] || this->Size[1] != this->FullSize[1]);
   this->DrawFullViewport();
   this->Result->Deactivate();
   return true;
@@ -307,7 +327,7 @@ bool vtkHAVSGLFrameTargets::EndFrame(bool resolved, bool keep,
   }
   vtkOpenGLState* state = this->Window->GetState();
   state->PopFramebufferBindings();
-  state->vtkglViewport(originX, originY, this->Size[0], this->Size[1]);
+  state->vtkglViewport(originX, originY, this->FullSize[0], this->FullSize[1]);
   if (!resolved)
   {
     vtkErrorWithObjectMacro(
@@ -349,6 +369,7 @@ void vtkHAVSGLFrameTargets::ReleaseSizeDependent(vtkWindow* window)
   this->Result = nullptr;
   this->ResultFramebuffer = nullptr;
   this->Size[0] = this->Size[1] = 0;
+  this->FullSize[0] = this->FullSize[1] = 0;
 }
 
 //------------------------------------------------------------------------------
@@ -363,7 +384,8 @@ void vtkHAVSGLFrameTargets::ReleaseGraphicsResources(vtkWindow* window)
 void vtkHAVSGLFrameTargets::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << " (viewport "
+     << this->FullSize[0] << " x " << this->FullSize[1] << ")\n";
   os << indent << "LastCaptureMultisampled: " << this->LastCaptureMultisampled << "\n";
   os << indent << "LastCaptureResolved: " << this->LastCaptureResolved << "\n";
 }

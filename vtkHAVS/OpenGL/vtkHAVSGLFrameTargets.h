@@ -42,6 +42,7 @@ VTK_ABI_NAMESPACE_BEGIN
 class vtkHAVSShaderHooks;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
 class vtkWindow;
 
 class vtkHAVSGLFrameTargets : public vtkObject
@@ -55,9 +56,22 @@ public:
 
   void SetContext(vtkOpenGLRenderWindow* window) { this->Window = window; }
 
-  /// (Re)allocates the depth copy and the result for a viewport of this size.
-  void Resize(int width, int height);
+  /**
+   * (Re)allocates the depth copy for a viewport of the full size and the
+   * result for the image drawn (smaller when the level of detail reduces it:
+   * Composite() then upsamples it over the viewport).
+   */
+  void Resize(int fullWidth, int fullHeight, int width, int height);
+  void Resize(int width, int height) { this->Resize(width, height, width, height); }
+  /// The result's size (the image drawn) and the viewport's.
   const int* GetSize() const { return this->Size; }
+  const int* GetFullSize() const { return this->FullSize; }
+  /**
+   * Sets havsOpaqueDepthScale, the viewport's pixels per drawn pixel along
+   * each axis (the passes read the full-size depth copy at the drawn pixel's
+   * centre: vtkHAVSKBufferLib's havsOpaqueDistance).
+   */
+  void SetDepthScaleUniform(vtkShaderProgram* program) const;
 
   /**
    * Copies the depth of VTK's current (read) framebuffer at the viewport. A
@@ -94,8 +108,9 @@ public:
   /// The count, and the first pixels (x, y) into `pixels`.
   std::uint64_t ReadViolationCounter(std::vector<int>& pixels, std::uint64_t* shaded = nullptr);
 
-  /// Composites the result over VTK's framebuffer (viewport set by the caller),
-  /// with the shader hooks last set applied.
+  /// Composites the result over VTK's framebuffer (viewport, of the full
+  /// size, set by the caller), with the shader hooks last set applied; a
+  /// reduced result is upsampled (bilinear, premultiplied).
   bool Composite(int originX, int originY);
   /// The volume's shader hooks the composite applies (the mapper's; nullptr: none).
   void SetShaderHooks(const vtkHAVSShaderHooks* hooks) { this->Hooks = hooks; }
@@ -105,7 +120,7 @@ public:
    * blend's resolve (`resolved`: whether the resolve's program could be
    * built): the float result kept when `keep`, `textures` deactivated, the
    * framebuffer bindings the frame pushed popped, the viewport put back on
-   * (originX, originY) at the targets' size, and the result composited there.
+   * (originX, originY) at the full size, and the result composited there.
    * False, with an error from `reporter`, when the resolve failed; false
    * when the composite did.
    */
@@ -134,6 +149,7 @@ private:
   std::string CompositeSource;         // the composite's fragment shader, hooks applied
   vtkMTimeType CompositeHooksTime = 0; // the hooks' Time it was composed for
   int Size[2] = { 0, 0 };
+  int FullSize[2] = { 0, 0 };
   vtkSmartPointer<vtkTextureObject> OpaqueDepth;
   int OpaqueDepthFormat = -1;
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthResolveFramebuffer;

@@ -102,10 +102,11 @@ vtkOpenGLRenderWindow* vtkHAVSGLMapperResources::BeginFrame(vtkRenderer* rendere
   {
     return nullptr;
   }
-  this->Targets->Resize(view.Width, view.Height);
+  this->Targets->Resize(view.FullWidth, view.FullHeight, view.Width, view.Height);
   if (opaque)
   {
-    this->Targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, view.Width, view.Height, mapper);
+    this->Targets->CaptureOpaqueDepth(
+      view.OriginX, view.OriginY, view.FullWidth, view.FullHeight, mapper);
   }
   this->SectionTriangles = this->Section->Update(planes);
   return window;
@@ -129,6 +130,7 @@ void vtkHAVSGLMapperResources::SetTextureUniforms(vtkShaderProgram* program)
   this->Table->SetUniforms(program);
   program->SetUniformi("havsAdditive", this->Table->GetAdditive1D()->GetTextureUnit());
   program->SetUniformi("havsOpaqueDepth", this->Targets->GetOpaqueDepth()->GetTextureUnit());
+  this->Targets->SetDepthScaleUniform(program);
 }
 
 void vtkHAVSGLMapperResources::SetViewUniforms(vtkShaderProgram* program,

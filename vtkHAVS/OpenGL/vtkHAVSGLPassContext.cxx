@@ -97,6 +97,7 @@ void vtkHAVSGLPassContext::SetCommonUniforms(vtkShaderProgram* program)
   this->Table->SetUniforms(program);
   program->SetUniformf("havsTerminationOpacity", r.TerminationOpacity);
   program->SetUniformi("havsOpaqueDepth", this->Targets->GetOpaqueDepth()->GetTextureUnit());
+  this->Targets->SetDepthScaleUniform(program);
   program->SetUniformMatrix4x4("havsDCRC", this->ClipToEyeRelative);
   const float viewport[2] = { static_cast<float>(this->Width()),
     static_cast<float>(this->Height()) };

@@ -202,10 +202,10 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   const vtkHAVSViewFrame& view = *request.View;
   const int width = view.Width, height = view.Height;
   vtkOpenGLState* state = window->GetState();
-  targets->Resize(width, height);
+  targets->Resize(view.FullWidth, view.FullHeight, width, height);
   if (request.Opaque)
   {
-    targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, width, height, this);
+    targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, view.FullWidth, view.FullHeight, this);
     result.OpaqueDepthMultisampled = targets->GetLastCaptureMultisampled();
     result.OpaqueDepthCaptured = targets->GetLastCaptureResolved();
   }
@@ -287,7 +287,7 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   // Composite.
   if (ok && !request.RasterBoundOnly && request.Composite)
   {
-    state->vtkglViewport(view.OriginX, view.OriginY, width, height);
+    state->vtkglViewport(view.OriginX, view.OriginY, view.FullWidth, view.FullHeight);
     ok = targets->Composite(view.OriginX, view.OriginY);
   }
   if (request.Finish && !measure)
@@ -316,7 +316,7 @@ bool vtkOpenGLHAVSVolumeMapper::CompositeKeptResult(vtkRenderer* renderer)
   int width = 0, height = 0, originX = 0, originY = 0;
   renderer->GetTiledSizeAndOrigin(&width, &height, &originX, &originY);
   if (!window || window != this->Resources->GetWindow() || !targets->GetResult() ||
-    width != targets->GetSize()[0] || height != targets->GetSize()[1])
+    width != targets->GetFullSize()[0] || height != targets->GetFullSize()[1])
   {
     vtkErrorMacro("CompositeKeptResult needs the last frame's result in this window.");
     return false;

@@ -543,27 +543,27 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
     this->PieceMerge->SetInputConnection(producer);
     active->SetInputConnection(this->PieceMerge->GetOutputPort());
   }
-  if (active == this->HAVSMapper)
+  // The mappers' own level of detail instead of ParaView's LOD geometry: keep
+  // the volume while interacting, drawn within the interactive target time
+  // (a reduced image, upsampled; HAVS also a subset of the internal faces and
+  // fewer k-buffer entries); the whole image, every face, when still (an
+  // unlimited budget). ParaView's own image reduction (remote rendering's
+  // image reduction factor) shrinks the viewport the mapper is given: the
+  // mapper's controller times its frames at that size and reduces only what
+  // the target still asks for, so the two do not multiply.
+  auto* mapper = vtkHAVSMapperBase::SafeDownCast(active);
+  const bool interactive = inInfo->Has(vtkPVRenderView::USE_LOD()) != 0;
+  if (!this->InteractiveLOD)
   {
-    // HAVS's own level of detail instead of ParaView's LOD geometry: keep the
-    // volume while interacting, with a subset of the internal faces that fits
-    // the interactive target time and fewer k-buffer entries; every face when
-    // still (an unlimited budget). (The ray caster and the cell projection
-    // have no level of detail of their own: ParaView's LOD while
-    // interacting, as for the stock mappers.)
-    const bool interactive = inInfo->Has(vtkPVRenderView::USE_LOD()) != 0;
-    if (!this->InteractiveLOD)
-    {
-      this->HAVSMapper->SetKBufferSize(this->KBufferSize);
-      this->HAVSMapper->SetLevelOfDetailTargetSeconds(VTK_DOUBLE_MAX);
-      return 1; // ParaView's LOD geometry while interacting
-    }
-    this->Actor->SetEnableLOD(0);
-    this->HAVSMapper->SetLevelOfDetailTargetSeconds(
-      interactive ? this->InteractiveTargetSeconds : VTK_DOUBLE_MAX);
-    this->HAVSMapper->SetKBufferSize(
-      interactive ? std::min(this->InteractiveKBufferSize, this->KBufferSize) : this->KBufferSize);
+    this->HAVSMapper->SetKBufferSize(this->KBufferSize);
+    mapper->SetLevelOfDetailTargetSeconds(VTK_DOUBLE_MAX);
+    return 1; // ParaView's LOD geometry while interacting
   }
+  this->Actor->SetEnableLOD(0);
+  mapper->SetLevelOfDetailTargetSeconds(
+    interactive ? this->InteractiveTargetSeconds : VTK_DOUBLE_MAX);
+  this->HAVSMapper->SetKBufferSize(
+    interactive ? std::min(this->InteractiveKBufferSize, this->KBufferSize) : this->KBufferSize);
   return 1;
 }
 

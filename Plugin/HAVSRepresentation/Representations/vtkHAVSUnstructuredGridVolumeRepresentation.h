@@ -142,19 +142,21 @@ public:
 
   ///@{
   /**
-   * HAVS's level of detail while the user interacts (on by default): keep
-   * the volume, drawn with the boundary faces and as many of the most
-   * important internal faces (vtkHAVSVolumeMapper::SetLevelOfDetail) as fit
-   * in InteractiveTargetSeconds, with InteractiveKBufferSize entries; every
-   * face when still. Off: ParaView's own LOD (its outline or surface
-   * geometry) as for the stock mappers.
+   * The mappers' level of detail while the user interacts (on by default,
+   * all three mappers): keep the volume, drawn within
+   * InteractiveTargetSeconds by a reduced image (vtkHAVSMapperBase's
+   * ImageReduction, upsampled) and, for HAVS, the boundary faces and as many
+   * of the most important internal faces (vtkHAVSVolumeMapper::SetLevelOfDetail)
+   * as fit, with InteractiveKBufferSize entries; the whole image, every face,
+   * when still. Off: ParaView's own LOD (its outline or surface geometry) as
+   * for the stock mappers.
    */
   vtkSetMacro(InteractiveLOD, bool);
   vtkGetMacro(InteractiveLOD, bool);
   ///@}
 
   ///@{
-  /// The frame time HAVS aims at while the user interacts (seconds; 0.1 by default).
+  /// The frame time the mappers aim at while the user interacts (seconds; 0.1 by default).
   vtkSetClampMacro(InteractiveTargetSeconds, double, 0.001, 10.0);
   vtkGetMacro(InteractiveTargetSeconds, double);
   ///@}

@@ -10,6 +10,25 @@ layout(location = 0) out vec4 havsOut;
 
 uniform sampler2D havsResultTexture;
 uniform vec2 havsViewportOrigin;
+uniform vec2 havsResultScale; // drawn pixels per viewport pixel (the level of detail's image)
+uniform int havsResultReduced;
+
+// The reduced image at a viewport pixel: bilinear between the four drawn
+// pixel centres around it (premultiplied colours, so coverage blends too),
+// clamped at the image's edges.
+vec4 havsUpsampled(vec2 pixel)
+{
+  vec2 x = (pixel + 0.5) * havsResultScale - 0.5;
+  ivec2 last = textureSize(havsResultTexture, 0) - 1;
+  ivec2 i0 = clamp(ivec2(floor(x)), ivec2(0), last);
+  ivec2 i1 = clamp(ivec2(floor(x)) + 1, ivec2(0), last);
+  vec2 f = clamp(x - floor(x), 0.0, 1.0);
+  vec4 a = mix(texelFetch(havsResultTexture, i0, 0),
+    texelFetch(havsResultTexture, ivec2(i1.x, i0.y), 0), f.x);
+  vec4 b = mix(texelFetch(havsResultTexture, ivec2(i0.x, i1.y), 0),
+    texelFetch(havsResultTexture, i1, 0), f.x);
+  return mix(a, b, f.y);
+}
 
 //VTK::CustomUniforms::Dec
 
@@ -17,8 +36,9 @@ uniform vec2 havsViewportOrigin;
 
 void main()
 {
-  vec4 g_fragColor =
-    texelFetch(havsResultTexture, ivec2(gl_FragCoord.xy - havsViewportOrigin), 0);
+  vec2 pixel = floor(gl_FragCoord.xy - havsViewportOrigin);
+  vec4 g_fragColor = havsResultReduced != 0 ? havsUpsampled(pixel)
+                                            : texelFetch(havsResultTexture, ivec2(pixel), 0);
 
   //VTK::Base::Exit
 

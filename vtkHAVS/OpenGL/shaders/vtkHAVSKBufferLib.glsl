@@ -87,7 +87,8 @@ uniform float havsLengthLogScale; // the length axis: 0 linear, else a (see havs
 uniform float havsInvLogRange;    // 1 / log(1 + a * the longest length)
 uniform float havsTerminationOpacity;
 
-uniform sampler2D havsOpaqueDepth; // window depth of the opaque geometry
+uniform sampler2D havsOpaqueDepth; // window depth of the opaque geometry (the viewport's size)
+uniform vec2 havsOpaqueDepthScale; // viewport pixels per drawn pixel (a reduced image: > 1)
 uniform mat4 havsDCRC;             // clip -> eye-relative world
 uniform vec2 havsViewportSize;
 uniform int havsParallel;
@@ -196,7 +197,7 @@ float havsTieTolerance(vec3 positionRC)
 float havsOpaqueDistance(vec2 fragCoord)
 {
 #if HAVS_OPAQUE
-  float z = texelFetch(havsOpaqueDepth, ivec2(fragCoord), 0).r;
+  float z = texelFetch(havsOpaqueDepth, ivec2(fragCoord * havsOpaqueDepthScale), 0).r;
   if (z >= 1.0)
   {
     return HAVS_EMPTY;
