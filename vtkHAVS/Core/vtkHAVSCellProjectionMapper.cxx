@@ -96,7 +96,7 @@ const std::vector<uint32_t>* vtkHAVSCellProjectionMapper::MakeOrder(const vtkHAV
   // The key of the order wanted: the unsorted blends draw the cells in the
   // mesh's own order (shuffled only as a testing aid), once per mesh; the
   // sorted ones per view, reused while the view's key holds.
-  const bool unsorted = this->BlendMode != COMPOSITE_BLEND;
+  const bool unsorted = this->GetFrameBlend() != COMPOSITE_BLEND;
   const int kind = unsorted ? (this->ShuffleOrderForTesting ? 3 : 2) : this->CellOrder;
   const int method = kind == CellOrderMPVO ? this->NonConvexMethod : -1;
   if (kind == CellOrderMPVO && !this->OrderBuilt)
@@ -253,7 +253,7 @@ void vtkHAVSCellProjectionMapper::RenderView(
   frame.Order = order;
   frame.OrderVersion = this->OrderTime.GetMTime();
   frame.Planes = this->Planes;
-  frame.Blend = this->BlendMode;
+  frame.Blend = this->GetFrameBlend();
   frame.Opaque = vtkHAVSMapperInputs::RendererHasOpaqueGeometry(renderer);
   frame.KeepResult = this->KeepFloatResult;
   frame.WrongExit = this->WrongExitForTesting;

@@ -60,6 +60,7 @@ bool vtkHAVSMapperBase::IsBlendModeSupported(int mode)
     case MAXIMUM_INTENSITY_BLEND:
     case MINIMUM_INTENSITY_BLEND:
     case ADDITIVE_BLEND:
+    case ISOSURFACE_BLEND:
       return true;
     default:
       return false;
@@ -336,6 +337,32 @@ void vtkHAVSMapperBase::UpdatePlanes(const vtkHAVSViewFrame& view)
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSMapperBase::PrepareIsoSurfaces(vtkVolume* volume)
+{
+  this->FrameIsoSurfaces = vtkHAVSIsoSurfaces::Make(volume->GetProperty(), this->BlendMode,
+    this->IsoSurfacesInComposite, this->Mesh->GetScalarRange());
+  const vtkHAVSIsoSurfaces& iso = this->FrameIsoSurfaces;
+  if (iso.Dropped > 0)
+  {
+    this->WarnOnce(vtkHAVSMapperInputs::WarnIsoSurfaces,
+      std::string(this->MapperName) + " draws the lowest " +
+        std::to_string(vtkHAVSIsoSurfaces::MaximumCount) + " isovalues; " +
+        std::to_string(iso.Dropped) + " more are left out (said once).");
+  }
+  // (Shading, as for every blend, is warned of by vtkHAVSMapperInputs: unshaded.)
+  if (this->BlendMode == ISOSURFACE_BLEND || iso.Count > 0)
+  {
+    if (this->Mesh->HasCellScalars())
+    {
+      this->WarnOnce(vtkHAVSMapperInputs::WarnIsoSurfaceCells,
+        std::string(this->MapperName) +
+          " finds isosurfaces of point scalars: cell scalars are constant in a cell and cross "
+          "no isovalue inside one, so no surface is drawn (said once).");
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkHAVSLevelOfDetailController* vtkHAVSMapperBase::GetImageReductionController()
 {
   return this->ImageControl;
@@ -416,6 +443,7 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
       {
         this->TableBuildTime.Modified();
       }
+      this->PrepareIsoSurfaces(volume);
       // 5. The view: every coordinate frame, once, at the level of detail's
       // image scale; 6. the mapper's own part.
       if (tableBuilt && !this->AbortRequested(renderer))
@@ -449,7 +477,9 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MapperName: " << this->MapperName << "\n";
-  os << indent << "BlendMode: " << this->BlendMode << "\n";
+  os << indent << "BlendMode: " << this->BlendMode
+     << ", IsoSurfacesInComposite: " << this->IsoSurfacesInComposite << " (last frame "
+     << this->FrameIsoSurfaces.Count << " surfaces)\n";
   os << indent << "VectorMode: " << this->VectorMode
      << ", VectorComponent: " << this->VectorComponent << "\n";
   os << indent << "HigherOrderSubdivision: " << this->HigherOrderSubdivision << "\n";

@@ -55,6 +55,7 @@
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
 #include "vtkHAVSCoreModule.h"  // For export macro
+#include "vtkHAVSIsoSurfaces.h" // For vtkHAVSIsoSurfaces
 #include "vtkHAVSMemory.h"      // For vtkHAVSMemory::Part
 #include "vtkHAVSShaderHooks.h" // For vtkHAVSShaderHooks
 #include "vtkNew.h"             // For vtkNew
@@ -94,9 +95,34 @@ public:
    */
   static constexpr int MINIMUM_INTENSITY_BLEND = 2;
   static constexpr int ADDITIVE_BLEND = 4;
+  static constexpr int ISOSURFACE_BLEND = 5;
   void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
   void SetBlendModeToAdditive() { this->SetBlendMode(ADDITIVE_BLEND); }
   virtual bool IsBlendModeSupported(int mode);
+  ///@}
+
+  ///@{
+  /**
+   * The isosurface blend (all three mappers; vtkVolumeMapper's
+   * ISOSURFACE_BLEND, 5), with VTK's semantics: the values are the volume
+   * property's GetIsoSurfaceValues(); where a ray crosses one (found exactly:
+   * the scalar is linear in a tetrahedron) the surface takes the transfer
+   * functions' colour and opacity at that value, composited front to back,
+   * and nothing contributes between the surfaces (vtkHAVSIsoSurfaces). Up to
+   * vtkHAVSIsoSurfaces::MaximumCount values (more: the lowest ones, warned
+   * once). Unshaded: ShadeOn is not applied (warned once). Cell scalars have
+   * no crossings inside a cell: nothing is drawn (warned once).
+   *
+   * IsoSurfacesInComposite (off by default): under the composite blend the
+   * same surfaces are drawn inside the volume (the thesis' mixed mode): each
+   * segment is split at its crossings.
+   */
+  void SetBlendModeToIsoSurface() { this->SetBlendMode(ISOSURFACE_BLEND); }
+  vtkSetMacro(IsoSurfacesInComposite, bool);
+  vtkGetMacro(IsoSurfacesInComposite, bool);
+  vtkBooleanMacro(IsoSurfacesInComposite, bool);
+  /// The surfaces the last frame drew (none outside the two modes above).
+  const vtkHAVSIsoSurfaces& GetFrameIsoSurfaces() const { return this->FrameIsoSurfaces; }
   ///@}
 
   ///@{
@@ -392,6 +418,14 @@ protected:
   virtual double SmallestDetail() const;
   /// The frame's image scale: 1 unless the image reduction's budget asks for less.
   double ChooseImageScale(vtkVolume* volume);
+  /// The frame's isosurfaces (FrameIsoSurfaces) and their once-only warnings.
+  void PrepareIsoSurfaces(vtkVolume* volume);
+  /// The blend the frame's passes draw: the isosurface blend is drawn as the
+  /// composite one (front to back, in order), its segments made of surfaces.
+  int GetFrameBlend() const
+  {
+    return this->BlendMode == ISOSURFACE_BLEND ? COMPOSITE_BLEND : this->BlendMode;
+  }
   /// The graphics layer's kept float result (nullptr without one).
   const std::vector<float>* GetKeptResult(int size[2]);
   /// The graphics layer (the GL mapper's; not owned: it lives as long as the mapper).
@@ -430,6 +464,8 @@ protected:
   double LastImageScale = 1.0;
   double LastDetail = 1.0;
   double FaceShare = 1.0; ///< the share of the frame's detail HAVS's faces take (1: none)
+  bool IsoSurfacesInComposite = false;
+  vtkHAVSIsoSurfaces FrameIsoSurfaces;
   vtkNew<vtkHAVSLevelOfDetailController> ImageControl;
 
 private:
@@ -450,7 +486,7 @@ private:
   vtkMTimeType SeenMeshBuild = 0; // the mesh's build and scalar times this mapper last drew
   vtkMTimeType SeenMeshScalars = 0;
   vtkMTimeType RefusedMeshBuild = 0; // the mesh build whose buffers were too large (said once)
-  std::array<bool, 10> Warned{};     // vtkHAVSMapperInputs::NumberOfOnceWarnings
+  std::array<bool, 12> Warned{};     // vtkHAVSMapperInputs::NumberOfOnceWarnings
 };
 
 VTK_ABI_NAMESPACE_END

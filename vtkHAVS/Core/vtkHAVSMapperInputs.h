@@ -57,6 +57,8 @@ public:
     WarnBlend,
     WarnAutomaticK,
     WarnShaderProperty,
+    WarnIsoSurfaces,
+    WarnIsoSurfaceCells,
     NumberOfOnceWarnings
   };
   using WarnOnce = std::function<void(int, const std::string&)>;

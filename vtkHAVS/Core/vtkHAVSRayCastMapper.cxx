@@ -148,7 +148,7 @@ void vtkHAVSRayCastMapper::RenderView(
   frame.TerminationOpacity = static_cast<float>(this->EarlyRayTerminationOpacity);
   frame.MaximumPasses = this->MaximumPeelPasses > 0 ? this->MaximumPeelPasses : 1024;
   frame.TileSize = this->Tiles ? this->TileSize : 0;
-  frame.Blend = this->BlendMode;
+  frame.Blend = this->GetFrameBlend();
   frame.FoldReentries = this->FoldReentries;
   frame.RestoreCells = [this]() { this->UpdateRayFields(); };
   RayCounts counts;

@@ -97,7 +97,7 @@ void vtkHAVSVolumeMapper::SetNonConvexMethodToConvexification()
 bool vtkHAVSVolumeMapper::IsBlendModeSupported(int mode)
 {
   return mode == COMPOSITE_BLEND || mode == MAXIMUM_INTENSITY_BLEND ||
-    mode == MINIMUM_INTENSITY_BLEND;
+    mode == MINIMUM_INTENSITY_BLEND || mode == ISOSURFACE_BLEND;
 }
 
 //------------------------------------------------------------------------------
@@ -374,7 +374,7 @@ vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
   r.Planes = this->Planes;
   r.Path = path;
   r.K = k;
-  r.BlendMode = this->BlendMode;
+  r.BlendMode = this->GetFrameBlend();
   r.TerminationOpacity = static_cast<float>(this->EarlyRayTerminationOpacity);
   r.CellScalars = this->Mesh->HasCellScalars();
   r.Tagging = this->BoundaryMode == BoundaryTagging ||
@@ -387,7 +387,7 @@ vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
   r.Opaque = opaque;
   r.MeasureStages = this->MeasureStageTimes;
   r.KeepResult = this->KeepFloatResult;
-  r.SkipSaturated = this->BlendMode == COMPOSITE_BLEND &&
+  r.SkipSaturated = this->GetFrameBlend() == COMPOSITE_BLEND &&
     (this->SkipSaturatedPixels == SkipSaturatedPixelsAlways ||
       (this->SkipSaturatedPixels == SkipSaturatedPixelsAutomatic &&
         path == KBufferPathFragmentShaderInterlock));
@@ -400,7 +400,7 @@ void vtkHAVSVolumeMapper::RenderView(
 {
   // (1-3, the mesh, the table and the view: vtkHAVSMapperBase::Render.)
   vtkHAVSFrameStatistics* stats = this->LastFrame;
-  const bool composite = this->BlendMode == COMPOSITE_BLEND;
+  const bool composite = this->GetFrameBlend() == COMPOSITE_BLEND;
 
   // 4. The cells the transfer function hides (composite blend: the extremum
   // modes look at every scalar); recomputed only for a new table or mesh. The
@@ -492,7 +492,7 @@ bool vtkHAVSVolumeMapper::DrawOrdered(vtkRenderer* renderer, const vtkHAVSViewFr
 {
   // Automatic's probe may ask for a second draw in the exact order; the
   // automatic k searches with counted draws when the view moved far enough.
-  const bool composite = this->BlendMode == COMPOSITE_BLEND;
+  const bool composite = this->GetFrameBlend() == COMPOSITE_BLEND;
   this->FaceOrder->SetVisibilityOrder(this->VisibilityOrder);
   this->FaceOrder->SetNonConvexMethod(this->NonConvexMethod);
   vtkHAVSFaceOrderPolicy::Plan plan =
@@ -568,7 +568,7 @@ void vtkHAVSVolumeMapper::RecordStatistics(
   int path, const FrameRequest& request, const FrameResult& result)
 {
   vtkHAVSFrameStatistics* stats = this->LastFrame;
-  const bool composite = this->BlendMode == COMPOSITE_BLEND;
+  const bool composite = this->GetFrameBlend() == COMPOSITE_BLEND;
   stats->SetKBufferPath(path);
   stats->SetKBufferSize(composite ? request.K : 0);
   stats->SetVisibilityOrder(this->FaceOrder->GetLastOrder());

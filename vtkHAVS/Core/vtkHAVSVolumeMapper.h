@@ -92,7 +92,7 @@ public:
   /// "Automatic", "FramebufferFetch", "FragmentShaderInterlock", "FragmentLists"; "None" else.
   static const char* GetKBufferPathName(int path);
 
-  /// Composite, maximum and minimum intensity (not additive).
+  /// Composite, maximum and minimum intensity, isosurface (not additive).
   bool IsBlendModeSupported(int mode) override;
 
   ///@{

@@ -70,6 +70,8 @@ vtkOpenGLRenderWindow* vtkHAVSGLMapperResources::Prepare(
   // The volume's shader property, as the mapper read it this frame, reaches the composite.
   auto* base = vtkHAVSMapperBase::SafeDownCast(mapper);
   this->Targets->SetShaderHooks(base ? &base->GetShaderHooks() : nullptr);
+  // The frame's isosurfaces reach every pass that composites segments.
+  this->Table->SetIsoSurfaces(base ? &base->GetFrameIsoSurfaces() : nullptr);
   if (!vtkHAVSGLCapabilities::HasVersion(4, 3))
   {
     vtkErrorWithObjectMacro(mapper, << mapperName << " needs OpenGL 4.3 (" << needs << ").");

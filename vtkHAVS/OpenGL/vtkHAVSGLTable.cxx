@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "vtkHAVSCellOptics.h"
+#include "vtkHAVSIsoSurfaces.h"
 #include "vtkHAVSOpenGL.h"
 #include "vtkHAVSPreIntegrationTable.h"
 #include "vtkObjectFactory.h"
@@ -137,6 +138,15 @@ void vtkHAVSGLTable::SetUniforms(vtkShaderProgram* program)
   if (this->CellOptics && this->CellOptics->GetTextureUnit() >= 0)
   {
     program->SetUniformi("havsCellOptics", this->CellOptics->GetTextureUnit());
+  }
+  // The isosurfaces (vtkHAVSKBufferLib's havsSegment): none unless a frame set them.
+  const int count = this->IsoSurfaces ? this->IsoSurfaces->Count : 0;
+  program->SetUniformi("havsIsoCount", count);
+  if (count > 0)
+  {
+    program->SetUniformi("havsIsoComposite", this->IsoSurfaces->Composite ? 1 : 0);
+    program->SetUniform1fv("havsIsoValues", count, this->IsoSurfaces->Normalized);
+    program->SetUniform4fv("havsIsoColors", count, this->IsoSurfaces->Colors);
   }
 }
 

@@ -21,6 +21,8 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
+class vtkHAVSIsoSurfaces;
+
 #include "vtkObject.h"
 #include "vtkOpenGLBufferObject.h" // For vtkSmartPointer<vtkOpenGLBufferObject>
 #include "vtkSmartPointer.h"       // For vtkSmartPointer
@@ -63,8 +65,12 @@ public:
 
   /// havsTable, havsScalarTexel, havsLengthTexel, havsInvMaxLength,
   /// havsLengthLogScale, havsInvLogRange (table active), havsCellOptics
-  /// (when GetCellOptics() is active).
+  /// (when GetCellOptics() is active), and the isosurfaces' havsIsoCount,
+  /// havsIsoComposite, havsIsoValues, havsIsoColors.
   void SetUniforms(vtkShaderProgram* program);
+
+  /// The frame's isosurfaces (the mapper's, set every frame; nullptr: none).
+  void SetIsoSurfaces(const vtkHAVSIsoSurfaces* iso) { this->IsoSurfaces = iso; }
 
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -88,6 +94,7 @@ private:
   int LengthResolution = 0;
   double MaxLength = 1.0;
   double LengthLogScale = 0.0; ///< 0: a linear length axis
+  const vtkHAVSIsoSurfaces* IsoSurfaces = nullptr;
 };
 
 VTK_ABI_NAMESPACE_END

@@ -11,6 +11,7 @@
 
 #include "vtkHAVSFaceRasterizer.h"
 #include "vtkHAVSFaceSet.h"
+#include "vtkHAVSIsoSurfaces.h"
 #include "vtkHAVSPlaneSection.h"
 #include "vtkHAVSPreIntegrationTable.h"
 #include "vtkHAVSTetrahedralizer.h"
@@ -723,6 +724,51 @@ void vtkHAVSReferenceRenderer::IntegrateRayBlend(vtkVolumeProperty* property, co
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSReferenceRenderer::IntegrateRayIso(vtkVolumeProperty* property, const Fragment* begin,
+  const Fragment* end, const vtkHAVSIsoSurfaces& iso, double rgba[4])
+{
+  double color[3] = { 0, 0, 0 }, transmittance = 1.0;
+  auto composite = [&](const double piece[4])
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      color[c] += transmittance * piece[c];
+    }
+    transmittance *= 1.0 - piece[3];
+  };
+  ForEachSegmentInMesh(begin, end,
+    [&](const Fragment& front, const Fragment& back)
+    {
+      const double sf = front.ScalarBehind(), sb = back.Scalar;
+      const double length = back.Distance - front.Distance;
+      double from = 0.0, sFrom = sf, piece[4];
+      for (int i : iso.Crossed(sf, sb))
+      {
+        const double v = iso.Values[i];
+        if (iso.Composite)
+        {
+          const double t = (v - sf) / (sb - sf);
+          IntegrateSegmentExact(property, sFrom, v, length * (t - from), piece);
+          composite(piece);
+          from = t;
+          sFrom = v;
+        }
+        vtkHAVSIsoSurfaces::SurfaceColor(property, v, piece);
+        composite(piece);
+      }
+      if (iso.Composite)
+      {
+        IntegrateSegmentExact(property, sFrom, sb, length * (1.0 - from), piece);
+        composite(piece);
+      }
+    });
+  rgba[0] = color[0];
+  rgba[1] = color[1];
+  rgba[2] = color[2];
+  rgba[3] = 1.0 - transmittance;
+}
+
+//------------------------------------------------------------------------------
 double vtkHAVSReferenceRenderer::IntegrateAdditiveSegment(
   vtkVolumeProperty* property, double sf, double sb, double length, const double scalarRange[2])
 {
@@ -814,6 +860,10 @@ bool vtkHAVSReferenceRenderer::Render()
   // the property per thread, made one at a time (DeepCopy creates missing
   // functions in the source).
   vtkSMPThreadLocal<vtkSmartPointer<vtkVolumeProperty>> localProperty;
+  // The isosurfaces (the isosurface blend, or the composite's mixed mode).
+  const vtkHAVSIsoSurfaces iso = vtkHAVSIsoSurfaces::Make(
+    this->Property, this->BlendMode, this->IsoSurfacesInComposite, this->ScalarRange);
+  const bool isoRay = this->BlendMode == vtkHAVSIsoSurfaces::IsoSurfaceBlend || iso.Count > 0;
   std::mutex copying;
   const vtkIdType slices = 20;
   for (vtkIdType slice = 0; slice < slices; ++slice)
@@ -831,8 +881,16 @@ bool vtkHAVSReferenceRenderer::Render()
         for (vtkIdType p = begin; p < end; ++p)
         {
           double rgba[4];
-          IntegrateRayBlend(property, this->GetPixelFragmentsBegin(p),
-            this->GetPixelFragmentsEnd(p), this->BlendMode, this->ScalarRange, rgba);
+          if (isoRay)
+          {
+            IntegrateRayIso(
+              property, this->GetPixelFragmentsBegin(p), this->GetPixelFragmentsEnd(p), iso, rgba);
+          }
+          else
+          {
+            IntegrateRayBlend(property, this->GetPixelFragmentsBegin(p),
+              this->GetPixelFragmentsEnd(p), this->BlendMode, this->ScalarRange, rgba);
+          }
           for (int c = 0; c < 4; ++c)
           {
             out[4 * p + c] = static_cast<float>(rgba[c]);
@@ -853,7 +911,8 @@ void vtkHAVSReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Fragments: " << this->Fragments.size() << "\n";
   os << indent << "HigherOrderSubdivision: " << this->HigherOrderSubdivision << "\n";
   os << indent << "NearPlaneClipping: " << this->NearPlaneClipping
-     << ", BlendMode: " << this->BlendMode << "\n";
+     << ", BlendMode: " << this->BlendMode
+     << ", IsoSurfacesInComposite: " << this->IsoSurfacesInComposite << "\n";
   os << indent
      << "ClippingPlanes: " << (this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0)
      << "\n";

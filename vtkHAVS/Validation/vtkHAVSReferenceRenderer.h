@@ -50,6 +50,8 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
+class vtkHAVSIsoSurfaces;
+
 #include "vtkHAVSValidationModule.h" // For export macro
 #include "vtkNew.h"                  // For vtkNew
 #include "vtkObject.h"
@@ -146,10 +148,18 @@ public:
    * property's functions; nothing where the ray misses), ADDITIVE_BLEND (4:
    * the integral of tau(s) s_n along the ray, s_n the scalar normalized to
    * GetScalarRange(), integrated adaptively per segment, clamped to 1, grey
-   * with opacity 1 where the ray crosses the mesh). Others: composite.
+   * with opacity 1 where the ray crosses the mesh), ISOSURFACE_BLEND (5: the
+   * property's isovalues crossed along the ray, each the transfer functions'
+   * premultiplied colour and opacity at its value, composited front to back,
+   * nothing between them: vtkHAVSIsoSurfaces). Others: composite.
+   * IsoSurfacesInComposite: the composite blend with the same surfaces
+   * inside the volume (each segment split at its crossings, the pieces
+   * integrated exactly), the mappers' mixed mode.
    */
   vtkSetMacro(BlendMode, int);
   vtkGetMacro(BlendMode, int);
+  vtkSetMacro(IsoSurfacesInComposite, bool);
+  vtkGetMacro(IsoSurfacesInComposite, bool);
   ///@}
 
   /// Face ids of the synthetic fragments where a ray enters or leaves the
@@ -225,6 +235,15 @@ public:
     const Fragment* end, int blendMode, const double scalarRange[2], double rgba[4]);
 
   /**
+   * One pixel with isosurfaces `iso` (vtkHAVSIsoSurfaces::Make: the
+   * isosurface blend, or the composite blend's mixed mode): the surfaces'
+   * colours from `property` at their values, the volume's pieces between
+   * them exactly (IntegrateSegmentExact) in the mixed mode.
+   */
+  static void IntegrateRayIso(vtkVolumeProperty* property, const Fragment* begin,
+    const Fragment* end, const vtkHAVSIsoSurfaces& iso, double rgba[4]);
+
+  /**
    * The additive blend's segment: the integral of tau(s(t)) (s(t) - lo) /
    * span over the segment (sf -> sb linear, `length`), split at the opacity
    * nodes, each piece adaptively (Simpson) to 1e-9 per unit length.
@@ -267,6 +286,7 @@ private:
   vtkSmartPointer<vtkPlaneCollection> ClippingPlanes;
   bool NearPlaneClipping = true;
   int BlendMode = 0;
+  bool IsoSurfacesInComposite = false;
   vtkSmartPointer<vtkFloatArray> OpaqueDepth;
   vtkIdType NumberOfStartedInside = 0;
   std::vector<Fragment> Fragments;

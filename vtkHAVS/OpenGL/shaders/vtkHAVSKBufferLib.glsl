@@ -238,6 +238,66 @@ vec4 havsCellSegment(float code, float len)
 }
 #endif
 
+#if !HAVS_CELL_SCALARS
+// The pre-integrated segment from scalar sf to sb of length len (the table).
+vec4 havsTableSegment(float sf, float sb, float len)
+{
+  vec3 t = vec3(sf, sb, havsLengthCoordinate(len));
+  vec3 coord = vec3(t.xy * havsScalarTexel.x + havsScalarTexel.y,
+    t.z * havsLengthTexel.x + havsLengthTexel.y);
+  // Level 0 named: no derivatives, no level selection (the table has one level).
+  return textureLod(havsTable, coord, 0.0);
+}
+#endif
+
+// The isosurfaces (vtkHAVSIsoSurfaces; vtkHAVSGLTable sets them): the
+// isosurface blend (havsIsoCount > 0) or, with havsIsoComposite, the
+// composite blend with its surfaces inside (the mixed mode). Values in the
+// scalars' [0, 1], ascending; colours premultiplied.
+const int HAVS_MAX_ISO = 8;
+uniform int havsIsoCount;
+uniform int havsIsoComposite;
+uniform float havsIsoValues[HAVS_MAX_ISO];
+uniform vec4 havsIsoColors[HAVS_MAX_ISO];
+
+// The segment from scalar sf to sb (length len) with its isosurfaces: each
+// value it crosses, in [sf, sb) rising or (sb, sf] falling (a crossing at a
+// shared face counted once, in the segment behind it), composited front to
+// back in the order the ray meets them; in the mixed mode the volume's
+// pieces between them too (the scalar is linear along the segment).
+vec4 havsIsoSegment(float sf, float sb, float len)
+{
+  vec4 color = vec4(0.0);
+  bool rising = sb > sf;
+  float from = 0.0; // (the mixed mode) the part of the segment composited
+  float sFrom = sf;
+  for (int n = 0; n < havsIsoCount; ++n)
+  {
+    int i = rising ? n : havsIsoCount - 1 - n;
+    float v = havsIsoValues[i];
+    if (rising ? (v >= sf && v < sb) : (v <= sf && v > sb))
+    {
+#if !HAVS_CELL_SCALARS
+      if (havsIsoComposite != 0)
+      {
+        float t = (v - sf) / (sb - sf);
+        color += (1.0 - color.a) * havsTableSegment(sFrom, v, (t - from) * len);
+        from = t;
+        sFrom = v;
+      }
+#endif
+      color += (1.0 - color.a) * havsIsoColors[i];
+    }
+  }
+#if !HAVS_CELL_SCALARS
+  if (havsIsoComposite != 0)
+  {
+    color += (1.0 - color.a) * havsTableSegment(sFrom, sb, (1.0 - from) * len);
+  }
+#endif
+  return color;
+}
+
 // Premultiplied colour and opacity of the segment from a to b.
 vec4 havsSegment(vec2 a, vec2 b)
 {
@@ -247,14 +307,19 @@ vec4 havsSegment(vec2 a, vec2 b)
     return vec4(0.0);
   }
 #if HAVS_CELL_SCALARS
-  // (The segment lies in the cell behind its front fragment.)
+  // (The segment lies in the cell behind its front fragment; its scalar is
+  // constant: no isosurface inside it.)
+  if (havsIsoCount > 0 && havsIsoComposite == 0)
+  {
+    return vec4(0.0);
+  }
   return havsCellSegment(havsScalarOf(a.y), len);
 #else
-  vec3 t = vec3(havsScalarOf(a.y), havsScalarOf(b.y), havsLengthCoordinate(len));
-  vec3 coord = vec3(t.xy * havsScalarTexel.x + havsScalarTexel.y,
-    t.z * havsLengthTexel.x + havsLengthTexel.y);
-  // Level 0 named: no derivatives, no level selection (the table has one level).
-  return textureLod(havsTable, coord, 0.0);
+  if (havsIsoCount > 0)
+  {
+    return havsIsoSegment(havsScalarOf(a.y), havsScalarOf(b.y), len);
+  }
+  return havsTableSegment(havsScalarOf(a.y), havsScalarOf(b.y), len);
 #endif
 }
 

@@ -1,0 +1,187 @@
+/*=========================================================================
+
+  Project:   vtkHAVS
+  Module:    TestHAVSIsoSurfaces.cxx
+
+  Copyright (c) 2026 the vtkHAVS developers
+  SPDX-License-Identifier: BSD-3-Clause (see LICENSE)
+
+=========================================================================*/
+// The isosurface blend (vtkVolumeMapper's ISOSURFACE_BLEND, issue 46) and the
+// mixed mode (IsoSurfacesInComposite), for the mapper named by argument 1
+// (havs, raycast, cellprojection); argument 2: the data set (combustor),
+// 3: image size, 4: views.
+// 1. Analytic: the box [0, 1]^3 with s = z and the isovalue 0.55 (between
+//    the vertices' planes): every pixel is the surface's premultiplied
+//    colour at 0.55 (the ray crosses the plane z = 0.55 once) or empty.
+// 2. A pair of isovalues (30 % and 65 % of the range) on the data set,
+//    against the exact reference's isosurface blend: within the exact bound.
+//    Control: the reference with both values shifted by 1 % of the range
+//    must miss it.
+// 3. The mixed mode (the composite volume with the same surfaces inside)
+//    against the reference's: within the exact bound. Control: the composite
+//    without the surfaces must miss it.
+#include "havsTestChecks.h"
+#include "havsTestImages.h"
+#include "havsTestMapperScenes.h"
+#include "havsTestProperties.h"
+#include "havsTestScenes.h"
+
+#include "vtkHAVSCellProjectionMapper.h"
+#include "vtkHAVSDataSets.h"
+#include "vtkHAVSIsoSurfaces.h"
+#include "vtkHAVSRayCastMapper.h"
+#include "vtkHAVSReferenceRenderer.h"
+#include "vtkHAVSVolumeMapper.h"
+
+#include "vtkCamera.h"
+#include "vtkContourValues.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolumeProperty.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace
+{
+vtkSmartPointer<vtkHAVSMapperBase> MakeMapper(const std::string& name)
+{
+  if (name == "raycast")
+  {
+    return vtkSmartPointer<vtkHAVSRayCastMapper>::New();
+  }
+  if (name == "cellprojection")
+  {
+    return vtkSmartPointer<vtkHAVSCellProjectionMapper>::New();
+  }
+  return vtkSmartPointer<vtkHAVSVolumeMapper>::New();
+}
+
+/// The exact image under `blend` (the mixed mode with `mixed`).
+std::vector<float> Reference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
+  vtkCamera* camera, int size, int blend, bool mixed)
+{
+  vtkNew<vtkHAVSReferenceRenderer> reference;
+  reference->SetInputData(grid);
+  reference->SetProperty(property);
+  reference->SetCamera(camera);
+  reference->SetSize(size, size);
+  reference->SetBlendMode(blend);
+  reference->SetIsoSurfacesInComposite(mixed);
+  reference->Render();
+  vtkFloatArray* image = reference->GetImage();
+  return std::vector<float>(image->GetPointer(0), image->GetPointer(0) + 4 * size * size);
+}
+}
+
+int TestHAVSIsoSurfaces(int argc, char* argv[])
+{
+  const std::string name = argc > 1 ? argv[1] : "havs";
+  const std::string dataSet = argc > 2 ? argv[2] : "combustor";
+  const int size = argc > 3 ? std::atoi(argv[3]) : 96;
+  const int views = argc > 4 ? std::atoi(argv[4]) : 2;
+  const int iso = vtkHAVSMapperBase::ISOSURFACE_BLEND;
+
+  // 1. Analytic: one plane.
+  {
+    auto grid = vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
+    auto property = havstest::MakeRampPropertyFor(grid);
+    property->GetIsoSurfaceValues()->SetValue(0, 0.55);
+    double surface[4];
+    vtkHAVSIsoSurfaces::SurfaceColor(property, 0.55, surface);
+    auto mapper = MakeMapper(name);
+    mapper->KeepFloatResultOn();
+    mapper->SetBlendModeToIsoSurface();
+    auto s = havstest::MakeScene(grid, mapper, property, size, size);
+    havstest::PlaceCamera(s.Renderer, 25.0, 35.0, false);
+    s.Window->Render();
+    const std::vector<float> image = havstest::FloatResult(mapper);
+    size_t onSurface = 0, empty = 0, other = 0;
+    for (size_t p = 0; p + 3 < image.size(); p += 4)
+    {
+      double toSurface = 0.0, toEmpty = 0.0;
+      for (int c = 0; c < 4; ++c)
+      {
+        toSurface = std::max(toSurface, std::fabs(image[p + c] - surface[c]));
+        toEmpty = std::max(toEmpty, std::fabs(static_cast<double>(image[p + c])));
+      }
+      onSurface += toSurface < 1e-5 ? 1 : 0;
+      empty += toEmpty < 1e-6 ? 1 : 0;
+      other += toSurface >= 1e-5 && toEmpty >= 1e-6 ? 1 : 0;
+    }
+    std::printf("%s: the plane z = 0.55 (colour %.4f %.4f %.4f, opacity %.4f): %zu pixels on it, "
+                "%zu empty, %zu other\n",
+      name.c_str(), surface[0], surface[1], surface[2], surface[3], onSurface, empty, other);
+    // (Other: pixels on the plane's silhouette, where the box's edge cuts it.)
+    havstest::Check(onSurface > image.size() / 4 / 10 && other <= static_cast<size_t>(2 * size),
+      name + ": analytic: each pixel is the surface's colour or empty");
+  }
+
+  // 2. and 3. On the data set.
+  auto grid = vtkHAVSDataSets::Load(dataSet);
+  if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, dataSet + " loads"))
+  {
+    return havstest::Result();
+  }
+  auto property = havstest::MakeRampPropertyFor(grid);
+  double range[2];
+  grid->GetPointData()->GetScalars()->GetRange(range);
+  const double span = range[1] - range[0];
+  const double values[2] = { range[0] + 0.30 * span, range[0] + 0.65 * span };
+  auto shifted = vtkSmartPointer<vtkVolumeProperty>::New();
+  shifted->DeepCopy(property);
+  for (int i = 0; i < 2; ++i)
+  {
+    property->GetIsoSurfaceValues()->SetValue(i, values[i]);
+    shifted->GetIsoSurfaceValues()->SetValue(i, values[i] + 0.01 * span);
+  }
+  auto mapper = MakeMapper(name);
+  mapper->KeepFloatResultOn();
+  auto s = havstest::MakeScene(grid, mapper, property, size, size);
+  vtkCamera* camera = s.Renderer->GetActiveCamera();
+  const size_t edge = static_cast<size_t>(size) * size / 2000;
+  for (int v = 0; v < views; ++v)
+  {
+    havstest::PlaceStandardView(s.Renderer, grid, v, views, true);
+    const std::string at = name + " " + dataSet + " view " + std::to_string(v);
+
+    mapper->SetBlendModeToIsoSurface();
+    mapper->IsoSurfacesInCompositeOff();
+    s.Window->Render();
+    const auto surfaces = havstest::FloatResult(mapper);
+    const auto exact = Reference(grid, property, camera, size, iso, false);
+    const auto d = havstest::Compare(surfaces, exact, edge);
+    const auto control =
+      havstest::Compare(surfaces, Reference(grid, shifted, camera, size, iso, false), edge);
+    havstest::PrintDifference(at + ": isosurfaces", d);
+    havstest::PrintDifference(at + ": control, values 1 % off", control);
+    havstest::Check(havstest::WithinExactBound(d), at + ": the isosurface pair is exact");
+    havstest::Check(!havstest::WithinExactBound(control), at + ": control: 1 % off misses");
+
+    mapper->SetBlendModeToComposite();
+    mapper->IsoSurfacesInCompositeOn();
+    s.Window->Render();
+    const auto mixed = havstest::FloatResult(mapper);
+    const auto exactMixed = Reference(grid, property, camera, size, 0, true);
+    const auto dm = havstest::Compare(mixed, exactMixed, edge);
+    const auto controlMixed =
+      havstest::Compare(Reference(grid, property, camera, size, 0, false), exactMixed, edge);
+    havstest::PrintDifference(at + ": mixed", dm);
+    havstest::PrintDifference(at + ": control, the volume alone", controlMixed);
+    havstest::Check(havstest::WithinExactBound(dm), at + ": the mixed mode is exact");
+    havstest::Check(!havstest::WithinExactBound(controlMixed),
+      at + ": control: the volume without its surfaces misses");
+    mapper->IsoSurfacesInCompositeOff();
+  }
+  return havstest::Result();
+}
