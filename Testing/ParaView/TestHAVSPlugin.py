@@ -360,6 +360,38 @@ if args.mode == "serial":
               "image when still" % (name, ", ".join("%.3f" % x for x in scales)))
     display.HAVSMapper = "HAVS"
     Render(view)
+
+    # The isosurface blend mode and the isosurfaces in the volume (issue 46), as the panel's
+    # Blend mode, Isosurfaces and Isosurfaces in the volume set them, for the three mappers,
+    # against the exact reference's. Control: the values 1 % of the range off.
+    lo, hi = grid.GetPointData().GetScalars().GetRange()
+    values = [lo + 0.3 * (hi - lo), lo + 0.65 * (hi - lo)]
+    unit = display.ScalarOpacityUnitDistance
+    display.HAVSIsosurfaceValues = values
+    for blend, mixed, label in ((5, 0, "isosurfaces"), (0, 1, "isosurfaces in the volume")):
+        display.HAVSBlendMode = "Isosurface" if blend == 5 else "Composite"
+        display.HAVSIsosurfacesInComposite = mixed
+        exact = reference_rgb(grid, lut, pwf, unit, camera, blend=blend, isovalues=values,
+                              mixed=bool(mixed))
+        off = reference_rgb(grid, lut, pwf, unit, camera, blend=blend,
+                            isovalues=[v + 0.01 * (hi - lo) for v in values], mixed=bool(mixed))
+        for name in ("HAVS", "HAVS Ray Cast", "HAVS Cell Projection"):
+            display.HAVSMapper = name
+            Render(view)
+            shot = os.path.join(args.out, "havs_plugin_iso_%d_%s.png"
+                                % (blend, name.replace(" ", "_")))
+            SaveScreenshot(shot, view, ImageResolution=[SIZE, SIZE])
+            rmse, worst = compare(png_rgb(shot), exact)
+            control, _ = compare(png_rgb(shot), off)
+            check(rep.GetActiveVolumeMapper().GetBlendMode() == blend and rmse < 0.01
+                  and control > 5 * rmse,
+                  "%s, %s: RMSE %.5f (max %.4f) against the reference; control, values 1 %% "
+                  "off: %.5f" % (name, label, rmse, worst, control))
+    display.HAVSBlendMode = "Composite"
+    display.HAVSIsosurfacesInComposite = 0
+    display.HAVSIsosurfaceValues = []
+    display.HAVSMapper = "HAVS"
+    Render(view)
     display.HAVSInteractiveTargetTime = 0.1
     display.HAVSLODStrategy = "Area"
 

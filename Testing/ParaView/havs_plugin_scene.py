@@ -168,23 +168,29 @@ def compare(a, b):
     return math.sqrt(sum(d * d for d in diffs) / len(diffs)), max(diffs)
 
 
-def reference_image(grid, lut, pwf, unit_distance, camera, size=SIZE):
+def reference_image(grid, lut, pwf, unit_distance, camera, size=SIZE, blend=0, isovalues=(),
+                    mixed=False):
     """The exact image (vtkHAVSReferenceRenderer) of `grid` with ParaView's colour and opacity
-    maps: premultiplied RGBA, size x size tuples, bottom row first."""
+    maps: premultiplied RGBA, size x size tuples, bottom row first. `blend`: vtkVolumeMapper's
+    blend mode (5: the isosurfaces `isovalues`); `mixed`: the composite with them inside."""
     prop = vtkVolumeProperty()
     prop.SetColor(lut.GetClientSideObject())
     prop.SetScalarOpacity(pwf.GetClientSideObject())
     prop.SetScalarOpacityUnitDistance(unit_distance)
+    for i, value in enumerate(isovalues):
+        prop.GetIsoSurfaceValues().SetValue(i, value)
     reference = vtkhavs.vtkHAVSReferenceRenderer()
     reference.SetInputData(grid)
     reference.SetProperty(prop)
     reference.SetCamera(camera)
     reference.SetSize(size, size)
+    reference.SetBlendMode(blend)
+    reference.SetIsoSurfacesInComposite(mixed)
     reference.Render()
     return reference.GetImage()
 
 
-def reference_rgb(grid, lut, pwf, unit_distance, camera, size=SIZE):
+def reference_rgb(grid, lut, pwf, unit_distance, camera, size=SIZE, **modes):
     """reference_image as RGB over black, clamped to 1 (a list of pixels)."""
-    exact = reference_image(grid, lut, pwf, unit_distance, camera, size)
+    exact = reference_image(grid, lut, pwf, unit_distance, camera, size, **modes)
     return [[min(1.0, exact.GetComponent(i, k)) for k in range(3)] for i in range(size * size)]

@@ -13,6 +13,7 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkBoundingBox.h"
 #include "vtkCellType.h"
+#include "vtkContourValues.h"
 #include "vtkDataSet.h"
 #include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSFrameStatistics.h"
@@ -28,6 +29,7 @@
 #include "vtkPlane.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVersionMacros.h"
+#include "vtkVolumeProperty.h"
 #include "vtkVolumeRepresentationPreprocessor.h"
 
 #include <dlfcn.h>
@@ -340,6 +342,40 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSCountOrderViolations(in
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSLODStrategy(int strategy)
 {
   this->HAVSMapper->SetLevelOfDetailStrategy(strategy);
+  this->Modified();
+}
+
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSBlendMode(int mode)
+{
+  for (vtkHAVSMapperBase* mapper : { static_cast<vtkHAVSMapperBase*>(this->HAVSMapper),
+         static_cast<vtkHAVSMapperBase*>(this->RayCastMapper),
+         static_cast<vtkHAVSMapperBase*>(this->CellProjectionMapper) })
+  {
+    mapper->SetBlendMode(mode);
+  }
+  this->Modified();
+}
+
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSIsoSurfacesInComposite(int on)
+{
+  for (vtkHAVSMapperBase* mapper : { static_cast<vtkHAVSMapperBase*>(this->HAVSMapper),
+         static_cast<vtkHAVSMapperBase*>(this->RayCastMapper),
+         static_cast<vtkHAVSMapperBase*>(this->CellProjectionMapper) })
+  {
+    mapper->SetIsoSurfacesInComposite(on != 0);
+  }
+  this->Modified();
+}
+
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetNumberOfIsosurfaces(int count)
+{
+  this->Property->GetIsoSurfaceValues()->SetNumberOfContours(count);
+  this->Modified();
+}
+
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetIsosurfaceValue(int i, double value)
+{
+  this->Property->GetIsoSurfaceValues()->SetValue(i, value);
   this->Modified();
 }
 

@@ -135,6 +135,19 @@ public:
   void SetHAVSLODStrategy(int strategy);
   ///@}
 
+  ///@{
+  /**
+   * Forwarded to the three mappers (vtkHAVSMapperBase): the blend mode
+   * (vtkVolumeMapper's values; 5 the isosurfaces) and the mixed mode; the
+   * isovalues go to the volume property (vtkVolumeProperty::GetIsoSurfaceValues,
+   * as ParaView's image volume representation sets them).
+   */
+  void SetHAVSBlendMode(int mode);
+  void SetHAVSIsoSurfacesInComposite(int on);
+  void SetNumberOfIsosurfaces(int count);
+  void SetIsosurfaceValue(int i, double value);
+  ///@}
+
   /// The order violations of the last frame this rank rendered (counted when
   /// SetHAVSCountOrderViolations is on or while Automatic probes; -1 when not
   /// counted).
