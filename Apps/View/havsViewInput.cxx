@@ -125,6 +125,10 @@ void Input::Key(const std::string& key)
   {
     action = this->TheScene.ToggleLevelOfDetail();
   }
+  else if (key == "i")
+  {
+    action = this->TheScene.ToggleIsoSurfacesInComposite();
+  }
   else if (key == "v")
   {
     action = this->TheScene.ToggleViolationCount();

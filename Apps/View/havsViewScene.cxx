@@ -18,6 +18,7 @@
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkContourValues.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkPNGWriter.h"
@@ -43,8 +44,9 @@ const char* const kMapperNames[] = { "HAVS", "HAVS cell projection", "PT (VTK)",
   "RayCast (VTK)", "HAVS ray caster" };
 const int kKBufferSizes[] = { 1, 2, 3, 4, 6, 8, 12 };
 // vtkVolumeMapper's numbers: composite, maximum, minimum, additive.
-const int kBlendModes[] = { 0, 1, 2, 4 };
-const char* const kBlendNames[] = { "composite", "maximum", "minimum", "", "additive" };
+const int kBlendModes[] = { 0, 1, 2, 4, 5 };
+const char* const kBlendNames[] = { "composite", "maximum", "minimum", "", "additive",
+  "isosurfaces" };
 
 std::string Format(const char* format, double value)
 {
@@ -200,10 +202,7 @@ std::string Scene::SetMapper(int kind)
   this->Mapper = kind;
   vtkAbstractVolumeMapper* mapper =
     this->Mappers[kind] ? this->Mappers[kind].GetPointer() : this->MakeMapper(kind);
-  if (auto* ug = vtkUnstructuredGridVolumeMapper::SafeDownCast(mapper))
-  {
-    ug->SetBlendMode(kBlendModes[this->BlendMode]);
-  }
+  this->ApplyBlendMode(mapper);
   this->Volume->SetMapper(mapper);
   return std::string("mapper: ") + kMapperNames[kind];
 }
@@ -297,12 +296,59 @@ std::string Scene::NextBlendMode()
   this->BlendMode = (this->BlendMode + 1) % static_cast<int>(sizeof(kBlendModes) / sizeof(int));
   for (auto& mapper : this->Mappers)
   {
-    if (auto* ug = vtkUnstructuredGridVolumeMapper::SafeDownCast(mapper))
-    {
-      ug->SetBlendMode(kBlendModes[this->BlendMode]);
-    }
+    this->ApplyBlendMode(mapper);
   }
   return std::string("blend: ") + kBlendNames[kBlendModes[this->BlendMode]];
+}
+
+//------------------------------------------------------------------------------
+void Scene::ApplyBlendMode(vtkAbstractVolumeMapper* mapper)
+{
+  auto* ug = vtkUnstructuredGridVolumeMapper::SafeDownCast(mapper);
+  if (!ug)
+  {
+    return;
+  }
+  const int blend = kBlendModes[this->BlendMode];
+  if (blend == vtkHAVSMapperBase::ISOSURFACE_BLEND || this->IsoSurfacesInComposite)
+  {
+    this->EnsureIsoValues();
+  }
+  // The isosurfaces and the mixed mode are the project's mappers' (VTK's
+  // unstructured-grid mappers have neither: they stay composite).
+  auto* base = vtkHAVSMapperBase::SafeDownCast(mapper);
+  ug->SetBlendMode(blend == vtkHAVSMapperBase::ISOSURFACE_BLEND && !base ? 0 : blend);
+  if (base)
+  {
+    base->SetIsoSurfacesInComposite(this->IsoSurfacesInComposite);
+  }
+}
+
+//------------------------------------------------------------------------------
+void Scene::EnsureIsoValues()
+{
+  // Two isovalues, at 30 % and 65 % of the scalar range, when none is set.
+  vtkContourValues* values = this->Property->GetIsoSurfaceValues();
+  vtkDataArray* scalars = this->Grid ? this->Grid->GetPointData()->GetScalars() : nullptr;
+  if (values->GetNumberOfContours() > 0 || !scalars)
+  {
+    return;
+  }
+  double range[2];
+  scalars->GetRange(range);
+  values->SetValue(0, range[0] + 0.30 * (range[1] - range[0]));
+  values->SetValue(1, range[0] + 0.65 * (range[1] - range[0]));
+}
+
+//------------------------------------------------------------------------------
+std::string Scene::ToggleIsoSurfacesInComposite()
+{
+  this->IsoSurfacesInComposite = !this->IsoSurfacesInComposite;
+  for (auto& mapper : this->Mappers)
+  {
+    this->ApplyBlendMode(mapper);
+  }
+  return std::string("isosurfaces in the volume: ") + (this->IsoSurfacesInComposite ? "on" : "off");
 }
 
 //------------------------------------------------------------------------------
@@ -502,7 +548,8 @@ std::string Scene::KeyHelp()
          "k  next k (1 2 3 4 6 8 12)      K  automatic k on/off\n"
          "o  next order (centroid, MPVO, automatic)\n"
          "m  next mapper (HAVS, HAVS cell projection, PT, ZSweep, RayCast)\n"
-         "b  next blend mode (composite, maximum, minimum, additive)\n"
+         "b  next blend mode (composite, maximum, minimum, additive, isosurfaces)\n"
+         "i  isosurfaces in the volume on/off\n"
          "l  level of detail on/off       c  next colour map\n"
          "v  count order violations on/off\n"
          "t  overlay (status, editor) on/off\n"

@@ -76,6 +76,7 @@ public:
   std::string NextOrder();
   std::string NextBlendMode();
   std::string ToggleLevelOfDetail();
+  std::string ToggleIsoSurfacesInComposite();
   std::string ToggleViolationCount();
   std::string NextColorPreset();
   std::string ToggleOverlay();
@@ -112,6 +113,10 @@ private:
   vtkAbstractVolumeMapper* MakeMapper(int kind);
   /// The HAVS mapper, made when first needed (its settings live on it).
   vtkHAVSVolumeMapper* GetHAVSMapper();
+  /// The blend mode (and the mixed mode) on a mapper: VTK's stay composite for isosurfaces.
+  void ApplyBlendMode(vtkAbstractVolumeMapper* mapper);
+  /// Two isovalues (30 % and 65 % of the range) when the property has none.
+  void EnsureIsoValues();
   /// The level of detail (on or off) on a mapper of the project's.
   void ApplyLevelOfDetail(vtkAbstractVolumeMapper* mapper) const;
 
@@ -125,6 +130,7 @@ private:
   TransferFunctionEditor Editor;
   vtkSmartPointer<vtkAbstractVolumeMapper> Mappers[NumberOfMappers];
   int Mapper = MapperHAVS;
+  bool IsoSurfacesInComposite = false; ///< the project's mappers' mixed mode
   bool LevelOfDetail = true; ///< every project mapper's: the reduced image, HAVS's face subset
   int BlendMode = 0;
   bool Overlay = true;
