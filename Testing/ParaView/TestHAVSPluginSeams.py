@@ -23,7 +23,7 @@ pieces composited as IceT does, against the same exact image).
 The grid is written once as a .vtu (the same tetrahedra for the reference and for ParaView):
 rank 0 reads it whole and ParaView redistributes it, as it does any reader's output.
 
-Arguments: --plugin PATH --out DIR [--data delaunay|bluntfin|loxpost] [--size N] [--views N]
+Arguments: --plugin PATH --out DIR [--data delaunay|hexes|bluntfin|loxpost] [--size N] [--views N]
   [--mappers a,b] [--redistribution split|clip|whole] [--control] [--csv PATH]
 Environment: HAVS_DATA_DIR (shared/data). Run under Xvfb (Debian's ParaView is GLX-only).
 """
@@ -46,7 +46,8 @@ from vtkmodules.vtkRenderingCore import vtkCamera
 from vtkmodules.vtkParallelCore import vtkDummyController
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkStructuredGrid
+from vtkmodules.vtkFiltersCore import vtkAppendFilter
 from vtkmodules.vtkFiltersCore import vtkDelaunay3D
 
 from havs_plugin_scene import (mpi_setup, new_view, reference_image, require_working_expat,
@@ -55,7 +56,8 @@ from havs_plugin_scene import (mpi_setup, new_view, reference_image, require_wor
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
 parser.add_argument("--out", required=True)
-parser.add_argument("--data", choices=["bluntfin", "loxpost", "delaunay"], default="delaunay")
+parser.add_argument("--data", choices=["bluntfin", "loxpost", "delaunay", "hexes"],
+                    default="delaunay")
 parser.add_argument("--size", type=int, default=256)
 parser.add_argument("--views", type=int, default=4)
 parser.add_argument("--first-view", type=int, default=0)
@@ -75,7 +77,7 @@ args, _ = parser.parse_known_args()
 
 MODES = {"whole": 0, "split": 1, "clip": 2}
 DISTRIBUTION_MAX = (args.distribution_max if args.distribution_max is not None
-                    else 0.5 if args.data == "delaunay" else 1.0)
+                    else 0.5 if args.data in ("delaunay", "hexes") else 1.0)
 # The rendering (the screenshot against IceT's composite of the exact pieces), in 1/255: a
 # rank's value a hair off the exact one rounds the other way, and IceT carries that through
 # its blends, one more level of them for each doubling of the ranks (measured: max 2 at 2
@@ -114,7 +116,10 @@ def gather(value):
 
 
 def whole_grid():
-    """The whole grid as tetrahedra, and its scalar's name."""
+    """The grid ParaView reads, the whole grid as tetrahedra, and its scalar's name. Mixed
+    cells ("hexes"): ParaView reads hexahedra and its volume preprocessor splits them into
+    tetrahedra (vtkDataSetTriangleFilter) before it redistributes the cells, so the parallel
+    image must equal the serial image of that tetrahedralization, which the reference draws."""
     data = os.environ["HAVS_DATA_DIR"]
     if args.data == "bluntfin":
         reader = vtkMultiBlockPLOT3DReader()
@@ -145,6 +150,32 @@ def whole_grid():
         delaunay.Update()
         source = delaunay.GetOutput()
         array = "Field"
+    elif args.data == "hexes":
+        # 6 x 5 x 5 hexahedra of a sheared, bent lattice (double coordinates), a smooth field:
+        # the kd cuts cross the cells (no cut runs along a lattice plane), the hexahedra's
+        # split into tetrahedra is ParaView's.
+        n = (7, 6, 6)
+        lattice = vtkStructuredGrid()
+        lattice.SetDimensions(*n)
+        points = vtkPoints()
+        points.SetDataTypeToDouble()
+        field = []
+        for k in range(n[2]):
+            for j in range(n[1]):
+                for i in range(n[0]):
+                    x, y, z = i / (n[0] - 1), j / (n[1] - 1), k / (n[2] - 1)
+                    points.InsertNextPoint(x + 0.21 * y + 0.05 * math.sin(3.0 * z),
+                                           y + 0.13 * z * z, z + 0.17 * x)
+                    field.append(math.sin(3.0 * x) * math.cos(2.0 * y) + z * z)
+        lattice.SetPoints(points)
+        scalars = numpy_to_vtk(numpy.array(field), deep=True)
+        scalars.SetName("Field")
+        lattice.GetPointData().SetScalars(scalars)
+        append = vtkAppendFilter()
+        append.AddInputData(lattice)
+        append.Update()
+        source = append.GetOutput()
+        array = "Field"
     else:
         reader = vtkUnstructuredGridReader()
         reader.SetFileName(os.path.join(data, "post.vtk"))
@@ -156,7 +187,9 @@ def whole_grid():
     tetrahedralize.Update()
     grid = tetrahedralize.GetOutput()
     grid.GetPointData().SetActiveScalars(array)
-    return grid, array
+    read = source if args.data == "hexes" else grid
+    read.GetPointData().SetActiveScalars(array)
+    return read, grid, array
 
 
 def png_array(path):
@@ -170,13 +203,13 @@ def png_array(path):
 
 require_working_expat()
 LoadPlugin(args.plugin, remote=False, ns=globals())
-grid, array = whole_grid()
+read_grid, grid, array = whole_grid()
 vtu = os.path.join(args.out, "seams_%s.vtu" % args.data)
 if rank == 0:
     os.makedirs(args.out, exist_ok=True)
     writer = vtkXMLUnstructuredGridWriter()
     writer.SetFileName(vtu)
-    writer.SetInputData(grid)
+    writer.SetInputData(read_grid)
     writer.SetDataModeToAppended()
     writer.EncodeAppendedDataOff()
     writer.Write()
