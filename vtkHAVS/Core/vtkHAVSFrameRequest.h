@@ -83,9 +83,10 @@ struct vtkHAVSFrameRequest
   int K = 1;
   int BlendMode = CompositeBlend;
   float TerminationOpacity = 1.0f;
-  bool Tagging = true;       ///< boundary fragments carry their entry/exit role
-  bool CellScalars = false;  ///< the scalars are the cells' (vtkHAVSMesh::HasCellScalars)
-  bool Opaque = true;        ///< opaque geometry may be in the depth buffer (rays end there)
+  bool Tagging = true;      ///< boundary fragments carry their entry/exit role
+  bool CellScalars = false; ///< the scalars are the cells' (vtkHAVSMesh::HasCellScalars)
+  int IsoSurfaces = 0; ///< vtkHAVSIsoSurfaces::ShaderMode: 0 none, 1 the blend, 2 the mixed mode
+  bool Opaque = true;  ///< opaque geometry may be in the depth buffer (rays end there)
   float GapLength = 3.0e38f; ///< segments longer than this contribute nothing (3e38: off)
   bool Composite = true;     ///< composite the result over the window (else keep it)
   bool CountViolations = true;

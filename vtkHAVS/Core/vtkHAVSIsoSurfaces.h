@@ -68,6 +68,16 @@ public:
    */
   std::vector<int> Crossed(double sf, double sb) const;
 
+  /**
+   * What the shaders compile in for `blendMode` (HAVS_ISO): 0 nothing (a
+   * composite frame pays nothing for the isosurfaces), 1 the isosurface
+   * blend, 2 the mixed mode with surfaces to draw.
+   */
+  int ShaderMode(int blendMode) const
+  {
+    return blendMode == IsoSurfaceBlend ? 1 : (this->Composite && this->Count > 0 ? 2 : 0);
+  }
+
   int Count = 0;                       ///< surfaces drawn (0: none)
   bool Composite = false;              ///< the volume between them too (the mixed mode)
   int Dropped = 0;                     ///< isovalues beyond MaximumCount, left out

@@ -377,6 +377,7 @@ vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
   r.BlendMode = this->GetFrameBlend();
   r.TerminationOpacity = static_cast<float>(this->EarlyRayTerminationOpacity);
   r.CellScalars = this->Mesh->HasCellScalars();
+  r.IsoSurfaces = this->FrameIsoSurfaces.ShaderMode(this->BlendMode);
   r.Tagging = this->BoundaryMode == BoundaryTagging ||
     (this->BoundaryMode == BoundaryAutomatic &&
       (!this->Mesh->GetFaceSet()->IsConvex() || this->SkippingCells));

@@ -63,6 +63,7 @@ vtkHAVSShaders::Features vtkHAVSGLPassContext::ShaderFeatures() const
   f.CellScalars = this->Request.CellScalars;
   f.Clipping = this->Request.Planes && this->Request.Planes->GetNumberOfPlanes() > 0;
   f.Projection = this->Request.View ? (this->Request.View->Parallel ? 1 : 0) : -1;
+  f.IsoSurfaces = this->Request.IsoSurfaces;
   return f;
 }
 

@@ -139,12 +139,11 @@ void vtkHAVSGLTable::SetUniforms(vtkShaderProgram* program)
   {
     program->SetUniformi("havsCellOptics", this->CellOptics->GetTextureUnit());
   }
-  // The isosurfaces (vtkHAVSKBufferLib's havsSegment): none unless a frame set them.
+  // The isosurfaces (vtkHAVSKBufferLib's havsSegment, compiled in with HAVS_ISO).
   const int count = this->IsoSurfaces ? this->IsoSurfaces->Count : 0;
   program->SetUniformi("havsIsoCount", count);
   if (count > 0)
   {
-    program->SetUniformi("havsIsoComposite", this->IsoSurfaces->Composite ? 1 : 0);
     program->SetUniform1fv("havsIsoValues", count, this->IsoSurfaces->Normalized);
     program->SetUniform4fv("havsIsoColors", count, this->IsoSurfaces->Colors);
   }

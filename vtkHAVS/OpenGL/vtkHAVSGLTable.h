@@ -66,7 +66,7 @@ public:
   /// havsTable, havsScalarTexel, havsLengthTexel, havsInvMaxLength,
   /// havsLengthLogScale, havsInvLogRange (table active), havsCellOptics
   /// (when GetCellOptics() is active), and the isosurfaces' havsIsoCount,
-  /// havsIsoComposite, havsIsoValues, havsIsoColors.
+  /// havsIsoValues, havsIsoColors (the shaders compile them in with HAVS_ISO).
   void SetUniforms(vtkShaderProgram* program);
 
   /// The frame's isosurfaces (the mapper's, set every frame; nullptr: none).

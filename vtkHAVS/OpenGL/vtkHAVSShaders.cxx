@@ -68,7 +68,8 @@ std::string Compose(const char* templ, int k, int pixelStride,
           << "#define HAVS_OPAQUE " << (features.Opaque ? 1 : 0) << "\n"
           << "#define HAVS_CELL_SCALARS " << (features.CellScalars ? 1 : 0) << "\n"
           << "#define HAVS_CLIPPING " << (features.Clipping ? 1 : 0) << "\n"
-          << "#define HAVS_PROJECTION " << features.Projection << "\n";
+          << "#define HAVS_PROJECTION " << features.Projection << "\n"
+          << "#define HAVS_ISO " << features.IsoSurfaces << "\n";
   Replace(source, "//HAVS::Defines", defines.str());
   Replace(source, "//HAVS::KBufferLib", vtkHAVSKBufferLib);
   Replace(source, "//HAVS::CellOpticsLib", CellOpticsLib());
@@ -79,9 +80,10 @@ std::string Compose(const char* templ, int k, int pixelStride,
 /// the ray caster's): no k-buffer, no violation counter, no tagging; its blend
 /// and the additive blend's library in.
 std::string CellSegmentShader(
-  const char* templ, bool opaque, int blend, bool cellScalars, int cellBuffers)
+  const char* templ, bool opaque, int blend, bool cellScalars, int cellBuffers, int isoSurfaces)
 {
   vtkHAVSShaders::Features features;
+  features.IsoSurfaces = isoSurfaces;
   features.CountViolations = false;
   features.Tagging = false;
   features.Opaque = opaque;
@@ -329,9 +331,10 @@ std::string vtkHAVSShaders::CellProjectionVertexShader()
 }
 
 std::string vtkHAVSShaders::CellProjectionShader(
-  bool opaque, int blend, bool cellScalars, int cellBuffers)
+  bool opaque, int blend, bool cellScalars, int cellBuffers, int isoSurfaces)
 {
-  return CellSegmentShader(vtkHAVSCellProjectionFS, opaque, blend, cellScalars, cellBuffers);
+  return CellSegmentShader(
+    vtkHAVSCellProjectionFS, opaque, blend, cellScalars, cellBuffers, isoSurfaces);
 }
 
 std::string vtkHAVSShaders::RayCastPeelShader()
@@ -343,9 +346,10 @@ std::string vtkHAVSShaders::RayCastPeelShader()
   return Compose(vtkHAVSRayCastPeelFS, 1, 1, features);
 }
 
-std::string vtkHAVSShaders::RayCastShader(bool opaque, int blend, bool cellScalars, int cellBuffers)
+std::string vtkHAVSShaders::RayCastShader(
+  bool opaque, int blend, bool cellScalars, int cellBuffers, int isoSurfaces)
 {
-  return CellSegmentShader(vtkHAVSRayCastFS, opaque, blend, cellScalars, cellBuffers);
+  return CellSegmentShader(vtkHAVSRayCastFS, opaque, blend, cellScalars, cellBuffers, isoSurfaces);
 }
 
 std::string vtkHAVSShaders::RayCastTileVertexShader()

@@ -45,6 +45,7 @@ struct vtkHAVSKBufferShaderFeatures
   bool CellScalars = false;    ///< a fragment carries the scalar of the cell behind it
   bool Clipping = true;        ///< clipping or near planes cut the mesh (a loop over them)
   int Projection = -1;         ///< 0 perspective, 1 parallel, -1 per frame (a uniform)
+  int IsoSurfaces = 0; ///< 0 none, 1 the isosurface blend, 2 the mixed mode (vtkHAVSIsoSurfaces)
 };
 
 class VTKHAVSOPENGL_EXPORT vtkHAVSShaders
@@ -118,10 +119,10 @@ public:
   /// composite, maximum, minimum or additive; `cellScalars`: the cells'
   /// fields are cell codes, their segments read the cell optics;
   /// `cellBuffers`: the storage buffers the cell records lie in,
-  /// vtkHAVSGLCellRecords).
+  /// vtkHAVSGLCellRecords; `isoSurfaces`: Features::IsoSurfaces).
   static std::string CellProjectionVertexShader();
   static std::string CellProjectionShader(
-    bool opaque, int blend = 0, bool cellScalars = false, int cellBuffers = 1);
+    bool opaque, int blend = 0, bool cellScalars = false, int cellBuffers = 1, int isoSurfaces = 0);
   ///@}
 
   ///@{
@@ -131,7 +132,7 @@ public:
   /// `opaque`; `blend`, `cellScalars` and `cellBuffers` as CellProjectionShader's).
   static std::string RayCastPeelShader();
   static std::string RayCastShader(
-    bool opaque, int blend = 0, bool cellScalars = false, int cellBuffers = 1);
+    bool opaque, int blend = 0, bool cellScalars = false, int cellBuffers = 1, int isoSurfaces = 0);
   /// The ray-casting pass's vertex shader: one instance per screen tile.
   static std::string RayCastTileVertexShader();
   ///@}

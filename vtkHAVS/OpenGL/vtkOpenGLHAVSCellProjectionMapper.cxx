@@ -167,7 +167,8 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
     vtkHAVSShaders::CellProjectionVertexShader().c_str(),
     vtkHAVSShaders::CellProjectionShader(opaque, frame.Blend,
-      this->Resources->GetTable()->HasCellOptics(), gl.Records.GetBufferCount())
+      this->Resources->GetTable()->HasCellOptics(), gl.Records.GetBufferCount(),
+      this->GetFrameIsoSurfaces().ShaderMode(this->GetBlendMode()))
       .c_str(),
     "");
   if (!program || !program->GetCompiled())

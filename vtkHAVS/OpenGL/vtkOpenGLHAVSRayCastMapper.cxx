@@ -151,7 +151,8 @@ bool vtkOpenGLHAVSRayCastMapper::MakePrograms(
   programs.Cast = programs.Peel && programs.Peel->GetCompiled()
     ? cache->ReadyShaderProgram(vtkHAVSShaders::RayCastTileVertexShader().c_str(),
         vtkHAVSShaders::RayCastShader(frame.Opaque, frame.Blend,
-          this->Resources->GetTable()->HasCellOptics(), this->GL->Records.GetBufferCount())
+          this->Resources->GetTable()->HasCellOptics(), this->GL->Records.GetBufferCount(),
+          this->GetFrameIsoSurfaces().ShaderMode(this->GetBlendMode()))
           .c_str(),
         "")
     : nullptr;

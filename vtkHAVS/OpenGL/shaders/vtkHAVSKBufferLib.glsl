@@ -59,6 +59,9 @@
 #ifndef HAVS_PROJECTION
 #define HAVS_PROJECTION -1
 #endif
+#ifndef HAVS_ISO
+#define HAVS_ISO 0
+#endif
 
 // The face passes' scalar input (declared with HAVS_FACE_SCALAR_INPUT) and the
 // fragment's scalar, havsFaceScalar(). Point scalars: interpolated across the
@@ -250,13 +253,14 @@ vec4 havsTableSegment(float sf, float sb, float len)
 }
 #endif
 
-// The isosurfaces (vtkHAVSIsoSurfaces; vtkHAVSGLTable sets them): the
-// isosurface blend (havsIsoCount > 0) or, with havsIsoComposite, the
-// composite blend with its surfaces inside (the mixed mode). Values in the
-// scalars' [0, 1], ascending; colours premultiplied.
+#if HAVS_ISO
+// The isosurfaces (vtkHAVSIsoSurfaces; vtkHAVSGLTable sets them), compiled
+// in only where a frame draws them (HAVS_ISO 1: the isosurface blend, 2: the
+// composite blend with its surfaces inside, the mixed mode; a runtime branch
+// cost llvmpipe's composite frames 1.4 to 1.8 times their draw). Values in
+// the scalars' [0, 1], ascending; colours premultiplied.
 const int HAVS_MAX_ISO = 8;
 uniform int havsIsoCount;
-uniform int havsIsoComposite;
 uniform float havsIsoValues[HAVS_MAX_ISO];
 uniform vec4 havsIsoColors[HAVS_MAX_ISO];
 
@@ -277,8 +281,7 @@ vec4 havsIsoSegment(float sf, float sb, float len)
     float v = havsIsoValues[i];
     if (rising ? (v >= sf && v < sb) : (v <= sf && v > sb))
     {
-#if !HAVS_CELL_SCALARS
-      if (havsIsoComposite != 0)
+#if !HAVS_CELL_SCALARS && HAVS_ISO == 2
       {
         float t = (v - sf) / (sb - sf);
         color += (1.0 - color.a) * havsTableSegment(sFrom, v, (t - from) * len);
@@ -289,14 +292,12 @@ vec4 havsIsoSegment(float sf, float sb, float len)
       color += (1.0 - color.a) * havsIsoColors[i];
     }
   }
-#if !HAVS_CELL_SCALARS
-  if (havsIsoComposite != 0)
-  {
-    color += (1.0 - color.a) * havsTableSegment(sFrom, sb, (1.0 - from) * len);
-  }
+#if !HAVS_CELL_SCALARS && HAVS_ISO == 2
+  color += (1.0 - color.a) * havsTableSegment(sFrom, sb, (1.0 - from) * len);
 #endif
   return color;
 }
+#endif
 
 // Premultiplied colour and opacity of the segment from a to b.
 vec4 havsSegment(vec2 a, vec2 b)
@@ -306,19 +307,15 @@ vec4 havsSegment(vec2 a, vec2 b)
   {
     return vec4(0.0);
   }
-#if HAVS_CELL_SCALARS
+#if HAVS_CELL_SCALARS && HAVS_ISO == 1
   // (The segment lies in the cell behind its front fragment; its scalar is
   // constant: no isosurface inside it.)
-  if (havsIsoCount > 0 && havsIsoComposite == 0)
-  {
-    return vec4(0.0);
-  }
+  return vec4(0.0);
+#elif HAVS_CELL_SCALARS
   return havsCellSegment(havsScalarOf(a.y), len);
+#elif HAVS_ISO
+  return havsIsoSegment(havsScalarOf(a.y), havsScalarOf(b.y), len);
 #else
-  if (havsIsoCount > 0)
-  {
-    return havsIsoSegment(havsScalarOf(a.y), havsScalarOf(b.y), len);
-  }
   return havsTableSegment(havsScalarOf(a.y), havsScalarOf(b.y), len);
 #endif
 }
