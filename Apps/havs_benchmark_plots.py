@@ -15,6 +15,7 @@
 Needs matplotlib (Debian python3-matplotlib); without it, says so and does nothing."""
 import csv
 import math
+import re
 import sys
 
 try:
@@ -40,7 +41,14 @@ def edit_run(r):
     return r["config"].startswith("edit-") or "edit-" in r.get("command", "")
 
 
-rows = [r for r in all_rows if not level_of_detail(r) and not edit_run(r)]
+def budget_run(r):
+    # A lod-<percent>-* row or the reference a frame-budget run made: the report's frame
+    # budgets section only.
+    return any(re.match(r"lod-[0-9]", text)
+               for text in [r["config"]] + re.split(r"[ ,]", r.get("command", "")))
+
+
+rows = [r for r in all_rows if not level_of_detail(r) and not edit_run(r) and not budget_run(r)]
 out = sys.argv[2]
 
 
