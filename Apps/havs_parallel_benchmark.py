@@ -107,21 +107,14 @@ def main():
 
     sys.path.insert(0, os.path.join(HERE, "..", "Testing", "ParaView"))
     from paraview.simple import LoadPlugin, Render, Show, XMLUnstructuredGridReader
-    from vtkmodules.vtkCommonCore import vtkDoubleArray
     from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
-    from havs_plugin_scene import mpi_setup, new_view, require_working_expat, style_havs_volume
+    from havs_plugin_scene import (gather_all, mpi_setup, new_view, require_working_expat,
+                                   style_havs_volume)
 
     controller, rank, ranks = mpi_setup()
 
     def gather(value):
-        local = vtkDoubleArray()
-        local.InsertNextValue(float(value))
-        every = vtkDoubleArray()
-        every.SetNumberOfValues(ranks)
-        if controller and ranks > 1:
-            controller.AllGather(local, every)
-            return [every.GetValue(i) for i in range(ranks)]
-        return [float(value)]
+        return gather_all(controller, ranks, value)
 
     def barrier():
         if controller and ranks > 1:

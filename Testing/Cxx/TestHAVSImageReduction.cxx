@@ -33,9 +33,7 @@
 #include "havsTestProperties.h"
 #include "havsTestScenes.h"
 
-#include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSDataSets.h"
-#include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -55,19 +53,6 @@
 
 namespace
 {
-vtkSmartPointer<vtkHAVSMapperBase> MakeMapper(const std::string& name)
-{
-  if (name == "raycast")
-  {
-    return vtkSmartPointer<vtkHAVSRayCastMapper>::New();
-  }
-  if (name == "cellprojection")
-  {
-    return vtkSmartPointer<vtkHAVSCellProjectionMapper>::New();
-  }
-  return vtkSmartPointer<vtkHAVSVolumeMapper>::New();
-}
-
 /// The kept float result and its size.
 std::vector<float> Result(vtkHAVSMapperBase* mapper, int size[2])
 {
@@ -115,7 +100,7 @@ int TestHAVSImageReduction(int argc, char* argv[])
   // 1. Scale 0.5 is the exact image of a half-size viewport.
   {
     const int size = 96, half = size / 2;
-    auto mapper = MakeMapper(name);
+    auto mapper = havstest::MakeMapperNamed(name);
     mapper->KeepFloatResultOn();
     mapper->SetImageScale(0.5);
     auto s = havstest::MakeScene(grid, mapper, property, size, size);
@@ -168,7 +153,7 @@ int TestHAVSImageReduction(int argc, char* argv[])
   // 2. The composite's upsampling, in a viewport off the window's origin.
   {
     const int width = 128, height = 96;
-    auto mapper = MakeMapper(name);
+    auto mapper = havstest::MakeMapperNamed(name);
     mapper->KeepFloatResultOn();
     mapper->SetImageScale(0.5);
     auto s = havstest::MakeScene(grid, mapper, property, width, height);
@@ -214,7 +199,7 @@ int TestHAVSImageReduction(int argc, char* argv[])
   // 3. The controller: a tiny budget, then the still one.
   {
     const int size = 96;
-    auto mapper = MakeMapper(name);
+    auto mapper = havstest::MakeMapperNamed(name);
     mapper->KeepFloatResultOn();
     auto s = havstest::MakeScene(grid, mapper, property, size, size);
     havstest::PlaceCamera(s.Renderer, 25.0, 15.0, false);

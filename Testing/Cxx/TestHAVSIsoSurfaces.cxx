@@ -27,10 +27,8 @@
 #include "havsTestProperties.h"
 #include "havsTestScenes.h"
 
-#include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSIsoSurfaces.h"
-#include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSVolumeMapper.h"
 
@@ -54,19 +52,6 @@
 
 namespace
 {
-vtkSmartPointer<vtkHAVSMapperBase> MakeMapper(const std::string& name)
-{
-  if (name == "raycast")
-  {
-    return vtkSmartPointer<vtkHAVSRayCastMapper>::New();
-  }
-  if (name == "cellprojection")
-  {
-    return vtkSmartPointer<vtkHAVSCellProjectionMapper>::New();
-  }
-  return vtkSmartPointer<vtkHAVSVolumeMapper>::New();
-}
-
 /// The exact image under `blend` (the mixed mode with `mixed`).
 std::vector<float> Reference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
   vtkCamera* camera, int size, int blend, bool mixed)
@@ -99,7 +84,7 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
     property->GetIsoSurfaceValues()->SetValue(0, 0.55);
     double surface[4];
     vtkHAVSIsoSurfaces::SurfaceColor(property, 0.55, surface);
-    auto mapper = MakeMapper(name);
+    auto mapper = havstest::MakeMapperNamed(name);
     mapper->KeepFloatResultOn();
     mapper->SetBlendModeToIsoSurface();
     auto s = havstest::MakeScene(grid, mapper, property, size, size);
@@ -145,7 +130,7 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
     property->GetIsoSurfaceValues()->SetValue(i, values[i]);
     shifted->GetIsoSurfaceValues()->SetValue(i, values[i] + 0.01 * span);
   }
-  auto mapper = MakeMapper(name);
+  auto mapper = havstest::MakeMapperNamed(name);
   mapper->KeepFloatResultOn();
   auto s = havstest::MakeScene(grid, mapper, property, size, size);
   vtkCamera* camera = s.Renderer->GetActiveCamera();

@@ -13,10 +13,13 @@
 #include "havsTestProperties.h"
 #include "havsTestScenes.h"
 
+#include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSMapperBase.h"
+#include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSStandardViews.h"
+#include "vtkHAVSVolumeMapper.h"
 
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
@@ -33,6 +36,19 @@
 
 namespace havstest
 {
+vtkSmartPointer<vtkHAVSMapperBase> MakeMapperNamed(const std::string& name)
+{
+  if (name == "raycast")
+  {
+    return vtkSmartPointer<vtkHAVSRayCastMapper>::New();
+  }
+  if (name == "cellprojection")
+  {
+    return vtkSmartPointer<vtkHAVSCellProjectionMapper>::New();
+  }
+  return vtkSmartPointer<vtkHAVSVolumeMapper>::New();
+}
+
 std::vector<float> ReferenceImage(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
   vtkCamera* camera, int size, vtkPlaneCollection* planes, vtkFloatArray* depth, int blend,
   vtkIdType* startedInside)

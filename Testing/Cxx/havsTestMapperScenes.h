@@ -18,7 +18,8 @@
 
 #include "havsTestImages.h" // For ImageDifference
 
-#include "vtkType.h" // For vtkIdType
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+#include "vtkType.h"         // For vtkIdType
 
 #include <functional> // For std::function
 #include <string>     // For std::string
@@ -34,6 +35,10 @@ class vtkVolumeProperty;
 
 namespace havstest
 {
+/// A new mapper of the project's by the name the tests' arguments use:
+/// "raycast", "cellprojection", anything else HAVS.
+vtkSmartPointer<vtkHAVSMapperBase> MakeMapperNamed(const std::string& name);
+
 /// The exact image of vtkHAVSReferenceRenderer, size x size RGBA (clipped by
 /// `planes`, cut at the window depth `depth`, when given; under `blend`,
 /// vtkVolumeMapper's numbering); `startedInside` gets its rays that start in

@@ -36,7 +36,6 @@ import time
 
 import numpy
 from paraview.simple import (Render, SaveScreenshot, Show, XMLUnstructuredGridReader, LoadPlugin)
-from vtkmodules.vtkCommonCore import vtkDoubleArray
 from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
@@ -50,8 +49,8 @@ from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkStructuredGrid
 from vtkmodules.vtkFiltersCore import vtkAppendFilter
 from vtkmodules.vtkFiltersCore import vtkDelaunay3D
 
-from havs_plugin_scene import (mpi_setup, new_view, reference_image, require_working_expat,
-                               style_havs_volume)
+from havs_plugin_scene import (gather_all, mpi_setup, new_view, reference_image,
+                               require_working_expat, style_havs_volume)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -105,14 +104,7 @@ def check(condition, what):
 
 def gather(value):
     """`value` of every rank, on every rank (a list of floats)."""
-    local = vtkDoubleArray()
-    local.InsertNextValue(float(value))
-    every = vtkDoubleArray()
-    every.SetNumberOfValues(ranks)
-    if controller and ranks > 1:
-        controller.AllGather(local, every)
-        return [every.GetValue(i) for i in range(ranks)]
-    return [float(value)]
+    return gather_all(controller, ranks, value)
 
 
 def whole_grid():

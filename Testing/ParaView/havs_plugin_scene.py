@@ -14,6 +14,7 @@ from paraview.simple import (CreateRenderView, GetColorTransferFunction,
 from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
+from vtkmodules.vtkCommonCore import vtkDoubleArray
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 from vtkmodules.vtkRenderingCore import vtkVolumeProperty
 
@@ -37,6 +38,18 @@ def mpi_setup():
     rank = controller.GetLocalProcessId() if controller else 0
     ranks = controller.GetNumberOfProcesses() if controller else 1
     return controller, rank, ranks
+
+
+def gather_all(controller, ranks, value):
+    """`value` of every rank, on every rank (a list of floats; collective)."""
+    local = vtkDoubleArray()
+    local.InsertNextValue(float(value))
+    every = vtkDoubleArray()
+    every.SetNumberOfValues(ranks)
+    if controller and ranks > 1:
+        controller.AllGather(local, every)
+        return [every.GetValue(i) for i in range(ranks)]
+    return [float(value)]
 
 
 def expat_status():
