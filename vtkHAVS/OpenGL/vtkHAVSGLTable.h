@@ -21,8 +21,6 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
-class vtkHAVSIsoSurfaces;
-
 #include "vtkObject.h"
 #include "vtkOpenGLBufferObject.h" // For vtkSmartPointer<vtkOpenGLBufferObject>
 #include "vtkSmartPointer.h"       // For vtkSmartPointer
@@ -30,6 +28,7 @@ class vtkHAVSIsoSurfaces;
 
 VTK_ABI_NAMESPACE_BEGIN
 
+class vtkHAVSIsoSurfaces;
 class vtkHAVSPreIntegrationTable;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;

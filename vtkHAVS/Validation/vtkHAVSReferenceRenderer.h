@@ -50,8 +50,6 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
-class vtkHAVSIsoSurfaces;
-
 #include "vtkHAVSValidationModule.h" // For export macro
 #include "vtkNew.h"                  // For vtkNew
 #include "vtkObject.h"
@@ -68,6 +66,7 @@ class vtkCamera;
 class vtkDataSet;
 class vtkFloatArray;
 class vtkHAVSFaceSet;
+class vtkHAVSIsoSurfaces;
 class vtkMatrix4x4;
 class vtkPlaneCollection;
 class vtkUnstructuredGrid;
