@@ -29,7 +29,6 @@
 
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSIsoSurfaces.h"
-#include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -56,16 +55,8 @@ namespace
 std::vector<float> Reference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
   vtkCamera* camera, int size, int blend, bool mixed)
 {
-  vtkNew<vtkHAVSReferenceRenderer> reference;
-  reference->SetInputData(grid);
-  reference->SetProperty(property);
-  reference->SetCamera(camera);
-  reference->SetSize(size, size);
-  reference->SetBlendMode(blend);
-  reference->SetIsoSurfacesInComposite(mixed);
-  reference->Render();
-  vtkFloatArray* image = reference->GetImage();
-  return std::vector<float>(image->GetPointer(0), image->GetPointer(0) + 4 * size * size);
+  return havstest::ReferenceImage(
+    grid, property, camera, size, nullptr, nullptr, blend, nullptr, mixed);
 }
 }
 

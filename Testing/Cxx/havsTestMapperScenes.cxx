@@ -51,7 +51,7 @@ vtkSmartPointer<vtkHAVSMapperBase> MakeMapperNamed(const std::string& name)
 
 std::vector<float> ReferenceImage(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
   vtkCamera* camera, int size, vtkPlaneCollection* planes, vtkFloatArray* depth, int blend,
-  vtkIdType* startedInside)
+  vtkIdType* startedInside, bool isoInComposite)
 {
   vtkNew<vtkHAVSReferenceRenderer> reference;
   reference->SetInputData(grid);
@@ -61,6 +61,7 @@ std::vector<float> ReferenceImage(vtkUnstructuredGrid* grid, vtkVolumeProperty* 
   reference->SetClippingPlanes(planes);
   reference->SetOpaqueDepth(depth);
   reference->SetBlendMode(blend);
+  reference->SetIsoSurfacesInComposite(isoInComposite);
   reference->Render();
   if (startedInside)
   {

@@ -41,11 +41,12 @@ vtkSmartPointer<vtkHAVSMapperBase> MakeMapperNamed(const std::string& name);
 
 /// The exact image of vtkHAVSReferenceRenderer, size x size RGBA (clipped by
 /// `planes`, cut at the window depth `depth`, when given; under `blend`,
-/// vtkVolumeMapper's numbering); `startedInside` gets its rays that start in
-/// the mesh.
+/// vtkVolumeMapper's numbering; the property's isosurfaces inside the
+/// composite volume with `isoInComposite`); `startedInside` gets its rays
+/// that start in the mesh.
 std::vector<float> ReferenceImage(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
   vtkCamera* camera, int size, vtkPlaneCollection* planes = nullptr, vtkFloatArray* depth = nullptr,
-  int blend = 0, vtkIdType* startedInside = nullptr);
+  int blend = 0, vtkIdType* startedInside = nullptr, bool isoInComposite = false);
 
 /// The bound an exact mapper meets against ReferenceImage: RMSE < 5e-4 and
 /// max < 0.01 (float images, edge pixels left out by the comparison).

@@ -25,6 +25,24 @@ VTK_ABI_NAMESPACE_BEGIN
 
 vtkStandardNewMacro(vtkHAVSFaceOrderPolicy);
 
+namespace
+{
+/// Whether a face's `cell` (NoCell: none) is drawn under the visibility
+/// flags (none: every cell is).
+bool IsVisibleCell(const std::vector<uint8_t>* visible, uint32_t cell)
+{
+  return cell != vtkHAVSFaceSet::NoCell &&
+    (!visible || (cell < visible->size() && (*visible)[cell] != 0));
+}
+
+/// Whether a face's `cell` is not culled (no culling flags: none is).
+bool IsUnculledCell(const std::vector<uint8_t>* culled, uint32_t cell)
+{
+  return cell != vtkHAVSFaceSet::NoCell &&
+    (!culled || cell >= culled->size() || (*culled)[cell] == 0);
+}
+}
+
 vtkHAVSFaceOrderPolicy::vtkHAVSFaceOrderPolicy() = default;
 vtkHAVSFaceOrderPolicy::~vtkHAVSFaceOrderPolicy() = default;
 
@@ -210,26 +228,17 @@ void vtkHAVSFaceOrderPolicy::ListSortedFaces(vtkHAVSMesh* mesh)
   const std::vector<uint32_t>* ranks =
     this->Subset.Ranks && this->Subset.Ranks->size() == numFaces ? this->Subset.Ranks : nullptr;
   const uint32_t limit = this->Subset.Limit;
-  auto kept = [&](uint32_t cell)
-  {
-    return cell != vtkHAVSFaceSet::NoCell &&
-      (!culled || cell >= culled->size() || (*culled)[cell] == 0);
-  };
-  auto isVisible = [&](uint32_t cell)
-  {
-    return cell != vtkHAVSFaceSet::NoCell &&
-      (!visible || (cell < visible->size() && (*visible)[cell] != 0));
-  };
   this->UnculledFaces.clear();
   for (size_t f = 0; f < numFaces; ++f)
   {
     const uint32_t c0 = faceCells[2 * f], c1 = faceCells[2 * f + 1];
-    if (!kept(c0) && !kept(c1))
+    if (!IsUnculledCell(culled, c0) && !IsUnculledCell(culled, c1))
     {
       continue;
     }
     // (As Gather: an internal face of the drawn cells beyond the limit is left out.)
-    const bool internal = visible ? isVisible(c0) == isVisible(c1) : boundary[f] == 0;
+    const bool internal =
+      visible ? IsVisibleCell(visible, c0) == IsVisibleCell(visible, c1) : boundary[f] == 0;
     if (ranks && internal && (*ranks)[f] >= limit)
     {
       continue;
@@ -281,13 +290,9 @@ void vtkHAVSFaceOrderPolicy::Gather(vtkHAVSMesh* mesh, const std::vector<uint32_
     const std::vector<uint8_t>* visible = this->Visible;
     const std::vector<uint8_t>* culled = this->Culled;
     const std::vector<uint32_t>& faceCells = faces->GetFaceCells();
-    auto isVisible = [&](uint32_t cell)
-    {
-      return cell != vtkHAVSFaceSet::NoCell &&
-        (!visible || (cell < visible->size() && (*visible)[cell] != 0));
-    };
+    auto isVisible = [&](uint32_t cell) { return IsVisibleCell(visible, cell); };
     auto isKept = [&](uint32_t cell)
-    { return isVisible(cell) && (!culled || cell >= culled->size() || (*culled)[cell] == 0); };
+    { return IsVisibleCell(visible, cell) && IsUnculledCell(culled, cell); };
     vtkIdType n = 0;
     for (vtkIdType i = 0; i < numFaces; ++i)
     {

@@ -9,7 +9,8 @@
 =========================================================================*/
 #include "vtkHAVSIsoSurfaces.h"
 
-#include "vtkColorTransferFunction.h"
+#include "vtkHAVSPreIntegrationTable.h"
+
 #include "vtkContourValues.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkVolumeProperty.h"
@@ -21,15 +22,8 @@ VTK_ABI_NAMESPACE_BEGIN
 //------------------------------------------------------------------------------
 void vtkHAVSIsoSurfaces::SurfaceColor(vtkVolumeProperty* property, double v, double rgba[4])
 {
-  double color[3] = { 1.0, 1.0, 1.0 };
-  if (property->GetColorChannels(0) == 1)
-  {
-    color[0] = color[1] = color[2] = property->GetGrayTransferFunction(0)->GetValue(v);
-  }
-  else
-  {
-    property->GetRGBTransferFunction(0)->GetColor(v, color);
-  }
+  double color[3];
+  vtkHAVSPreIntegrationTable::EvaluateColor(property, 0, v, color);
   const double a = std::min(1.0, std::max(0.0, property->GetScalarOpacity(0)->GetValue(v)));
   for (int c = 0; c < 3; ++c)
   {
@@ -67,12 +61,7 @@ vtkHAVSIsoSurfaces vtkHAVSIsoSurfaces::Make(
   {
     s.Values[i] = values[i];
     s.Normalized[i] = span > 0.0 ? static_cast<float>((values[i] - scalarRange[0]) / span) : 0.0f;
-    double rgba[4];
-    SurfaceColor(property, values[i], rgba);
-    for (int c = 0; c < 4; ++c)
-    {
-      s.Colors[i][c] = static_cast<float>(rgba[c]);
-    }
+    SurfaceColor(property, values[i], s.Colors[i]);
   }
   return s;
 }

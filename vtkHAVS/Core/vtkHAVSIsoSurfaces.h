@@ -83,7 +83,7 @@ public:
   int Dropped = 0;                     ///< isovalues beyond MaximumCount, left out
   double Values[MaximumCount] = {};    ///< data values, ascending
   float Normalized[MaximumCount] = {}; ///< in the scalar range's [0, 1] (the shaders' scalars)
-  float Colors[MaximumCount][4] = {};  ///< premultiplied (rgb a, a)
+  double Colors[MaximumCount][4] = {}; ///< premultiplied (rgb a, a): SurfaceColor at Values
 };
 
 VTK_ABI_NAMESPACE_END

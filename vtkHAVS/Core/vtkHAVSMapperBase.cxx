@@ -371,13 +371,21 @@ vtkHAVSLevelOfDetailController* vtkHAVSMapperBase::GetImageReductionController()
 //------------------------------------------------------------------------------
 double vtkHAVSMapperBase::PixelShare(double detail) const
 {
-  return detail;
+  return this->SharesDetailWithFaces() ? std::sqrt(detail) : detail;
 }
 
 //------------------------------------------------------------------------------
 double vtkHAVSMapperBase::SmallestDetail() const
 {
-  return this->MinimumImageScale * this->MinimumImageScale;
+  const double pixels = this->MinimumImageScale * this->MinimumImageScale;
+  return this->SharesDetailWithFaces() ? pixels * pixels : pixels;
+}
+
+//------------------------------------------------------------------------------
+double vtkHAVSMapperBase::FrameBudget(vtkVolume* volume) const
+{
+  return this->LevelOfDetailTargetSeconds > 0.0 ? this->LevelOfDetailTargetSeconds
+                                                : volume->GetAllocatedRenderTime();
 }
 
 //------------------------------------------------------------------------------
@@ -390,11 +398,10 @@ double vtkHAVSMapperBase::ChooseImageScale(vtkVolume* volume)
   double detail = 1.0;
   if (this->ImageReduction)
   {
-    const double target = this->LevelOfDetailTargetSeconds > 0.0 ? this->LevelOfDetailTargetSeconds
-                                                                 : volume->GetAllocatedRenderTime();
     const double smallest = this->SmallestDetail();
     this->ImageControl->SetSmallestFraction(smallest);
-    detail = std::min(1.0, std::max(this->ImageControl->Choose(target), smallest));
+    detail =
+      std::min(1.0, std::max(this->ImageControl->Choose(this->FrameBudget(volume)), smallest));
   }
   const double pixels = std::min(1.0, std::max(this->PixelShare(detail), 0.0));
   this->FaceShare = pixels > 0.0 ? std::min(1.0, detail / pixels) : 0.0;

@@ -407,15 +407,19 @@ protected:
   /// Called with the frame's time (TimeToDraw) after a frame that reached RenderView.
   virtual void FrameFinished(double vtkNotUsed(seconds)) {}
   /**
-   * The share of the pixels a frame of this detail draws (the detail: the
-   * share of the full frame's work the level of detail allows, in (0, 1]).
-   * The base draws the detail in pixels alone; HAVS with its face subset
-   * takes part of it in faces (GetLastDetail() / this share).
+   * Whether the frame's detail (the share of the full frame's work the level
+   * of detail allows, in (0, 1]) is shared with a subset of faces (HAVS with
+   * its LevelOfDetail): then the pixels take its square root and the faces
+   * the rest (FaceShare); otherwise the pixels take all of it.
    */
-  virtual double PixelShare(double detail) const;
+  virtual bool SharesDetailWithFaces() const { return false; }
+  /// The share of the pixels a frame of this detail draws.
+  double PixelShare(double detail) const;
   /// The smallest detail a frame draws: the one whose pixels are the smallest
-  /// image's (MinimumImageScale squared for the base).
-  virtual double SmallestDetail() const;
+  /// image's (MinimumImageScale squared, squared again when shared).
+  double SmallestDetail() const;
+  /// The frame's budget: LevelOfDetailTargetSeconds, else VTK's allocated render time.
+  double FrameBudget(vtkVolume* volume) const;
   /// The frame's image scale: 1 unless the image reduction's budget asks for less.
   double ChooseImageScale(vtkVolume* volume);
   /// The frame's isosurfaces (FrameIsoSurfaces) and their once-only warnings.

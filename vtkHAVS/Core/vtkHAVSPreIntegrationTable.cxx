@@ -37,15 +37,7 @@ OpticalSample Evaluate(vtkVolumeProperty* property, int component, double s)
   OpticalSample out;
   const double unit = property->GetScalarOpacityUnitDistance(component);
   out.Tau = std::max(0.0, property->GetScalarOpacity(component)->GetValue(s)) / unit;
-  if (property->GetColorChannels(component) == 1)
-  {
-    const double g = property->GetGrayTransferFunction(component)->GetValue(s);
-    out.Color[0] = out.Color[1] = out.Color[2] = g;
-  }
-  else
-  {
-    property->GetRGBTransferFunction(component)->GetColor(s, out.Color);
-  }
+  vtkHAVSPreIntegrationTable::EvaluateColor(property, component, s, out.Color);
   return out;
 }
 
@@ -209,6 +201,20 @@ void WindowComposites(
     emit(s, s % width == 0 ? suffix[s] : Over(suffix[s], prefix[s + width - 1]));
   }
 }
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSPreIntegrationTable::EvaluateColor(
+  vtkVolumeProperty* property, int component, double s, double color[3])
+{
+  if (property->GetColorChannels(component) == 1)
+  {
+    color[0] = color[1] = color[2] = property->GetGrayTransferFunction(component)->GetValue(s);
+  }
+  else
+  {
+    property->GetRGBTransferFunction(component)->GetColor(s, color);
+  }
 }
 
 //------------------------------------------------------------------------------

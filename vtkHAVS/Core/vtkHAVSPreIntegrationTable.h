@@ -171,6 +171,9 @@ public:
    */
   static void EvaluateOptics(
     vtkVolumeProperty* property, int component, double s, double& tau, double color[3]);
+  /// The colour alone at scalar s: the grey function's value thrice (one
+  /// colour channel) or the RGB function's colour.
+  static void EvaluateColor(vtkVolumeProperty* property, int component, double s, double color[3]);
   /**
    * Appends the scalars of the nodes of `property`'s opacity and colour (or
    * grey) functions for `component`: where their pieces meet.

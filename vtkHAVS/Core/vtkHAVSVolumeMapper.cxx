@@ -213,10 +213,7 @@ double vtkHAVSVolumeMapper::ChooseLevelOfDetail(
     }
     else if (this->LevelOfDetail)
     {
-      const double target = this->LevelOfDetailTargetSeconds > 0.0
-        ? this->LevelOfDetailTargetSeconds
-        : volume->GetAllocatedRenderTime();
-      fraction = std::min(fraction, this->LevelOfDetailControl->Choose(target));
+      fraction = std::min(fraction, this->LevelOfDetailControl->Choose(this->FrameBudget(volume)));
     }
   }
   vtkHAVSFaceSet* faces = this->Mesh->GetFaceSet();
@@ -617,16 +614,9 @@ void vtkHAVSVolumeMapper::FrameFinished(double seconds)
 }
 
 //------------------------------------------------------------------------------
-double vtkHAVSVolumeMapper::PixelShare(double detail) const
+bool vtkHAVSVolumeMapper::SharesDetailWithFaces() const
 {
-  return this->LevelOfDetail && this->BlendMode == COMPOSITE_BLEND ? std::sqrt(detail) : detail;
-}
-
-//------------------------------------------------------------------------------
-double vtkHAVSVolumeMapper::SmallestDetail() const
-{
-  const double pixels = this->Superclass::SmallestDetail();
-  return this->LevelOfDetail && this->BlendMode == COMPOSITE_BLEND ? pixels * pixels : pixels;
+  return this->LevelOfDetail && this->BlendMode == COMPOSITE_BLEND;
 }
 
 //------------------------------------------------------------------------------

@@ -456,10 +456,8 @@ protected:
   bool PrepareTable(vtkVolume* volume) override;
   void RenderView(vtkRenderer* renderer, vtkVolume* volume, const vtkHAVSViewFrame& view) override;
   void FrameFinished(double seconds) override;
-  /// With LevelOfDetail (composite blend): the square root of the detail, the faces the rest.
-  double PixelShare(double detail) const override;
-  /// With LevelOfDetail: the smallest image's pixels times as small a share of the faces.
-  double SmallestDetail() const override;
+  /// With LevelOfDetail (composite blend): the face subset takes part of the detail.
+  bool SharesDetailWithFaces() const override;
   ///@}
 
   ///@{

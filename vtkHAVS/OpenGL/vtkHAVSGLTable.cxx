@@ -9,6 +9,7 @@
 =========================================================================*/
 #include "vtkHAVSGLTable.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "vtkHAVSCellOptics.h"
@@ -144,8 +145,13 @@ void vtkHAVSGLTable::SetUniforms(vtkShaderProgram* program)
   program->SetUniformi("havsIsoCount", count);
   if (count > 0)
   {
+    float colors[vtkHAVSIsoSurfaces::MaximumCount][4];
+    for (int i = 0; i < count; ++i)
+    {
+      std::copy_n(this->IsoSurfaces->Colors[i], 4, colors[i]);
+    }
     program->SetUniform1fv("havsIsoValues", count, this->IsoSurfaces->Normalized);
-    program->SetUniform4fv("havsIsoColors", count, this->IsoSurfaces->Colors);
+    program->SetUniform4fv("havsIsoColors", count, colors);
   }
 }
 

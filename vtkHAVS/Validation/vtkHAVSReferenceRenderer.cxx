@@ -595,6 +595,26 @@ void ForEachSegmentInMesh(const vtkHAVSReferenceRenderer::Fragment* begin,
     group = next;
   }
 }
+
+/// Premultiplied pieces composited front to back.
+struct FrontToBack
+{
+  double Color[3] = { 0, 0, 0 };
+  double Transmittance = 1.0;
+  void Add(const double piece[4])
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      this->Color[c] += this->Transmittance * piece[c];
+    }
+    this->Transmittance *= 1.0 - piece[3];
+  }
+  void Get(double rgba[4]) const
+  {
+    std::copy_n(this->Color, 3, rgba);
+    rgba[3] = 1.0 - this->Transmittance;
+  }
+};
 }
 
 //------------------------------------------------------------------------------
@@ -617,7 +637,7 @@ void vtkHAVSReferenceRenderer::IntegrateSegmentExact(
     }
     std::sort(cuts.begin(), cuts.end());
   }
-  double color[3] = { 0, 0, 0 }, transmittance = 1.0;
+  FrontToBack composite;
   for (size_t i = 0; i + 1 < cuts.size(); ++i)
   {
     const double a = cuts[i], b = cuts[i + 1];
@@ -628,39 +648,25 @@ void vtkHAVSReferenceRenderer::IntegrateSegmentExact(
     double piece[4];
     vtkHAVSPreIntegrationTable::IntegrateSegment(
       property, 0, sf + (sb - sf) * a, sf + (sb - sf) * b, length * (b - a), piece);
-    for (int c = 0; c < 3; ++c)
-    {
-      color[c] += transmittance * piece[c];
-    }
-    transmittance *= 1.0 - piece[3];
+    composite.Add(piece);
   }
-  rgba[0] = color[0];
-  rgba[1] = color[1];
-  rgba[2] = color[2];
-  rgba[3] = 1.0 - transmittance;
+  composite.Get(rgba);
 }
 
 //------------------------------------------------------------------------------
 void vtkHAVSReferenceRenderer::IntegrateRay(
   vtkVolumeProperty* property, const Fragment* begin, const Fragment* end, double rgba[4])
 {
-  double color[3] = { 0, 0, 0 }, transmittance = 1.0;
+  FrontToBack composite;
   ForEachSegmentInMesh(begin, end,
     [&](const Fragment& front, const Fragment& back)
     {
       double segment[4];
       IntegrateSegmentExact(
         property, front.ScalarBehind(), back.Scalar, back.Distance - front.Distance, segment);
-      for (int c = 0; c < 3; ++c)
-      {
-        color[c] += transmittance * segment[c];
-      }
-      transmittance *= 1.0 - segment[3];
+      composite.Add(segment);
     });
-  rgba[0] = color[0];
-  rgba[1] = color[1];
-  rgba[2] = color[2];
-  rgba[3] = 1.0 - transmittance;
+  composite.Get(rgba);
 }
 
 //------------------------------------------------------------------------------
@@ -707,14 +713,7 @@ void vtkHAVSReferenceRenderer::IntegrateRayBlend(vtkVolumeProperty* property, co
   // The colour of the extremal scalar, as the mappers look it up (clamped to the range).
   const double s = std::min(std::max(extremum, scalarRange[0]), scalarRange[1]);
   double color[3];
-  if (property->GetColorChannels(0) == 1)
-  {
-    color[0] = color[1] = color[2] = property->GetGrayTransferFunction(0)->GetValue(s);
-  }
-  else
-  {
-    property->GetRGBTransferFunction(0)->GetColor(s, color);
-  }
+  vtkHAVSPreIntegrationTable::EvaluateColor(property, 0, s, color);
   const double a = std::max(0.0, property->GetScalarOpacity(0)->GetValue(s));
   for (int c = 0; c < 3; ++c)
   {
@@ -727,15 +726,7 @@ void vtkHAVSReferenceRenderer::IntegrateRayBlend(vtkVolumeProperty* property, co
 void vtkHAVSReferenceRenderer::IntegrateRayIso(vtkVolumeProperty* property, const Fragment* begin,
   const Fragment* end, const vtkHAVSIsoSurfaces& iso, double rgba[4])
 {
-  double color[3] = { 0, 0, 0 }, transmittance = 1.0;
-  auto composite = [&](const double piece[4])
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      color[c] += transmittance * piece[c];
-    }
-    transmittance *= 1.0 - piece[3];
-  };
+  FrontToBack composite;
   ForEachSegmentInMesh(begin, end,
     [&](const Fragment& front, const Fragment& back)
     {
@@ -749,23 +740,19 @@ void vtkHAVSReferenceRenderer::IntegrateRayIso(vtkVolumeProperty* property, cons
         {
           const double t = (v - sf) / (sb - sf);
           IntegrateSegmentExact(property, sFrom, v, length * (t - from), piece);
-          composite(piece);
+          composite.Add(piece);
           from = t;
           sFrom = v;
         }
-        vtkHAVSIsoSurfaces::SurfaceColor(property, v, piece);
-        composite(piece);
+        composite.Add(iso.Colors[i]); // (the surface's colour, SurfaceColor at Make)
       }
       if (iso.Composite)
       {
         IntegrateSegmentExact(property, sFrom, sb, length * (1.0 - from), piece);
-        composite(piece);
+        composite.Add(piece);
       }
     });
-  rgba[0] = color[0];
-  rgba[1] = color[1];
-  rgba[2] = color[2];
-  rgba[3] = 1.0 - transmittance;
+  composite.Get(rgba);
 }
 
 //------------------------------------------------------------------------------

@@ -347,22 +347,18 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSLODStrategy(int strateg
 
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSBlendMode(int mode)
 {
-  for (vtkHAVSMapperBase* mapper : { static_cast<vtkHAVSMapperBase*>(this->HAVSMapper),
-         static_cast<vtkHAVSMapperBase*>(this->RayCastMapper),
-         static_cast<vtkHAVSMapperBase*>(this->CellProjectionMapper) })
+  for (const auto& named : this->Mappers)
   {
-    mapper->SetBlendMode(mode);
+    named.second->SetBlendMode(mode);
   }
   this->Modified();
 }
 
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSIsoSurfacesInComposite(int on)
 {
-  for (vtkHAVSMapperBase* mapper : { static_cast<vtkHAVSMapperBase*>(this->HAVSMapper),
-         static_cast<vtkHAVSMapperBase*>(this->RayCastMapper),
-         static_cast<vtkHAVSMapperBase*>(this->CellProjectionMapper) })
+  for (const auto& named : this->Mappers)
   {
-    mapper->SetIsoSurfacesInComposite(on != 0);
+    named.second->SetIsoSurfacesInComposite(on != 0);
   }
   this->Modified();
 }
