@@ -130,6 +130,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -670,6 +671,27 @@ void WindowError(const std::vector<float>& exact, const std::vector<uint8_t>& fo
   max = counted > 0 ? 255.0 * max : NAN;
 }
 
+/// The camera turned 3 degrees a frame for 60 frames under a budget of
+/// `budgetMs` (LevelOfDetailTargetSeconds, left set): `onFrame(ms,
+/// settled)` after each frame, settled for the last 30; returns the share of
+/// those within 25 % of the budget (havs-lod-rotate-*, lod-<percent>-*).
+double TurnUnderBudget(vtkRenderWindow* window, vtkCamera* camera, vtkHAVSMapperBase* base,
+  double budgetMs, const std::function<void(double, bool)>& onFrame)
+{
+  base->SetLevelOfDetailTargetSeconds(budgetMs / 1000.0);
+  const int frames = 60, settled = 30;
+  double within = 0.0;
+  for (int i = 0; i < frames; ++i)
+  {
+    camera->Azimuth(3.0);
+    const double ms = 1000.0 * TimedFrame(window);
+    const bool isSettled = i >= frames - settled;
+    onFrame(ms, isSettled);
+    within += isSettled && std::abs(ms - budgetMs) <= 0.25 * budgetMs ? 1 : 0;
+  }
+  return within / settled;
+}
+
 /// lod-<percent>-*: at view 0 the camera turns 3 degrees a frame: 5 frames
 /// with no budget (VTK's still rate: the full frame, their median), then 60
 /// with the budget set to that share of the full frame (the last 30 settled:
@@ -699,27 +721,21 @@ BudgetRun MeasureBudget(const Options& o, vtkRenderWindow* window, vtkCamera* ca
   }
   run.FullMs = Median(full);
   run.BudgetMs = percent / 100.0 * run.FullMs;
-  base->SetLevelOfDetailTargetSeconds(run.BudgetMs / 1000.0);
-  const int frames = 60, settled = 30;
-  double within = 0.0;
-  for (int i = 0; i < frames; ++i)
-  {
-    camera->Azimuth(3.0);
-    const double ms = 1000.0 * TimedFrame(window);
-    run.Trace.push_back(ms);
-    run.ScaleTrace.push_back(base->GetLastImageScale());
-    if (i >= frames - settled)
+  run.Within = TurnUnderBudget(window, camera, base, run.BudgetMs,
+    [&](double ms, bool settled)
     {
-      run.Settled.push_back(ms);
-      run.Scales.push_back(base->GetLastImageScale());
-      if (havs)
+      run.Trace.push_back(ms);
+      run.ScaleTrace.push_back(base->GetLastImageScale());
+      if (settled)
       {
-        run.Faces.push_back(havs->GetLastFrameStatistics()->GetLevelOfDetailFraction());
+        run.Settled.push_back(ms);
+        run.Scales.push_back(base->GetLastImageScale());
+        if (havs)
+        {
+          run.Faces.push_back(havs->GetLastFrameStatistics()->GetLevelOfDetailFraction());
+        }
       }
-      within += std::abs(ms - run.BudgetMs) <= 0.25 * run.BudgetMs ? 1 : 0;
-    }
-  }
-  run.Within = within / settled;
+    });
   PlaceView(camera, grid, 0, dataset);
   for (int i = 0; i < 3; ++i)
   {
@@ -1119,21 +1135,16 @@ int RunWorker(const Options& o)
       // detail's controller sets the share of internal faces drawn. Then the
       // still frame (the budget back to VTK's still rate) at view 0.
       vtkHAVSStandardViews::PlaceCamera(camera, grid, 0);
-      havs->SetLevelOfDetailTargetSeconds(lodTarget);
-      const int frames = 60, settled = 30;
-      for (int i = 0; i < frames; ++i)
-      {
-        camera->Azimuth(3.0);
-        const double ms = 1000.0 * TimedFrame(window);
-        lodTrace.push_back(ms);
-        if (i >= frames - settled)
+      lodWithin = TurnUnderBudget(window, camera, havs, 1000.0 * lodTarget,
+        [&](double ms, bool settled)
         {
-          frame.push_back(ms);
-          lodFractions.push_back(havs->GetLastFrameStatistics()->GetLevelOfDetailFraction());
-          lodWithin += std::abs(ms - 1000.0 * lodTarget) <= 0.25 * 1000.0 * lodTarget ? 1 : 0;
-        }
-      }
-      lodWithin /= settled;
+          lodTrace.push_back(ms);
+          if (settled)
+          {
+            frame.push_back(ms);
+            lodFractions.push_back(havs->GetLastFrameStatistics()->GetLevelOfDetailFraction());
+          }
+        });
       havs->SetLevelOfDetailTargetSeconds(0.0);
     }
     if (budgetPercent > 0.0)
