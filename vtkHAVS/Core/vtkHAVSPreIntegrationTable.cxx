@@ -300,7 +300,14 @@ void vtkHAVSPreIntegrationTable::IntegrateSegment(vtkVolumeProperty* property, i
 void vtkHAVSPreIntegrationTable::Zero()
 {
   const size_t ns = static_cast<size_t>(this->ScalarResolution);
-  this->Table.assign(ns * ns * this->LengthResolution * 4, 0.0f);
+  const size_t floats = ns * ns * this->LengthResolution * 4;
+  if (this->Table.capacity() > floats)
+  {
+    // A smaller table than the last (an edit that needs less resolution):
+    // its memory follows, rather than staying at the largest table built.
+    std::vector<float>().swap(this->Table);
+  }
+  this->Table.assign(floats, 0.0f);
   this->TransferFunction1D.assign(ns * 4, 0.0f);
   this->Additive1D.assign(2 * AdditiveResolution, 0.0f);
   this->BuiltScalarResolution = this->ScalarResolution;

@@ -63,11 +63,7 @@ bool vtkHAVSExtremumPass::ResolveResult(vtkOpenGLRenderWindow* window,
   vtkHAVSGLFrameTargets* targets, vtkHAVSGLTable* table, ResolveKind kind)
 {
   // The draw wrote the result texture; the resolve reads a copy of it.
-  const int w = targets->GetSize()[0], h = targets->GetSize()[1];
-  auto extremum = vtkHAVSGLFrameTargets::NewFloatTexture(window, w, h);
-  targets->BindResultForReading();
-  extremum->Activate();
-  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, w, h);
+  vtkTextureObject* extremum = targets->CopyResult();
   targets->BindResult();
   vtkTextureObject* function = table->GetTransferFunction1D();
   function->Activate();
@@ -88,7 +84,6 @@ bool vtkHAVSExtremumPass::ResolveResult(vtkOpenGLRenderWindow* window,
   }
   function->Deactivate();
   extremum->Deactivate();
-  extremum->ReleaseGraphicsResources(window);
   return built;
 }
 

@@ -59,7 +59,7 @@ void vtkHAVSFragmentListKBuffer::GrowNodes(GLuint capacity)
 bool vtkHAVSFragmentListKBuffer::Allocate(vtkHAVSGLPassContext& context)
 {
   const int width = context.Width(), height = context.Height();
-  this->Heads.Resize(GL_R32UI, width, height);
+  this->Heads.Resize(GL_R32UI, context.AllocatedWidth(), context.AllocatedHeight());
   if (!this->Counter.GetHandle())
   {
     this->Counter.Update(GL_SHADER_STORAGE_BUFFER, nullptr, sizeof(GLuint), 0, GL_DYNAMIC_READ);

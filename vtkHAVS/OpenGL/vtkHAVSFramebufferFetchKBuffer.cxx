@@ -55,7 +55,7 @@ int vtkHAVSFramebufferFetchKBuffer::GetMaximumK() const
 bool vtkHAVSFramebufferFetchKBuffer::Allocate(vtkHAVSGLPassContext& context)
 {
   const int k = context.Request.K;
-  const int w = context.Width(), h = context.Height();
+  const int w = context.AllocatedWidth(), h = context.AllocatedHeight();
   if (this->Framebuffer && this->K == k && this->Size[0] == w && this->Size[1] == h)
   {
     return true;

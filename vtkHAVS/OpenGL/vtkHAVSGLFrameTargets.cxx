@@ -47,27 +47,25 @@ vtkSmartPointer<vtkTextureObject> vtkHAVSGLFrameTargets::NewFloatTexture(
 //------------------------------------------------------------------------------
 void vtkHAVSGLFrameTargets::Resize(int fullWidth, int fullHeight, int width, int height)
 {
-  if (this->Size[0] == width && this->Size[1] == height && this->FullSize[0] == fullWidth &&
-    this->FullSize[1] == fullHeight && this->Result)
+  if (this->FullSize[0] != fullWidth || this->FullSize[1] != fullHeight || !this->Result)
   {
-    return;
+    this->ReleaseSizeDependent(this->Window);
+    this->OpaqueDepth = vtkSmartPointer<vtkTextureObject>::New();
+    this->OpaqueDepth->SetContext(this->Window);
+    this->OpaqueDepth->AllocateDepth(fullWidth, fullHeight, vtkTextureObject::Float32);
+    this->OpaqueDepthFormat = vtkTextureObject::Float32;
+    this->Result = NewFloatTexture(this->Window, fullWidth, fullHeight);
+    this->ResultFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->ResultFramebuffer->SetContext(this->Window);
+    this->Window->GetState()->PushFramebufferBindings();
+    this->ResultFramebuffer->Bind();
+    this->ResultFramebuffer->AddColorAttachment(0, this->Result);
+    this->Window->GetState()->PopFramebufferBindings();
+    this->FullSize[0] = fullWidth;
+    this->FullSize[1] = fullHeight;
   }
-  this->ReleaseSizeDependent(this->Window);
-  this->OpaqueDepth = vtkSmartPointer<vtkTextureObject>::New();
-  this->OpaqueDepth->SetContext(this->Window);
-  this->OpaqueDepth->AllocateDepth(fullWidth, fullHeight, vtkTextureObject::Float32);
-  this->OpaqueDepthFormat = vtkTextureObject::Float32;
-  this->Result = NewFloatTexture(this->Window, width, height);
-  this->ResultFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-  this->ResultFramebuffer->SetContext(this->Window);
-  this->Window->GetState()->PushFramebufferBindings();
-  this->ResultFramebuffer->Bind();
-  this->ResultFramebuffer->AddColorAttachment(0, this->Result);
-  this->Window->GetState()->PopFramebufferBindings();
-  this->Size[0] = width;
-  this->Size[1] = height;
-  this->FullSize[0] = fullWidth;
-  this->FullSize[1] = fullHeight;
+  this->Size[0] = std::min(width, fullWidth);
+  this->Size[1] = std::min(height, fullHeight);
 }
 
 //------------------------------------------------------------------------------
@@ -216,6 +214,19 @@ void vtkHAVSGLFrameTargets::ReadResult(std::vector<float>& rgba)
 }
 
 //------------------------------------------------------------------------------
+vtkTextureObject* vtkHAVSGLFrameTargets::CopyResult()
+{
+  if (!this->ResultCopy)
+  {
+    this->ResultCopy = NewFloatTexture(this->Window, this->FullSize[0], this->FullSize[1]);
+  }
+  this->BindResultForReading();
+  this->ResultCopy->Activate();
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, this->Size[0], this->Size[1]);
+  return this->ResultCopy;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSGLFrameTargets::KeepResult()
 {
   this->ReadResult(this->KeptResult);
@@ -308,6 +319,9 @@ bool vtkHAVSGLFrameTargets::Composite(int originX, int originY)
   program->SetUniform2f("havsResultScale", scale);
   program->SetUniformi(
     "havsResultReduced", this->Size[0] != this->FullSize[0] || this->Size[1] != this->FullSize[1]);
+  // The drawn image's last texel (the result texture is of the full size).
+  const int last[2] = { std::max(this->Size[0] - 1, 0), std::max(this->Size[1] - 1, 0) };
+  program->SetUniform2i("havsResultLast", last);
   this->DrawFullViewport();
   this->Result->Deactivate();
   return true;
@@ -356,6 +370,10 @@ void vtkHAVSGLFrameTargets::ReleaseSizeDependent(vtkWindow* window)
   {
     this->Result->ReleaseGraphicsResources(window);
   }
+  if (this->ResultCopy)
+  {
+    this->ResultCopy->ReleaseGraphicsResources(window);
+  }
   if (this->ResultFramebuffer)
   {
     this->ResultFramebuffer->ReleaseGraphicsResources(window);
@@ -367,6 +385,7 @@ void vtkHAVSGLFrameTargets::ReleaseSizeDependent(vtkWindow* window)
   this->DepthResolveFramebuffer = nullptr;
   this->OpaqueDepth = nullptr;
   this->Result = nullptr;
+  this->ResultCopy = nullptr;
   this->ResultFramebuffer = nullptr;
   this->Size[0] = this->Size[1] = 0;
   this->FullSize[0] = this->FullSize[1] = 0;

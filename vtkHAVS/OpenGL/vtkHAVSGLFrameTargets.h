@@ -57,15 +57,21 @@ public:
   void SetContext(vtkOpenGLRenderWindow* window) { this->Window = window; }
 
   /**
-   * (Re)allocates the depth copy for a viewport of the full size and the
-   * result for the image drawn (smaller when the level of detail reduces it:
-   * Composite() then upsamples it over the viewport).
+   * Sets the viewport's full size and the image drawn (smaller when the level
+   * of detail reduces it: Composite() then upsamples it over the viewport).
+   * The depth copy and the result are allocated at the full size, and again
+   * only when that changes: a reduced frame draws into the result's lower
+   * left corner, so a level of detail that changes the drawn size every
+   * frame reallocates nothing (the per-pixel buffers of the passes follow
+   * GetAllocatedSize() for the same reason).
    */
   void Resize(int fullWidth, int fullHeight, int width, int height);
   void Resize(int width, int height) { this->Resize(width, height, width, height); }
-  /// The result's size (the image drawn) and the viewport's.
+  /// The image drawn (the result's lower left corner) and the viewport's size.
   const int* GetSize() const { return this->Size; }
   const int* GetFullSize() const { return this->FullSize; }
+  /// The size per-pixel buffers are allocated at (the viewport's: every drawn size fits).
+  const int* GetAllocatedSize() const { return this->FullSize; }
   /**
    * Sets havsOpaqueDepthScale, the viewport's pixels per drawn pixel along
    * each axis (the passes read the full-size depth copy at the drawn pixel's
@@ -96,6 +102,12 @@ public:
   static vtkSmartPointer<vtkTextureObject> NewFloatTexture(
     vtkOpenGLRenderWindow* window, int width, int height);
   vtkTextureObject* GetResult() { return this->Result; }
+  /**
+   * A copy of the drawn result (lower left corner), for a resolve that
+   * reads what the draw wrote while writing the result; a texture of the
+   * result's size, kept between frames.
+   */
+  vtkTextureObject* CopyResult();
   /// Reads the result back (width * height RGBA floats, bottom row first).
   void ReadResult(std::vector<float>& rgba);
   /// Reads the result back into the kept copy (the mappers' KeepFloatResult).
@@ -157,6 +169,7 @@ private:
   bool LastCaptureResolved = false;
   bool WarnedUnresolvedDepth = false;
   vtkSmartPointer<vtkTextureObject> Result;
+  vtkSmartPointer<vtkTextureObject> ResultCopy;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResultFramebuffer;
   std::vector<float> KeptResult;
   int KeptSize[2] = { 0, 0 };

@@ -74,7 +74,12 @@ bool vtkHAVSGLBuffer::Update(
   glGetIntegerv(BindingOf(through), &previous);
   glBindBuffer(through, this->Handle);
   LiveBufferBytes -= this->Bytes;
-  this->Bytes = std::max(bytes, MinimumBufferBytes);
+  // A buffer streamed every frame (GL_STREAM_DRAW: the face order, the
+  // sections, the ray caster's tiles) keeps the largest size it has had, so
+  // that its storage, orphaned and made again each frame, has the same size
+  // every frame (the driver recycles it) whatever the frame's count.
+  this->Bytes =
+    std::max({ bytes, MinimumBufferBytes, usage == GL_STREAM_DRAW ? this->Bytes : size_t(0) });
   LiveBufferBytes += this->Bytes;
   glBufferData(through, static_cast<GLsizeiptr>(this->Bytes), nullptr, usage);
   if (data && bytes > 0)

@@ -52,7 +52,9 @@ public:
   /**
    * Uploads `bytes` from `data` (nullptr: uninitialized) through `target`
    * unless it already holds `version` (0: always); at least 16 bytes are
-   * allocated, so that an empty source still binds. Returns whether it uploaded.
+   * allocated, so that an empty source still binds. With GL_STREAM_DRAW (data
+   * streamed every frame) the storage keeps the largest size it has had.
+   * Returns whether it uploaded.
    */
   bool Update(GLenum target, const void* data, size_t bytes, vtkMTimeType version,
     GLenum usage = GL_STATIC_DRAW);

@@ -54,6 +54,16 @@ int vtkHAVSGLPassContext::Height() const
   return this->Targets->GetSize()[1];
 }
 
+int vtkHAVSGLPassContext::AllocatedWidth() const
+{
+  return this->Targets->GetAllocatedSize()[0];
+}
+
+int vtkHAVSGLPassContext::AllocatedHeight() const
+{
+  return this->Targets->GetAllocatedSize()[1];
+}
+
 vtkHAVSShaders::Features vtkHAVSGLPassContext::ShaderFeatures() const
 {
   vtkHAVSShaders::Features f;

@@ -49,8 +49,13 @@ public:
   vtkHAVSGLFrameTargets* Targets;
   const vtkHAVSFrameRequest& Request;
 
+  /// The image drawn (a reduced frame's is smaller than the viewport).
   int Width() const;
   int Height() const;
+  /// The size per-pixel buffers are allocated at (the viewport's: reduced
+  /// frames reuse them, drawing in their lower left corner).
+  int AllocatedWidth() const;
+  int AllocatedHeight() const;
 
   /// What the frame's k-buffer shaders compile in (counter, tagging, opaque cut).
   vtkHAVSShaders::Features ShaderFeatures() const;

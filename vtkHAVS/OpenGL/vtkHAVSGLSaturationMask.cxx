@@ -23,7 +23,7 @@ VTK_ABI_NAMESPACE_BEGIN
 //------------------------------------------------------------------------------
 void vtkHAVSGLSaturationMask::Attach(vtkHAVSGLPassContext& context)
 {
-  const int w = context.Width(), h = context.Height();
+  const int w = context.AllocatedWidth(), h = context.AllocatedHeight();
   if (!this->Stencil || this->Stencil->GetContext() != context.Window)
   {
     // (A renderbuffer lives and dies with its object: vtkRenderbuffer frees

@@ -44,7 +44,10 @@ int vtkHAVSInterlockKBuffer::GetMaximumK() const
 //------------------------------------------------------------------------------
 bool vtkHAVSInterlockKBuffer::Allocate(vtkHAVSGLPassContext& context)
 {
-  const size_t bytes = static_cast<size_t>(context.Width()) * context.Height() *
+  // At the allocated size: a reduced frame's pixels (indexed by the drawn
+  // width) fit, and the buffer is not made again when the level of detail
+  // changes the drawn size.
+  const size_t bytes = static_cast<size_t>(context.AllocatedWidth()) * context.AllocatedHeight() *
     vtkHAVSShaders::InterlockPixelStride(context.Request.K) * 4 * sizeof(float);
   // Its "version" is its size: made again only when the size changes.
   this->PixelEntries.Update(GL_SHADER_STORAGE_BUFFER, nullptr, bytes, bytes, GL_DYNAMIC_COPY);

@@ -375,10 +375,12 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   GLObjects& gl = *this->GL;
   const int width = view.Width, height = view.Height;
   const int sectionTriangles = this->Resources->GetSectionTriangles();
-  gl.EntryKey.Resize(GL_R32UI, width, height);
-  gl.EntryCell.Resize(GL_R32UI, width, height);
-  gl.RayState.Resize(GL_RGBA32F, width, height);
-  gl.PeelTarget.Resize(width, height);
+  // The images at the viewport's size, drawn in their lower left corner: a
+  // level of detail that changes the drawn size reallocates nothing.
+  gl.EntryKey.Resize(GL_R32UI, view.FullWidth, view.FullHeight);
+  gl.EntryCell.Resize(GL_R32UI, view.FullWidth, view.FullHeight);
+  gl.RayState.Resize(GL_RGBA32F, view.FullWidth, view.FullHeight);
+  gl.PeelTarget.Resize(view.FullWidth, view.FullHeight);
 
   // 2. The programs, the textures, the uniforms; the screen tiles (without
   // them, one tile covering the viewport).

@@ -12,14 +12,15 @@ uniform sampler2D havsResultTexture;
 uniform vec2 havsViewportOrigin;
 uniform vec2 havsResultScale; // drawn pixels per viewport pixel (the level of detail's image)
 uniform int havsResultReduced;
+uniform ivec2 havsResultLast; // the drawn image's last texel (the texture is the viewport's size)
 
 // The reduced image at a viewport pixel: bilinear between the four drawn
 // pixel centres around it (premultiplied colours, so coverage blends too),
-// clamped at the image's edges.
+// clamped at the drawn image's edges.
 vec4 havsUpsampled(vec2 pixel)
 {
   vec2 x = (pixel + 0.5) * havsResultScale - 0.5;
-  ivec2 last = textureSize(havsResultTexture, 0) - 1;
+  ivec2 last = havsResultLast;
   ivec2 i0 = clamp(ivec2(floor(x)), ivec2(0), last);
   ivec2 i1 = clamp(ivec2(floor(x)) + 1, ivec2(0), last);
   vec2 f = clamp(x - floor(x), 0.0, 1.0);
