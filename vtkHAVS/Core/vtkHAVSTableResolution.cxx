@@ -26,6 +26,14 @@ vtkStandardNewMacro(vtkHAVSTableResolution);
 double vtkHAVSTableResolution::MeasureError(
   vtkHAVSPreIntegrationTable* table, vtkVolumeProperty* property, int component) const
 {
+  std::vector<Probe> probes;
+  return this->MeasureError(table, property, component, probes);
+}
+
+//------------------------------------------------------------------------------
+double vtkHAVSTableResolution::MeasureError(vtkHAVSPreIntegrationTable* table,
+  vtkVolumeProperty* property, int component, std::vector<Probe>& probes) const
+{
   const int nl = table->GetLengthResolution();
   const double* range = table->GetScalarRange();
   const double span = range[1] - range[0];
@@ -44,17 +52,37 @@ double vtkHAVSTableResolution::MeasureError(
   // logarithmic): on a logarithmic axis, uniform lengths would nearly all be
   // long, saturated segments that any table gets right.
   const double shortest = table->LengthAt(1.0 / (nl - 1));
+  // The same segments as the kept probes (the same draws, and a length axis
+  // that maps them to the same lengths): their integrals are reused.
+  bool reuse = static_cast<int>(probes.size()) == this->ProbeCount;
+  if (!reuse)
+  {
+    probes.assign(this->ProbeCount, Probe());
+  }
   double sum = 0.0;
   for (int p = 0; p < this->ProbeCount; ++p)
   {
     const double sf = range[0] + span * unit(random);
     const double sb = range[0] + span * unit(random);
     const double length = table->LengthAt(unit(random));
-    double looked[4], exact[4];
+    Probe& probe = probes[p];
+    if (reuse && (probe.Front != sf || probe.Back != sb || probe.Length != length))
+    {
+      reuse = false; // another length axis (or range): this probe and the rest integrated again
+    }
+    if (!reuse)
+    {
+      probe.Front = sf;
+      probe.Back = sb;
+      probe.Length = length;
+      // At most 256 sub-steps (Richardson-extrapolated: about 1e-6 on a ramp):
+      // functions with many kinks (ParaView's presets) would refine each probe long.
+      vtkHAVSPreIntegrationTable::IntegrateSegment(
+        property, component, sf, sb, length, probe.Exact, 256);
+    }
+    double looked[4];
     table->Lookup(sf, sb, length, looked);
-    // At most 256 sub-steps (Richardson-extrapolated: about 1e-6 on a ramp):
-    // functions with many kinks (ParaView's presets) would refine each probe long.
-    vtkHAVSPreIntegrationTable::IntegrateSegment(property, component, sf, sb, length, exact, 256);
+    const double* exact = probe.Exact;
     double error = 0.0;
     for (int c = 0; c < 4; ++c)
     {
@@ -79,6 +107,8 @@ bool vtkHAVSTableResolution::Build(vtkHAVSPreIntegrationTable* table, vtkVolumeP
   const int largest = std::max(maxScalarResolution, maxLengthResolution);
   int n = std::min(this->SmallestResolution, largest);
   bool ok = true;
+  std::vector<Probe> probes; // integrated once for every candidate
+
   for (;;)
   {
     table->SetScalarResolution(std::min(n, maxScalarResolution));
@@ -90,7 +120,7 @@ bool vtkHAVSTableResolution::Build(vtkHAVSPreIntegrationTable* table, vtkVolumeP
     {
       break;
     }
-    this->LastError = this->MeasureError(table, property, component);
+    this->LastError = this->MeasureError(table, property, component, probes);
     if (last || this->LastError <= this->ErrorBound)
     {
       break;
