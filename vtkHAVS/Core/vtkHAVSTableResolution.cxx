@@ -9,8 +9,13 @@
 =========================================================================*/
 #include "vtkHAVSTableResolution.h"
 
+#include "vtkColorTransferFunction.h"
 #include "vtkHAVSPreIntegrationTable.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtkTimerLog.h"
 #include "vtkVolumeProperty.h"
 
@@ -21,6 +26,59 @@
 VTK_ABI_NAMESPACE_BEGIN
 
 vtkStandardNewMacro(vtkHAVSTableResolution);
+
+//------------------------------------------------------------------------------
+void vtkHAVSTableResolution::IntegrateProbes(
+  vtkVolumeProperty* property, int component, Probe* probes, int count)
+{
+  if (count <= 0)
+  {
+    return;
+  }
+  // VTK's function objects are not promised to be thread-safe: each chunk of
+  // probes evaluates its own deep copies of the component's functions (made
+  // here, serially), which give the same values to the bit.
+  const int chunks = std::max(1, std::min(count, vtkSMPTools::GetEstimatedNumberOfThreads()));
+  std::vector<vtkSmartPointer<vtkVolumeProperty>> copies(chunks);
+  for (auto& copy : copies)
+  {
+    copy = vtkSmartPointer<vtkVolumeProperty>::New();
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->DeepCopy(property->GetScalarOpacity(component));
+    copy->SetScalarOpacity(0, opacity);
+    if (property->GetColorChannels(component) == 1)
+    {
+      vtkNew<vtkPiecewiseFunction> gray;
+      gray->DeepCopy(property->GetGrayTransferFunction(component));
+      copy->SetColor(0, gray);
+    }
+    else
+    {
+      vtkNew<vtkColorTransferFunction> color;
+      color->DeepCopy(property->GetRGBTransferFunction(component));
+      copy->SetColor(0, color);
+    }
+    copy->SetScalarOpacityUnitDistance(0, property->GetScalarOpacityUnitDistance(component));
+  }
+  vtkSMPTools::For(0, chunks, 1,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType chunk = begin; chunk < end; ++chunk)
+      {
+        vtkVolumeProperty* own = copies[chunk];
+        const int from = static_cast<int>(static_cast<long long>(count) * chunk / chunks);
+        const int to = static_cast<int>(static_cast<long long>(count) * (chunk + 1) / chunks);
+        for (int p = from; p < to; ++p)
+        {
+          // At most 256 sub-steps (Richardson-extrapolated: about 1e-6 on a
+          // ramp): functions with many kinks (ParaView's presets) would
+          // refine each probe long.
+          vtkHAVSPreIntegrationTable::IntegrateSegment(
+            own, 0, probes[p].Front, probes[p].Back, probes[p].Length, probes[p].Exact, 256);
+        }
+      }
+    });
+}
 
 //------------------------------------------------------------------------------
 double vtkHAVSTableResolution::MeasureError(
@@ -52,43 +110,42 @@ double vtkHAVSTableResolution::MeasureError(vtkHAVSPreIntegrationTable* table,
   // logarithmic): on a logarithmic axis, uniform lengths would nearly all be
   // long, saturated segments that any table gets right.
   const double shortest = table->LengthAt(1.0 / (nl - 1));
-  // The same segments as the kept probes (the same draws, and a length axis
-  // that maps them to the same lengths): their integrals are reused.
-  bool reuse = static_cast<int>(probes.size()) == this->ProbeCount;
-  if (!reuse)
+  // The segments, drawn serially (one random sequence). The same segments as
+  // the kept probes (the same draws, and a length axis that maps them to the
+  // same lengths) keep their integrals; from the first that differs on, the
+  // probes are integrated again.
+  if (static_cast<int>(probes.size()) != this->ProbeCount)
   {
     probes.assign(this->ProbeCount, Probe());
   }
-  double sum = 0.0;
+  int first = this->ProbeCount; // the first probe to integrate
   for (int p = 0; p < this->ProbeCount; ++p)
   {
     const double sf = range[0] + span * unit(random);
     const double sb = range[0] + span * unit(random);
     const double length = table->LengthAt(unit(random));
     Probe& probe = probes[p];
-    if (reuse && (probe.Front != sf || probe.Back != sb || probe.Length != length))
+    if (first == this->ProbeCount &&
+      (probe.Front != sf || probe.Back != sb || probe.Length != length))
     {
-      reuse = false; // another length axis (or range): this probe and the rest integrated again
+      first = p;
     }
-    if (!reuse)
-    {
-      probe.Front = sf;
-      probe.Back = sb;
-      probe.Length = length;
-      // At most 256 sub-steps (Richardson-extrapolated: about 1e-6 on a ramp):
-      // functions with many kinks (ParaView's presets) would refine each probe long.
-      vtkHAVSPreIntegrationTable::IntegrateSegment(
-        property, component, sf, sb, length, probe.Exact, 256);
-    }
+    probe.Front = sf;
+    probe.Back = sb;
+    probe.Length = length;
+  }
+  IntegrateProbes(property, component, probes.data() + first, this->ProbeCount - first);
+  double sum = 0.0;
+  for (const Probe& probe : probes)
+  {
     double looked[4];
-    table->Lookup(sf, sb, length, looked);
-    const double* exact = probe.Exact;
+    table->Lookup(probe.Front, probe.Back, probe.Length, looked);
     double error = 0.0;
     for (int c = 0; c < 4; ++c)
     {
-      error = std::max(error, std::abs(looked[c] - exact[c]));
+      error = std::max(error, std::abs(looked[c] - probe.Exact[c]));
     }
-    sum += error * unitDistance / std::max(length, shortest);
+    sum += error * unitDistance / std::max(probe.Length, shortest);
   }
   return sum / this->ProbeCount;
 }

@@ -39,11 +39,12 @@
  *
  * The probes' integrals depend on the functions, not on the table: Build()
  * integrates them once and compares every candidate with the same values
- * (again only if a candidate's length axis differs). Integrating the 256
- * probes costs about as much as building a 64^3 table (12 ms against 11 ms
- * for a ramp over the blunt fin's range on 2 cores): a choice of 32^3 then
- * 64^3 went from 27.8 to 20.6 ms (medians of 6, alternating in one process);
- * a choice with one candidate costs the same.
+ * (again only if a candidate's length axis differs), in parallel
+ * (vtkSMPTools), each thread on its own deep copies of the functions (VTK's
+ * function objects are not promised to be thread-safe; the copies give the
+ * same values to the bit). Integrated serially, once per candidate, the 256
+ * probes cost about as much as building a 64^3 table (12 ms against 11 ms
+ * for a ramp over the blunt fin's range on 2 cores).
  *
  * Calibration (TestHAVSTableResolution; the tests' and the benchmark's ramp):
  * the measure falls with the square of the resolution, 2.1e-4 at 32^3,
@@ -143,6 +144,9 @@ private:
    */
   double MeasureError(vtkHAVSPreIntegrationTable* table, vtkVolumeProperty* property, int component,
     std::vector<Probe>& probes) const;
+  /// Integrates `count` probes from the property's functions, in parallel
+  /// (vtkSMPTools) on per-thread deep copies of them.
+  static void IntegrateProbes(vtkVolumeProperty* property, int component, Probe* probes, int count);
 
   double ErrorBound = 1e-4;
   int ProbeCount = 256;
