@@ -97,6 +97,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkContourValues.h"
 #include "vtkCubeSource.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
@@ -275,10 +276,19 @@ double PeakMegabytes()
   return usage.ru_maxrss / 1024.0;
 }
 
+/// The isosurfaces of the iso-* and isomix-* configurations: none, the
+/// isosurface blend, or isosurfaces inside the composite volume.
+enum IsoMode
+{
+  NoIsoSurfaces = 0,
+  IsoSurfaceBlend = 1,
+  IsoSurfacesInComposite = 2
+};
+
 /// The exact image of a view, from the cache or computed and cached.
 std::vector<float> ReferenceImage(const Options& o, const std::string& dataset,
   vtkUnstructuredGrid* grid, vtkVolumeProperty* property, vtkCamera* camera, int view,
-  bool* computed = nullptr)
+  bool* computed = nullptr, int iso = NoIsoSurfaces)
 {
   if (computed)
   {
@@ -287,6 +297,9 @@ std::vector<float> ReferenceImage(const Options& o, const std::string& dataset,
   const size_t values = static_cast<size_t>(o.Size) * o.Size * 4;
   std::ostringstream key;
   key << o.CacheDir << "/" << dataset << "_" << kPropertyVersion << "_v" << view << "_" << o.Size
+      << (iso == IsoSurfaceBlend             ? "_iso"
+             : iso == IsoSurfacesInComposite ? "_isomix"
+                                             : "")
       << ".f32";
   std::vector<float> image(values);
   std::ifstream cached(key.str(), std::ios::binary);
@@ -299,6 +312,11 @@ std::vector<float> ReferenceImage(const Options& o, const std::string& dataset,
   reference->SetProperty(property);
   reference->SetCamera(camera);
   reference->SetSize(o.Size, o.Size);
+  if (iso == IsoSurfaceBlend)
+  {
+    reference->SetBlendMode(vtkHAVSMapperBase::ISOSURFACE_BLEND);
+  }
+  reference->SetIsoSurfacesInComposite(iso == IsoSurfacesInComposite);
   reference->Render();
   if (computed)
   {
@@ -815,8 +833,16 @@ int RunWorker(const Options& o)
   // budget of that share of its full frame (MeasureBudget).
   const std::string dataset = o.DataSets.at(0), rowConfig = o.Configs.at(0);
   const bool edits = rowConfig.rfind("edit-", 0) == 0;
+  // iso-<configuration>: the isosurface blend; isomix-<configuration>: the
+  // same isosurfaces inside the composite volume (issue 46).
+  const int iso = rowConfig.rfind("iso-", 0) == 0 ? IsoSurfaceBlend
+    : rowConfig.rfind("isomix-", 0) == 0          ? IsoSurfacesInComposite
+                                                  : NoIsoSurfaces;
   double budgetPercent = 0.0;
-  std::string config = edits ? rowConfig.substr(5) : rowConfig;
+  std::string config = edits ? rowConfig.substr(5)
+    : iso == IsoSurfaceBlend ? rowConfig.substr(4)
+    : iso != NoIsoSurfaces   ? rowConfig.substr(7)
+                             : rowConfig;
   if (rowConfig.rfind("lod-", 0) == 0 && !ParseBudget(rowConfig, budgetPercent, config))
   {
     std::cerr << "unknown configuration " << rowConfig << std::endl;
@@ -830,6 +856,15 @@ int RunWorker(const Options& o)
   }
   auto property = MakeProperty(grid, VariantOf(dataset));
   const vtkIdType tets = grid->GetNumberOfCells();
+  if (iso != NoIsoSurfaces)
+  {
+    // Two isovalues, at 35 % and 65 % of the scalar range.
+    double range[2];
+    grid->GetPointData()->GetScalars()->GetRange(range);
+    property->GetIsoSurfaceValues()->SetNumberOfContours(2);
+    property->GetIsoSurfaceValues()->SetValue(0, range[0] + 0.35 * (range[1] - range[0]));
+    property->GetIsoSurfaceValues()->SetValue(1, range[0] + 0.65 * (range[1] - range[0]));
+  }
 
   std::vector<double> frame, sort, gather, draw, flush, composite, upload, readback, layers;
   double sumSquares = 0, maxError = 0;
@@ -1080,6 +1115,19 @@ int RunWorker(const Options& o)
       return EXIT_FAILURE;
     }
     auto* base = vtkHAVSMapperBase::SafeDownCast(mapper);
+    if (iso != NoIsoSurfaces)
+    {
+      if (!base)
+      {
+        std::cerr << rowConfig << ": isosurfaces need a vtkHAVSMapperBase mapper" << std::endl;
+        return EXIT_FAILURE;
+      }
+      if (iso == IsoSurfaceBlend)
+      {
+        base->SetBlendMode(vtkHAVSMapperBase::ISOSURFACE_BLEND);
+      }
+      base->SetIsoSurfacesInComposite(iso == IsoSurfacesInComposite);
+    }
     if (budgetPercent > 0.0)
     {
       if (!base)
@@ -1244,7 +1292,8 @@ int RunWorker(const Options& o)
       {
         vtkNew<vtkFloatArray> rgba;
         window->GetRGBAPixelData(0, 0, o.Size - 1, o.Size - 1, 0, rgba);
-        const std::vector<float> exact = ReferenceImage(o, dataset, grid, property, camera, view);
+        const std::vector<float> exact =
+          ReferenceImage(o, dataset, grid, property, camera, view, nullptr, iso);
         const std::vector<uint8_t> folded = FoldedPixels(o, dataset, grid, camera, view, false);
         if (folded.empty())
         {
@@ -1287,6 +1336,7 @@ int RunWorker(const Options& o)
             resultSize[1] == o.Size)
           {
             double viewSquares = 0.0, viewMax = 0.0, viewPixels = 0.0;
+            size_t worst = 0; // the pixel of the largest difference
             for (size_t p = 0; p < static_cast<size_t>(o.Size) * o.Size; ++p)
             {
               if (leftOut(p))
@@ -1298,6 +1348,7 @@ int RunWorker(const Options& o)
                 const double e =
                   std::fabs(double(premultiplied->GetValue(4 * p + c)) - exact[4 * p + c]);
                 viewSquares += e * e;
+                worst = e > viewMax ? p : worst;
                 viewMax = std::max(viewMax, e);
               }
               viewPixels += 1;
@@ -1305,9 +1356,15 @@ int RunWorker(const Options& o)
             floatSquares += viewSquares;
             floatMax = std::max(floatMax, viewMax);
             floatPixels += viewPixels;
-            std::fprintf(stderr, "%s %s view %d: float RMSE %.6f max %.4f\n", config.c_str(),
-              dataset.c_str(), view,
-              viewPixels > 0 ? std::sqrt(viewSquares / (3 * viewPixels)) : 0.0, viewMax);
+            std::fprintf(stderr,
+              "%s %s view %d: float RMSE %.6f max %.4f at pixel (%d, %d): rgba %.4f %.4f %.4f "
+              "%.4f, exact %.4f %.4f %.4f %.4f\n",
+              config.c_str(), dataset.c_str(), view,
+              viewPixels > 0 ? std::sqrt(viewSquares / (3 * viewPixels)) : 0.0, viewMax,
+              static_cast<int>(worst % o.Size), static_cast<int>(worst / o.Size),
+              premultiplied->GetValue(4 * worst), premultiplied->GetValue(4 * worst + 1),
+              premultiplied->GetValue(4 * worst + 2), premultiplied->GetValue(4 * worst + 3),
+              exact[4 * worst], exact[4 * worst + 1], exact[4 * worst + 2], exact[4 * worst + 3]);
           }
           mapper->SetKeepFloatResult(false);
         };
@@ -1736,6 +1793,20 @@ bool IsEditRun(const Row& r)
   return IsEdit(r) || (r.count("command") && r.at("command").find("edit-") != std::string::npos);
 }
 
+/// A row of an isosurface run (issue 46: its iso-* and isomix-* rows, the
+/// composite rows beside them and the reference it made): the isosurfaces'
+/// section, none of them in the main tables.
+bool IsIsoRun(const Row& r)
+{
+  auto isIso = [](const std::string& c)
+  { return c.rfind("iso-", 0) == 0 || c.rfind("isomix-", 0) == 0; };
+  return (r.count("config") && isIso(r.at("config"))) ||
+    (r.count("command") &&
+      (r.at("command").find(",iso-") != std::string::npos ||
+        r.at("command").find(" iso-") != std::string::npos ||
+        r.at("command").find("isomix-") != std::string::npos));
+}
+
 /// A row of the frame budgets' section: a lod-<percent>-* configuration.
 bool IsBudget(const Row& r)
 {
@@ -1885,6 +1956,75 @@ std::string BudgetReport(const std::vector<Row>& allRows)
      << "the smallest image (the pixel-independent part above the budget): " << floorMisses
      << "; missed above it: " << otherMisses << ".\n";
   md << "\nFrame times (ms; the first 30 while settling, the last 30 settled):\n\n" << traces.str();
+  return md.str();
+}
+
+/// The isosurfaces' section (issue 46): per data set, size and mapper, the
+/// composite frame beside the isosurface blend's and the composite with the
+/// isosurfaces inside, with their errors against the exact reference of each.
+std::string IsoReport(const std::vector<Row>& allRows)
+{
+  std::vector<Row> rows;
+  std::copy_if(allRows.begin(), allRows.end(), std::back_inserter(rows), IsIsoRun);
+  auto sizeOf = [](const Row& r) { return r.count("size") ? r.at("size") : std::string(); };
+  auto find = [&rows, &sizeOf](const Row& like, const std::string& config) -> const Row*
+  {
+    for (const Row& r : rows)
+    {
+      if (r.at("dataset") == like.at("dataset") && sizeOf(r) == sizeOf(like) &&
+        r.at("config") == config)
+      {
+        return &r;
+      }
+    }
+    return nullptr;
+  };
+  std::ostringstream table;
+  for (const Row& r : rows)
+  {
+    const std::string& config = r.at("config");
+    if (config.rfind("iso-", 0) == 0 || config.rfind("isomix-", 0) == 0 || config == "reference" ||
+      !find(r, "iso-" + config))
+    {
+      continue;
+    }
+    const Row* iso = find(r, "iso-" + config);
+    const Row* mixed = find(r, "isomix-" + config);
+    const double composite = Value(r, "ms_median");
+    auto ratio = [composite](const Row* x)
+    {
+      char text[32];
+      std::snprintf(text, sizeof(text), "%.2f", x ? Value(*x, "ms_median") / composite : NAN);
+      return std::string(x && std::isfinite(Value(*x, "ms_median")) ? text : "-");
+    };
+    auto error = [](const Row* x)
+    { return x ? Cell(*x, "float_rmse", "%.2g") + " / " + Cell(*x, "float_max", "%.2g") : "-"; };
+    table << "| " << r.at("dataset") << " | " << sizeOf(r) << " | " << config << " | "
+          << Cell(r, "ms_median", "%.1f") << " | " << Cell(*iso, "ms_median", "%.1f") << " | "
+          << ratio(iso) << " | " << error(iso) << " | "
+          << (mixed ? Cell(*mixed, "ms_median", "%.1f") : "-") << " | " << ratio(mixed) << " | "
+          << error(mixed) << " |\n";
+  }
+  if (table.str().empty())
+  {
+    return std::string();
+  }
+  std::ostringstream md;
+  md << "\n## Isosurfaces\n\n"
+     << "iso-<configuration>: that configuration with the isosurface blend (`SetBlendMode(5)`; "
+        "two isovalues, at 35 % and 65 % of the scalar range, in the volume property's "
+        "`GetIsoSurfaceValues()`): each crossing takes the transfer functions' colour and "
+        "opacity at its value, nothing between. isomix-<configuration>: the composite volume "
+        "with the same isosurfaces inside (`IsoSurfacesInComposite`). Times as above (medians "
+        "over the views); the ratios are against the same configuration's composite frame in "
+        "the same run. Error: the float result against the exact reference of the same mode "
+        "(vtkHAVSReferenceRenderer's isosurface events), RMSE / max (MISSION.md's exact: "
+        "RMSE < 5e-4, max < 0.01).\n\n"
+     << "| data set | size | configuration | composite ms | isosurfaces ms | iso / composite | "
+        "iso float RMSE / max | composite with isosurfaces ms | mixed / composite | mixed "
+        "float RMSE / max |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|\n"
+     << table.str();
   return md.str();
 }
 
@@ -2071,7 +2211,8 @@ std::string Report(const std::vector<Row>& allRows, const Options& o, const std:
   // The level of detail's rows have their own section.
   std::vector<Row> rows;
   std::copy_if(allRows.begin(), allRows.end(), std::back_inserter(rows),
-    [](const Row& r) { return !IsLevelOfDetail(r) && !IsEditRun(r) && !IsBudgetRun(r); });
+    [](const Row& r)
+    { return !IsLevelOfDetail(r) && !IsEditRun(r) && !IsBudgetRun(r) && !IsIsoRun(r); });
   std::string renderer = "(unknown)";
   {
     vtkSmartPointer<vtkRenderWindow> window;
@@ -2459,6 +2600,7 @@ std::string Report(const std::vector<Row>& allRows, const Options& o, const std:
   md << LevelOfDetailReport(allRows);
   md << BudgetReport(allRows);
   md << EditReport(allRows);
+  md << IsoReport(allRows);
   md << "\nCSV: `benchmark.csv`. Plots: `benchmark_time_error.png` (time against RMSE, one "
         "panel per data set, Pareto front dashed, the face-raster bound as a line), "
         "`benchmark_stages.png` (HAVS's stages, stacked), `benchmark_time_tets.png` (time "

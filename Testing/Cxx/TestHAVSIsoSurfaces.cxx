@@ -10,7 +10,10 @@
 // The isosurface blend (vtkVolumeMapper's ISOSURFACE_BLEND, issue 46) and the
 // mixed mode (IsoSurfacesInComposite), for the mapper named by argument 1
 // (havs, raycast, cellprojection); argument 2: the data set (combustor),
-// 3: image size, 4: views.
+// 3: image size, 4: views, 5: "strict" (the isosurface blend's maximum over
+// every pixel where both images show a surface: none of the size^2 / 2000
+// worst left out as edge pixels; a pixel one image leaves empty is the
+// silhouette's, a ray grazing the boundary).
 // 1. Analytic: the box [0, 1]^3 with s = z and the isovalue 0.55 (between
 //    the vertices' planes): every pixel is the surface's premultiplied
 //    colour at 0.55 (the ray crosses the plane z = 0.55 once) or empty.
@@ -43,6 +46,7 @@
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -66,6 +70,7 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
   const std::string dataSet = argc > 2 ? argv[2] : "combustor";
   const int size = argc > 3 ? std::atoi(argv[3]) : 96;
   const int views = argc > 4 ? std::atoi(argv[4]) : 2;
+  const bool strict = argc > 5 && std::string(argv[5]) == "strict";
   const int iso = vtkHAVSMapperBase::ISOSURFACE_BLEND;
 
   // 1. Analytic: one plane.
@@ -143,6 +148,27 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
     havstest::PrintDifference(at + ": control, values 1 % off", control);
     havstest::Check(havstest::WithinExactBound(d), at + ": the isosurface pair is exact");
     havstest::Check(!havstest::WithinExactBound(control), at + ": control: 1 % off misses");
+    if (strict)
+    {
+      // Every pixel: an isovalue within rounding of a face the ray crosses
+      // was crossed in both cells or in neither where each cell computed
+      // the face's scalar from its own field (the ray caster before it
+      // carried the exit scalar on): one surface too many or too few at a
+      // pixel or two a view, 0.05 to 0.06 off on the LOX post at 128^2.
+      std::vector<float> drawn = surfaces, expected = exact;
+      for (size_t p = 0; p + 3 < drawn.size() && p + 3 < expected.size(); p += 4)
+      {
+        if (!(drawn[p + 3] > 1e-6f && expected[p + 3] > 1e-6f))
+        {
+          std::fill_n(drawn.begin() + p, 4, 0.0f);
+          std::fill_n(expected.begin() + p, 4, 0.0f);
+        }
+      }
+      const auto all = havstest::Compare(drawn, expected, 0);
+      havstest::PrintDifference(at + ": isosurfaces, every pixel both show", all);
+      havstest::Check(havstest::WithinExactBound(all),
+        at + ": the isosurface pair is exact at every pixel both show");
+    }
 
     mapper->SetBlendModeToComposite();
     mapper->IsoSurfacesInCompositeOn();

@@ -278,6 +278,15 @@ void main()
   bool covered = false;
   float before = state.y;
   bool ended = false;
+  // The scalar where the last segment ended (its cell's exit face) and its
+  // t: the next cell's segment starts there with that value, not its own
+  // field's there, which differs by rounding. An isovalue within that
+  // rounding of the face was otherwise crossed in both cells or in neither
+  // (the half-open [sf, sb) of havsIsoSegment counts it once only given one
+  // value at the face; seen as one surface too many or too few at a pixel or
+  // two a view, LOX post and combustor at 128^2). HAVS shares the face
+  // fragment's scalar by construction.
+  float carriedT = -HAVS_EMPTY, carriedS = 0.0;
   int steps = 0;
   for (; steps < havsMaxSteps; ++steps)
   {
@@ -307,8 +316,11 @@ void main()
     if (b > a)
     {
       vec4 field = havsCell(cell, 4);
-      float sA = clamp(dot(field.xyz, p + (a - tIn) * d) + field.w, 0.0, 1.0);
+      float sA = a == carriedT ? carriedS
+                               : clamp(dot(field.xyz, p + (a - tIn) * d) + field.w, 0.0, 1.0);
       float sB = clamp(dot(field.xyz, p + (b - tIn) * d) + field.w, 0.0, 1.0);
+      carriedT = b;
+      carriedS = sB;
       covered = true;
 #if HAVS_CELL_BLEND == 1
       extremum = max(extremum, max(sA, sB));
