@@ -48,7 +48,16 @@ def budget_run(r):
                for text in [r["config"]] + re.split(r"[ ,]", r.get("command", "")))
 
 
-rows = [r for r in all_rows if not level_of_detail(r) and not edit_run(r) and not budget_run(r)]
+def iso_run(r):
+    # An iso-* or isomix-* row, or any row an isosurface run measured (its composite rows
+    # and reference): the report's isosurface section only.
+    command = r.get("command", "")
+    return (r["config"].startswith(("iso-", "isomix-")) or ",iso-" in command
+            or " iso-" in command or "isomix-" in command)
+
+
+rows = [r for r in all_rows
+        if not level_of_detail(r) and not edit_run(r) and not budget_run(r) and not iso_run(r)]
 out = sys.argv[2]
 
 
