@@ -285,7 +285,8 @@ void main()
   // (the half-open [sf, sb) of havsIsoSegment counts it once only given one
   // value at the face; seen as one surface too many or too few at a pixel or
   // two a view, LOX post and combustor at 128^2). HAVS shares the face
-  // fragment's scalar by construction.
+  // fragment's scalar by construction. Point scalars only: a cell scalar
+  // is the cell's own.
   float carriedT = -HAVS_EMPTY, carriedS = 0.0;
   int steps = 0;
   for (; steps < havsMaxSteps; ++steps)
@@ -316,8 +317,10 @@ void main()
     if (b > a)
     {
       vec4 field = havsCell(cell, 4);
-      float sA = a == carriedT ? carriedS
-                               : clamp(dot(field.xyz, p + (a - tIn) * d) + field.w, 0.0, 1.0);
+      // (Cell scalars jump at the faces: nothing carried.)
+      float sA = HAVS_CELL_SCALARS == 0 && a == carriedT
+        ? carriedS
+        : clamp(dot(field.xyz, p + (a - tIn) * d) + field.w, 0.0, 1.0);
       float sB = clamp(dot(field.xyz, p + (b - tIn) * d) + field.w, 0.0, 1.0);
       carriedT = b;
       carriedS = sB;
