@@ -285,6 +285,20 @@ enum IsoMode
   IsoSurfacesInComposite = 2
 };
 
+/// The isosurface mode a configuration's name asks for (iso-*, isomix-*)
+/// and, in `prefix`, the length of that prefix (0: none).
+IsoMode IsoModeOf(const std::string& config, size_t* prefix = nullptr)
+{
+  const IsoMode mode = config.rfind("iso-", 0) == 0 ? IsoSurfaceBlend
+    : config.rfind("isomix-", 0) == 0               ? IsoSurfacesInComposite
+                                                    : NoIsoSurfaces;
+  if (prefix)
+  {
+    *prefix = mode == IsoSurfaceBlend ? 4 : mode == IsoSurfacesInComposite ? 7 : 0;
+  }
+  return mode;
+}
+
 /// The exact image of a view, from the cache or computed and cached.
 std::vector<float> ReferenceImage(const Options& o, const std::string& dataset,
   vtkUnstructuredGrid* grid, vtkVolumeProperty* property, vtkCamera* camera, int view,
@@ -835,14 +849,10 @@ int RunWorker(const Options& o)
   const bool edits = rowConfig.rfind("edit-", 0) == 0;
   // iso-<configuration>: the isosurface blend; isomix-<configuration>: the
   // same isosurfaces inside the composite volume (issue 46).
-  const int iso = rowConfig.rfind("iso-", 0) == 0 ? IsoSurfaceBlend
-    : rowConfig.rfind("isomix-", 0) == 0          ? IsoSurfacesInComposite
-                                                  : NoIsoSurfaces;
+  size_t isoPrefix = 0;
+  const int iso = IsoModeOf(rowConfig, &isoPrefix);
   double budgetPercent = 0.0;
-  std::string config = edits ? rowConfig.substr(5)
-    : iso == IsoSurfaceBlend ? rowConfig.substr(4)
-    : iso != NoIsoSurfaces   ? rowConfig.substr(7)
-                             : rowConfig;
+  std::string config = rowConfig.substr(edits ? 5 : isoPrefix);
   if (rowConfig.rfind("lod-", 0) == 0 && !ParseBudget(rowConfig, budgetPercent, config))
   {
     std::cerr << "unknown configuration " << rowConfig << std::endl;
@@ -1115,13 +1125,14 @@ int RunWorker(const Options& o)
       return EXIT_FAILURE;
     }
     auto* base = vtkHAVSMapperBase::SafeDownCast(mapper);
+    if ((iso != NoIsoSurfaces || budgetPercent > 0.0) && !base)
+    {
+      std::cerr << rowConfig << ": isosurfaces and frame budgets need a vtkHAVSMapperBase mapper"
+                << std::endl;
+      return EXIT_FAILURE;
+    }
     if (iso != NoIsoSurfaces)
     {
-      if (!base)
-      {
-        std::cerr << rowConfig << ": isosurfaces need a vtkHAVSMapperBase mapper" << std::endl;
-        return EXIT_FAILURE;
-      }
       if (iso == IsoSurfaceBlend)
       {
         base->SetBlendMode(vtkHAVSMapperBase::ISOSURFACE_BLEND);
@@ -1130,11 +1141,6 @@ int RunWorker(const Options& o)
     }
     if (budgetPercent > 0.0)
     {
-      if (!base)
-      {
-        std::cerr << rowConfig << ": a frame budget needs a vtkHAVSMapperBase mapper" << std::endl;
-        return EXIT_FAILURE;
-      }
       // As a user's interactive frames: no stage timer finishing the GPU's work.
       if (havs)
       {
@@ -1798,9 +1804,7 @@ bool IsEditRun(const Row& r)
 /// section, none of them in the main tables.
 bool IsIsoRun(const Row& r)
 {
-  auto isIso = [](const std::string& c)
-  { return c.rfind("iso-", 0) == 0 || c.rfind("isomix-", 0) == 0; };
-  return (r.count("config") && isIso(r.at("config"))) ||
+  return (r.count("config") && IsoModeOf(r.at("config")) != NoIsoSurfaces) ||
     (r.count("command") &&
       (r.at("command").find(",iso-") != std::string::npos ||
         r.at("command").find(" iso-") != std::string::npos ||
@@ -1983,8 +1987,7 @@ std::string IsoReport(const std::vector<Row>& allRows)
   for (const Row& r : rows)
   {
     const std::string& config = r.at("config");
-    if (config.rfind("iso-", 0) == 0 || config.rfind("isomix-", 0) == 0 || config == "reference" ||
-      !find(r, "iso-" + config))
+    if (IsoModeOf(config) != NoIsoSurfaces || config == "reference" || !find(r, "iso-" + config))
     {
       continue;
     }
