@@ -18,14 +18,14 @@ import os
 import sys
 
 from paraview.simple import Hide, LoadPlugin, PLOT3DReader, Render, SaveScreenshot, Show
-from vtkmodules.vtkCommonCore import vtkIdTypeArray
 from vtkmodules.vtkFiltersCore import vtkAppendFilter
 from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkIOParallel import vtkMultiBlockPLOT3DReader
 
 import vtkhavs
-from havs_plugin_scene import (SIZE, compare, mpi_setup, png_rgb, read_lox_post, reference_rgb,
-                               require_working_expat, show_lox_post, style_havs_volume)
+from havs_plugin_scene import (SIZE, compare, gather_all, mpi_setup, png_rgb, read_lox_post,
+                               reference_rgb, require_working_expat, show_lox_post,
+                               style_havs_volume)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--mode", choices=["serial", "mpi"], default="serial")
@@ -78,12 +78,7 @@ print("[rank %d] piece: %d tetrahedra" % (rank, tets_here), flush=True)
 
 if args.mode == "mpi":
     # Every rank drew a non-empty piece; together they are the whole mesh once.
-    local = vtkIdTypeArray()
-    local.InsertNextValue(tets_here)
-    total = vtkIdTypeArray()
-    total.SetNumberOfValues(ranks)
-    controller.AllGather(local, total)
-    counts = [total.GetValue(i) for i in range(ranks)]
+    counts = [int(c) for c in gather_all(controller, ranks, tets_here)]
     whole = grid.GetNumberOfCells()
     check(all(c > 0 for c in counts), "every rank holds a non-empty piece: %s" % counts)
     # The cells on the kd cuts are split there (issue 44): the pieces hold more cells
@@ -439,15 +434,7 @@ if args.mode == "serial":
           % (fin_faces.GetNumberOfTetrahedra(), fin_mapper.GetNumberOfTetrahedra()))
     check(rmse < 0.01, "structured grid image matches the exact reference (RMSE %.5f)" % rmse)
 
-if controller and ranks > 1:
-    flag = vtkIdTypeArray()
-    flag.InsertNextValue(len(failures))
-    allflags = vtkIdTypeArray()
-    allflags.SetNumberOfValues(ranks)
-    controller.AllGather(flag, allflags)
-    total_failures = sum(allflags.GetValue(i) for i in range(ranks))
-else:
-    total_failures = len(failures)
+total_failures = int(sum(gather_all(controller, ranks, len(failures))))
 print("[rank %d] %s" % (rank, "PASSED" if total_failures == 0 else "FAILED"), flush=True)
 sys.stdout.flush()
 sys.stderr.flush()
