@@ -254,7 +254,7 @@ void vtkHAVSCellProjectionMapper::RenderView(
   frame.OrderVersion = this->OrderTime.GetMTime();
   frame.Planes = this->Planes;
   frame.Blend = this->GetFrameBlend();
-  frame.Opaque = vtkHAVSMapperInputs::RendererHasOpaqueGeometry(renderer);
+  frame.Opaque = this->NeedsOpaqueDepth(renderer);
   frame.KeepResult = this->KeepFloatResult;
   frame.WrongExit = this->WrongExitForTesting;
   frame.MeasureStages = this->MeasureStageTimes;

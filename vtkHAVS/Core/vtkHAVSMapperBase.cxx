@@ -413,6 +413,12 @@ double vtkHAVSMapperBase::ChooseImageScale(vtkVolume* volume)
 }
 
 //------------------------------------------------------------------------------
+bool vtkHAVSMapperBase::NeedsOpaqueDepth(vtkRenderer* renderer) const
+{
+  return this->LastIntermixLayers > 0 || vtkHAVSMapperInputs::RendererHasOpaqueGeometry(renderer);
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
   // 1. The frame starts (VTK's volume mapper event).
@@ -422,6 +428,7 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastFrameAborted = false;
   this->LastTableSeconds = 0.0;
   this->LastSectionTriangles = 0;
+  this->LastIntermixLayers = 0;
   this->TableRebuilt = false;
   this->ResetLastFrame();
   this->InvokeEvent(vtkCommand::VolumeMapperRenderStartEvent, nullptr);
@@ -455,12 +462,35 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
       // image scale; 6. the mapper's own part.
       if (tableBuilt && !this->AbortRequested(renderer))
       {
-        const vtkHAVSViewFrame view = vtkHAVSViewFrame::Make(
-          renderer, volume, this->Mesh->GetShift(), this->ChooseImageScale(volume));
+        // Translucent layers to intermix: the whole image (no reduction),
+        // drawn once per slab between them.
+        const int layers = this->CanIntermix() && this->Graphics
+          ? this->Graphics->BeginIntermix(renderer, this->KeepFloatResult)
+          : 0;
+        this->LastIntermixLayers = layers;
+        double scale = this->ChooseImageScale(volume);
+        if (layers > 0)
+        {
+          scale = this->LastImageScale = 1.0;
+          this->LastDetail = this->FaceShare;
+        }
+        const vtkHAVSViewFrame view =
+          vtkHAVSViewFrame::Make(renderer, volume, this->Mesh->GetShift(), scale);
         if (view.HasPixels())
         {
-          this->RenderView(renderer, volume, view);
+          for (int slab = 0; slab <= layers; ++slab)
+          {
+            if (layers > 0)
+            {
+              this->Graphics->SetIntermixSlab(slab);
+            }
+            this->RenderView(renderer, volume, view);
+          }
           viewDrawn = true;
+        }
+        if (layers > 0)
+        {
+          this->Graphics->EndIntermix(viewDrawn);
         }
       }
     }
@@ -487,6 +517,8 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BlendMode: " << this->BlendMode
      << ", IsoSurfacesInComposite: " << this->IsoSurfacesInComposite << " (last frame "
      << this->FrameIsoSurfaces.Count << " surfaces)\n";
+  os << indent << "IntermixTranslucentGeometry: " << this->IntermixTranslucentGeometry
+     << " (last frame " << this->LastIntermixLayers << " layers)\n";
   os << indent << "VectorMode: " << this->VectorMode
      << ", VectorComponent: " << this->VectorComponent << "\n";
   os << indent << "HigherOrderSubdivision: " << this->HigherOrderSubdivision << "\n";

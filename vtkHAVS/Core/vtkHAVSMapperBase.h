@@ -236,6 +236,32 @@ public:
 
   ///@{
   /**
+   * Translucent polygonal geometry intermixed with the volume per pixel (on
+   * by default; it takes effect where the renderer's pass is a
+   * vtkHAVSIntermixPass, which peels the translucent actors into layers):
+   * under the composite and isosurface blends, each layer is composited at
+   * its depth between the volume's pieces in front of and behind it, exactly.
+   * The volume is drawn once per layer and once more, each time cut at the
+   * next layer's depth (the opaque geometry's cut), and the pieces are
+   * composited with the layers (vtkHAVSGLFrameTargets); the image reduction
+   * of the level of detail is off for such frames. Off: the volume is
+   * composited over the translucent scene as a whole (VTK's own order).
+   * CanIntermix(): whether this frame would take the layers.
+   */
+  vtkSetMacro(IntermixTranslucentGeometry, bool);
+  vtkGetMacro(IntermixTranslucentGeometry, bool);
+  vtkBooleanMacro(IntermixTranslucentGeometry, bool);
+  bool CanIntermix() const
+  {
+    return this->IntermixTranslucentGeometry &&
+      (this->BlendMode == COMPOSITE_BLEND || this->BlendMode == ISOSURFACE_BLEND);
+  }
+  /// The translucent layers the last frame composited within the volume (0: none).
+  vtkGetMacro(LastIntermixLayers, int);
+  ///@}
+
+  ///@{
+  /**
    * The prepared mesh (never null). Mappers of the same input may share one:
    * `b->SetMesh(a->GetMesh())` makes b use (and keep up to date) a's mesh, so
    * that switching between them does not prepare it again. Each mapper still
@@ -435,6 +461,8 @@ protected:
   /// The graphics layer (the GL mapper's; not owned: it lives as long as the mapper).
   void SetGraphics(vtkHAVSMapperGraphics* graphics) { this->Graphics = graphics; }
 
+  /// Whether the frame needs the opaque depth: opaque geometry, or intermixed layers.
+  bool NeedsOpaqueDepth(vtkRenderer* renderer) const;
   /// Whether the render window asks to abort the frame (counts LastFrameAborted).
   bool AbortRequested(vtkRenderer* renderer);
   /// Warns once per mapper for `which` (vtkHAVSMapperInputs::OnceWarning).
@@ -469,6 +497,8 @@ protected:
   double LastDetail = 1.0;
   double FaceShare = 1.0; ///< the share of the frame's detail HAVS's faces take (1: none)
   bool IsoSurfacesInComposite = false;
+  bool IntermixTranslucentGeometry = true;
+  int LastIntermixLayers = 0;
   vtkHAVSIsoSurfaces FrameIsoSurfaces;
   vtkNew<vtkHAVSLevelOfDetailController> ImageControl;
 

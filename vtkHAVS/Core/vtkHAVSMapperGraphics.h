@@ -29,6 +29,7 @@
 
 VTK_ABI_NAMESPACE_BEGIN
 
+class vtkRenderer;
 class vtkWindow;
 
 class VTKHAVSCORE_EXPORT vtkHAVSMapperGraphics : public vtkObject
@@ -43,6 +44,22 @@ public:
   /// The bytes of the GPU buffers the graphics layer holds (on llvmpipe in
   /// host memory too): the memory ledger's "GPU buffers" (vtkHAVSMemory).
   virtual size_t GetMemoryBytes() const { return 0; }
+
+  ///@{
+  /**
+   * Translucent geometry intermixed with the volume (vtkHAVSIntermixPass).
+   * BeginIntermix: how many translucent layers `renderer` peeled this frame
+   * and leaves to this volume, now taken (0: none, or another volume took
+   * them); `keep`: the kept float result is the intermixed image. The base
+   * then draws the view once per slab, SetIntermixSlab(i) before each
+   * (i < layers: the volume up to layer i's depth; i == layers: up to the
+   * opaque geometry), and EndIntermix(drawn) after (not drawn: the layers are
+   * given back, and the pass composites them itself).
+   */
+  virtual int BeginIntermix(vtkRenderer* vtkNotUsed(renderer), bool vtkNotUsed(keep)) { return 0; }
+  virtual void SetIntermixSlab(int vtkNotUsed(slab)) {}
+  virtual void EndIntermix(bool vtkNotUsed(drawn)) {}
+  ///@}
 
 protected:
   vtkHAVSMapperGraphics() = default;

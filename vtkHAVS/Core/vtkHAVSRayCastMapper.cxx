@@ -143,7 +143,7 @@ void vtkHAVSRayCastMapper::RenderView(
   frame.Table = this->Table;
   frame.TableVersion = this->TableBuildTime.GetMTime();
   frame.Planes = this->Planes;
-  frame.Opaque = vtkHAVSMapperInputs::RendererHasOpaqueGeometry(renderer);
+  frame.Opaque = this->NeedsOpaqueDepth(renderer);
   frame.KeepResult = this->KeepFloatResult;
   frame.TerminationOpacity = static_cast<float>(this->EarlyRayTerminationOpacity);
   frame.MaximumPasses = this->MaximumPeelPasses > 0 ? this->MaximumPeelPasses : 1024;

@@ -445,7 +445,7 @@ void vtkHAVSVolumeMapper::RenderView(
     this->WarnOnce(WarnK, message.c_str());
   }
   FrameRequest request =
-    this->MakeRequest(view, path, k, vtkHAVSMapperInputs::RendererHasOpaqueGeometry(renderer));
+    this->MakeRequest(view, path, k, this->NeedsOpaqueDepth(renderer));
 
   // 6. The near and clipping planes, and the mesh's sections with them.
   this->UpdatePlanes(view);

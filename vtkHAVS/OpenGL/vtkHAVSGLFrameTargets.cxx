@@ -12,6 +12,7 @@
 #include "vtkHAVSMapperInputs.h"
 #include "vtkHAVSShaderHooks.h"
 #include "vtkHAVSShaders.h"
+#include "vtkHAVSTranslucentLayers.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -114,6 +115,20 @@ int vtkHAVSGLFrameTargets::ReadFramebufferDepthFormat()
 
 //------------------------------------------------------------------------------
 void vtkHAVSGLFrameTargets::CaptureOpaqueDepth(
+  int x, int y, int width, int height, vtkObject* reporter)
+{
+  this->CaptureFramebufferDepth(x, y, width, height, reporter);
+  // An intermixed frame's slab ends at its layer, or nearer at the opaque geometry.
+  vtkTextureObject* layer =
+    this->IntermixLayers ? this->IntermixLayers->GetDepthTexture(this->IntermixSlab) : nullptr;
+  if (layer)
+  {
+    this->ClampOpaqueDepth(layer);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::CaptureFramebufferDepth(
   int x, int y, int width, int height, vtkObject* reporter)
 {
   GLint sampleBuffers = 0;
@@ -281,8 +296,132 @@ std::uint64_t vtkHAVSGLFrameTargets::ReadViolationCounter(
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::SetIntermix(vtkHAVSTranslucentLayers* layers, bool keep)
+{
+  this->IntermixLayers = layers;
+  this->IntermixKeep = keep;
+  this->IntermixSlab = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::ClampOpaqueDepth(vtkTextureObject* layerDepth)
+{
+  vtkShaderProgram* program = this->Window->GetShaderCache()->ReadyShaderProgram(
+    vtkHAVSShaders::QuadVertexShader().c_str(), vtkHAVSShaders::IntermixDepthShader().c_str(), "");
+  if (!program || !program->GetCompiled())
+  {
+    vtkErrorMacro("The intermixed slab's depth shader could not be built.");
+    return;
+  }
+  vtkOpenGLState* state = this->Window->GetState();
+  state->PushDrawFramebufferBinding();
+  if (!this->ClampFramebuffer)
+  {
+    glGenFramebuffers(1, &this->ClampFramebuffer);
+  }
+  state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->ClampFramebuffer);
+  glFramebufferTexture2D(
+    GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, this->OpaqueDepth->GetHandle(), 0);
+  state->vtkglDrawBuffer(GL_NONE);
+  {
+    vtkOpenGLState::ScopedglViewport viewport(state);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    state->vtkglViewport(0, 0, this->FullSize[0], this->FullSize[1]);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglDepthFunc(GL_LESS);
+    state->vtkglDepthMask(GL_TRUE);
+    layerDepth->Activate();
+    program->SetUniformi("havsLayerDepth", layerDepth->GetTextureUnit());
+    this->DrawFullViewport();
+    layerDepth->Deactivate();
+  }
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
+  state->PopDrawFramebufferBinding();
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSGLFrameTargets::AccumulateIntermix(int originX, int originY)
+{
+  vtkShaderProgram* program = this->Window->GetShaderCache()->ReadyShaderProgram(
+    vtkHAVSShaders::QuadVertexShader().c_str(), vtkHAVSShaders::IntermixShader().c_str(), "");
+  if (!program || !program->GetCompiled())
+  {
+    vtkErrorMacro("The intermixed sum's shader could not be built.");
+    return false;
+  }
+  const int count = this->IntermixLayers->GetNumberOfLayers();
+  const bool last = this->IntermixSlab >= count;
+  for (vtkHAVSGLImage* image : { &this->IntermixSum, &this->IntermixPrevious })
+  {
+    image->Resize(GL_RGBA32F, this->FullSize[0], this->FullSize[1]);
+  }
+  this->IntermixTransmittance.Resize(GL_R32F, this->FullSize[0], this->FullSize[1]);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  glBindImageTexture(0, this->Result->GetHandle(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  this->IntermixSum.BindImage(1);
+  this->IntermixPrevious.BindImage(2);
+  this->IntermixTransmittance.BindImage(3);
+  vtkTextureObject* color =
+    last ? nullptr : this->IntermixLayers->GetColorTexture(this->IntermixSlab);
+  if (color)
+  {
+    color->Activate();
+    program->SetUniformi("havsLayerColor", color->GetTextureUnit());
+  }
+  const float origin[2] = { static_cast<float>(originX), static_cast<float>(originY) };
+  program->SetUniform2f("havsViewportOrigin", origin);
+  program->SetUniformi("havsIntermixFirst", this->IntermixSlab == 0 ? 1 : 0);
+  program->SetUniformi("havsIntermixLast", last ? 1 : 0);
+  vtkOpenGLState* state = this->Window->GetState();
+  {
+    vtkOpenGLState::ScopedglColorMask colorMask(state);
+    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    this->DrawFullViewport();
+  }
+  if (color)
+  {
+    color->Deactivate();
+  }
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+    GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  for (GLuint unit = 0; unit < 4; ++unit)
+  {
+    vtkHAVSGLImage::UnbindImage(unit);
+  }
+  if (last && this->IntermixKeep)
+  {
+    state->PushReadFramebufferBinding();
+    this->KeepResult();
+    state->PopReadFramebufferBinding();
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkHAVSGLFrameTargets::Composite(int originX, int originY)
 {
+  if (this->IntermixLayers)
+  {
+    // A slab before the last adds to the intermixed sum only; the last composites it.
+    if (!this->AccumulateIntermix(originX, originY))
+    {
+      return false;
+    }
+    if (this->IntermixSlab < this->IntermixLayers->GetNumberOfLayers())
+    {
+      return true;
+    }
+  }
   vtkOpenGLState* state = this->Window->GetState();
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
@@ -395,6 +534,14 @@ void vtkHAVSGLFrameTargets::ReleaseSizeDependent(vtkWindow* window)
 void vtkHAVSGLFrameTargets::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->ReleaseSizeDependent(window);
+  this->IntermixSum.Release();
+  this->IntermixPrevious.Release();
+  this->IntermixTransmittance.Release();
+  if (this->ClampFramebuffer)
+  {
+    glDeleteFramebuffers(1, &this->ClampFramebuffer);
+    this->ClampFramebuffer = 0;
+  }
   this->ViolationCounter.Release();
   this->EmptyVertexArray.Release();
 }

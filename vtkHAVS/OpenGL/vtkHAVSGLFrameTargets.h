@@ -40,6 +40,7 @@
 VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSShaderHooks;
+class vtkHAVSTranslucentLayers;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
@@ -124,6 +125,18 @@ public:
   /// size, set by the caller), with the shader hooks last set applied; a
   /// reduced result is upsampled (bilinear, premultiplied).
   bool Composite(int originX, int originY);
+  /**
+   * Translucent layers intermixed with the volume (vtkHAVSIntermixPass;
+   * nullptr: none). SetIntermixSlab(i) before each slab's draw: for i below
+   * the layers' count, CaptureOpaqueDepth() then takes the nearer of the
+   * opaque depth and layer i's, and Composite() adds the slab to the
+   * intermixed sum (vtkHAVSIntermixFS) without drawing into the window; the
+   * last slab's Composite() writes the sum into the result (kept again when
+   * `keep`) and composites it.
+   */
+  void SetIntermix(vtkHAVSTranslucentLayers* layers, bool keep);
+  void SetIntermixSlab(int slab) { this->IntermixSlab = slab; }
+
   /// The volume's shader hooks the composite applies (the mapper's; nullptr: none).
   void SetShaderHooks(const vtkHAVSShaderHooks* hooks) { this->Hooks = hooks; }
 
@@ -153,6 +166,12 @@ private:
   void operator=(const vtkHAVSGLFrameTargets&) = delete;
 
   void ReleaseSizeDependent(vtkWindow* window);
+  /// The depth of the read framebuffer at the viewport, into the opaque depth.
+  void CaptureFramebufferDepth(int x, int y, int width, int height, vtkObject* reporter);
+  /// The opaque depth made the nearer of itself and `layerDepth`'s.
+  void ClampOpaqueDepth(vtkTextureObject* layerDepth);
+  /// Adds the slab drawn to the intermixed sum (the last: the sum into the result).
+  bool AccumulateIntermix(int originX, int originY);
   /// The vtkTextureObject depth format of the read framebuffer's depth, -1 if none.
   static int ReadFramebufferDepthFormat();
 
@@ -170,6 +189,11 @@ private:
   bool WarnedUnresolvedDepth = false;
   vtkSmartPointer<vtkTextureObject> Result;
   vtkSmartPointer<vtkTextureObject> ResultCopy;
+  vtkHAVSTranslucentLayers* IntermixLayers = nullptr; // this frame's, not owned
+  int IntermixSlab = 0;
+  bool IntermixKeep = false;
+  vtkHAVSGLImage IntermixSum, IntermixPrevious, IntermixTransmittance;
+  GLuint ClampFramebuffer = 0;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResultFramebuffer;
   std::vector<float> KeptResult;
   int KeptSize[2] = { 0, 0 };

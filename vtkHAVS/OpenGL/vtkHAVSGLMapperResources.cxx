@@ -19,6 +19,7 @@
 #include "vtkHAVSGLTable.h"
 #include "vtkHAVSMapperBase.h"
 #include "vtkHAVSOpenGL.h"
+#include "vtkHAVSTranslucentLayers.h"
 #include "vtkHAVSViewFrame.h"
 
 #include "vtkCommand.h"
@@ -215,6 +216,34 @@ bool vtkHAVSGLMapperResources::EndFrame(
     { this->Table->GetCellOptics(), this->Table->GetAdditive1D(), this->Table->GetTable(),
       this->Targets->GetOpaqueDepth() },
     view.OriginX, view.OriginY, mapper);
+}
+
+//------------------------------------------------------------------------------
+int vtkHAVSGLMapperResources::BeginIntermix(vtkRenderer* renderer, bool keep)
+{
+  vtkHAVSTranslucentLayers* layers = vtkHAVSTranslucentLayers::GetLayersOf(renderer);
+  if (!layers || !layers->Take())
+  {
+    return 0;
+  }
+  this->IntermixLayers = layers;
+  this->Targets->SetIntermix(layers, keep);
+  return layers->GetNumberOfLayers();
+}
+
+void vtkHAVSGLMapperResources::SetIntermixSlab(int slab)
+{
+  this->Targets->SetIntermixSlab(slab);
+}
+
+void vtkHAVSGLMapperResources::EndIntermix(bool drawn)
+{
+  if (this->IntermixLayers && !drawn)
+  {
+    this->IntermixLayers->GiveBack();
+  }
+  this->IntermixLayers = nullptr;
+  this->Targets->SetIntermix(nullptr, false);
 }
 
 //------------------------------------------------------------------------------

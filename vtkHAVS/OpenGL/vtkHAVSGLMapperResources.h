@@ -45,6 +45,7 @@ class vtkHAVSGLCellRecords;
 class vtkHAVSGLFrameTargets;
 class vtkHAVSGLSection;
 class vtkHAVSGLTable;
+class vtkHAVSTranslucentLayers;
 class vtkHAVSViewFrame;
 class vtkShaderProgram;
 class vtkOpenGLRenderWindow;
@@ -95,6 +96,12 @@ public:
   /// Every vtkHAVSGLBuffer of the process (vtkHAVSGLBuffer::GetLiveBytes): with
   /// one mapper, its own.
   size_t GetMemoryBytes() const override;
+  ///@{
+  /// Translucent layers intermixed (vtkHAVSTranslucentLayers, through the targets).
+  int BeginIntermix(vtkRenderer* renderer, bool keep) override;
+  void SetIntermixSlab(int slab) override;
+  void EndIntermix(bool drawn) override;
+  ///@}
 
   /**
    * The start of a cell-projection or ray-cast frame: the window prepared
@@ -162,6 +169,7 @@ private:
   vtkOpenGLRenderWindow* Window = nullptr;
   unsigned long WindowDeleteObserver = 0;
   vtkNew<vtkHAVSGLTable> Table;
+  vtkHAVSTranslucentLayers* IntermixLayers = nullptr; // the frame's, taken; not owned
   vtkNew<vtkHAVSGLFrameTargets> Targets;
   std::unique_ptr<vtkHAVSGLOwnObjects> Owned;
   std::unique_ptr<vtkHAVSGLSection> Section; // the near plane's section (cell projection, rays)

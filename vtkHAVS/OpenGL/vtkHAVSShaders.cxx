@@ -25,7 +25,10 @@
 #include "vtkHAVSFaceVS.h"
 #include "vtkHAVSFetchDrawFS.h"
 #include "vtkHAVSInterlockDrawFS.h"
+#include "vtkHAVSIntermixDepthFS.h"
+#include "vtkHAVSIntermixFS.h"
 #include "vtkHAVSKBufferLib.h"
+#include "vtkHAVSLayerCompositeFS.h"
 #include "vtkHAVSListDrawFS.h"
 #include "vtkHAVSQuadVS.h"
 #include "vtkHAVSRayCastFS.h"
@@ -119,6 +122,21 @@ std::string vtkHAVSShaders::FaceVertexShader(bool cellScalars)
 std::string vtkHAVSShaders::QuadVertexShader()
 {
   return vtkHAVSQuadVS;
+}
+
+std::string vtkHAVSShaders::IntermixShader()
+{
+  return vtkHAVSIntermixFS;
+}
+
+std::string vtkHAVSShaders::IntermixDepthShader()
+{
+  return vtkHAVSIntermixDepthFS;
+}
+
+std::string vtkHAVSShaders::LayerCompositeShader()
+{
+  return vtkHAVSLayerCompositeFS;
 }
 
 std::string vtkHAVSShaders::FetchDrawShader(int k, const Features& features)

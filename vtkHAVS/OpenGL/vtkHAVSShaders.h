@@ -107,6 +107,12 @@ public:
   /// Benchmark aid: a trivial fragment shader (rasterization cost alone).
   static std::string TrivialShader();
 
+  /// Translucent layers intermixed with the volume (vtkHAVSIntermixPass):
+  /// the per-slab sum, a layer's depth as the slab's cut, a layer composited
+  /// over the window.
+  static std::string IntermixShader();
+  static std::string IntermixDepthShader();
+  static std::string LayerCompositeShader();
   /// Composites the result over VTK's framebuffer; with the volume's shader
   /// property's `hooks` applied (vtkHAVSShaderHooks), its custom uniforms
   /// declared by `uniformDeclarations` (vtkOpenGLUniforms::GetDeclarations).

@@ -101,6 +101,25 @@ void vtkHAVSReferenceRenderer::SetOpaqueDepth(vtkFloatArray* depth)
   this->Modified();
 }
 
+void vtkHAVSReferenceRenderer::AddTranslucentLayer(vtkFloatArray* depth, vtkFloatArray* rgba)
+{
+  if (!depth || !rgba || rgba->GetNumberOfComponents() != 4 ||
+    depth->GetNumberOfTuples() != rgba->GetNumberOfTuples())
+  {
+    vtkErrorMacro("A translucent layer needs a depth image and an RGBA image of the same size.");
+    return;
+  }
+  this->TranslucentLayers.push_back({ depth, rgba });
+  this->Modified();
+}
+
+void vtkHAVSReferenceRenderer::RemoveAllTranslucentLayers()
+{
+  this->TranslucentLayers.clear();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSReferenceRenderer::SetVolumeMatrix(vtkMatrix4x4* matrix)
 {
   if (matrix)
@@ -310,6 +329,16 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
     });
   rasterizer->ReleaseHits();
   this->NumberOfStartedInside = 0;
+  // The ray parameter where pixel p's ray meets window depth z.
+  auto rayAtDepth = [&](vtkIdType p, const vtkHAVSFaceRasterizer::Ray& ray, float z)
+  {
+    const int i = static_cast<int>(p % width), j = static_cast<int>(p / width);
+    double surface[3], d[3];
+    rasterizer->Unproject(
+      (i + 0.5) / width * 2.0 - 1.0, (j + 0.5) / height * 2.0 - 1.0, 2.0 * z - 1.0, surface);
+    vtkMath::Subtract(surface, ray.Origin, d);
+    return vtkMath::Dot(d, ray.Direction);
+  };
   const float* opaque = this->OpaqueDepth &&
       this->OpaqueDepth->GetNumberOfValues() >= static_cast<vtkIdType>(width) * height
     ? this->OpaqueDepth->GetPointer(0)
@@ -398,12 +427,7 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
           if (opaque && opaque[p] < 1.0f)
           {
             // The ray ends at the opaque surface.
-            const int i = static_cast<int>(p % width), j = static_cast<int>(p / width);
-            double surface[3], d[3];
-            rasterizer->Unproject((i + 0.5) / width * 2.0 - 1.0, (j + 0.5) / height * 2.0 - 1.0,
-              2.0 * opaque[p] - 1.0, surface);
-            vtkMath::Subtract(surface, ray.Origin, d);
-            t1 = std::min(t1, vtkMath::Dot(d, ray.Direction));
+            t1 = std::min(t1, rayAtDepth(p, ray, opaque[p]));
           }
           const Fragment* first = this->GetPixelFragmentsBegin(p);
           const Fragment* last = this->GetPixelFragmentsEnd(p);
@@ -558,6 +582,56 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
     this->Fragments.swap(fragments);
     this->PixelStart.swap(start);
   }
+  // The translucent layers' fragments as events along the rays, in depth order.
+  this->SurfaceEvents.clear();
+  this->SurfaceEventStart.assign(static_cast<size_t>(pixels) + 1, 0);
+  std::vector<vtkIdType> layerCounts(static_cast<size_t>(pixels), 0);
+  for (const TranslucentLayer& layer : this->TranslucentLayers)
+  {
+    if (layer.Depth->GetNumberOfTuples() < pixels)
+    {
+      vtkErrorMacro("A translucent layer is smaller than the image: left out.");
+      continue;
+    }
+    for (vtkIdType p = 0; p < pixels; ++p)
+    {
+      layerCounts[p] += layer.Depth->GetValue(p) < 1.0f ? 1 : 0;
+    }
+  }
+  for (vtkIdType p = 0; p < pixels; ++p)
+  {
+    this->SurfaceEventStart[p + 1] = this->SurfaceEventStart[p] + layerCounts[p];
+  }
+  this->SurfaceEvents.resize(static_cast<size_t>(this->SurfaceEventStart[pixels]));
+  vtkSMPTools::For(0, pixels,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        SurfaceEvent* out = this->SurfaceEvents.data() + this->SurfaceEventStart[p];
+        SurfaceEvent* first = out;
+        const vtkHAVSFaceRasterizer::Ray ray =
+          rasterizer->GetPixelRay(static_cast<int>(p % width), static_cast<int>(p / width));
+        for (const TranslucentLayer& layer : this->TranslucentLayers)
+        {
+          if (layer.Depth->GetNumberOfTuples() < pixels || layer.Depth->GetValue(p) >= 1.0f)
+          {
+            continue;
+          }
+          const float* c = layer.RGBA->GetPointer(4 * p);
+          const double a = std::min(1.0, std::max(0.0, static_cast<double>(c[3])));
+          out->Distance = ray.Offset + rayAtDepth(p, ray, layer.Depth->GetValue(p));
+          for (int k = 0; k < 3; ++k)
+          {
+            out->RGBA[k] = a * c[k];
+          }
+          out->RGBA[3] = a;
+          ++out;
+        }
+        std::stable_sort(first, out,
+          [](const SurfaceEvent& x, const SurfaceEvent& y) { return x.Distance < y.Distance; });
+      }
+    });
   this->ReportProgress(1.0);
   return true;
 }
@@ -666,6 +740,45 @@ void vtkHAVSReferenceRenderer::IntegrateRay(
         property, front.ScalarBehind(), back.Scalar, back.Distance - front.Distance, segment);
       composite.Add(segment);
     });
+  composite.Get(rgba);
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSReferenceRenderer::IntegrateRayWithSurfaces(vtkVolumeProperty* property,
+  const Fragment* begin, const Fragment* end, const SurfaceEvent* eventsBegin,
+  const SurfaceEvent* eventsEnd, double rgba[4])
+{
+  FrontToBack composite;
+  const SurfaceEvent* e = eventsBegin;
+  ForEachSegmentInMesh(begin, end,
+    [&](const Fragment& front, const Fragment& back)
+    {
+      // Surfaces in front of the segment, then the segment split at those inside it.
+      for (; e != eventsEnd && e->Distance <= front.Distance; ++e)
+      {
+        composite.Add(e->RGBA);
+      }
+      const double sf = front.ScalarBehind(), sb = back.Scalar;
+      const double length = back.Distance - front.Distance;
+      double from = 0.0; // the piece's start, as a share of the segment
+      for (; e != eventsEnd && e->Distance < back.Distance; ++e)
+      {
+        const double to = length > 0.0 ? (e->Distance - front.Distance) / length : 0.0;
+        double piece[4];
+        IntegrateSegmentExact(
+          property, sf + (sb - sf) * from, sf + (sb - sf) * to, length * (to - from), piece);
+        composite.Add(piece);
+        composite.Add(e->RGBA);
+        from = to;
+      }
+      double piece[4];
+      IntegrateSegmentExact(property, sf + (sb - sf) * from, sb, length * (1.0 - from), piece);
+      composite.Add(piece);
+    });
+  for (; e != eventsEnd; ++e)
+  {
+    composite.Add(e->RGBA);
+  }
   composite.Get(rgba);
 }
 
@@ -868,7 +981,15 @@ bool vtkHAVSReferenceRenderer::Render()
         for (vtkIdType p = begin; p < end; ++p)
         {
           double rgba[4];
-          if (isoRay)
+          if (!this->TranslucentLayers.empty() && !isoRay &&
+            (this->BlendMode == 0 || this->BlendMode == 3 || this->BlendMode > 5))
+          {
+            IntegrateRayWithSurfaces(property, this->GetPixelFragmentsBegin(p),
+              this->GetPixelFragmentsEnd(p),
+              this->SurfaceEvents.data() + this->SurfaceEventStart[p],
+              this->SurfaceEvents.data() + this->SurfaceEventStart[p + 1], rgba);
+          }
+          else if (isoRay)
           {
             IntegrateRayIso(
               property, this->GetPixelFragmentsBegin(p), this->GetPixelFragmentsEnd(p), iso, rgba);
@@ -904,6 +1025,7 @@ void vtkHAVSReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
      << "ClippingPlanes: " << (this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0)
      << "\n";
   os << indent << "OpaqueDepth: " << (this->OpaqueDepth ? "set" : "none") << "\n";
+  os << indent << "TranslucentLayers: " << this->TranslucentLayers.size() << "\n";
   os << indent << "NumberOfStartedInside: " << this->NumberOfStartedInside << "\n";
 }
 

@@ -140,6 +140,31 @@ public:
 
   ///@{
   /**
+   * Translucent surfaces in the scene, as layers of fragments (a depth image
+   * of Size as SetOpaqueDepth's, 1 where the layer has no fragment, and a
+   * colour image: RGB not premultiplied and opacity, as
+   * vtkHAVSTranslucentLayers peels them from VTK's own render). Under the
+   * composite blend each fragment is an event along its pixel's ray: the
+   * segment it falls in is split at its distance (the scalar linear along
+   * the segment) and the fragment is composited between the two pieces;
+   * fragments outside the mesh are composited in their order too.
+   */
+  void AddTranslucentLayer(vtkFloatArray* depth, vtkFloatArray* rgba);
+  void RemoveAllTranslucentLayers();
+  int GetNumberOfTranslucentLayers() const
+  {
+    return static_cast<int>(this->TranslucentLayers.size());
+  }
+  /// A surface fragment along a ray: its distance (as Fragment::Distance) and premultiplied colour.
+  struct SurfaceEvent
+  {
+    double Distance;
+    double RGBA[4];
+  };
+  ///@}
+
+  ///@{
+  /**
    * The blend mode, numbered as vtkVolumeMapper's: COMPOSITE_BLEND (0, the
    * default: the optical model above), MAXIMUM_INTENSITY_BLEND (1) and
    * MINIMUM_INTENSITY_BLEND (2: the extremal scalar over the ray's segments in
@@ -241,6 +266,13 @@ public:
    */
   static void IntegrateRayIso(vtkVolumeProperty* property, const Fragment* begin,
     const Fragment* end, const vtkHAVSIsoSurfaces& iso, double rgba[4]);
+  /**
+   * One pixel of the composite blend with surface fragments (`events`
+   * sorted by distance) between the volume's pieces.
+   */
+  static void IntegrateRayWithSurfaces(vtkVolumeProperty* property, const Fragment* begin,
+    const Fragment* end, const SurfaceEvent* eventsBegin, const SurfaceEvent* eventsEnd,
+    double rgba[4]);
 
   /**
    * The additive blend's segment: the integral of tau(s(t)) (s(t) - lo) /
@@ -287,6 +319,14 @@ private:
   int BlendMode = 0;
   bool IsoSurfacesInComposite = false;
   vtkSmartPointer<vtkFloatArray> OpaqueDepth;
+  struct TranslucentLayer
+  {
+    vtkSmartPointer<vtkFloatArray> Depth;
+    vtkSmartPointer<vtkFloatArray> RGBA;
+  };
+  std::vector<TranslucentLayer> TranslucentLayers;
+  std::vector<SurfaceEvent> SurfaceEvents;  ///< per pixel, sorted (ComputeFragments)
+  std::vector<vtkIdType> SurfaceEventStart; ///< pixel p's events: [start[p], start[p + 1])
   vtkIdType NumberOfStartedInside = 0;
   std::vector<Fragment> Fragments;
   std::vector<vtkIdType> PixelStart;
