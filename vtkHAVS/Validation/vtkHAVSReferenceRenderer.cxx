@@ -746,9 +746,40 @@ void vtkHAVSReferenceRenderer::IntegrateRay(
 //------------------------------------------------------------------------------
 void vtkHAVSReferenceRenderer::IntegrateRayWithSurfaces(vtkVolumeProperty* property,
   const Fragment* begin, const Fragment* end, const SurfaceEvent* eventsBegin,
-  const SurfaceEvent* eventsEnd, double rgba[4])
+  const SurfaceEvent* eventsEnd, double rgba[4], const vtkHAVSIsoSurfaces* iso)
 {
   FrontToBack composite;
+  // A piece of a segment (scalar sf -> sb linear): the volume, or with
+  // isosurfaces their crossings (and, in the mixed mode, the volume between).
+  auto addPiece = [&](double sf, double sb, double length)
+  {
+    double piece[4];
+    if (!iso)
+    {
+      IntegrateSegmentExact(property, sf, sb, length, piece);
+      composite.Add(piece);
+      return;
+    }
+    double from = 0.0, sFrom = sf;
+    for (int i : iso->Crossed(sf, sb))
+    {
+      const double v = iso->Values[i];
+      if (iso->Composite)
+      {
+        const double t = (v - sf) / (sb - sf);
+        IntegrateSegmentExact(property, sFrom, v, length * (t - from), piece);
+        composite.Add(piece);
+        from = t;
+        sFrom = v;
+      }
+      composite.Add(iso->Colors[i]); // (the surface's colour, SurfaceColor at Make)
+    }
+    if (iso->Composite)
+    {
+      IntegrateSegmentExact(property, sFrom, sb, length * (1.0 - from), piece);
+      composite.Add(piece);
+    }
+  };
   const SurfaceEvent* e = eventsBegin;
   ForEachSegmentInMesh(begin, end,
     [&](const Fragment& front, const Fragment& back)
@@ -764,16 +795,11 @@ void vtkHAVSReferenceRenderer::IntegrateRayWithSurfaces(vtkVolumeProperty* prope
       for (; e != eventsEnd && e->Distance < back.Distance; ++e)
       {
         const double to = length > 0.0 ? (e->Distance - front.Distance) / length : 0.0;
-        double piece[4];
-        IntegrateSegmentExact(
-          property, sf + (sb - sf) * from, sf + (sb - sf) * to, length * (to - from), piece);
-        composite.Add(piece);
+        addPiece(sf + (sb - sf) * from, sf + (sb - sf) * to, length * (to - from));
         composite.Add(e->RGBA);
         from = to;
       }
-      double piece[4];
-      IntegrateSegmentExact(property, sf + (sb - sf) * from, sb, length * (1.0 - from), piece);
-      composite.Add(piece);
+      addPiece(sf + (sb - sf) * from, sb, length * (1.0 - from));
     });
   for (; e != eventsEnd; ++e)
   {
@@ -839,33 +865,7 @@ void vtkHAVSReferenceRenderer::IntegrateRayBlend(vtkVolumeProperty* property, co
 void vtkHAVSReferenceRenderer::IntegrateRayIso(vtkVolumeProperty* property, const Fragment* begin,
   const Fragment* end, const vtkHAVSIsoSurfaces& iso, double rgba[4])
 {
-  FrontToBack composite;
-  ForEachSegmentInMesh(begin, end,
-    [&](const Fragment& front, const Fragment& back)
-    {
-      const double sf = front.ScalarBehind(), sb = back.Scalar;
-      const double length = back.Distance - front.Distance;
-      double from = 0.0, sFrom = sf, piece[4];
-      for (int i : iso.Crossed(sf, sb))
-      {
-        const double v = iso.Values[i];
-        if (iso.Composite)
-        {
-          const double t = (v - sf) / (sb - sf);
-          IntegrateSegmentExact(property, sFrom, v, length * (t - from), piece);
-          composite.Add(piece);
-          from = t;
-          sFrom = v;
-        }
-        composite.Add(iso.Colors[i]); // (the surface's colour, SurfaceColor at Make)
-      }
-      if (iso.Composite)
-      {
-        IntegrateSegmentExact(property, sFrom, sb, length * (1.0 - from), piece);
-        composite.Add(piece);
-      }
-    });
-  composite.Get(rgba);
+  IntegrateRayWithSurfaces(property, begin, end, nullptr, nullptr, rgba, &iso);
 }
 
 //------------------------------------------------------------------------------
@@ -964,6 +964,9 @@ bool vtkHAVSReferenceRenderer::Render()
   const vtkHAVSIsoSurfaces iso = vtkHAVSIsoSurfaces::Make(
     this->Property, this->BlendMode, this->IsoSurfacesInComposite, this->ScalarRange);
   const bool isoRay = this->BlendMode == vtkHAVSIsoSurfaces::IsoSurfaceBlend || iso.Count > 0;
+  // Translucent layers: under the blends composited front to back (composite, isosurface).
+  const bool frontToBack = this->BlendMode != 1 && this->BlendMode != 2 && this->BlendMode != 4;
+  const bool surfaces = !this->TranslucentLayers.empty() && frontToBack;
   std::mutex copying;
   const vtkIdType slices = 20;
   for (vtkIdType slice = 0; slice < slices; ++slice)
@@ -981,13 +984,13 @@ bool vtkHAVSReferenceRenderer::Render()
         for (vtkIdType p = begin; p < end; ++p)
         {
           double rgba[4];
-          if (!this->TranslucentLayers.empty() && !isoRay &&
-            (this->BlendMode == 0 || this->BlendMode == 3 || this->BlendMode > 5))
+          if (surfaces)
           {
             IntegrateRayWithSurfaces(property, this->GetPixelFragmentsBegin(p),
               this->GetPixelFragmentsEnd(p),
               this->SurfaceEvents.data() + this->SurfaceEventStart[p],
-              this->SurfaceEvents.data() + this->SurfaceEventStart[p + 1], rgba);
+              this->SurfaceEvents.data() + this->SurfaceEventStart[p + 1], rgba,
+              isoRay ? &iso : nullptr);
           }
           else if (isoRay)
           {

@@ -144,7 +144,8 @@ public:
    * of Size as SetOpaqueDepth's, 1 where the layer has no fragment, and a
    * colour image: RGB not premultiplied and opacity, as
    * vtkHAVSTranslucentLayers peels them from VTK's own render). Under the
-   * composite blend each fragment is an event along its pixel's ray: the
+   * composite and isosurface blends (and the mixed mode) each fragment is an
+   * event along its pixel's ray: the
    * segment it falls in is split at its distance (the scalar linear along
    * the segment) and the fragment is composited between the two pieces;
    * fragments outside the mesh are composited in their order too.
@@ -267,12 +268,13 @@ public:
   static void IntegrateRayIso(vtkVolumeProperty* property, const Fragment* begin,
     const Fragment* end, const vtkHAVSIsoSurfaces& iso, double rgba[4]);
   /**
-   * One pixel of the composite blend with surface fragments (`events`
-   * sorted by distance) between the volume's pieces.
+   * One pixel with surface fragments (`events` sorted by distance) composited
+   * between the volume's pieces: the composite blend, or with `iso` its
+   * surfaces (IntegrateRayIso: the isosurface blend, or the mixed mode).
    */
   static void IntegrateRayWithSurfaces(vtkVolumeProperty* property, const Fragment* begin,
     const Fragment* end, const SurfaceEvent* eventsBegin, const SurfaceEvent* eventsEnd,
-    double rgba[4]);
+    double rgba[4], const vtkHAVSIsoSurfaces* iso = nullptr);
 
   /**
    * The additive blend's segment: the integral of tau(s(t)) (s(t) - lo) /
