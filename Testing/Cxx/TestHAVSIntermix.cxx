@@ -11,9 +11,11 @@
 // vtkHAVSIntermixPass), for the mapper named by argument 1 (havs, raycast,
 // cellprojection); argument 2: the data set ("box", or a vtkHAVSDataSets
 // name); 3: the scene ("plane": a lit translucent plane cutting the data set
-// obliquely through its centre; "nested": two nested translucent spheres
-// around its centre, the inner one red and opaque 0.35, the outer unlit
-// and opaque 0.3); 4: image size; 5: views.
+// obliquely through its centre; "nested": two nested translucent surfaces,
+// the inner one red, lit and opaque 0.35, the outer unlit and opaque 0.3:
+// on the LOX post open cylinders of radius 2 and 5 around its post (the z
+// axis, radius 0.5), elsewhere spheres about the centre); 4: image size;
+// 5: views (then one parallel view more).
 // 1. The reference itself, on the box cut by an unlit plane: its image with
 //    the plane's peeled layer as an event along each ray equals, pixel by
 //    pixel, the reference clipped to the front half, then the layer, then
@@ -45,6 +47,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCylinderSource.h"
 #include "vtkContourValues.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
@@ -57,6 +60,8 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -274,15 +279,38 @@ int TestHAVSIntermix(int argc, char* argv[])
   std::vector<vtkSmartPointer<vtkActor>> actors;
   if (sceneName == "nested")
   {
+    // Around the LOX post's post (the z axis, radius 0.5): two open cylinders
+    // of radius 2 and 5; elsewhere two spheres about the centre.
+    const bool post = dataSet == "loxpost";
     const double red[3] = { 1.0, 0.25, 0.2 }, grey[3] = { 0.8, 0.85, 0.9 };
     for (int i = 0; i < 2; ++i)
     {
-      vtkNew<vtkSphereSource> sphere;
-      sphere->SetCenter(center);
-      sphere->SetRadius((i == 0 ? 0.12 : 0.22) * diagonal);
-      sphere->SetThetaResolution(48);
-      sphere->SetPhiResolution(32);
-      actors.push_back(MakeActor(sphere, i == 0 ? red : grey, i == 0 ? 0.35 : 0.3, i == 0));
+      vtkSmartPointer<vtkAlgorithm> source;
+      if (post)
+      {
+        vtkNew<vtkCylinderSource> cylinder;
+        cylinder->SetRadius(i == 0 ? 2.0 : 5.0);
+        cylinder->SetHeight(1.2 * (bounds[5] - bounds[4]));
+        cylinder->SetResolution(96);
+        cylinder->CappingOff();
+        vtkNew<vtkTransform> transform;
+        transform->Translate(0.0, 0.0, 0.5 * (bounds[4] + bounds[5]));
+        transform->RotateX(90.0);
+        auto placed = vtkSmartPointer<vtkTransformPolyDataFilter>::New();
+        placed->SetInputConnection(cylinder->GetOutputPort());
+        placed->SetTransform(transform);
+        source = placed;
+      }
+      else
+      {
+        auto sphere = vtkSmartPointer<vtkSphereSource>::New();
+        sphere->SetCenter(center);
+        sphere->SetRadius((i == 0 ? 0.12 : 0.22) * diagonal);
+        sphere->SetThetaResolution(48);
+        sphere->SetPhiResolution(32);
+        source = sphere;
+      }
+      actors.push_back(MakeActor(source, i == 0 ? red : grey, i == 0 ? 0.35 : 0.3, i == 0));
     }
   }
   else
