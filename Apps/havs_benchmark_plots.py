@@ -48,6 +48,12 @@ def budget_run(r):
                for text in [r["config"]] + re.split(r"[ ,]", r.get("command", "")))
 
 
+def translucent_run(r):
+    # A translucent-* row, or any row a translucent run measured (the rows without the
+    # plane beside them and the reference): the report's translucent geometry section only.
+    return r["config"].startswith("translucent-") or "translucent-" in r.get("command", "")
+
+
 def iso_run(r):
     # An iso-* or isomix-* row, or any row an isosurface run measured (its composite rows
     # and reference): the report's isosurface section only.
@@ -57,7 +63,8 @@ def iso_run(r):
 
 
 rows = [r for r in all_rows
-        if not level_of_detail(r) and not edit_run(r) and not budget_run(r) and not iso_run(r)]
+        if not level_of_detail(r) and not edit_run(r) and not budget_run(r) and not iso_run(r)
+        and not translucent_run(r)]
 out = sys.argv[2]
 
 

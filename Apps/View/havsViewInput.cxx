@@ -129,6 +129,10 @@ void Input::Key(const std::string& key)
   {
     action = this->TheScene.ToggleIsoSurfacesInComposite();
   }
+  else if (key == "p")
+  {
+    action = this->TheScene.ToggleTranslucentPlane();
+  }
   else if (key == "v")
   {
     action = this->TheScene.ToggleViolationCount();

@@ -11,10 +11,12 @@
 
 #include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSFrameStatistics.h"
+#include "vtkHAVSIntermixPass.h"
 #include "vtkHAVSMapperBase.h"
 #include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSVolumeMapper.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
@@ -23,8 +25,11 @@
 #include "vtkImageData.h"
 #include "vtkPNGWriter.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProjectedTetrahedraMapper.h"
+#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkTextProperty.h"
 #include "vtkUnstructuredGridVolumeRayCastMapper.h"
@@ -352,6 +357,47 @@ std::string Scene::ToggleIsoSurfacesInComposite()
 }
 
 //------------------------------------------------------------------------------
+std::string Scene::ToggleTranslucentPlane()
+{
+  if (this->Plane)
+  {
+    this->Renderer->RemoveActor(this->Plane);
+    this->Renderer->SetPass(nullptr);
+    this->Plane = nullptr;
+    return "translucent plane: off";
+  }
+  if (!this->Grid)
+  {
+    return "translucent plane: no mesh";
+  }
+  // A lit plane (opacity 0.45) through the centre, across the mesh, tilted;
+  // the renderer's pass peels it and the project's mappers intermix it.
+  double center[3];
+  this->Grid->GetCenter(center);
+  const double extent = 1.6 * this->Grid->GetLength();
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-0.5 * extent, -0.5 * extent, 0.0);
+  plane->SetPoint1(0.5 * extent, -0.5 * extent, 0.0);
+  plane->SetPoint2(-0.5 * extent, 0.5 * extent, 0.0);
+  plane->SetCenter(center);
+  plane->SetNormal(0.3, 0.45, 1.0);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  this->Plane = vtkSmartPointer<vtkActor>::New();
+  this->Plane->SetMapper(mapper);
+  this->Plane->GetProperty()->SetColor(0.2, 0.8, 0.9);
+  this->Plane->GetProperty()->SetOpacity(0.45);
+  this->Renderer->AddActor(this->Plane);
+  if (!this->Intermix)
+  {
+    this->Intermix = vtkSmartPointer<vtkHAVSIntermixPass>::New();
+  }
+  this->Renderer->SetPass(this->Intermix);
+  return "translucent plane: on (intermixed by the project's mappers; PT, ZSweep and RayCast "
+         "draw the volume over it)";
+}
+
+//------------------------------------------------------------------------------
 std::string Scene::ToggleLevelOfDetail()
 {
   this->LevelOfDetail = !this->LevelOfDetail;
@@ -550,6 +596,7 @@ std::string Scene::KeyHelp()
          "m  next mapper (HAVS, HAVS cell projection, PT, ZSweep, RayCast)\n"
          "b  next blend mode (composite, maximum, minimum, additive, isosurfaces)\n"
          "i  isosurfaces in the volume on/off\n"
+         "p  a translucent plane through the mesh on/off (intermixed)\n"
          "l  level of detail on/off       c  next colour map\n"
          "v  count order violations on/off\n"
          "t  overlay (status, editor) on/off\n"

@@ -77,6 +77,7 @@ public:
   std::string NextBlendMode();
   std::string ToggleLevelOfDetail();
   std::string ToggleIsoSurfacesInComposite();
+  std::string ToggleTranslucentPlane();
   std::string ToggleViolationCount();
   std::string NextColorPreset();
   std::string ToggleOverlay();
@@ -134,6 +135,9 @@ private:
   bool LevelOfDetail = true; ///< every project mapper's: the reduced image, HAVS's face subset
   int BlendMode = 0;
   bool Overlay = true;
+  /// A translucent plane through the mesh's centre, intermixed (vtkHAVSIntermixPass).
+  vtkSmartPointer<vtkActor> Plane;
+  vtkSmartPointer<vtkRenderPass> Intermix;
   std::string LastAction;
 };
 }
