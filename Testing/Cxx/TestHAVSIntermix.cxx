@@ -242,6 +242,31 @@ void CheckReference(int size)
   havstest::PrintDifference("reference: control, the volume over the plane", control);
   havstest::Check(d.RMSE < 1e-5 && d.Max < 1e-4, "reference: the events are the halves' composite");
   havstest::Check(control.Max > 0.05, "reference: control: VTK's order differs");
+
+  // The plane as polygons (rasterized exactly by the reference, no GL): the
+  // peeled layer is that surface, and the mapper's intermixed image is exact against it.
+  source->Update();
+  vtkNew<vtkHAVSReferenceRenderer> exact;
+  exact->SetInputData(grid);
+  exact->SetProperty(property);
+  exact->SetCamera(camera);
+  exact->SetSize(size, size);
+  const double rgba[4] = { red[0], red[1], red[2], 0.45 };
+  exact->AddTranslucentSurface(source->GetOutput(), rgba);
+  exact->Render();
+  const Image polygons(exact->GetImage()->GetPointer(0),
+    exact->GetImage()->GetPointer(0) + 4 * pixels);
+  mapper->KeepFloatResultOn();
+  scene.Window->Render();
+  const auto peeled = havstest::Compare(events, polygons, pixels / 2000);
+  const auto drawn = havstest::Compare(havstest::FloatResult(mapper), polygons, pixels / 2000);
+  const auto unlit = havstest::Compare(havstest::FloatResult(mapper), volume, pixels / 2000);
+  havstest::PrintDifference("reference: the peeled layer vs the polygons", peeled);
+  havstest::PrintDifference("reference: the ray caster intermixed vs the polygons", drawn);
+  havstest::PrintDifference("reference: control, the ray caster vs the volume alone", unlit);
+  havstest::Check(havstest::WithinExactBound(peeled) && havstest::WithinExactBound(drawn),
+    "reference: the peeled plane is the plane; the intermixed image is exact against it");
+  havstest::Check(!havstest::WithinExactBound(unlit), "reference: control: the plane shows");
 }
 }
 

@@ -72,7 +72,7 @@ vtkHAVSIntermixPass::vtkHAVSIntermixPass()
 vtkHAVSIntermixPass::~vtkHAVSIntermixPass() = default;
 
 //------------------------------------------------------------------------------
-bool vtkHAVSIntermixPass::HasIntermixingVolume(vtkRenderer* renderer)
+bool vtkHAVSIntermixPass::HasIntermixingVolume(vtkRenderer* renderer, bool intermixing)
 {
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator it;
@@ -81,12 +81,42 @@ bool vtkHAVSIntermixPass::HasIntermixingVolume(vtkRenderer* renderer)
   {
     auto* volume = vtkVolume::SafeDownCast(prop);
     auto* mapper = volume ? vtkHAVSMapperBase::SafeDownCast(volume->GetMapper()) : nullptr;
-    if (mapper && volume->GetVisibility() && mapper->CanIntermix())
+    if (mapper && volume->GetVisibility() && (mapper->CanIntermix() || !intermixing))
     {
       return true;
     }
   }
   return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSIntermixPass::HasTranslucentGeometry(const vtkRenderState* s)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) &&
+      prop->HasTranslucentPolygonalGeometry())
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSIntermixPass::RenderSteps(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  for (vtkRenderPass* step : { this->LightsPass, this->OpaquePass, this->TranslucentPass,
+         this->VolumetricPass, this->OverlayPass })
+  {
+    if (step)
+    {
+      step->Render(s);
+      this->NumberOfRenderedProps += step->GetNumberOfRenderedProps();
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -42,6 +42,7 @@
 VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSTranslucentLayers;
+class vtkRenderState;
 class vtkRenderer;
 
 class VTKHAVSOPENGL_EXPORT vtkHAVSIntermixPass : public vtkRenderStepsPass
@@ -54,8 +55,18 @@ public:
   /// The translucent step: the peeled layers of the last frame.
   vtkHAVSTranslucentLayers* GetLayers() { return this->Layers; }
 
-  /// Whether a visible volume of `renderer` has a HAVS mapper that intermixes.
-  static bool HasIntermixingVolume(vtkRenderer* renderer);
+  /// Whether a visible volume of `renderer` has a HAVS mapper that intermixes
+  /// (any HAVS mapper when `intermixing` is false).
+  static bool HasIntermixingVolume(vtkRenderer* renderer, bool intermixing = true);
+  /// Whether a visible prop of `s` (not a volume) has translucent polygonal geometry.
+  static bool HasTranslucentGeometry(const vtkRenderState* s);
+
+  /**
+   * The steps without the camera pass (lights, opaque, the peel, the volumes,
+   * overlay): for a host whose own camera pass delegates to this pass's
+   * steps (the ParaView plugin puts them in place of ParaView's default pass).
+   */
+  void RenderSteps(const vtkRenderState* s);
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
 

@@ -11,8 +11,10 @@
 
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLObjects.h"
+#include "vtkHAVSIntermixPass.h"
 #include "vtkHAVSShaders.h"
 
+#include "vtkCommand.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseKey.h"
@@ -28,7 +30,6 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkTranslucentPass.h"
-#include "vtkVolume.h"
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -39,6 +40,13 @@ vtkHAVSTranslucentLayers::vtkHAVSTranslucentLayers() = default;
 
 vtkHAVSTranslucentLayers::~vtkHAVSTranslucentLayers()
 {
+  // GL names are deleted only in the window's current context (a host may
+  // delete this pass after it destroyed the context: ParaView at exit).
+  if (this->Window && !this->Window->IsCurrent())
+  {
+    this->Window->RemoveObserver(this->WindowDeleteObserver);
+    this->Window = nullptr;
+  }
   this->ReleaseGraphicsResources(this->Window);
 }
 
@@ -48,8 +56,15 @@ void vtkHAVSTranslucentLayers::Allocate(
 {
   if (window != this->Window || width != this->Size[0] || height != this->Size[1])
   {
+    if (this->Window && this->Window != window)
+    {
+      this->Window->MakeCurrent(); // the old window's objects, in their context
+    }
     this->ReleaseGraphicsResources(this->Window);
+    window->MakeCurrent();
     this->Window = window;
+    this->WindowDeleteObserver = window->AddObserver(
+      vtkCommand::DeleteEvent, this, &vtkHAVSTranslucentLayers::OnWindowDeleted);
     this->Size[0] = width;
     this->Size[1] = height;
   }
@@ -80,14 +95,7 @@ void vtkHAVSTranslucentLayers::Render(const vtkRenderState* s)
   this->Taken = false;
   vtkRenderer* renderer = s->GetRenderer();
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  bool translucent = false;
-  for (int i = 0; i < s->GetPropArrayCount() && !translucent; ++i)
-  {
-    vtkProp* prop = s->GetPropArray()[i];
-    translucent = prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) &&
-      prop->HasTranslucentPolygonalGeometry();
-  }
-  if (!window || !translucent)
+  if (!window || !vtkHAVSIntermixPass::HasTranslucentGeometry(s))
   {
     return;
   }
@@ -342,12 +350,19 @@ void vtkHAVSTranslucentLayers::FinishFrame(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSTranslucentLayers::OnWindowDeleted(vtkObject* window, unsigned long, void*)
+{
+  this->ReleaseGraphicsResources(vtkWindow::SafeDownCast(window));
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSTranslucentLayers::ReleaseGraphicsResources(vtkWindow* window)
 {
   if (this->Window && (!window || window == this->Window))
   {
+    // (VTK's convention: the caller has made the window's context current.)
     window = this->Window;
-    this->Window->MakeCurrent();
+    this->Window->RemoveObserver(this->WindowDeleteObserver);
     for (Layer& layer : this->Layers)
     {
       layer.Depth->ReleaseGraphicsResources(this->Window);

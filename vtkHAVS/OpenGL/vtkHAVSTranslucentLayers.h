@@ -140,6 +140,8 @@ private:
 
   /// The textures of `count` layers at this size.
   void Allocate(vtkOpenGLRenderWindow* window, int count, int width, int height);
+  /// The window is going: its GL objects are released while its context lives.
+  void OnWindowDeleted(vtkObject* window, unsigned long, void*);
 
   struct Layer
   {
@@ -156,6 +158,7 @@ private:
   int Peeling = 0; ///< the layer being peeled
   std::vector<Layer> Layers;
   vtkOpenGLRenderWindow* Window = nullptr;
+  unsigned long WindowDeleteObserver = 0;
   vtkNew<vtkHAVSGLFrameTargets> Opaque; ///< the opaque depth (and the full-viewport triangle)
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkNew<vtkTranslucentPass> Translucent;

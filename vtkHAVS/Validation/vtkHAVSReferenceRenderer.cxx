@@ -17,12 +17,14 @@
 #include "vtkHAVSTetrahedralizer.h"
 
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericCell.h"
+#include "vtkIdList.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -30,6 +32,7 @@
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkStaticCellLocator.h"
@@ -113,9 +116,24 @@ void vtkHAVSReferenceRenderer::AddTranslucentLayer(vtkFloatArray* depth, vtkFloa
   this->Modified();
 }
 
+void vtkHAVSReferenceRenderer::AddTranslucentSurface(vtkPolyData* surface, const double rgba[4])
+{
+  if (!surface)
+  {
+    vtkErrorMacro("A translucent surface needs polygons.");
+    return;
+  }
+  TranslucentSurface added;
+  added.Surface = surface;
+  std::copy_n(rgba, 4, added.RGBA);
+  this->TranslucentSurfaces.push_back(added);
+  this->Modified();
+}
+
 void vtkHAVSReferenceRenderer::RemoveAllTranslucentLayers()
 {
   this->TranslucentLayers.clear();
+  this->TranslucentSurfaces.clear();
   this->Modified();
 }
 
@@ -582,10 +600,9 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
     this->Fragments.swap(fragments);
     this->PixelStart.swap(start);
   }
-  // The translucent layers' fragments as events along the rays, in depth order.
-  this->SurfaceEvents.clear();
-  this->SurfaceEventStart.assign(static_cast<size_t>(pixels) + 1, 0);
-  std::vector<vtkIdType> layerCounts(static_cast<size_t>(pixels), 0);
+  // The translucent layers' fragments and the surfaces' hits as events
+  // along the rays, in depth order.
+  std::vector<std::vector<SurfaceEvent>> events(static_cast<size_t>(pixels));
   for (const TranslucentLayer& layer : this->TranslucentLayers)
   {
     if (layer.Depth->GetNumberOfTuples() < pixels)
@@ -593,45 +610,109 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
       vtkErrorMacro("A translucent layer is smaller than the image: left out.");
       continue;
     }
-    for (vtkIdType p = 0; p < pixels; ++p)
-    {
-      layerCounts[p] += layer.Depth->GetValue(p) < 1.0f ? 1 : 0;
-    }
-  }
-  for (vtkIdType p = 0; p < pixels; ++p)
-  {
-    this->SurfaceEventStart[p + 1] = this->SurfaceEventStart[p] + layerCounts[p];
-  }
-  this->SurfaceEvents.resize(static_cast<size_t>(this->SurfaceEventStart[pixels]));
-  vtkSMPTools::For(0, pixels,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType p = begin; p < end; ++p)
+    vtkSMPTools::For(0, pixels,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        SurfaceEvent* out = this->SurfaceEvents.data() + this->SurfaceEventStart[p];
-        SurfaceEvent* first = out;
-        const vtkHAVSFaceRasterizer::Ray ray =
-          rasterizer->GetPixelRay(static_cast<int>(p % width), static_cast<int>(p / width));
-        for (const TranslucentLayer& layer : this->TranslucentLayers)
+        for (vtkIdType p = begin; p < end; ++p)
         {
-          if (layer.Depth->GetNumberOfTuples() < pixels || layer.Depth->GetValue(p) >= 1.0f)
+          const float z = layer.Depth->GetValue(p);
+          if (z >= 1.0f)
           {
             continue;
           }
+          const vtkHAVSFaceRasterizer::Ray ray =
+            rasterizer->GetPixelRay(static_cast<int>(p % width), static_cast<int>(p / width));
           const float* c = layer.RGBA->GetPointer(4 * p);
           const double a = std::min(1.0, std::max(0.0, static_cast<double>(c[3])));
-          out->Distance = ray.Offset + rayAtDepth(p, ray, layer.Depth->GetValue(p));
-          for (int k = 0; k < 3; ++k)
-          {
-            out->RGBA[k] = a * c[k];
-          }
-          out->RGBA[3] = a;
-          ++out;
+          SurfaceEvent e;
+          e.Distance = ray.Offset + rayAtDepth(p, ray, z);
+          e.RGBA[0] = a * c[0];
+          e.RGBA[1] = a * c[1];
+          e.RGBA[2] = a * c[2];
+          e.RGBA[3] = a;
+          events[p].push_back(e);
         }
-        std::stable_sort(first, out,
-          [](const SurfaceEvent& x, const SurfaceEvent& y) { return x.Distance < y.Distance; });
+      });
+  }
+  for (const TranslucentSurface& surface : this->TranslucentSurfaces)
+  {
+    // Its polygons as triangles (fans), in world coordinates.
+    vtkPolyData* poly = surface.Surface;
+    std::vector<double> points(3 * static_cast<size_t>(poly->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
+    {
+      poly->GetPoint(i, &points[3 * i]);
+    }
+    std::vector<uint32_t> triangles;
+    vtkCellArray* polys = poly->GetPolys();
+    vtkNew<vtkIdList> ids;
+    polys->InitTraversal();
+    while (polys->GetNextCell(ids))
+    {
+      for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
+      {
+        triangles.push_back(static_cast<uint32_t>(ids->GetId(0)));
+        triangles.push_back(static_cast<uint32_t>(ids->GetId(k)));
+        triangles.push_back(static_cast<uint32_t>(ids->GetId(k + 1)));
       }
-    });
+    }
+    vtkNew<vtkHAVSFaceRasterizer> surfaceRasterizer;
+    surfaceRasterizer->SetView(
+      worldToClip->GetData(), eye, directionOfProjection, parallel, width, height);
+    surfaceRasterizer->Rasterize(
+      points, triangles.data(), static_cast<vtkIdType>(triangles.size() / 3));
+    const std::vector<vtkIdType>& start = surfaceRasterizer->GetPixelStart();
+    const std::vector<vtkHAVSFaceRasterizer::Hit>& hits = surfaceRasterizer->GetHits();
+    const double a = std::min(1.0, std::max(0.0, surface.RGBA[3]));
+    vtkSMPTools::For(0, pixels,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType p = begin; p < end; ++p)
+        {
+          const vtkHAVSFaceRasterizer::Ray ray =
+            rasterizer->GetPixelRay(static_cast<int>(p % width), static_cast<int>(p / width));
+          // In front of the near plane or behind the opaque surface: not drawn.
+          double t0 = -VTK_DOUBLE_MAX, t1 = VTK_DOUBLE_MAX;
+          if (this->NearPlaneClipping && !planes.empty())
+          {
+            const WorldPlane& plane = planes.front();
+            const double nd = vtkMath::Dot(plane.N, ray.Direction);
+            const double c = vtkMath::Dot(plane.N, ray.Origin) + plane.W;
+            t0 = nd > 0.0 ? -c / nd : t0;
+          }
+          if (opaque && opaque[p] < 1.0f)
+          {
+            t1 = rayAtDepth(p, ray, opaque[p]);
+          }
+          for (vtkIdType h = start[p]; h < start[p + 1]; ++h)
+          {
+            const double t = hits[h].Distance - ray.Offset;
+            if (t < t0 || t > t1)
+            {
+              continue;
+            }
+            SurfaceEvent e;
+            e.Distance = hits[h].Distance;
+            for (int k = 0; k < 3; ++k)
+            {
+              e.RGBA[k] = a * surface.RGBA[k];
+            }
+            e.RGBA[3] = a;
+            events[p].push_back(e);
+          }
+        }
+      });
+  }
+  this->SurfaceEvents.clear();
+  this->SurfaceEventStart.assign(static_cast<size_t>(pixels) + 1, 0);
+  for (vtkIdType p = 0; p < pixels; ++p)
+  {
+    std::stable_sort(events[p].begin(), events[p].end(),
+      [](const SurfaceEvent& x, const SurfaceEvent& y) { return x.Distance < y.Distance; });
+    this->SurfaceEventStart[p + 1] =
+      this->SurfaceEventStart[p] + static_cast<vtkIdType>(events[p].size());
+    this->SurfaceEvents.insert(this->SurfaceEvents.end(), events[p].begin(), events[p].end());
+  }
   this->ReportProgress(1.0);
   return true;
 }
@@ -966,7 +1047,8 @@ bool vtkHAVSReferenceRenderer::Render()
   const bool isoRay = this->BlendMode == vtkHAVSIsoSurfaces::IsoSurfaceBlend || iso.Count > 0;
   // Translucent layers: under the blends composited front to back (composite, isosurface).
   const bool frontToBack = this->BlendMode != 1 && this->BlendMode != 2 && this->BlendMode != 4;
-  const bool surfaces = !this->TranslucentLayers.empty() && frontToBack;
+  const bool surfaces =
+    (!this->TranslucentLayers.empty() || !this->TranslucentSurfaces.empty()) && frontToBack;
   std::mutex copying;
   const vtkIdType slices = 20;
   for (vtkIdType slice = 0; slice < slices; ++slice)
@@ -1028,7 +1110,8 @@ void vtkHAVSReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
      << "ClippingPlanes: " << (this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0)
      << "\n";
   os << indent << "OpaqueDepth: " << (this->OpaqueDepth ? "set" : "none") << "\n";
-  os << indent << "TranslucentLayers: " << this->TranslucentLayers.size() << "\n";
+  os << indent << "TranslucentLayers: " << this->TranslucentLayers.size()
+     << ", TranslucentSurfaces: " << this->TranslucentSurfaces.size() << "\n";
   os << indent << "NumberOfStartedInside: " << this->NumberOfStartedInside << "\n";
 }
 

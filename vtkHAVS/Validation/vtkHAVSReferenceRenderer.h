@@ -69,6 +69,7 @@ class vtkHAVSFaceSet;
 class vtkHAVSIsoSurfaces;
 class vtkMatrix4x4;
 class vtkPlaneCollection;
+class vtkPolyData;
 class vtkUnstructuredGrid;
 class vtkVolumeProperty;
 
@@ -151,6 +152,16 @@ public:
    * fragments outside the mesh are composited in their order too.
    */
   void AddTranslucentLayer(vtkFloatArray* depth, vtkFloatArray* rgba);
+  /**
+   * A translucent surface given as polygons (world coordinates) of one
+   * colour and opacity (`rgba`, not premultiplied: an unlit surface, or one
+   * lit by ambient light alone): every polygon is rasterized exactly at the
+   * pixel centres (vtkHAVSFaceRasterizer, watertight) and each hit is an event
+   * as a layer's fragment is (in front of the near plane and behind the
+   * opaque depth: none).
+   */
+  void AddTranslucentSurface(vtkPolyData* surface, const double rgba[4]);
+  /// Removes the layers and the surfaces.
   void RemoveAllTranslucentLayers();
   int GetNumberOfTranslucentLayers() const
   {
@@ -327,6 +338,12 @@ private:
     vtkSmartPointer<vtkFloatArray> RGBA;
   };
   std::vector<TranslucentLayer> TranslucentLayers;
+  struct TranslucentSurface
+  {
+    vtkSmartPointer<vtkPolyData> Surface;
+    double RGBA[4];
+  };
+  std::vector<TranslucentSurface> TranslucentSurfaces;
   std::vector<SurfaceEvent> SurfaceEvents;  ///< per pixel, sorted (ComputeFragments)
   std::vector<vtkIdType> SurfaceEventStart; ///< pixel p's events: [start[p], start[p + 1])
   vtkIdType NumberOfStartedInside = 0;

@@ -12,25 +12,36 @@
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkBoundingBox.h"
+#include "vtkCameraPass.h"
 #include "vtkCellType.h"
 #include "vtkContourValues.h"
 #include "vtkDataSet.h"
 #include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSFrameStatistics.h"
+#include "vtkHAVSIntermixPass.h"
 #include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSVolumeMapper.h"
+#include "vtkImageProcessingPass.h"
 #include "vtkInformation.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
+#include "vtkPVDefaultPass.h"
 #include "vtkPVLODVolume.h"
 #include "vtkPVRenderView.h"
 #include "vtkPVRenderViewDataDeliveryManager.h"
 #include "vtkPlane.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVersionMacros.h"
 #include "vtkVolumeProperty.h"
 #include "vtkVolumeRepresentationPreprocessor.h"
+
+#if __has_include("vtkIceTCompositePass.h")
+#include "vtkIceTCompositePass.h"
+#define HAVS_PLUGIN_HAS_ICET 1
+#endif
 
 #include <dlfcn.h>
 
@@ -38,6 +49,100 @@
 #include <cmath>
 
 VTK_ABI_NAMESPACE_BEGIN
+
+namespace
+{
+/**
+ * In place of ParaView's default pass (vtkPVDefaultPass: the delegate of the
+ * view's camera pass, or the render pass of IceT's composite pass under MPI):
+ * the steps of a vtkHAVSIntermixPass when the frame has translucent geometry
+ * and a visible volume with a HAVS mapper (the translucent actors peeled, and
+ * composited at their depths inside that volume when its mapper intermixes,
+ * under it otherwise: VTK's order); ParaView's own pass otherwise, and for
+ * selections. (ParaView's own pass would draw such volumes inside VTK's dual
+ * depth peeling, UseDepthPeelingForVolumes, which only VTK's GPU ray caster
+ * takes part in: a HAVS volume came out several times too bright there.)
+ */
+class vtkHAVSIntermixDefaultPass : public vtkRenderPass
+{
+public:
+  static vtkHAVSIntermixDefaultPass* New();
+  vtkTypeMacro(vtkHAVSIntermixDefaultPass, vtkRenderPass);
+
+  void Render(const vtkRenderState* s) override
+  {
+    vtkRenderer* renderer = s->GetRenderer();
+    vtkRenderPass* pass = this->Default;
+    if (!renderer->GetSelector() && vtkHAVSIntermixPass::HasTranslucentGeometry(s) &&
+      vtkHAVSIntermixPass::HasIntermixingVolume(renderer, false))
+    {
+      this->Intermix->RenderSteps(s);
+      pass = this->Intermix;
+    }
+    else if (pass)
+    {
+      pass->Render(s);
+    }
+    this->NumberOfRenderedProps = pass ? pass->GetNumberOfRenderedProps() : 0;
+  }
+  void ReleaseGraphicsResources(vtkWindow* window) override
+  {
+    if (this->Default)
+    {
+      this->Default->ReleaseGraphicsResources(window);
+    }
+    this->Intermix->ReleaseGraphicsResources(window);
+  }
+
+  vtkSmartPointer<vtkRenderPass> Default; ///< ParaView's pass it stands in for
+  vtkNew<vtkHAVSIntermixPass> Intermix;
+
+protected:
+  vtkHAVSIntermixDefaultPass() = default;
+  ~vtkHAVSIntermixDefaultPass() override = default;
+};
+vtkStandardNewMacro(vtkHAVSIntermixDefaultPass);
+
+/**
+ * Puts a vtkHAVSIntermixDefaultPass in place of ParaView's default pass in
+ * `renderer`'s passes (serial: camera pass -> default pass, behind ParaView's
+ * image processing passes; under MPI: camera pass -> IceT's composite pass ->
+ * default pass). Again every frame: ParaView makes its passes anew when its
+ * settings change. Nothing when another pass stands there (OSPRay, value
+ * passes) or one is in place already.
+ */
+void InstallIntermix(vtkRenderer* renderer)
+{
+  vtkRenderPass* pass = renderer ? renderer->GetPass() : nullptr;
+  for (int depth = 0; pass && depth < 8; ++depth)
+  {
+    if (auto* camera = vtkCameraPass::SafeDownCast(pass))
+    {
+      vtkRenderPass* inner = camera->GetDelegatePass();
+      if (vtkPVDefaultPass::SafeDownCast(inner))
+      {
+        vtkNew<vtkHAVSIntermixDefaultPass> intermix;
+        intermix->Default = inner;
+        camera->SetDelegatePass(intermix);
+      }
+#if HAVS_PLUGIN_HAS_ICET
+      else if (auto* icet = vtkIceTCompositePass::SafeDownCast(inner))
+      {
+        if (vtkPVDefaultPass::SafeDownCast(icet->GetRenderPass()))
+        {
+          vtkNew<vtkHAVSIntermixDefaultPass> intermix;
+          intermix->Default = icet->GetRenderPass();
+          icet->SetRenderPass(intermix);
+        }
+      }
+#endif
+      return;
+    }
+    auto* processing = vtkImageProcessingPass::SafeDownCast(pass);
+    pass = processing ? processing->GetDelegatePass() : nullptr;
+  }
+}
+}
 
 vtkStandardNewMacro(vtkHAVSUnstructuredGridVolumeRepresentation);
 
@@ -354,6 +459,15 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSBlendMode(int mode)
   this->Modified();
 }
 
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSIntermixTranslucentGeometry(int on)
+{
+  for (const auto& named : this->Mappers)
+  {
+    named.second->SetIntermixTranslucentGeometry(on != 0);
+  }
+  this->Modified();
+}
+
 void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSIsoSurfacesInComposite(int on)
 {
   for (const auto& named : this->Mappers)
@@ -554,6 +668,12 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
   if (request_type != vtkPVView::REQUEST_RENDER() || !vtkHAVSMapperBase::SafeDownCast(active))
   {
     return 1;
+  }
+  // Translucent surfaces of the view intermixed with this volume (the mappers'
+  // IntermixTranslucentGeometry), through the view's renderer's passes.
+  if (auto* view = vtkPVRenderView::SafeDownCast(this->GetView()))
+  {
+    InstallIntermix(view->GetRenderer());
   }
   this->UpdateRegionPlanes(inInfo, vtkHAVSMapperBase::SafeDownCast(active));
   this->WarnIfPartitionsOverlap(inInfo);

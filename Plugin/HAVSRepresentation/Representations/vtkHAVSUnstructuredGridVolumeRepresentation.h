@@ -144,6 +144,16 @@ public:
    */
   void SetHAVSBlendMode(int mode);
   void SetHAVSIsoSurfacesInComposite(int on);
+  /**
+   * Translucent surfaces of the view composited at their depths inside the
+   * volume (vtkHAVSMapperBase::IntermixTranslucentGeometry, on by default):
+   * the representation puts a vtkHAVSIntermixPass's steps in place of
+   * ParaView's default pass in the view's renderer (serially behind the
+   * camera pass, under MPI behind IceT's composite pass), which stand aside
+   * (ParaView's pass draws) in frames without translucent geometry or without
+   * an intermixing volume, and for selections.
+   */
+  void SetHAVSIntermixTranslucentGeometry(int on);
   void SetNumberOfIsosurfaces(int count);
   void SetIsosurfaceValue(int i, double value);
   ///@}
