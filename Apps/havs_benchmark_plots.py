@@ -66,6 +66,11 @@ rows = [r for r in all_rows
         if not level_of_detail(r) and not edit_run(r) and not budget_run(r) and not iso_run(r)
         and not translucent_run(r)]
 out = sys.argv[2]
+if not rows:
+    # Only rows of the report's own sections (an isosurface, translucent, edit or budget run
+    # alone): no main plots to draw.
+    print("havs_benchmark_plots: no rows for the main plots", file=sys.stderr)
+    sys.exit(0)
 
 
 def number(text):

@@ -104,11 +104,7 @@ Image Reference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, vtkCamer
   const Layers* layers, vtkPlaneCollection* planes = nullptr, vtkFloatArray* depth = nullptr,
   int blend = 0)
 {
-  vtkNew<vtkHAVSReferenceRenderer> reference;
-  reference->SetInputData(grid);
-  reference->SetProperty(property);
-  reference->SetCamera(camera);
-  reference->SetSize(size, size);
+  auto reference = havstest::MakeReference(grid, property, camera, size);
   reference->SetClippingPlanes(planes);
   reference->SetOpaqueDepth(depth);
   reference->SetBlendMode(blend);
@@ -246,16 +242,12 @@ void CheckReference(int size)
   // The plane as polygons (rasterized exactly by the reference, no GL): the
   // peeled layer is that surface, and the mapper's intermixed image is exact against it.
   source->Update();
-  vtkNew<vtkHAVSReferenceRenderer> exact;
-  exact->SetInputData(grid);
-  exact->SetProperty(property);
-  exact->SetCamera(camera);
-  exact->SetSize(size, size);
+  auto exact = havstest::MakeReference(grid, property, camera, size);
   const double rgba[4] = { red[0], red[1], red[2], 0.45 };
   exact->AddTranslucentSurface(source->GetOutput(), rgba);
   exact->Render();
-  const Image polygons(exact->GetImage()->GetPointer(0),
-    exact->GetImage()->GetPointer(0) + 4 * pixels);
+  const Image polygons(
+    exact->GetImage()->GetPointer(0), exact->GetImage()->GetPointer(0) + 4 * pixels);
   mapper->KeepFloatResultOn();
   scene.Window->Render();
   const auto peeled = havstest::Compare(events, polygons, pixels / 2000);

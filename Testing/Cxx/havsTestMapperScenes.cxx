@@ -49,15 +49,22 @@ vtkSmartPointer<vtkHAVSMapperBase> MakeMapperNamed(const std::string& name)
   return vtkSmartPointer<vtkHAVSVolumeMapper>::New();
 }
 
-std::vector<float> ReferenceImage(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
-  vtkCamera* camera, int size, vtkPlaneCollection* planes, vtkFloatArray* depth, int blend,
-  vtkIdType* startedInside, bool isoInComposite)
+vtkSmartPointer<vtkHAVSReferenceRenderer> MakeReference(
+  vtkUnstructuredGrid* grid, vtkVolumeProperty* property, vtkCamera* camera, int size)
 {
-  vtkNew<vtkHAVSReferenceRenderer> reference;
+  auto reference = vtkSmartPointer<vtkHAVSReferenceRenderer>::New();
   reference->SetInputData(grid);
   reference->SetProperty(property);
   reference->SetCamera(camera);
   reference->SetSize(size, size);
+  return reference;
+}
+
+std::vector<float> ReferenceImage(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
+  vtkCamera* camera, int size, vtkPlaneCollection* planes, vtkFloatArray* depth, int blend,
+  vtkIdType* startedInside, bool isoInComposite)
+{
+  auto reference = MakeReference(grid, property, camera, size);
   reference->SetClippingPlanes(planes);
   reference->SetOpaqueDepth(depth);
   reference->SetBlendMode(blend);

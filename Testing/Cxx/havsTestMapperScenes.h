@@ -28,6 +28,7 @@
 class vtkCamera;
 class vtkFloatArray;
 class vtkHAVSMapperBase;
+class vtkHAVSReferenceRenderer;
 class vtkPlaneCollection;
 class vtkRenderer;
 class vtkUnstructuredGrid;
@@ -38,6 +39,11 @@ namespace havstest
 /// A new mapper of the project's by the name the tests' arguments use:
 /// "raycast", "cellprojection", anything else HAVS.
 vtkSmartPointer<vtkHAVSMapperBase> MakeMapperNamed(const std::string& name);
+
+/// A vtkHAVSReferenceRenderer of `grid` with `property`, `camera`, size x
+/// size (for a test that sets more before Render()).
+vtkSmartPointer<vtkHAVSReferenceRenderer> MakeReference(
+  vtkUnstructuredGrid* grid, vtkVolumeProperty* property, vtkCamera* camera, int size);
 
 /// The exact image of vtkHAVSReferenceRenderer, size x size RGBA (clipped by
 /// `planes`, cut at the window depth `depth`, when given; under `blend`,
