@@ -415,7 +415,10 @@ double vtkHAVSMapperBase::ChooseImageScale(vtkVolume* volume)
 //------------------------------------------------------------------------------
 bool vtkHAVSMapperBase::NeedsOpaqueDepth(vtkRenderer* renderer) const
 {
-  return this->LastIntermixLayers > 0 || vtkHAVSMapperInputs::RendererHasOpaqueGeometry(renderer);
+  // An intermixed frame's slabs before the last end at their layers; the
+  // last one only at the opaque geometry, if any.
+  return this->IntermixSlab < this->LastIntermixLayers ||
+    vtkHAVSMapperInputs::RendererHasOpaqueGeometry(renderer);
 }
 
 //------------------------------------------------------------------------------
@@ -484,8 +487,10 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
             {
               this->Graphics->SetIntermixSlab(slab);
             }
+            this->IntermixSlab = slab;
             this->RenderView(renderer, volume, view);
           }
+          this->IntermixSlab = 0;
           viewDrawn = true;
         }
         if (layers > 0)

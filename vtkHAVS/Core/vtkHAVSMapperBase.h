@@ -461,7 +461,8 @@ protected:
   /// The graphics layer (the GL mapper's; not owned: it lives as long as the mapper).
   void SetGraphics(vtkHAVSMapperGraphics* graphics) { this->Graphics = graphics; }
 
-  /// Whether the frame needs the opaque depth: opaque geometry, or intermixed layers.
+  /// Whether the frame needs the opaque depth: opaque geometry, or an intermixed
+  /// slab that ends at a layer.
   bool NeedsOpaqueDepth(vtkRenderer* renderer) const;
   /// Whether the render window asks to abort the frame (counts LastFrameAborted).
   bool AbortRequested(vtkRenderer* renderer);
@@ -499,6 +500,7 @@ protected:
   bool IsoSurfacesInComposite = false;
   bool IntermixTranslucentGeometry = true;
   int LastIntermixLayers = 0;
+  int IntermixSlab = 0; ///< the slab RenderView draws (0 outside intermixed frames)
   vtkHAVSIsoSurfaces FrameIsoSurfaces;
   vtkNew<vtkHAVSLevelOfDetailController> ImageControl;
 

@@ -444,8 +444,7 @@ void vtkHAVSVolumeMapper::RenderView(
       GetKBufferPathName(path) + " path's maximum; using k = " + std::to_string(maxK) + ".";
     this->WarnOnce(WarnK, message.c_str());
   }
-  FrameRequest request =
-    this->MakeRequest(view, path, k, this->NeedsOpaqueDepth(renderer));
+  FrameRequest request = this->MakeRequest(view, path, k, this->NeedsOpaqueDepth(renderer));
 
   // 6. The near and clipping planes, and the mesh's sections with them.
   this->UpdatePlanes(view);
