@@ -467,9 +467,8 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
       {
         // Translucent layers to intermix: the whole image (no reduction),
         // drawn once per slab between them.
-        const int layers = this->CanIntermix() && this->Graphics
-          ? this->Graphics->BeginIntermix(renderer, this->KeepFloatResult)
-          : 0;
+        const int layers =
+          this->CanIntermix() && this->Graphics ? this->Graphics->BeginIntermix(renderer) : 0;
         this->LastIntermixLayers = layers;
         double scale = this->ChooseImageScale(volume);
         if (layers > 0)

@@ -50,13 +50,13 @@ public:
    * Translucent geometry intermixed with the volume (vtkHAVSIntermixPass).
    * BeginIntermix: how many translucent layers `renderer` peeled this frame
    * and leaves to this volume, now taken (0: none, or another volume took
-   * them); `keep`: the kept float result is the intermixed image. The base
+   * them; the kept float result is then the intermixed image). The base
    * then draws the view once per slab, SetIntermixSlab(i) before each
    * (i < layers: the volume up to layer i's depth; i == layers: up to the
    * opaque geometry), and EndIntermix(drawn) after (not drawn: the layers are
    * given back, and the pass composites them itself).
    */
-  virtual int BeginIntermix(vtkRenderer* vtkNotUsed(renderer), bool vtkNotUsed(keep)) { return 0; }
+  virtual int BeginIntermix(vtkRenderer* vtkNotUsed(renderer)) { return 0; }
   virtual void SetIntermixSlab(int vtkNotUsed(slab)) {}
   virtual void EndIntermix(bool vtkNotUsed(drawn)) {}
   ///@}

@@ -244,6 +244,17 @@ vtkTextureObject* vtkHAVSGLFrameTargets::CopyResult()
 //------------------------------------------------------------------------------
 void vtkHAVSGLFrameTargets::KeepResult()
 {
+  if (this->IntermixLayers)
+  {
+    // A slab's result is not the frame's: the sum is kept after the last slab.
+    this->IntermixKeep = true;
+    return;
+  }
+  this->ReadKeptResult();
+}
+
+void vtkHAVSGLFrameTargets::ReadKeptResult()
+{
   this->ReadResult(this->KeptResult);
   this->KeptSize[0] = this->Size[0];
   this->KeptSize[1] = this->Size[1];
@@ -296,10 +307,10 @@ std::uint64_t vtkHAVSGLFrameTargets::ReadViolationCounter(
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSGLFrameTargets::SetIntermix(vtkHAVSTranslucentLayers* layers, bool keep)
+void vtkHAVSGLFrameTargets::SetIntermix(vtkHAVSTranslucentLayers* layers)
 {
   this->IntermixLayers = layers;
-  this->IntermixKeep = keep;
+  this->IntermixKeep = false;
   this->IntermixSlab = 0;
 }
 
@@ -401,7 +412,7 @@ bool vtkHAVSGLFrameTargets::AccumulateIntermix(int originX, int originY)
   if (last && this->IntermixKeep)
   {
     state->PushReadFramebufferBinding();
-    this->KeepResult();
+    this->ReadKeptResult();
     state->PopReadFramebufferBinding();
   }
   return true;

@@ -111,7 +111,8 @@ public:
   vtkTextureObject* CopyResult();
   /// Reads the result back (width * height RGBA floats, bottom row first).
   void ReadResult(std::vector<float>& rgba);
-  /// Reads the result back into the kept copy (the mappers' KeepFloatResult).
+  /// Reads the result back into the kept copy (the mappers' KeepFloatResult);
+  /// in an intermixed frame, once, after the last slab (the intermixed sum).
   void KeepResult();
   /// The kept copy and its size; nullptr before one.
   const std::vector<float>* GetKeptResult(int size[2]) const;
@@ -131,11 +132,12 @@ public:
    * the layers' count, CaptureOpaqueDepth() then takes the nearer of the
    * opaque depth and layer i's, and Composite() adds the slab to the
    * intermixed sum (vtkHAVSIntermixFS) without drawing into the window; the
-   * last slab's Composite() writes the sum into the result (kept again when
-   * `keep`) and composites it.
+   * last slab's Composite() writes the sum into the result (kept when a slab
+   * asked KeepResult()) and composites it.
    */
-  void SetIntermix(vtkHAVSTranslucentLayers* layers, bool keep);
+  void SetIntermix(vtkHAVSTranslucentLayers* layers);
   void SetIntermixSlab(int slab) { this->IntermixSlab = slab; }
+  vtkHAVSTranslucentLayers* GetIntermixLayers() const { return this->IntermixLayers; }
 
   /// The volume's shader hooks the composite applies (the mapper's; nullptr: none).
   void SetShaderHooks(const vtkHAVSShaderHooks* hooks) { this->Hooks = hooks; }
@@ -166,6 +168,8 @@ private:
   void operator=(const vtkHAVSGLFrameTargets&) = delete;
 
   void ReleaseSizeDependent(vtkWindow* window);
+  /// Reads the result back into the kept copy, now.
+  void ReadKeptResult();
   /// The depth of the read framebuffer at the viewport, into the opaque depth.
   void CaptureFramebufferDepth(int x, int y, int width, int height, vtkObject* reporter);
   /// The opaque depth made the nearer of itself and `layerDepth`'s.
@@ -191,7 +195,7 @@ private:
   vtkSmartPointer<vtkTextureObject> ResultCopy;
   vtkHAVSTranslucentLayers* IntermixLayers = nullptr; // this frame's, not owned
   int IntermixSlab = 0;
-  bool IntermixKeep = false;
+  bool IntermixKeep = false; // a slab asked KeepResult()
   vtkHAVSGLImage IntermixSum, IntermixPrevious, IntermixTransmittance;
   GLuint ClampFramebuffer = 0;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResultFramebuffer;

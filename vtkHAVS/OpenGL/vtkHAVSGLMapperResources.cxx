@@ -219,15 +219,14 @@ bool vtkHAVSGLMapperResources::EndFrame(
 }
 
 //------------------------------------------------------------------------------
-int vtkHAVSGLMapperResources::BeginIntermix(vtkRenderer* renderer, bool keep)
+int vtkHAVSGLMapperResources::BeginIntermix(vtkRenderer* renderer)
 {
   vtkHAVSTranslucentLayers* layers = vtkHAVSTranslucentLayers::GetLayersOf(renderer);
   if (!layers || !layers->Take())
   {
     return 0;
   }
-  this->IntermixLayers = layers;
-  this->Targets->SetIntermix(layers, keep);
+  this->Targets->SetIntermix(layers);
   return layers->GetNumberOfLayers();
 }
 
@@ -238,12 +237,12 @@ void vtkHAVSGLMapperResources::SetIntermixSlab(int slab)
 
 void vtkHAVSGLMapperResources::EndIntermix(bool drawn)
 {
-  if (this->IntermixLayers && !drawn)
+  vtkHAVSTranslucentLayers* layers = this->Targets->GetIntermixLayers();
+  if (layers && !drawn)
   {
-    this->IntermixLayers->GiveBack();
+    layers->GiveBack();
   }
-  this->IntermixLayers = nullptr;
-  this->Targets->SetIntermix(nullptr, false);
+  this->Targets->SetIntermix(nullptr);
 }
 
 //------------------------------------------------------------------------------

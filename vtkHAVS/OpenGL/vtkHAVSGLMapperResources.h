@@ -45,7 +45,6 @@ class vtkHAVSGLCellRecords;
 class vtkHAVSGLFrameTargets;
 class vtkHAVSGLSection;
 class vtkHAVSGLTable;
-class vtkHAVSTranslucentLayers;
 class vtkHAVSViewFrame;
 class vtkShaderProgram;
 class vtkOpenGLRenderWindow;
@@ -98,7 +97,7 @@ public:
   size_t GetMemoryBytes() const override;
   ///@{
   /// Translucent layers intermixed (vtkHAVSTranslucentLayers, through the targets).
-  int BeginIntermix(vtkRenderer* renderer, bool keep) override;
+  int BeginIntermix(vtkRenderer* renderer) override;
   void SetIntermixSlab(int slab) override;
   void EndIntermix(bool drawn) override;
   ///@}
@@ -169,7 +168,6 @@ private:
   vtkOpenGLRenderWindow* Window = nullptr;
   unsigned long WindowDeleteObserver = 0;
   vtkNew<vtkHAVSGLTable> Table;
-  vtkHAVSTranslucentLayers* IntermixLayers = nullptr; // the frame's, taken; not owned
   vtkNew<vtkHAVSGLFrameTargets> Targets;
   std::unique_ptr<vtkHAVSGLOwnObjects> Owned;
   std::unique_ptr<vtkHAVSGLSection> Section; // the near plane's section (cell projection, rays)

@@ -120,13 +120,6 @@ void vtkHAVSIntermixPass::RenderSteps(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSIntermixPass::ReleaseGraphicsResources(vtkWindow* window)
-{
-  this->Superclass::ReleaseGraphicsResources(window);
-  this->Layers->ReleaseGraphicsResources(window);
-}
-
-//------------------------------------------------------------------------------
 void vtkHAVSIntermixPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

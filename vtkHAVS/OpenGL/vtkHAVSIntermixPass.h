@@ -68,8 +68,6 @@ public:
    */
   void RenderSteps(const vtkRenderState* s);
 
-  void ReleaseGraphicsResources(vtkWindow* window) override;
-
 protected:
   vtkHAVSIntermixPass();
   ~vtkHAVSIntermixPass() override;
