@@ -361,6 +361,40 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
       this->OpaqueDepth->GetNumberOfValues() >= static_cast<vtkIdType>(width) * height
     ? this->OpaqueDepth->GetPointer(0)
     : nullptr;
+  // The interval [t0, t1] of pixel p's ray that the first `count` planes keep
+  // and the opaque surface leaves in front of it; false when a plane parallel
+  // to the ray discards all of it.
+  auto keptInterval =
+    [&](vtkIdType p, const vtkHAVSFaceRasterizer::Ray& ray, size_t count, double& t0, double& t1)
+  {
+    t0 = parallel ? -VTK_DOUBLE_MAX : 0.0;
+    t1 = VTK_DOUBLE_MAX;
+    bool empty = false;
+    for (size_t i = 0; i < count; ++i)
+    {
+      const WorldPlane& plane = planes[i];
+      const double nd = vtkMath::Dot(plane.N, ray.Direction);
+      const double c = vtkMath::Dot(plane.N, ray.Origin) + plane.W;
+      if (nd > 0.0)
+      {
+        t0 = std::max(t0, -c / nd);
+      }
+      else if (nd < 0.0)
+      {
+        t1 = std::min(t1, -c / nd);
+      }
+      else if (c < 0.0)
+      {
+        empty = true;
+      }
+    }
+    if (opaque && opaque[p] < 1.0f)
+    {
+      // The ray ends at the opaque surface.
+      t1 = std::min(t1, rayAtDepth(p, ray, opaque[p]));
+    }
+    return !empty;
+  };
   if (!planes.empty() || opaque)
   {
     // Each ray's interval [t0, t1] kept by the planes: fragments outside it
@@ -423,30 +457,8 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
         {
           const vtkHAVSFaceRasterizer::Ray ray =
             rasterizer->GetPixelRay(static_cast<int>(p % width), static_cast<int>(p / width));
-          double t0 = parallel ? -VTK_DOUBLE_MAX : 0.0, t1 = VTK_DOUBLE_MAX;
-          bool empty = false;
-          for (const WorldPlane& plane : planes)
-          {
-            const double nd = vtkMath::Dot(plane.N, ray.Direction);
-            const double c = vtkMath::Dot(plane.N, ray.Origin) + plane.W;
-            if (nd > 0.0)
-            {
-              t0 = std::max(t0, -c / nd);
-            }
-            else if (nd < 0.0)
-            {
-              t1 = std::min(t1, -c / nd);
-            }
-            else if (c < 0.0)
-            {
-              empty = true;
-            }
-          }
-          if (opaque && opaque[p] < 1.0f)
-          {
-            // The ray ends at the opaque surface.
-            t1 = std::min(t1, rayAtDepth(p, ray, opaque[p]));
-          }
+          double t0, t1;
+          const bool empty = !keptInterval(p, ray, planes.size(), t0, t1);
           const Fragment* first = this->GetPixelFragmentsBegin(p);
           const Fragment* last = this->GetPixelFragmentsEnd(p);
           std::vector<Fragment>& out = clipped[p];
@@ -671,18 +683,12 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
         {
           const vtkHAVSFaceRasterizer::Ray ray =
             rasterizer->GetPixelRay(static_cast<int>(p % width), static_cast<int>(p / width));
-          // In front of the near plane or behind the opaque surface: not drawn.
-          double t0 = -VTK_DOUBLE_MAX, t1 = VTK_DOUBLE_MAX;
-          if (this->NearPlaneClipping && !planes.empty())
+          // In front of the near plane (the first plane; the volume's
+          // clipping planes do not cut actors) or behind the opaque surface: not drawn.
+          double t0, t1;
+          if (!keptInterval(p, ray, this->NearPlaneClipping ? 1 : 0, t0, t1))
           {
-            const WorldPlane& plane = planes.front();
-            const double nd = vtkMath::Dot(plane.N, ray.Direction);
-            const double c = vtkMath::Dot(plane.N, ray.Origin) + plane.W;
-            t0 = nd > 0.0 ? -c / nd : t0;
-          }
-          if (opaque && opaque[p] < 1.0f)
-          {
-            t1 = rayAtDepth(p, ray, opaque[p]);
+            continue;
           }
           for (vtkIdType h = start[p]; h < start[p + 1]; ++h)
           {
