@@ -110,11 +110,9 @@
 #include "vtkMultiBlockPLOT3DReader.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProjectedTetrahedraMapper.h"
-#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
@@ -1190,25 +1188,9 @@ int RunWorker(const Options& o)
     vtkNew<vtkHAVSIntermixPass> intermix;
     if (translucentPrefix > 0)
     {
-      // A lit translucent plane (opacity 0.45) through the centre, across the
-      // whole data set, peeled and intermixed with the volume.
-      double center[3];
-      grid->GetCenter(center);
-      vtkNew<vtkPlaneSource> plane;
-      const double extent = 1.6 * grid->GetLength();
-      plane->SetOrigin(-0.5 * extent, -0.5 * extent, 0.0);
-      plane->SetPoint1(0.5 * extent, -0.5 * extent, 0.0);
-      plane->SetPoint2(-0.5 * extent, 0.5 * extent, 0.0);
-      plane->SetResolution(8, 8);
-      plane->SetCenter(center);
-      plane->SetNormal(0.3, 0.45, 1.0);
-      vtkNew<vtkPolyDataMapper> planeMapper;
-      planeMapper->SetInputConnection(plane->GetOutputPort());
-      vtkNew<vtkActor> actor;
-      actor->SetMapper(planeMapper);
-      actor->GetProperty()->SetColor(0.2, 0.8, 0.9);
-      actor->GetProperty()->SetOpacity(0.45);
-      renderer->AddActor(actor);
+      // A lit translucent plane through the centre, across the whole data
+      // set, peeled and intermixed with the volume.
+      renderer->AddActor(vtkHAVSDataSets::MakeTranslucentPlane(grid));
       renderer->SetPass(intermix);
     }
     vtkNew<vtkVolume> volume;

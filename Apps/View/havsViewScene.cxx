@@ -10,6 +10,7 @@
 #include "havsViewScene.h"
 
 #include "vtkHAVSCellProjectionMapper.h"
+#include "vtkHAVSDataSets.h"
 #include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSIntermixPass.h"
 #include "vtkHAVSMapperBase.h"
@@ -25,11 +26,8 @@
 #include "vtkImageData.h"
 #include "vtkPNGWriter.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
-#include "vtkPolyDataMapper.h"
 #include "vtkProjectedTetrahedraMapper.h"
-#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkTextProperty.h"
 #include "vtkUnstructuredGridVolumeRayCastMapper.h"
@@ -370,23 +368,9 @@ std::string Scene::ToggleTranslucentPlane()
   {
     return "translucent plane: no mesh";
   }
-  // A lit plane (opacity 0.45) through the centre, across the mesh, tilted;
-  // the renderer's pass peels it and the project's mappers intermix it.
-  double center[3];
-  this->Grid->GetCenter(center);
-  const double extent = 1.6 * this->Grid->GetLength();
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-0.5 * extent, -0.5 * extent, 0.0);
-  plane->SetPoint1(0.5 * extent, -0.5 * extent, 0.0);
-  plane->SetPoint2(-0.5 * extent, 0.5 * extent, 0.0);
-  plane->SetCenter(center);
-  plane->SetNormal(0.3, 0.45, 1.0);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(plane->GetOutputPort());
-  this->Plane = vtkSmartPointer<vtkActor>::New();
-  this->Plane->SetMapper(mapper);
-  this->Plane->GetProperty()->SetColor(0.2, 0.8, 0.9);
-  this->Plane->GetProperty()->SetOpacity(0.45);
+  // A lit plane through the centre, across the mesh, tilted; the renderer's
+  // pass peels it and the project's mappers intermix it.
+  this->Plane = vtkHAVSDataSets::MakeTranslucentPlane(this->Grid);
   this->Renderer->AddActor(this->Plane);
   if (!this->Intermix)
   {

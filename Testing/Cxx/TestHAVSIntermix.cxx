@@ -332,8 +332,7 @@ int TestHAVSIntermix(int argc, char* argv[])
   }
   else
   {
-    const double normal[3] = { 0.3, 0.45, 1.0 }, cyan[3] = { 0.2, 0.8, 0.9 };
-    actors.push_back(MakeActor(MakePlane(center, normal, 1.6 * diagonal), cyan, 0.45, true));
+    actors.push_back(vtkHAVSDataSets::MakeTranslucentPlane(grid));
   }
   for (auto& actor : actors)
   {

@@ -9,6 +9,7 @@
 =========================================================================*/
 #include "vtkHAVSDataSets.h"
 
+#include "vtkActor.h"
 #include "vtkAppendFilter.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCell.h"
@@ -27,7 +28,10 @@
 #include "vtkMultiBlockPLOT3DReader.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRTAnalyticSource.h"
 #include "vtkThreshold.h"
 #include "vtkTransform.h"
@@ -522,6 +526,28 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkHAVSDataSets::MakeBox(
   }
   image->GetPointData()->SetScalars(s);
   return Tetrahedralize(image);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkActor> vtkHAVSDataSets::MakeTranslucentPlane(vtkDataSet* data)
+{
+  double center[3];
+  data->GetCenter(center);
+  const double extent = 1.6 * data->GetLength();
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-0.5 * extent, -0.5 * extent, 0.0);
+  plane->SetPoint1(0.5 * extent, -0.5 * extent, 0.0);
+  plane->SetPoint2(-0.5 * extent, 0.5 * extent, 0.0);
+  plane->SetResolution(8, 8);
+  plane->SetCenter(center);
+  plane->SetNormal(0.3, 0.45, 1.0);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.2, 0.8, 0.9);
+  actor->GetProperty()->SetOpacity(0.45);
+  return actor;
 }
 
 //------------------------------------------------------------------------------

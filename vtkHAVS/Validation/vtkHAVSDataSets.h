@@ -48,6 +48,7 @@
 
 VTK_ABI_NAMESPACE_BEGIN
 
+class vtkActor;
 class vtkDataSet;
 class vtkUnstructuredGrid;
 
@@ -89,6 +90,14 @@ public:
     int nx, int ny, int nz, double h, double a, double b);
   /// The unit cube in n^3 cubes, point scalar "field" = sin(6x) cos(5y) + z.
   static vtkSmartPointer<vtkUnstructuredGrid> MakeGenerated(int n);
+  /**
+   * A lit translucent plane actor (colour (0.2, 0.8, 0.9), opacity 0.45)
+   * through `data`'s centre, normal (0.3, 0.45, 1), a square 1.6 times its
+   * diagonal wide in 8 x 8 quads, so that it cuts the whole data set: the
+   * translucent actor of the benchmark's translucent-* rows, havs_view's key
+   * p and TestHAVSIntermix's plane scene.
+   */
+  static vtkSmartPointer<vtkActor> MakeTranslucentPlane(vtkDataSet* data);
   /// The cells of `grid` whose centroid satisfies `keep`.
   static vtkSmartPointer<vtkUnstructuredGrid> KeepCells(
     vtkUnstructuredGrid* grid, const std::function<bool(const double*)>& keep);
