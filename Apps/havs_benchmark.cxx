@@ -2001,12 +2001,31 @@ std::string BudgetReport(const std::vector<Row>& allRows)
 
 /// The translucent geometry's section (issue 46): per data set, size and
 /// mapper, the frame without and with the translucent plane intermixed, and
+/// A row's image size ("" when it has none).
+std::string SizeOf(const Row& r)
+{
+  return r.count("size") ? r.at("size") : std::string();
+}
+
+/// The first of `rows` with `like`'s data set and size and configuration `config`.
+const Row* FindRow(const std::vector<Row>& rows, const Row& like, const std::string& config)
+{
+  for (const Row& r : rows)
+  {
+    if (r.at("dataset") == like.at("dataset") && SizeOf(r) == SizeOf(like) &&
+      r.at("config") == config)
+    {
+      return &r;
+    }
+  }
+  return nullptr;
+}
+
 /// the error of the latter against the exact image with the plane.
 std::string TranslucentReport(const std::vector<Row>& allRows)
 {
   std::vector<Row> rows;
   std::copy_if(allRows.begin(), allRows.end(), std::back_inserter(rows), IsTranslucentRun);
-  auto sizeOf = [](const Row& r) { return r.count("size") ? r.at("size") : std::string(); };
   std::ostringstream table;
   for (const Row& r : rows)
   {
@@ -2016,19 +2035,12 @@ std::string TranslucentReport(const std::vector<Row>& allRows)
       continue;
     }
     const std::string plain = config.substr(TranslucentPrefix(config));
-    const Row* without = nullptr;
-    for (const Row& w : rows)
-    {
-      if (w.at("dataset") == r.at("dataset") && sizeOf(w) == sizeOf(r) && w.at("config") == plain)
-      {
-        without = &w;
-      }
-    }
+    const Row* without = FindRow(rows, r, plain);
     const bool hasFloat = std::isfinite(Value(r, "float_rmse"));
     const double ratio = without ? Value(r, "ms_median") / Value(*without, "ms_median") : NAN;
     char ratioText[32];
     std::snprintf(ratioText, sizeof(ratioText), "%.2f", ratio);
-    table << "| " << r.at("dataset") << " | " << sizeOf(r) << " | " << plain << " | "
+    table << "| " << r.at("dataset") << " | " << SizeOf(r) << " | " << plain << " | "
           << (without ? Cell(*without, "ms_median", "%.1f") : "-") << " | "
           << Cell(r, "ms_median", "%.1f") << " | " << (std::isfinite(ratio) ? ratioText : "-")
           << " | "
@@ -2067,29 +2079,17 @@ std::string IsoReport(const std::vector<Row>& allRows)
 {
   std::vector<Row> rows;
   std::copy_if(allRows.begin(), allRows.end(), std::back_inserter(rows), IsIsoRun);
-  auto sizeOf = [](const Row& r) { return r.count("size") ? r.at("size") : std::string(); };
-  auto find = [&rows, &sizeOf](const Row& like, const std::string& config) -> const Row*
-  {
-    for (const Row& r : rows)
-    {
-      if (r.at("dataset") == like.at("dataset") && sizeOf(r) == sizeOf(like) &&
-        r.at("config") == config)
-      {
-        return &r;
-      }
-    }
-    return nullptr;
-  };
   std::ostringstream table;
   for (const Row& r : rows)
   {
     const std::string& config = r.at("config");
-    if (IsoModeOf(config) != NoIsoSurfaces || config == "reference" || !find(r, "iso-" + config))
+    if (IsoModeOf(config) != NoIsoSurfaces || config == "reference" ||
+      !FindRow(rows, r, "iso-" + config))
     {
       continue;
     }
-    const Row* iso = find(r, "iso-" + config);
-    const Row* mixed = find(r, "isomix-" + config);
+    const Row* iso = FindRow(rows, r, "iso-" + config);
+    const Row* mixed = FindRow(rows, r, "isomix-" + config);
     const double composite = Value(r, "ms_median");
     auto ratio = [composite](const Row* x)
     {
@@ -2099,7 +2099,7 @@ std::string IsoReport(const std::vector<Row>& allRows)
     };
     auto error = [](const Row* x)
     { return x ? Cell(*x, "float_rmse", "%.2g") + " / " + Cell(*x, "float_max", "%.2g") : "-"; };
-    table << "| " << r.at("dataset") << " | " << sizeOf(r) << " | " << config << " | "
+    table << "| " << r.at("dataset") << " | " << SizeOf(r) << " | " << config << " | "
           << Cell(r, "ms_median", "%.1f") << " | " << Cell(*iso, "ms_median", "%.1f") << " | "
           << ratio(iso) << " | " << error(iso) << " | "
           << (mixed ? Cell(*mixed, "ms_median", "%.1f") : "-") << " | " << ratio(mixed) << " | "
@@ -2176,11 +2176,10 @@ std::string LevelOfDetailReport(const std::vector<Row>& allRows)
 {
   std::vector<Row> rows;
   std::copy_if(allRows.begin(), allRows.end(), std::back_inserter(rows), IsLevelOfDetail);
-  auto sizeOf = [](const Row& r) { return r.count("size") ? r.at("size") : std::string(); };
   std::vector<std::pair<std::string, std::string>> groups;
   for (const Row& r : rows)
   {
-    const auto group = std::make_pair(r.at("dataset"), sizeOf(r));
+    const auto group = std::make_pair(r.at("dataset"), SizeOf(r));
     if (IsLevelOfDetail(r) && std::find(groups.begin(), groups.end(), group) == groups.end())
     {
       groups.push_back(group);
@@ -2217,7 +2216,7 @@ std::string LevelOfDetailReport(const std::vector<Row>& allRows)
     {
       for (const Row& r : rows)
       {
-        if (r.at("dataset") == dataset && sizeOf(r) == group.second && r.at("config") == config)
+        if (r.at("dataset") == dataset && SizeOf(r) == group.second && r.at("config") == config)
           return &r;
       }
       return nullptr;
@@ -2225,7 +2224,7 @@ std::string LevelOfDetailReport(const std::vector<Row>& allRows)
     std::vector<int> percents;
     for (const Row& r : rows)
     {
-      if (r.at("dataset") != dataset || sizeOf(r) != group.second ||
+      if (r.at("dataset") != dataset || SizeOf(r) != group.second ||
         r.at("config").rfind("havs-lod-", 0) != 0 ||
         r.at("config").find("rotate") != std::string::npos)
         continue;
@@ -2285,7 +2284,7 @@ std::string LevelOfDetailReport(const std::vector<Row>& allRows)
     }
     for (const Row& r : rows)
     {
-      if (r.at("dataset") != dataset || sizeOf(r) != group.second ||
+      if (r.at("dataset") != dataset || SizeOf(r) != group.second ||
         r.at("config").rfind("havs-lod-rotate-", 0) != 0)
         continue;
       const double target = Value(r, "lod_target_ms");
