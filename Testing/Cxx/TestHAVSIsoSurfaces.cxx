@@ -24,20 +24,30 @@
 // 3. The mixed mode (the composite volume with the same surfaces inside)
 //    against the reference's: within the exact bound. Control: the composite
 //    without the surfaces must miss it.
+// 4. Shaded (the property's ShadeOn, the renderer's headlight): the plane of
+//    1. seen along a parallel view is lit as Phong's model gives by hand (n =
+//    +-z, the light and the eye along the view); the pair of 2. against the
+//    reference with the same lights, within the exact bound. Controls: the
+//    reference unshaded, and lit by a light turned 20 degrees, must miss.
+//    HAVS draws them unshaded (its k-buffer keeps no gradients) and says so.
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
 #include "havsTestMapperScenes.h"
+#include "havsTestMessages.h"
 #include "havsTestProperties.h"
 #include "havsTestScenes.h"
 
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSIsoSurfaces.h"
+#include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSVolumeMapper.h"
 
 #include "vtkCamera.h"
 #include "vtkContourValues.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
@@ -123,6 +133,70 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
       name + ": analytic: each pixel is the surface's colour or empty");
   }
 
+  // 4a. Shaded, analytic: the plane z = 0.55 seen along a parallel view.
+  {
+    auto grid = vtkHAVSDataSets::MakeBox(10, 10, 10, 0.1, 0.0, 1.0);
+    auto property = havstest::MakeRampPropertyFor(grid);
+    property->GetIsoSurfaceValues()->SetValue(0, 0.55);
+    property->ShadeOn();
+    property->SetAmbient(0.2);
+    property->SetDiffuse(0.7);
+    property->SetSpecular(0.4);
+    property->SetSpecularPower(8.0);
+    double surface[4];
+    vtkHAVSIsoSurfaces::SurfaceColor(property, 0.55, surface);
+    auto mapper = havstest::MakeMapperNamed(name);
+    mapper->KeepFloatResultOn();
+    mapper->SetBlendModeToIsoSurface();
+    havstest::Messages* messages = havstest::CountMessages(mapper);
+    auto s = havstest::MakeScene(grid, mapper, property, size, size);
+    havstest::PlaceCamera(s.Renderer, 25.0, 35.0, true);
+    s.Window->Render();
+    s.Window->Render(); // (the headlight placed at the camera)
+    const std::vector<float> image = havstest::FloatResult(mapper);
+    // n = +-z turned towards the eye; light and eye both along -dop.
+    double dop[3];
+    s.Renderer->GetActiveCamera()->GetDirectionOfProjection(dop);
+    const double nl = std::fabs(dop[2]);
+    const double rv = 2.0 * nl * nl - 1.0;
+    const double a = surface[3];
+    double lit[4] = { 0, 0, 0, a };
+    for (int c = 0; c < 3; ++c)
+    {
+      const double color = surface[c] / a;
+      const double value =
+        0.2 * color + 0.7 * nl * color + (rv > 0.0 ? 0.4 * std::pow(rv, 8.0) : 0.0);
+      lit[c] = std::min(1.0, std::max(0.0, value)) * a;
+    }
+    const bool shades = mapper->CanShadeIsoSurfaces();
+    const double* expected = shades ? lit : surface;
+    size_t onSurface = 0, other = 0;
+    for (size_t p = 0; p + 3 < image.size(); p += 4)
+    {
+      double toSurface = 0.0, toEmpty = 0.0;
+      for (int c = 0; c < 4; ++c)
+      {
+        toSurface = std::max(toSurface, std::fabs(image[p + c] - expected[c]));
+        toEmpty = std::max(toEmpty, std::fabs(static_cast<double>(image[p + c])));
+      }
+      onSurface += toSurface < 1e-5 ? 1 : 0;
+      other += toSurface >= 1e-5 && toEmpty >= 1e-6 ? 1 : 0;
+    }
+    std::printf("%s: the plane z = 0.55 shaded (n.l %.4f): expected %.4f %.4f %.4f (unshaded "
+                "%.4f %.4f %.4f): %zu pixels on it, %zu other\n",
+      name.c_str(), nl, expected[0], expected[1], expected[2], surface[0], surface[1], surface[2],
+      onSurface, other);
+    havstest::Check(onSurface > image.size() / 4 / 10 && other <= static_cast<size_t>(2 * size),
+      name +
+        (shades ? ": shaded plane: each pixel is Phong's colour or empty"
+                : ": the plane unshaded (no gradients)"));
+    havstest::Check(std::fabs(lit[0] - surface[0]) > 0.01 || std::fabs(lit[1] - surface[1]) > 0.01,
+      name + ": control: the lit colour differs from the unshaded one");
+    havstest::Check(
+      shades || (messages->Warnings > 0 && messages->Text.find("unshaded") != std::string::npos),
+      name + ": a mapper that cannot shade its isosurfaces says so");
+  }
+
   // 2. and 3. On the data set.
   auto grid = vtkHAVSDataSets::Load(dataSet);
   if (!havstest::Check(grid && grid->GetNumberOfCells() > 0, dataSet + " loads"))
@@ -190,6 +264,56 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
     havstest::Check(!havstest::WithinExactBound(controlMixed),
       at + ": control: the volume without its surfaces misses");
     mapper->IsoSurfacesInCompositeOff();
+
+    // 4b. Shaded, against the reference with the renderer's lights.
+    if (mapper->CanShadeIsoSurfaces())
+    {
+      property->ShadeOn();
+      property->SetAmbient(0.25);
+      property->SetDiffuse(0.7);
+      property->SetSpecular(0.3);
+      property->SetSpecularPower(12.0);
+      mapper->SetBlendModeToIsoSurface();
+      s.Window->Render();
+      const auto shaded = havstest::FloatResult(mapper);
+      auto reference = havstest::MakeReference(grid, property, camera, size);
+      reference->SetBlendMode(iso);
+      reference->SetLights(s.Renderer->GetLights());
+      reference->Render();
+      vtkFloatArray* ri = reference->GetImage();
+      const std::vector<float> exactShaded(ri->GetPointer(0), ri->GetPointer(0) + 4 * size * size);
+      const auto ds = havstest::Compare(shaded, exactShaded, edge);
+      const auto unlit = havstest::Compare(shaded, exact, edge);
+      // Control: a light turned 20 degrees about the view-up.
+      vtkNew<vtkLightCollection> turned;
+      vtkNew<vtkLight> light;
+      light->SetLightTypeToSceneLight();
+      light->SetPositional(false);
+      vtkCamera* c = camera;
+      double position[3], focal[3], up[3];
+      c->GetPosition(position);
+      c->GetFocalPoint(focal);
+      c->GetViewUp(up);
+      vtkNew<vtkCamera> turnedCamera;
+      turnedCamera->SetPosition(position);
+      turnedCamera->SetFocalPoint(focal);
+      turnedCamera->SetViewUp(up);
+      turnedCamera->Azimuth(20.0);
+      light->SetPosition(turnedCamera->GetPosition());
+      light->SetFocalPoint(focal);
+      turned->AddItem(light);
+      reference->SetLights(turned);
+      reference->Render();
+      const std::vector<float> exactTurned(ri->GetPointer(0), ri->GetPointer(0) + 4 * size * size);
+      const auto dt = havstest::Compare(shaded, exactTurned, edge);
+      havstest::PrintDifference(at + ": shaded isosurfaces", ds);
+      havstest::PrintDifference(at + ": control, unshaded", unlit);
+      havstest::PrintDifference(at + ": control, the light turned 20 degrees", dt);
+      havstest::Check(havstest::WithinExactBound(ds), at + ": the shaded isosurfaces are exact");
+      havstest::Check(!havstest::WithinExactBound(unlit), at + ": control: unshaded misses");
+      havstest::Check(!havstest::WithinExactBound(dt), at + ": control: a turned light misses");
+      property->ShadeOff();
+    }
   }
   return havstest::Result();
 }

@@ -17,6 +17,7 @@
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSMapperInputs.h"
 #include "vtkHAVSMesh.h"
+#include "vtkHAVSPointGradients.h"
 #include "vtkHAVSPreIntegrationTable.h"
 #include "vtkHAVSTableResolution.h"
 #include "vtkHAVSViewFrame.h"
@@ -259,7 +260,18 @@ bool vtkHAVSMapperBase::PrepareTable(vtkVolume* volume)
 {
   const bool ok = vtkHAVSMapperInputs::PrepareTable(
     this, volume, this->Mesh, this->Table, this->TableScalarResolution, this->TableLengthResolution,
-    this->MapperName, [this](int which, const std::string& m) { this->WarnOnce(which, m); },
+    this->MapperName,
+    [this, volume](int which, const std::string& m)
+    {
+      // (The isosurface blend draws no volume: its surfaces are what
+      // ShadeOn lights, where the mapper can.)
+      if (which == vtkHAVSMapperInputs::WarnShading && this->BlendMode == ISOSURFACE_BLEND &&
+        this->CanShadeIsoSurfaces())
+      {
+        return;
+      }
+      this->WarnOnce(which, m);
+    },
     &this->TableRebuilt, this->AutomaticTableResolution ? this->TableChooser.Get() : nullptr);
   // A table built at the fixed size is not the chooser's: with the
   // automatic choice back on, it chooses again.
@@ -337,11 +349,32 @@ void vtkHAVSMapperBase::UpdatePlanes(const vtkHAVSViewFrame& view)
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSMapperBase::PrepareIsoSurfaces(vtkVolume* volume)
+void vtkHAVSMapperBase::PrepareIsoSurfaces(vtkRenderer* renderer, vtkVolume* volume)
 {
   this->FrameIsoSurfaces = vtkHAVSIsoSurfaces::Make(volume->GetProperty(), this->BlendMode,
     this->IsoSurfacesInComposite, this->Mesh->GetScalarRange());
-  const vtkHAVSIsoSurfaces& iso = this->FrameIsoSurfaces;
+  vtkHAVSIsoSurfaces& iso = this->FrameIsoSurfaces;
+  if (iso.Count > 0 && !this->Mesh->HasCellScalars())
+  {
+    iso.MakeShading(volume->GetProperty(), this->Mesh->GetComponent(),
+      renderer ? renderer->GetLights() : nullptr, volume->GetMatrix());
+  }
+  if (iso.Shaded && !this->CanShadeIsoSurfaces())
+  {
+    iso.Shaded = false;
+    this->WarnOnce(vtkHAVSMapperInputs::WarnIsoShading,
+      std::string(this->MapperName) +
+        " draws its isosurfaces unshaded: its k-buffer keeps no gradients to light them with "
+        "(vtkHAVSRayCastMapper and vtkHAVSCellProjectionMapper shade them; said once).");
+  }
+  if (iso.Shaded && (iso.DroppedLights > 0 || iso.PositionalLights > 0))
+  {
+    this->WarnOnce(vtkHAVSMapperInputs::WarnIsoShading,
+      std::string(this->MapperName) + " lights its isosurfaces with the first " +
+        std::to_string(vtkHAVSIsoSurfaces::MaximumLights) +
+        " lights that are on, each directional (a positional light shines from its position "
+        "towards its focal point, with no cone or attenuation; said once).");
+  }
   if (iso.Dropped > 0)
   {
     this->WarnOnce(vtkHAVSMapperInputs::WarnIsoSurfaces,
@@ -360,6 +393,27 @@ void vtkHAVSMapperBase::PrepareIsoSurfaces(vtkVolume* volume)
           "no isovalue inside one, so no surface is drawn (said once).");
     }
   }
+}
+
+//------------------------------------------------------------------------------
+const std::vector<float>& vtkHAVSMapperBase::GetIsoGradientFields(vtkMTimeType& version)
+{
+  const vtkMTimeType key[2] = { this->Mesh->GetBuildTime(), this->Mesh->GetScalarTime() };
+  if (this->IsoGradientFieldsTime.GetMTime() == 0 || key[0] != this->IsoGradientFieldsKey[0] ||
+    key[1] != this->IsoGradientFieldsKey[1])
+  {
+    std::vector<double> gradients;
+    const std::vector<uint32_t>& tets = this->Mesh->GetFaceSet()->GetTetrahedra();
+    vtkHAVSPointGradients::Compute(
+      this->Mesh->GetPoints(), this->Mesh->GetScalars(), tets, gradients);
+    vtkHAVSPointGradients::ComputeFields(
+      this->Mesh->GetPoints(), tets, gradients, this->IsoGradientFields);
+    this->IsoGradientFieldsKey[0] = key[0];
+    this->IsoGradientFieldsKey[1] = key[1];
+    this->IsoGradientFieldsTime.Modified();
+  }
+  version = this->IsoGradientFieldsTime.GetMTime();
+  return this->IsoGradientFields;
 }
 
 //------------------------------------------------------------------------------
@@ -460,7 +514,7 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
       {
         this->TableBuildTime.Modified();
       }
-      this->PrepareIsoSurfaces(volume);
+      this->PrepareIsoSurfaces(renderer, volume);
       // 5. The view: every coordinate frame, once, at the level of detail's
       // image scale; 6. the mapper's own part.
       if (tableBuilt && !this->AbortRequested(renderer))

@@ -110,8 +110,13 @@ public:
    * functions' colour and opacity at that value, composited front to back,
    * and nothing contributes between the surfaces (vtkHAVSIsoSurfaces). Up to
    * vtkHAVSIsoSurfaces::MaximumCount values (more: the lowest ones, warned
-   * once). Unshaded: ShadeOn is not applied (warned once). Cell scalars have
-   * no crossings inside a cell: nothing is drawn (warned once).
+   * once). With the property's ShadeOn the surfaces are lit by the
+   * renderer's lights with the normals of the interpolated point gradients
+   * (vtkHAVSIsoSurfaces::Shade, vtkHAVSPointGradients) where the mapper
+   * CanShadeIsoSurfaces() (the ray caster and the cell projection; HAVS draws
+   * them unshaded, warned once: its k-buffer keeps no gradients); the volume
+   * between them stays unshaded. Cell scalars have no crossings inside a
+   * cell: nothing is drawn (warned once).
    *
    * IsoSurfacesInComposite (off by default): under the composite blend the
    * same surfaces are drawn inside the volume (the thesis' mixed mode): each
@@ -123,6 +128,15 @@ public:
   vtkBooleanMacro(IsoSurfacesInComposite, bool);
   /// The surfaces the last frame drew (none outside the two modes above).
   const vtkHAVSIsoSurfaces& GetFrameIsoSurfaces() const { return this->FrameIsoSurfaces; }
+  /// Whether this mapper lights its isosurfaces under ShadeOn (see above).
+  virtual bool CanShadeIsoSurfaces() const { return false; }
+  /**
+   * The shaded isosurfaces' gradient fields (vtkHAVSPointGradients::
+   * ComputeFields over the mesh's tetrahedra, model coordinates), made when
+   * the mesh or its scalars changed; `version` changes with them. For the
+   * graphics layer (not wrapped).
+   */
+  const std::vector<float>& GetIsoGradientFields(vtkMTimeType& version);
   ///@}
 
   ///@{
@@ -448,8 +462,10 @@ protected:
   double FrameBudget(vtkVolume* volume) const;
   /// The frame's image scale: 1 unless the image reduction's budget asks for less.
   double ChooseImageScale(vtkVolume* volume);
-  /// The frame's isosurfaces (FrameIsoSurfaces) and their once-only warnings.
-  void PrepareIsoSurfaces(vtkVolume* volume);
+  /// The frame's isosurfaces (FrameIsoSurfaces, their shading by `renderer`'s
+  /// lights) and their once-only warnings.
+  void PrepareIsoSurfaces(vtkRenderer* renderer, vtkVolume* volume);
+
   /// The blend the frame's passes draw: the isosurface blend is drawn as the
   /// composite one (front to back, in order), its segments made of surfaces.
   int GetFrameBlend() const
@@ -502,6 +518,9 @@ protected:
   int LastIntermixLayers = 0;
   int IntermixSlab = 0; ///< the slab RenderView draws (0 outside intermixed frames)
   vtkHAVSIsoSurfaces FrameIsoSurfaces;
+  std::vector<float> IsoGradientFields;      ///< GetIsoGradientFields
+  vtkMTimeType IsoGradientFieldsKey[2] = {}; ///< the mesh's build and scalar times they are of
+  vtkTimeStamp IsoGradientFieldsTime;
   vtkNew<vtkHAVSLevelOfDetailController> ImageControl;
 
 private:

@@ -59,6 +59,7 @@ public:
     WarnShaderProperty,
     WarnIsoSurfaces,
     WarnIsoSurfaceCells,
+    WarnIsoShading,
     NumberOfOnceWarnings
   };
   using WarnOnce = std::function<void(int, const std::string&)>;

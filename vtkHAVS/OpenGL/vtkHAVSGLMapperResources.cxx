@@ -40,6 +40,7 @@ vtkStandardNewMacro(vtkHAVSGLMapperResources);
 //------------------------------------------------------------------------------
 vtkHAVSGLMapperResources::vtkHAVSGLMapperResources()
   : Section(new vtkHAVSGLSection)
+  , IsoGradientFields(new vtkHAVSGLBuffer)
 {
 }
 
@@ -136,6 +137,34 @@ void vtkHAVSGLMapperResources::SetTextureUniforms(vtkShaderProgram* program)
   this->Targets->SetDepthScaleUniform(program);
 }
 
+//------------------------------------------------------------------------------
+bool vtkHAVSGLMapperResources::BindIsoShading(vtkHAVSMapperBase* mapper, size_t largestBuffer)
+{
+  if (!mapper || !mapper->GetFrameIsoSurfaces().Shaded)
+  {
+    return false;
+  }
+  vtkMTimeType version = 0;
+  const std::vector<float>& fields = mapper->GetIsoGradientFields(version);
+  const size_t bytes = fields.size() * sizeof(float);
+  if (bytes > largestBuffer)
+  {
+    if (!this->WarnedIsoFields)
+    {
+      vtkWarningWithObjectMacro(
+        mapper, << "The shaded isosurfaces' gradient fields (" << bytes
+                << " bytes) exceed the largest GPU buffer (" << largestBuffer
+                << " bytes, SetLargestGPUBuffer): the isosurfaces are drawn unshaded (said once).");
+      this->WarnedIsoFields = true;
+    }
+    return false;
+  }
+  this->IsoGradientFields->Update(GL_SHADER_STORAGE_BUFFER, fields, version);
+  this->IsoGradientFields->BindBase(GL_SHADER_STORAGE_BUFFER, 13);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSGLMapperResources::SetViewUniforms(vtkShaderProgram* program,
   const vtkHAVSViewFrame& view, vtkHAVSFramePlanes* planes, const double shift[3], bool eye)
 {
@@ -265,6 +294,7 @@ void vtkHAVSGLMapperResources::Release(vtkWindow* window)
   }
   this->Section->Release();
   this->SectionTriangles = 0;
+  this->IsoGradientFields->Release();
   this->Table->ReleaseGraphicsResources(home);
   this->Targets->ReleaseGraphicsResources(home);
   home->RemoveObserver(this->WindowDeleteObserver);

@@ -41,10 +41,12 @@
 VTK_ABI_NAMESPACE_BEGIN
 
 class vtkHAVSFramePlanes;
+class vtkHAVSGLBuffer;
 class vtkHAVSGLCellRecords;
 class vtkHAVSGLFrameTargets;
 class vtkHAVSGLSection;
 class vtkHAVSGLTable;
+class vtkHAVSMapperBase;
 class vtkHAVSViewFrame;
 class vtkShaderProgram;
 class vtkOpenGLRenderWindow;
@@ -129,6 +131,14 @@ public:
     vtkHAVSFramePlanes* planes, const double shift[3], bool eye);
   /// The table's uniforms, the additive nodes' and the opaque depth's units (textures active).
   void SetTextureUniforms(vtkShaderProgram* program);
+  /**
+   * Where `mapper`'s frame shades its isosurfaces (vtkHAVSIsoSurfaces::Shaded):
+   * their gradient fields (vtkHAVSMapperBase::GetIsoGradientFields) uploaded if
+   * new and bound where the shaders read them (binding 13), true. False where
+   * the frame does not shade them, or, with a warning (the surfaces then
+   * unshaded), where the fields exceed `largestBuffer` bytes.
+   */
+  bool BindIsoShading(vtkHAVSMapperBase* mapper, size_t largestBuffer);
   /// Blending for a draw front to back under the result (composite) or order-independent.
   void SetBlending(int blend);
   /**
@@ -172,6 +182,8 @@ private:
   std::unique_ptr<vtkHAVSGLOwnObjects> Owned;
   std::unique_ptr<vtkHAVSGLSection> Section; // the near plane's section (cell projection, rays)
   int SectionTriangles = 0;
+  std::unique_ptr<vtkHAVSGLBuffer> IsoGradientFields; // the shaded isosurfaces' (BindIsoShading)
+  bool WarnedIsoFields = false;
 };
 
 VTK_ABI_NAMESPACE_END

@@ -153,6 +153,43 @@ void vtkHAVSGLTable::SetUniforms(vtkShaderProgram* program)
     program->SetUniform1fv("havsIsoValues", count, this->IsoSurfaces->Normalized);
     program->SetUniform4fv("havsIsoColors", count, colors);
   }
+  // Their shading (HAVS_ISO_SHADE; vtkHAVSIsoSurfaces::Shade).
+  if (count > 0 && this->IsoSurfaces->Shaded)
+  {
+    const vtkHAVSIsoSurfaces& iso = *this->IsoSurfaces;
+    const int lights = iso.LightCount;
+    float direction[vtkHAVSIsoSurfaces::MaximumLights][3];
+    float diffuse[vtkHAVSIsoSurfaces::MaximumLights][3];
+    float specular[vtkHAVSIsoSurfaces::MaximumLights][3];
+    for (int i = 0; i < lights; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        direction[i][k] = static_cast<float>(iso.Lights[i].Direction[k]);
+        diffuse[i][k] = static_cast<float>(iso.Lights[i].Diffuse[k]);
+        specular[i][k] = static_cast<float>(iso.Lights[i].Specular[k]);
+      }
+    }
+    program->SetUniformi("havsLightCount", lights);
+    if (lights > 0)
+    {
+      program->SetUniform3fv("havsLightDirection", lights, direction);
+      program->SetUniform3fv("havsLightDiffuse", lights, diffuse);
+      program->SetUniform3fv("havsLightSpecular", lights, specular);
+    }
+    const float shading[4] = { static_cast<float>(iso.Ambient), static_cast<float>(iso.Diffuse),
+      static_cast<float>(iso.Specular), static_cast<float>(iso.SpecularPower) };
+    program->SetUniform4f("havsShading", shading);
+    float normal[9];
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        normal[3 * c + r] = static_cast<float>(iso.NormalMatrix[3 * r + c]); // column-major
+      }
+    }
+    program->SetUniformMatrix3x3("havsNormalMatrix", normal);
+  }
 }
 
 //------------------------------------------------------------------------------

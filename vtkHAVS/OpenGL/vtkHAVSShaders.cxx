@@ -72,7 +72,8 @@ std::string Compose(const char* templ, int k, int pixelStride,
           << "#define HAVS_CELL_SCALARS " << (features.CellScalars ? 1 : 0) << "\n"
           << "#define HAVS_CLIPPING " << (features.Clipping ? 1 : 0) << "\n"
           << "#define HAVS_PROJECTION " << features.Projection << "\n"
-          << "#define HAVS_ISO " << features.IsoSurfaces << "\n";
+          << "#define HAVS_ISO " << features.IsoSurfaces << "\n"
+          << "#define HAVS_ISO_SHADE " << (features.IsoShade ? 1 : 0) << "\n";
   Replace(source, "//HAVS::Defines", defines.str());
   Replace(source, "//HAVS::KBufferLib", vtkHAVSKBufferLib);
   Replace(source, "//HAVS::CellOpticsLib", CellOpticsLib());
@@ -82,11 +83,12 @@ std::string Compose(const char* templ, int k, int pixelStride,
 /// A shader that integrates whole cells' segments (the cell projection's and
 /// the ray caster's): no k-buffer, no violation counter, no tagging; its blend
 /// and the additive blend's library in.
-std::string CellSegmentShader(
-  const char* templ, bool opaque, int blend, bool cellScalars, int cellBuffers, int isoSurfaces)
+std::string CellSegmentShader(const char* templ, bool opaque, int blend, bool cellScalars,
+  int cellBuffers, int isoSurfaces, bool isoShade)
 {
   vtkHAVSShaders::Features features;
   features.IsoSurfaces = isoSurfaces;
+  features.IsoShade = isoShade && isoSurfaces != 0;
   features.CountViolations = false;
   features.Tagging = false;
   features.Opaque = opaque;
@@ -349,10 +351,10 @@ std::string vtkHAVSShaders::CellProjectionVertexShader()
 }
 
 std::string vtkHAVSShaders::CellProjectionShader(
-  bool opaque, int blend, bool cellScalars, int cellBuffers, int isoSurfaces)
+  bool opaque, int blend, bool cellScalars, int cellBuffers, int isoSurfaces, bool isoShade)
 {
   return CellSegmentShader(
-    vtkHAVSCellProjectionFS, opaque, blend, cellScalars, cellBuffers, isoSurfaces);
+    vtkHAVSCellProjectionFS, opaque, blend, cellScalars, cellBuffers, isoSurfaces, isoShade);
 }
 
 std::string vtkHAVSShaders::RayCastPeelShader()
@@ -365,9 +367,10 @@ std::string vtkHAVSShaders::RayCastPeelShader()
 }
 
 std::string vtkHAVSShaders::RayCastShader(
-  bool opaque, int blend, bool cellScalars, int cellBuffers, int isoSurfaces)
+  bool opaque, int blend, bool cellScalars, int cellBuffers, int isoSurfaces, bool isoShade)
 {
-  return CellSegmentShader(vtkHAVSRayCastFS, opaque, blend, cellScalars, cellBuffers, isoSurfaces);
+  return CellSegmentShader(
+    vtkHAVSRayCastFS, opaque, blend, cellScalars, cellBuffers, isoSurfaces, isoShade);
 }
 
 std::string vtkHAVSShaders::RayCastTileVertexShader()

@@ -45,7 +45,8 @@ struct vtkHAVSKBufferShaderFeatures
   bool CellScalars = false;    ///< a fragment carries the scalar of the cell behind it
   bool Clipping = true;        ///< clipping or near planes cut the mesh (a loop over them)
   int Projection = -1;         ///< 0 perspective, 1 parallel, -1 per frame (a uniform)
-  int IsoSurfaces = 0; ///< 0 none, 1 the isosurface blend, 2 the mixed mode (vtkHAVSIsoSurfaces)
+  int IsoSurfaces = 0;   ///< 0 none, 1 the isosurface blend, 2 the mixed mode (vtkHAVSIsoSurfaces)
+  bool IsoShade = false; ///< the isosurfaces lit (HAVS_ISO_SHADE: the cell mappers only)
 };
 
 class VTKHAVSOPENGL_EXPORT vtkHAVSShaders
@@ -125,20 +126,22 @@ public:
   /// composite, maximum, minimum or additive; `cellScalars`: the cells'
   /// fields are cell codes, their segments read the cell optics;
   /// `cellBuffers`: the storage buffers the cell records lie in,
-  /// vtkHAVSGLCellRecords; `isoSurfaces`: Features::IsoSurfaces).
+  /// vtkHAVSGLCellRecords; `isoSurfaces`: Features::IsoSurfaces; `isoShade`:
+  /// Features::IsoShade).
   static std::string CellProjectionVertexShader();
-  static std::string CellProjectionShader(
-    bool opaque, int blend = 0, bool cellScalars = false, int cellBuffers = 1, int isoSurfaces = 0);
+  static std::string CellProjectionShader(bool opaque, int blend = 0, bool cellScalars = false,
+    int cellBuffers = 1, int isoSurfaces = 0, bool isoShade = false);
   ///@}
 
   ///@{
   /// vtkHAVSRayCastMapper: the boundary entries' depth-peeling fragment
   /// shader (with CellProjectionVertexShader), and the ray-casting pass's
   /// (with RayCastTileVertexShader; the opaque cut compiled in with
-  /// `opaque`; `blend`, `cellScalars` and `cellBuffers` as CellProjectionShader's).
+  /// `opaque`; `blend`, `cellScalars`, `cellBuffers`, `isoSurfaces` and
+  /// `isoShade` as CellProjectionShader's).
   static std::string RayCastPeelShader();
-  static std::string RayCastShader(
-    bool opaque, int blend = 0, bool cellScalars = false, int cellBuffers = 1, int isoSurfaces = 0);
+  static std::string RayCastShader(bool opaque, int blend = 0, bool cellScalars = false,
+    int cellBuffers = 1, int isoSurfaces = 0, bool isoShade = false);
   /// The ray-casting pass's vertex shader: one instance per screen tile.
   static std::string RayCastTileVertexShader();
   ///@}

@@ -164,11 +164,13 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   const int sectionTriangles = this->Resources->GetSectionTriangles();
 
   // 2. The program, its textures and uniforms.
+  const bool isoShade =
+    this->Resources->BindIsoShading(this, static_cast<size_t>(this->GetLargestGPUBuffer()));
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
     vtkHAVSShaders::CellProjectionVertexShader().c_str(),
     vtkHAVSShaders::CellProjectionShader(opaque, frame.Blend,
       this->Resources->GetTable()->HasCellOptics(), gl.Records.GetBufferCount(),
-      this->GetFrameIsoSurfaces().ShaderMode(this->GetBlendMode()))
+      this->GetFrameIsoSurfaces().ShaderMode(this->GetBlendMode()), isoShade)
       .c_str(),
     "");
   if (!program || !program->GetCompiled())

@@ -143,7 +143,7 @@ void vtkOpenGLHAVSRayCastMapper::Upload(const RayFrame& frame)
 
 //------------------------------------------------------------------------------
 bool vtkOpenGLHAVSRayCastMapper::MakePrograms(
-  vtkOpenGLRenderWindow* window, const RayFrame& frame, Programs& programs)
+  vtkOpenGLRenderWindow* window, const RayFrame& frame, Programs& programs, bool isoShade)
 {
   vtkOpenGLShaderCache* cache = window->GetShaderCache();
   programs.Peel = cache->ReadyShaderProgram(vtkHAVSShaders::CellProjectionVertexShader().c_str(),
@@ -152,7 +152,7 @@ bool vtkOpenGLHAVSRayCastMapper::MakePrograms(
     ? cache->ReadyShaderProgram(vtkHAVSShaders::RayCastTileVertexShader().c_str(),
         vtkHAVSShaders::RayCastShader(frame.Opaque, frame.Blend,
           this->Resources->GetTable()->HasCellOptics(), this->GL->Records.GetBufferCount(),
-          this->GetFrameIsoSurfaces().ShaderMode(this->GetBlendMode()))
+          this->GetFrameIsoSurfaces().ShaderMode(this->GetBlendMode()), isoShade)
           .c_str(),
         "")
     : nullptr;
@@ -385,7 +385,9 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
   // 2. The programs, the textures, the uniforms; the screen tiles (without
   // them, one tile covering the viewport).
   Programs programs;
-  if (!this->MakePrograms(window, frame, programs))
+  const bool isoShade =
+    this->Resources->BindIsoShading(this, static_cast<size_t>(this->GetLargestGPUBuffer()));
+  if (!this->MakePrograms(window, frame, programs, isoShade))
   {
     return false;
   }

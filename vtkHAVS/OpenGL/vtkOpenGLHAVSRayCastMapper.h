@@ -83,7 +83,8 @@ private:
   /// The ray mesh and the table: each when its version changed.
   void Upload(const RayFrame& frame);
   /// The programs (nullptr members, with an error, when one did not build).
-  bool MakePrograms(vtkOpenGLRenderWindow* window, const RayFrame& frame, Programs& programs);
+  bool MakePrograms(
+    vtkOpenGLRenderWindow* window, const RayFrame& frame, Programs& programs, bool isoShade);
   /// Every uniform of the three programs for this frame.
   void SetUniforms(vtkOpenGLRenderWindow* window, const Programs& programs, const RayFrame& frame,
     const TileGrid& grid);

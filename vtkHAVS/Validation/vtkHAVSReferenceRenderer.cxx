@@ -13,6 +13,7 @@
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSIsoSurfaces.h"
 #include "vtkHAVSPlaneSection.h"
+#include "vtkHAVSPointGradients.h"
 #include "vtkHAVSPreIntegrationTable.h"
 #include "vtkHAVSTetrahedralizer.h"
 
@@ -25,6 +26,7 @@
 #include "vtkFloatArray.h"
 #include "vtkGenericCell.h"
 #include "vtkIdList.h"
+#include "vtkLightCollection.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -152,6 +154,16 @@ void vtkHAVSReferenceRenderer::SetVolumeMatrix(vtkMatrix4x4* matrix)
 }
 
 //------------------------------------------------------------------------------
+void vtkHAVSReferenceRenderer::SetLights(vtkLightCollection* lights)
+{
+  if (this->Lights != lights)
+  {
+    this->Lights = lights;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSReferenceRenderer::ReportProgress(double progress)
 {
   double overall =
@@ -245,6 +257,26 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
   }
   this->ScalarRange[0] = range[0];
   this->ScalarRange[1] = range[1];
+  // Shaded isosurfaces: the points' gradients (world), interpolated at each fragment.
+  this->ShadeIsoSurfaces = this->Property && this->Property->GetShade(0) && !cellData &&
+    (this->BlendMode == vtkHAVSIsoSurfaces::IsoSurfaceBlend || this->IsoSurfacesInComposite);
+  std::vector<double> pointGradients;
+  if (this->ShadeIsoSurfaces)
+  {
+    vtkHAVSPointGradients::Compute(world, values, this->Faces->GetTetrahedra(), pointGradients);
+  }
+  auto interpolateGradient = [&](const uint32_t* ids, const double* weights, int count, float* out)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      double g = 0.0;
+      for (int i = 0; i < count; ++i)
+      {
+        g += weights[i] * pointGradients[3 * static_cast<size_t>(ids[i]) + k];
+      }
+      out[k] = static_cast<float>(g);
+    }
+  };
 
   // The camera, as the mapper sees it for an image of this size.
   vtkNew<vtkMatrix4x4> worldToClip;
@@ -257,6 +289,20 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
   vtkNew<vtkHAVSFaceRasterizer> rasterizer;
   rasterizer->SetView(
     worldToClip->GetData(), eye, directionOfProjection, parallel, this->Size[0], this->Size[1]);
+  this->PixelDirections.clear();
+  if (this->ShadeIsoSurfaces)
+  {
+    this->PixelDirections.resize(3 * static_cast<size_t>(this->Size[0]) * this->Size[1]);
+    for (int j = 0; j < this->Size[1]; ++j)
+    {
+      for (int i = 0; i < this->Size[0]; ++i)
+      {
+        const vtkHAVSFaceRasterizer::Ray ray = rasterizer->GetPixelRay(i, j);
+        std::copy_n(ray.Direction, 3,
+          &this->PixelDirections[3 * (static_cast<size_t>(j) * this->Size[0] + i)]);
+      }
+    }
+  }
   const bool mirrored = this->VolumeMatrix->Determinant() < 0.0;
 
   // The near and clipping planes, world coordinates: kept where n.x + w >= 0.
@@ -342,6 +388,10 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
         {
           f.Scalar = hit.Weights[0] * values[ids[0]] + hit.Weights[1] * values[ids[1]] +
             hit.Weights[2] * values[ids[2]];
+          if (this->ShadeIsoSurfaces)
+          {
+            interpolateGradient(ids, hit.Weights, 3, f.Gradient);
+          }
         }
       }
     });
@@ -470,7 +520,7 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
           const double d0 = ray.Offset + t0, d1 = ray.Offset + t1;
 
           // The mesh's scalar at ray parameter t, when a tetrahedron holds that point.
-          auto scalarAt = [&](double t, double& scalar)
+          auto scalarAt = [&](double t, double& scalar, float* gradient = nullptr)
           {
             double x[4] = { 0, 0, 0, 1 }, m[4];
             for (int k = 0; k < 3; ++k)
@@ -503,16 +553,23 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
             }
             else
             {
+              uint32_t ids[4];
               for (int i = 0; i < 4; ++i)
               {
-                scalar += weights[i] * values[cell->GetPointId(i)];
+                ids[i] = static_cast<uint32_t>(cell->GetPointId(i));
+                scalar += weights[i] * values[ids[i]];
+              }
+              if (gradient && this->ShadeIsoSurfaces)
+              {
+                interpolateGradient(ids, weights, 4, gradient);
               }
             }
             return true;
           };
           // Does the ray start inside the mesh? The tetrahedron at the start point.
           double startScalar = 0.0;
-          const bool startInside = t0 > -VTK_DOUBLE_MAX && scalarAt(t0, startScalar);
+          float startGradient[3] = { 0.0f, 0.0f, 0.0f };
+          const bool startInside = t0 > -VTK_DOUBLE_MAX && scalarAt(t0, startScalar, startGradient);
           bool dropsSome = false;
           for (const Fragment* f = first; f != last && !dropsSome; ++f)
           {
@@ -540,6 +597,7 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
           if (startInside)
           {
             out.push_back({ d0, startScalar, StartFace, true, false });
+            std::copy_n(startGradient, 3, out.back().Gradient);
           }
           bool inside = startInside;
           const Fragment* f = first;
@@ -566,17 +624,24 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
             // (Cell scalars: both ends have the one cell's value.)
             const double from = previous.ScalarBehind();
             double scalar = from;
+            float gradient[3];
+            std::copy_n(previous.Gradient, 3, gradient);
             if (f != last && f->Distance > previous.Distance)
             {
-              scalar +=
-                (f->Scalar - from) * (d1 - previous.Distance) / (f->Distance - previous.Distance);
+              const double share = (d1 - previous.Distance) / (f->Distance - previous.Distance);
+              scalar += (f->Scalar - from) * share;
+              for (int k = 0; k < 3; ++k)
+              {
+                gradient[k] += static_cast<float>((f->Gradient[k] - gradient[k]) * share);
+              }
             }
             else if (f == last)
             {
               // No fragment beyond (culled with its face): the mesh's value at the end.
-              scalarAt(t1, scalar);
+              scalarAt(t1, scalar, gradient);
             }
             out.push_back({ d1, scalar, EndFace, true, true });
+            std::copy_n(gradient, 3, out.back().Gradient);
           }
         }
       });
@@ -833,12 +898,18 @@ void vtkHAVSReferenceRenderer::IntegrateRay(
 //------------------------------------------------------------------------------
 void vtkHAVSReferenceRenderer::IntegrateRayWithSurfaces(vtkVolumeProperty* property,
   const Fragment* begin, const Fragment* end, const SurfaceEvent* eventsBegin,
-  const SurfaceEvent* eventsEnd, double rgba[4], const vtkHAVSIsoSurfaces* iso)
+  const SurfaceEvent* eventsEnd, double rgba[4], const vtkHAVSIsoSurfaces* iso, const double* toEye)
 {
   FrontToBack composite;
-  // A piece of a segment (scalar sf -> sb linear): the volume, or with
-  // isosurfaces their crossings (and, in the mixed mode, the volume between).
-  auto addPiece = [&](double sf, double sb, double length)
+  const bool shaded = iso && iso->Shaded && toEye;
+  // The segment's ends' gradients (shaded isosurfaces: a crossing at share u
+  // of the segment has their mix).
+  const float* gradientFrom = nullptr;
+  const float* gradientTo = nullptr;
+  // A piece of a segment (scalar sf -> sb linear) from share uFrom to uTo of
+  // it: the volume, or with isosurfaces their crossings (and, in the mixed
+  // mode, the volume between).
+  auto addPiece = [&](double sf, double sb, double length, double uFrom, double uTo)
   {
     double piece[4];
     if (!iso)
@@ -859,7 +930,21 @@ void vtkHAVSReferenceRenderer::IntegrateRayWithSurfaces(vtkVolumeProperty* prope
         from = t;
         sFrom = v;
       }
-      composite.Add(iso->Colors[i]); // (the surface's colour, SurfaceColor at Make)
+      if (shaded && gradientFrom && gradientTo)
+      {
+        const double u = uFrom + (uTo - uFrom) * (v - sf) / (sb - sf);
+        double gradient[3], lit[4];
+        for (int k = 0; k < 3; ++k)
+        {
+          gradient[k] = gradientFrom[k] + u * (gradientTo[k] - gradientFrom[k]);
+        }
+        iso->Shade(iso->Colors[i], gradient, toEye, lit);
+        composite.Add(lit);
+      }
+      else
+      {
+        composite.Add(iso->Colors[i]); // (the surface's colour, SurfaceColor at Make)
+      }
     }
     if (iso->Composite)
     {
@@ -878,15 +963,17 @@ void vtkHAVSReferenceRenderer::IntegrateRayWithSurfaces(vtkVolumeProperty* prope
       }
       const double sf = front.ScalarBehind(), sb = back.Scalar;
       const double length = back.Distance - front.Distance;
+      gradientFrom = front.Gradient;
+      gradientTo = back.Gradient;
       double from = 0.0; // the piece's start, as a share of the segment
       for (; e != eventsEnd && e->Distance < back.Distance; ++e)
       {
         const double to = length > 0.0 ? (e->Distance - front.Distance) / length : 0.0;
-        addPiece(sf + (sb - sf) * from, sf + (sb - sf) * to, length * (to - from));
+        addPiece(sf + (sb - sf) * from, sf + (sb - sf) * to, length * (to - from), from, to);
         composite.Add(e->RGBA);
         from = to;
       }
-      addPiece(sf + (sb - sf) * from, sb, length * (1.0 - from));
+      addPiece(sf + (sb - sf) * from, sb, length * (1.0 - from), from, 1.0);
     });
   for (; e != eventsEnd; ++e)
   {
@@ -950,9 +1037,9 @@ void vtkHAVSReferenceRenderer::IntegrateRayBlend(vtkVolumeProperty* property, co
 
 //------------------------------------------------------------------------------
 void vtkHAVSReferenceRenderer::IntegrateRayIso(vtkVolumeProperty* property, const Fragment* begin,
-  const Fragment* end, const vtkHAVSIsoSurfaces& iso, double rgba[4])
+  const Fragment* end, const vtkHAVSIsoSurfaces& iso, double rgba[4], const double* toEye)
 {
-  IntegrateRayWithSurfaces(property, begin, end, nullptr, nullptr, rgba, &iso);
+  IntegrateRayWithSurfaces(property, begin, end, nullptr, nullptr, rgba, &iso, toEye);
 }
 
 //------------------------------------------------------------------------------
@@ -1048,8 +1135,14 @@ bool vtkHAVSReferenceRenderer::Render()
   // functions in the source).
   vtkSMPThreadLocal<vtkSmartPointer<vtkVolumeProperty>> localProperty;
   // The isosurfaces (the isosurface blend, or the composite's mixed mode).
-  const vtkHAVSIsoSurfaces iso = vtkHAVSIsoSurfaces::Make(
+  vtkHAVSIsoSurfaces iso = vtkHAVSIsoSurfaces::Make(
     this->Property, this->BlendMode, this->IsoSurfacesInComposite, this->ScalarRange);
+  if (this->ShadeIsoSurfaces)
+  {
+    // (The gradients are world's already: no normal matrix.)
+    iso.MakeShading(this->Property, 0, this->Lights, nullptr);
+  }
+  const bool shaded = iso.Shaded && !this->PixelDirections.empty();
   const bool isoRay = this->BlendMode == vtkHAVSIsoSurfaces::IsoSurfaceBlend || iso.Count > 0;
   // Translucent layers: under the blends composited front to back (composite, isosurface).
   const bool frontToBack = this->BlendMode != 1 && this->BlendMode != 2 && this->BlendMode != 4;
@@ -1072,18 +1165,26 @@ bool vtkHAVSReferenceRenderer::Render()
         for (vtkIdType p = begin; p < end; ++p)
         {
           double rgba[4];
+          double toEye[3] = { 0.0, 0.0, 1.0 };
+          if (shaded)
+          {
+            for (int k = 0; k < 3; ++k)
+            {
+              toEye[k] = -this->PixelDirections[3 * static_cast<size_t>(p) + k];
+            }
+          }
           if (surfaces)
           {
             IntegrateRayWithSurfaces(property, this->GetPixelFragmentsBegin(p),
               this->GetPixelFragmentsEnd(p),
               this->SurfaceEvents.data() + this->SurfaceEventStart[p],
               this->SurfaceEvents.data() + this->SurfaceEventStart[p + 1], rgba,
-              isoRay ? &iso : nullptr);
+              isoRay ? &iso : nullptr, shaded ? toEye : nullptr);
           }
           else if (isoRay)
           {
-            IntegrateRayIso(
-              property, this->GetPixelFragmentsBegin(p), this->GetPixelFragmentsEnd(p), iso, rgba);
+            IntegrateRayIso(property, this->GetPixelFragmentsBegin(p),
+              this->GetPixelFragmentsEnd(p), iso, rgba, shaded ? toEye : nullptr);
           }
           else
           {

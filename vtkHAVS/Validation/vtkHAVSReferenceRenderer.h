@@ -65,6 +65,7 @@ VTK_ABI_NAMESPACE_BEGIN
 class vtkCamera;
 class vtkDataSet;
 class vtkFloatArray;
+class vtkLightCollection;
 class vtkHAVSFaceSet;
 class vtkHAVSIsoSurfaces;
 class vtkMatrix4x4;
@@ -198,6 +199,17 @@ public:
   vtkGetMacro(IsoSurfacesInComposite, bool);
   ///@}
 
+  /**
+   * The lights that shade the isosurfaces where the property's Shade is on
+   * (vtkHAVSIsoSurfaces::MakeShading and Shade, the mappers' model): a
+   * renderer's GetLights() after it rendered (its lights then follow its
+   * camera). The normal at a crossing is the interpolated point gradients'
+   * (vtkHAVSPointGradients over this renderer's tetrahedra, world
+   * coordinates): each fragment takes its face's interpolation, a crossing
+   * the mix of its segment's two ends. nullptr (the default): ambient only.
+   */
+  void SetLights(vtkLightCollection* lights);
+
   /// Face ids of the synthetic fragments where a ray enters or leaves the
   /// region kept by the near and clipping planes inside the mesh.
   static constexpr uint32_t StartFace = 0xFFFFFFFEu;
@@ -219,6 +231,8 @@ public:
     double Behind = std::numeric_limits<double>::quiet_NaN();
     /// The scalar a segment starting at this fragment starts with.
     double ScalarBehind() const { return std::isnan(this->Behind) ? this->Scalar : this->Behind; }
+    /// The interpolated point gradients here (world; only where isosurfaces are shaded).
+    float Gradient[3] = { 0.0f, 0.0f, 0.0f };
   };
 
   /**
@@ -277,7 +291,8 @@ public:
    * them exactly (IntegrateSegmentExact) in the mixed mode.
    */
   static void IntegrateRayIso(vtkVolumeProperty* property, const Fragment* begin,
-    const Fragment* end, const vtkHAVSIsoSurfaces& iso, double rgba[4]);
+    const Fragment* end, const vtkHAVSIsoSurfaces& iso, double rgba[4],
+    const double* toEye = nullptr);
   /**
    * One pixel with surface fragments (`events` sorted by distance) composited
    * between the volume's pieces: the composite blend, or with `iso` its
@@ -285,7 +300,7 @@ public:
    */
   static void IntegrateRayWithSurfaces(vtkVolumeProperty* property, const Fragment* begin,
     const Fragment* end, const SurfaceEvent* eventsBegin, const SurfaceEvent* eventsEnd,
-    double rgba[4], const vtkHAVSIsoSurfaces* iso = nullptr);
+    double rgba[4], const vtkHAVSIsoSurfaces* iso = nullptr, const double* toEye = nullptr);
 
   /**
    * The additive blend's segment: the integral of tau(s(t)) (s(t) - lo) /
@@ -349,6 +364,9 @@ private:
   vtkIdType NumberOfStartedInside = 0;
   std::vector<Fragment> Fragments;
   std::vector<vtkIdType> PixelStart;
+  vtkSmartPointer<vtkLightCollection> Lights;
+  bool ShadeIsoSurfaces = false;       ///< this frame's fragments carry gradients
+  std::vector<double> PixelDirections; ///< (shaded isosurfaces) each pixel's ray direction
   double ScalarRange[2] = { 0.0, 1.0 };
 };
 

@@ -240,6 +240,12 @@ void main()
   float sFront = clamp(dot(field.xyz, o + tEnter * d) + field.w, 0.0, 1.0);
   float sBack = clamp(dot(field.xyz, o + tExit * d) + field.w, 0.0, 1.0);
   float len = (tExit - tEnter) * length(dRC);
+#if HAVS_ISO_SHADE
+  havsShadeCell = cell;
+  havsShadeFrom = o + tEnter * d;
+  havsShadeTo = o + tExit * d;
+  havsShadeToEye = -normalize(dRC);
+#endif
 #if HAVS_OPAQUE
   // Opaque geometry ends the ray: nothing behind it, the last segment cut.
   float front = havsDistance(oRC + tEnter * dRC);
@@ -251,6 +257,9 @@ void main()
   if (front + len > opaque && len > 0.0)
   {
     sBack = mix(sFront, sBack, (opaque - front) / len);
+#if HAVS_ISO_SHADE
+    havsShadeTo = mix(havsShadeFrom, havsShadeTo, (opaque - front) / len);
+#endif
     len = opaque - front;
   }
 #endif

@@ -62,6 +62,9 @@
 #ifndef HAVS_ISO
 #define HAVS_ISO 0
 #endif
+#ifndef HAVS_ISO_SHADE
+#define HAVS_ISO_SHADE 0
+#endif
 
 // The face passes' scalar input (declared with HAVS_FACE_SCALAR_INPUT) and the
 // fragment's scalar, havsFaceScalar(). Point scalars: interpolated across the
@@ -264,6 +267,66 @@ uniform int havsIsoCount;
 uniform float havsIsoValues[HAVS_MAX_ISO];
 uniform vec4 havsIsoColors[HAVS_MAX_ISO];
 
+#if HAVS_ISO_SHADE
+// Shaded isosurfaces (the property's ShadeOn; vtkHAVSIsoSurfaces::Shade, here
+// in float): Phong's model with the normal of the interpolated point
+// gradients (vtkHAVSPointGradients: each tetrahedron's field, three rows
+// G_k(p) = row.xyz . p + row.w in model coordinates), turned towards the eye.
+// The mappers that know each segment's cell (the ray caster, the cell
+// projection) set its cell and ends (model coordinates) and the direction
+// towards the eye (world) before havsSegment.
+const int HAVS_MAX_LIGHTS = 8;
+uniform int havsLightCount;
+uniform vec3 havsLightDirection[HAVS_MAX_LIGHTS]; // world, towards the light
+uniform vec3 havsLightDiffuse[HAVS_MAX_LIGHTS];   // colour times intensity
+uniform vec3 havsLightSpecular[HAVS_MAX_LIGHTS];
+uniform vec4 havsShading;      // ambient, diffuse, specular, specular power
+uniform mat3 havsNormalMatrix; // model gradient -> world normal
+layout(std430, binding = 13) readonly buffer HAVSGradientFields
+{
+  vec4 havsGradientFields[];
+};
+int havsShadeCell = 0;
+vec3 havsShadeFrom = vec3(0.0);
+vec3 havsShadeTo = vec3(0.0);
+vec3 havsShadeToEye = vec3(0.0, 0.0, 1.0);
+
+// The surface of premultiplied colour rgba where the segment is crossed at
+// its share t, lit.
+vec4 havsShadeSurface(vec4 rgba, float t)
+{
+  vec3 p = mix(havsShadeFrom, havsShadeTo, t);
+  int row = 3 * havsShadeCell;
+  vec3 g = vec3(dot(havsGradientFields[row].xyz, p) + havsGradientFields[row].w,
+    dot(havsGradientFields[row + 1].xyz, p) + havsGradientFields[row + 1].w,
+    dot(havsGradientFields[row + 2].xyz, p) + havsGradientFields[row + 2].w);
+  vec3 n = havsNormalMatrix * g;
+  float len = length(n);
+  if (!(rgba.a > 0.0) || !(len > 0.0) || isinf(len))
+  {
+    return rgba;
+  }
+  n = (dot(n, havsShadeToEye) < 0.0 ? -n : n) / len;
+  vec3 c = rgba.rgb / rgba.a;
+  vec3 lit = havsShading.x * c;
+  for (int i = 0; i < havsLightCount; ++i)
+  {
+    float nl = dot(n, havsLightDirection[i]);
+    if (nl > 0.0)
+    {
+      lit += havsShading.y * nl * havsLightDiffuse[i] * c;
+      vec3 r = 2.0 * nl * n - havsLightDirection[i];
+      float rv = dot(r, havsShadeToEye);
+      if (rv > 0.0)
+      {
+        lit += havsShading.z * pow(rv, havsShading.w) * havsLightSpecular[i];
+      }
+    }
+  }
+  return vec4(clamp(lit, 0.0, 1.0) * rgba.a, rgba.a);
+}
+#endif
+
 // The segment from scalar sf to sb (length len) with its isosurfaces: each
 // value it crosses, in [sf, sb) rising or (sb, sf] falling (a crossing at a
 // shared face counted once, in the segment behind it), composited front to
@@ -289,7 +352,11 @@ vec4 havsIsoSegment(float sf, float sb, float len)
         sFrom = v;
       }
 #endif
+#if HAVS_ISO_SHADE
+      color += (1.0 - color.a) * havsShadeSurface(havsIsoColors[i], (v - sf) / (sb - sf));
+#else
       color += (1.0 - color.a) * havsIsoColors[i];
+#endif
     }
   }
 #if !HAVS_CELL_SCALARS && HAVS_ISO == 2

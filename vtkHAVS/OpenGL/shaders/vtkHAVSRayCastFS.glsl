@@ -273,6 +273,9 @@ void main()
     tIn = (keyDistance - distance0) / distanceRate;
   }
 
+#if HAVS_ISO_SHADE
+  havsShadeToEye = -normalize(mat3(havsMCRC) * d);
+#endif
   vec4 color = vec4(0.0);
   float extremum = 0.0; // (the order-independent blends)
   bool covered = false;
@@ -332,6 +335,11 @@ void main()
 #elif HAVS_CELL_BLEND == 4
       extremum += havsAdditiveSegment(sA, sB, (b - a) * worldPerT);
 #else
+#if HAVS_ISO_SHADE
+      havsShadeCell = cell;
+      havsShadeFrom = o + a * d;
+      havsShadeTo = o + b * d;
+#endif
       color += (1.0 - color.a) * havsSegment(vec2(0.0, sA), vec2((b - a) * worldPerT, sB));
 #endif
     }
