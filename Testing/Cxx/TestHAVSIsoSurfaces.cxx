@@ -29,11 +29,11 @@
 //    +-z, the light and the eye along the view); the pair of 2. against the
 //    reference with the same lights, within the exact bound. Controls: the
 //    reference unshaded, and lit by a light turned 20 degrees, must miss.
-//    HAVS draws them unshaded (its k-buffer keeps no gradients) and says so.
+//    HAVS shades them on the fragment-list path (its nodes carry the
+//    fragments' gradients) and goes back to its own path after them.
 #include "havsTestChecks.h"
 #include "havsTestImages.h"
 #include "havsTestMapperScenes.h"
-#include "havsTestMessages.h"
 #include "havsTestProperties.h"
 #include "havsTestScenes.h"
 
@@ -148,7 +148,6 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
     auto mapper = havstest::MakeMapperNamed(name);
     mapper->KeepFloatResultOn();
     mapper->SetBlendModeToIsoSurface();
-    havstest::Messages* messages = havstest::CountMessages(mapper);
     auto s = havstest::MakeScene(grid, mapper, property, size, size);
     havstest::PlaceCamera(s.Renderer, 25.0, 35.0, true);
     s.Window->Render();
@@ -168,8 +167,7 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
         0.2 * color + 0.7 * nl * color + (rv > 0.0 ? 0.4 * std::pow(rv, 8.0) : 0.0);
       lit[c] = std::min(1.0, std::max(0.0, value)) * a;
     }
-    const bool shades = mapper->CanShadeIsoSurfaces();
-    const double* expected = shades ? lit : surface;
+    const double* expected = lit;
     size_t onSurface = 0, other = 0;
     for (size_t p = 0; p + 3 < image.size(); p += 4)
     {
@@ -187,14 +185,20 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
       name.c_str(), nl, expected[0], expected[1], expected[2], surface[0], surface[1], surface[2],
       onSurface, other);
     havstest::Check(onSurface > image.size() / 4 / 10 && other <= static_cast<size_t>(2 * size),
-      name +
-        (shades ? ": shaded plane: each pixel is Phong's colour or empty"
-                : ": the plane unshaded (no gradients)"));
+      name + ": shaded plane: each pixel is Phong's colour or empty");
     havstest::Check(std::fabs(lit[0] - surface[0]) > 0.01 || std::fabs(lit[1] - surface[1]) > 0.01,
       name + ": control: the lit colour differs from the unshaded one");
-    havstest::Check(
-      shades || (messages->Warnings > 0 && messages->Text.find("unshaded") != std::string::npos),
-      name + ": a mapper that cannot shade its isosurfaces says so");
+    if (auto* havs = vtkHAVSVolumeMapper::SafeDownCast(mapper))
+    {
+      const int shadedPath = havs->GetActiveKBufferPath();
+      property->ShadeOff();
+      s.Window->Render();
+      const int ownPath = havs->GetActiveKBufferPath();
+      std::printf("havs: shaded isosurfaces on path %d, unshaded on %d\n", shadedPath, ownPath);
+      havstest::Check(shadedPath == vtkHAVSVolumeMapper::KBufferPathFragmentLists &&
+          ownPath != vtkHAVSVolumeMapper::KBufferPathFragmentLists,
+        "havs: shaded isosurfaces on the fragment lists, then back to its own path");
+    }
   }
 
   // 2. and 3. On the data set.
@@ -266,7 +270,6 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
     mapper->IsoSurfacesInCompositeOff();
 
     // 4b. Shaded, against the reference with the renderer's lights.
-    if (mapper->CanShadeIsoSurfaces())
     {
       property->ShadeOn();
       property->SetAmbient(0.25);
@@ -312,6 +315,25 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
       havstest::Check(havstest::WithinExactBound(ds), at + ": the shaded isosurfaces are exact");
       havstest::Check(!havstest::WithinExactBound(unlit), at + ": control: unshaded misses");
       havstest::Check(!havstest::WithinExactBound(dt), at + ": control: a turned light misses");
+      // The mixed mode shaded: the surfaces lit inside the (unshaded) volume.
+      mapper->SetBlendModeToComposite();
+      mapper->IsoSurfacesInCompositeOn();
+      s.Window->Render();
+      const auto mixedShaded = havstest::FloatResult(mapper);
+      reference->SetLights(s.Renderer->GetLights());
+      reference->SetBlendMode(0);
+      reference->SetIsoSurfacesInComposite(true);
+      reference->Render();
+      const std::vector<float> exactMixedShaded(
+        ri->GetPointer(0), ri->GetPointer(0) + 4 * size * size);
+      const auto dms = havstest::Compare(mixedShaded, exactMixedShaded, edge);
+      const auto controlMs = havstest::Compare(mixedShaded, exactMixed, edge);
+      havstest::PrintDifference(at + ": mixed, shaded", dms);
+      havstest::PrintDifference(at + ": control, mixed unshaded", controlMs);
+      havstest::Check(havstest::WithinExactBound(dms), at + ": the shaded mixed mode is exact");
+      havstest::Check(
+        !havstest::WithinExactBound(controlMs), at + ": control: the mixed mode unshaded misses");
+      mapper->IsoSurfacesInCompositeOff();
       property->ShadeOff();
     }
   }

@@ -146,6 +146,28 @@ int TestHAVSShaderSources(int, char*[])
     check(vtkHAVSShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true, f),
       "list_resolve_cells", "frag");
   }
+  // The isosurfaces (the blend, the mixed mode), unshaded and shaded: the
+  // cell mappers' (fields) and HAVS's fragment lists (gradients in the
+  // entries, the face vertex shader's gradient attribute).
+  for (int iso : { 1, 2 })
+  {
+    for (bool shade : { false, true })
+    {
+      const std::string suffix = "_iso" + std::to_string(iso) + (shade ? "_shaded" : "");
+      check(vtkHAVSShaders::CellProjectionShader(true, 0, false, 1, iso, shade),
+        "cell_projection" + suffix, "frag");
+      check(
+        vtkHAVSShaders::RayCastShader(true, 0, false, 2, iso, shade), "ray_cast" + suffix, "frag");
+      vtkHAVSShaders::Features f;
+      f.IsoSurfaces = iso;
+      f.IsoShade = shade ? 2 : 0;
+      check(vtkHAVSShaders::ListDrawShader(f), "list_draw" + suffix, "frag");
+      check(
+        vtkHAVSShaders::ResolveShader(vtkHAVSVolumeMapper::KBufferPathFragmentLists, 1, true, f),
+        "list_resolve" + suffix, "frag");
+    }
+  }
+  check(vtkHAVSShaders::FaceVertexShader(false, true), "face_shaded", "vert");
   // The features left out are really out of the source (no fetch, no atomic).
   vtkHAVSShaders::Features none;
   none.CountViolations = none.Tagging = none.Opaque = false;

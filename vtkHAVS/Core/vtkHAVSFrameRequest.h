@@ -86,7 +86,12 @@ struct vtkHAVSFrameRequest
   bool Tagging = true;      ///< boundary fragments carry their entry/exit role
   bool CellScalars = false; ///< the scalars are the cells' (vtkHAVSMesh::HasCellScalars)
   int IsoSurfaces = 0; ///< vtkHAVSIsoSurfaces::ShaderMode: 0 none, 1 the blend, 2 the mixed mode
-  bool Opaque = true;  ///< opaque geometry may be in the depth buffer (rays end there)
+  /// The isosurfaces lit (the fragment-list path only): each vertex carries its point's
+  /// gradient (PointGradients, 3 floats a point, model coordinates; its version).
+  bool IsoShade = false;
+  const std::vector<float>* PointGradients = nullptr;
+  vtkMTimeType PointGradientsVersion = 0;
+  bool Opaque = true;        ///< opaque geometry may be in the depth buffer (rays end there)
   float GapLength = 3.0e38f; ///< segments longer than this contribute nothing (3e38: off)
   bool Composite = true;     ///< composite the result over the window (else keep it)
   bool CountViolations = true;

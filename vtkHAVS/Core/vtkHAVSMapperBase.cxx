@@ -417,6 +417,25 @@ const std::vector<float>& vtkHAVSMapperBase::GetIsoGradientFields(vtkMTimeType& 
 }
 
 //------------------------------------------------------------------------------
+const std::vector<float>& vtkHAVSMapperBase::GetIsoPointGradients(vtkMTimeType& version)
+{
+  const vtkMTimeType key[2] = { this->Mesh->GetBuildTime(), this->Mesh->GetScalarTime() };
+  if (this->IsoPointGradientsTime.GetMTime() == 0 || key[0] != this->IsoPointGradientsKey[0] ||
+    key[1] != this->IsoPointGradientsKey[1])
+  {
+    std::vector<double> gradients;
+    vtkHAVSPointGradients::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
+      this->Mesh->GetFaceSet()->GetTetrahedra(), gradients);
+    this->IsoPointGradients.assign(gradients.begin(), gradients.end());
+    this->IsoPointGradientsKey[0] = key[0];
+    this->IsoPointGradientsKey[1] = key[1];
+    this->IsoPointGradientsTime.Modified();
+  }
+  version = this->IsoPointGradientsTime.GetMTime();
+  return this->IsoPointGradients;
+}
+
+//------------------------------------------------------------------------------
 vtkHAVSLevelOfDetailController* vtkHAVSMapperBase::GetImageReductionController()
 {
   return this->ImageControl;

@@ -137,6 +137,9 @@ public:
    * graphics layer (not wrapped).
    */
   const std::vector<float>& GetIsoGradientFields(vtkMTimeType& version);
+  /// The points' gradients themselves (3 floats a point, model coordinates;
+  /// HAVS's vertices carry them), made as GetIsoGradientFields.
+  const std::vector<float>& GetIsoPointGradients(vtkMTimeType& version);
   ///@}
 
   ///@{
@@ -521,6 +524,9 @@ protected:
   std::vector<float> IsoGradientFields;      ///< GetIsoGradientFields
   vtkMTimeType IsoGradientFieldsKey[2] = {}; ///< the mesh's build and scalar times they are of
   vtkTimeStamp IsoGradientFieldsTime;
+  std::vector<float> IsoPointGradients;      ///< GetIsoPointGradients
+  vtkMTimeType IsoPointGradientsKey[2] = {}; ///< as IsoGradientFieldsKey
+  vtkTimeStamp IsoPointGradientsTime;
   vtkNew<vtkHAVSLevelOfDetailController> ImageControl;
 
 private:

@@ -149,7 +149,9 @@ bool vtkHAVSMapperInputs::PrepareTable(vtkAbstractVolumeMapper* mapper, vtkVolum
   if (property->GetShade(component))
   {
     warnOnce(WarnShading,
-      std::string("Shading is not supported by ") + mapperName + "; the volume is unshaded.");
+      std::string("Shading is not supported by ") + mapperName +
+        " for the volume; the volume is unshaded (isosurfaces, of the isosurface blend or "
+        "IsoSurfacesInComposite, are lit).");
   }
   if (!property->GetDisableGradientOpacity(component) && property->HasGradientOpacity(component) &&
     !IsConstantOne(property->GetGradientOpacity(component)))

@@ -420,15 +420,26 @@ void vtkHAVSVolumeMapper::RenderView(
     this->SkippingCells ? &this->Visibility->GetVisible() : nullptr,
     this->Visibility->GetVisibilityVersion());
 
-  // 5. The k-buffer: the path the window runs, and k within its reach.
-  const int path = this->ChooseKBufferPath(renderer, this->KBufferPath);
+  // 5. The k-buffer: the path the window runs, and k within its reach. Shaded
+  // isosurfaces take the fragment lists (the only path whose entries carry
+  // the fragments' gradients).
+  const bool isoShade = this->FrameIsoSurfaces.Shaded;
+  const int path =
+    this->ChooseKBufferPath(renderer, isoShade ? KBufferPathFragmentLists : this->KBufferPath);
+  if (isoShade && path != KBufferPathFragmentLists)
+  {
+    this->FrameIsoSurfaces.Shaded = false;
+    this->WarnOnce(Inputs::WarnIsoShading,
+      "The fragment-list path, which shaded isosurfaces need, is not supported by this OpenGL "
+      "context: the isosurfaces are drawn unshaded (said once).");
+  }
   if (path == 0)
   {
     vtkErrorMacro("This OpenGL context has none of the k-buffer paths (it needs OpenGL 4.3 with "
                   "EXT_shader_framebuffer_fetch, or fragment-shader interlock, or OpenGL 4.4).");
     return;
   }
-  if (this->KBufferPath != KBufferPathAutomatic && path != this->KBufferPath)
+  if (this->KBufferPath != KBufferPathAutomatic && path != this->KBufferPath && !isoShade)
   {
     const std::string message = std::string("The k-buffer path ") +
       GetKBufferPathName(this->KBufferPath) +
@@ -445,6 +456,11 @@ void vtkHAVSVolumeMapper::RenderView(
     this->WarnOnce(WarnK, message.c_str());
   }
   FrameRequest request = this->MakeRequest(view, path, k, this->NeedsOpaqueDepth(renderer));
+  if (this->FrameIsoSurfaces.Shaded)
+  {
+    request.IsoShade = true;
+    request.PointGradients = &this->GetIsoPointGradients(request.PointGradientsVersion);
+  }
 
   // 6. The near and clipping planes, and the mesh's sections with them.
   this->UpdatePlanes(view);

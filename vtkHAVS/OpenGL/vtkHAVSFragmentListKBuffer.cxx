@@ -26,7 +26,8 @@ vtkStandardNewMacro(vtkHAVSFragmentListKBuffer);
 
 namespace
 {
-const size_t kNodeBytes = 16; // distance, code, next, spare
+const size_t kNodeBytes = 16;         // distance, code, next, spare
+const size_t kNodeGradientBytes = 16; // (shaded isosurfaces) the gradient, spare
 }
 
 //------------------------------------------------------------------------------
@@ -53,6 +54,11 @@ void vtkHAVSFragmentListKBuffer::GrowNodes(GLuint capacity)
   this->Capacity = capacity;
   this->Nodes.Update(
     GL_SHADER_STORAGE_BUFFER, nullptr, size_t(this->Capacity) * kNodeBytes, 0, GL_DYNAMIC_COPY);
+  if (this->NodeGradients.GetHandle())
+  {
+    this->NodeGradients.Update(GL_SHADER_STORAGE_BUFFER, nullptr,
+      size_t(this->Capacity) * kNodeGradientBytes, 0, GL_DYNAMIC_COPY);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -69,6 +75,16 @@ bool vtkHAVSFragmentListKBuffer::Allocate(vtkHAVSGLPassContext& context)
   if (this->Capacity < wanted)
   {
     this->GrowNodes(wanted);
+  }
+  // Shaded isosurfaces: a gradient beside every node (released when not).
+  if (context.Request.IsoShade && !this->NodeGradients.GetHandle())
+  {
+    this->NodeGradients.Update(GL_SHADER_STORAGE_BUFFER, nullptr,
+      size_t(this->Capacity) * kNodeGradientBytes, 0, GL_DYNAMIC_COPY);
+  }
+  else if (!context.Request.IsoShade && this->NodeGradients.GetHandle())
+  {
+    this->NodeGradients.Release();
   }
   return true;
 }
@@ -99,6 +115,10 @@ bool vtkHAVSFragmentListKBuffer::Draw(vtkHAVSGLPassContext& context)
     this->Nodes.BindBase(GL_SHADER_STORAGE_BUFFER, 1);
     this->Counter.BindBase(GL_SHADER_STORAGE_BUFFER, 2);
     this->Heads.BindImage(0);
+    if (this->NodeGradients.GetHandle())
+    {
+      this->NodeGradients.BindBase(GL_SHADER_STORAGE_BUFFER, 13);
+    }
     vtkShaderProgram* program =
       context.FaceProgram(vtkHAVSShaders::ListDrawShader(context.ShaderFeatures()));
     ok = program != nullptr;
@@ -129,6 +149,10 @@ bool vtkHAVSFragmentListKBuffer::Resolve(vtkHAVSGLPassContext& context)
   const bool vote = vtkHAVSGLCapabilities::HasExtension("GL_ARB_shader_group_vote");
   this->Heads.BindImage(0);
   this->Nodes.BindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  if (this->NodeGradients.GetHandle())
+  {
+    this->NodeGradients.BindBase(GL_SHADER_STORAGE_BUFFER, 13);
+  }
   vtkShaderProgram* program = context.QuadProgram(vtkHAVSShaders::ResolveShader(
     vtkHAVSFrameRequest::PathFragmentLists, context.Request.K, vote, context.ShaderFeatures()));
   if (program)
@@ -143,6 +167,7 @@ bool vtkHAVSFragmentListKBuffer::Resolve(vtkHAVSGLPassContext& context)
 void vtkHAVSFragmentListKBuffer::ReleaseGraphicsResources(vtkWindow*)
 {
   this->Nodes.Release();
+  this->NodeGradients.Release();
   this->Counter.Release();
   this->Capacity = 0;
   this->Heads.Release();

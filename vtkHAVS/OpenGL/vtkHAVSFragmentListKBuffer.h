@@ -59,10 +59,11 @@ private:
 
   void GrowNodes(GLuint capacity);
 
-  vtkHAVSGLImage Heads;    ///< each pixel's first node (R32UI)
-  vtkHAVSGLBuffer Nodes;   ///< the node pool
-  GLuint Capacity = 0;     ///< nodes the pool holds
-  vtkHAVSGLBuffer Counter; ///< nodes appended this frame
+  vtkHAVSGLImage Heads;          ///< each pixel's first node (R32UI)
+  vtkHAVSGLBuffer Nodes;         ///< the node pool
+  vtkHAVSGLBuffer NodeGradients; ///< (shaded isosurfaces) a gradient per node
+  GLuint Capacity = 0;           ///< nodes the pool holds
+  vtkHAVSGLBuffer Counter;       ///< nodes appended this frame
 };
 
 VTK_ABI_NAMESPACE_END

@@ -59,6 +59,8 @@ void vtkHAVSGLMesh::UploadGeometry(
   this->Scalars = scalars;
   this->Components = components;
   this->VertexCapacity = points.size() / 3;
+  this->Gradients.clear(); // (a new mesh: its gradients come again)
+  this->GradientsVersion = 0;
   UploadVertexAttributes(this->VertexArray, this->PointBuffer, this->ScalarBuffer, points, scalars,
     GL_STATIC_DRAW, components);
   if (!this->IndexBuffer.GetHandle())
@@ -94,10 +96,19 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
   const int nc = this->Components;
   const std::vector<uint32_t>* indices = &triangles;
   std::vector<uint32_t> rewritten;
-  std::vector<float> points, scalars;
+  std::vector<float> points, scalars, gradients, unused;
   const size_t boundaryFaces = tagged ? vtkHAVSMesh::MakeTaggedVertices(this->Points, this->Scalars,
                                           nc, triangles, boundary, points, scalars, rewritten)
                                       : 0;
+  const bool shaded = !this->Gradients.empty() && this->Gradients.size() == this->Points.size();
+  if (boundaryFaces > 0 && shaded)
+  {
+    // The boundary vertices' gradients: the same copies of their points' (the
+    // gradients taken as the points to copy).
+    std::vector<uint32_t> same;
+    vtkHAVSMesh::MakeTaggedVertices(
+      this->Gradients, this->Scalars, nc, triangles, boundary, gradients, unused, same);
+  }
   if (boundaryFaces > 0)
   {
     // The boundary faces' own vertices, in draw order, after the points.
@@ -111,6 +122,18 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
       UploadVertexAttributes(this->VertexArray, this->PointBuffer, this->ScalarBuffer, allPoints,
         allScalars, GL_DYNAMIC_DRAW, nc);
       this->VertexCapacity = vertices;
+      if (shaded)
+      {
+        std::vector<float> allGradients(this->Gradients);
+        allGradients.resize(3 * vertices);
+        this->GradientBuffer.Update(GL_ARRAY_BUFFER, allGradients, 0, GL_DYNAMIC_DRAW);
+        this->VertexArray.SetAttribute(2, this->GradientBuffer, 3);
+      }
+    }
+    if (shaded)
+    {
+      this->GradientBuffer.Write(
+        3 * numPoints * sizeof(float), gradients.data(), gradients.size() * sizeof(float));
     }
     this->PointBuffer.Write(
       3 * numPoints * sizeof(float), points.data(), points.size() * sizeof(float));
@@ -235,7 +258,7 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
 void vtkHAVSGLMesh::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (vtkHAVSGLBuffer* b : { &this->PointBuffer, &this->ScalarBuffer, &this->IndexBuffer,
-         &this->SectionPoints, &this->SectionScalars })
+         &this->SectionPoints, &this->SectionScalars, &this->GradientBuffer })
   {
     b->Release();
   }
@@ -246,6 +269,8 @@ void vtkHAVSGLMesh::ReleaseGraphicsResources(vtkWindow* window)
   this->VertexCapacity = 0;
   this->GeometryVersion = this->ScalarVersion = this->OrderVersion = this->SectionsVersion = 0;
   this->OrderTagged = false;
+  this->Gradients.clear();
+  this->GradientsVersion = 0;
 }
 
 //------------------------------------------------------------------------------
@@ -270,6 +295,29 @@ int vtkHAVSGLMesh::UpdateGeometry(vtkHAVSMesh* mesh)
     return UploadedScalars;
   }
   return UploadedNothing;
+}
+
+bool vtkHAVSGLMesh::UpdateGradients(const std::vector<float>* gradients, vtkMTimeType version)
+{
+  if (!gradients)
+  {
+    this->Gradients.clear();
+    this->GradientsVersion = 0;
+    return false;
+  }
+  if (this->GradientsVersion == version || !this->VertexArray.IsCreated() ||
+    gradients->size() != this->Points.size())
+  {
+    return false;
+  }
+  this->Gradients = *gradients;
+  std::vector<float> all(*gradients);
+  all.resize(3 * std::max(this->VertexCapacity, this->Points.size() / 3));
+  this->GradientBuffer.Update(GL_ARRAY_BUFFER, all, 0, GL_DYNAMIC_DRAW);
+  this->VertexArray.SetAttribute(2, this->GradientBuffer, 3);
+  this->GradientsVersion = version;
+  this->OrderVersion = 0; // (the boundary vertices' copies with the next order)
+  return true;
 }
 
 bool vtkHAVSGLMesh::UpdateFaceOrder(const std::vector<uint32_t>& triangles,

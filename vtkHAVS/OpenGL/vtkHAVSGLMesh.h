@@ -98,6 +98,13 @@ public:
     bool tagged, vtkMTimeType version, bool* failed);
   bool UpdateSections(
     const std::vector<vtkHAVSFramePlanes::Section>& sections, vtkMTimeType version);
+  /**
+   * Shaded isosurfaces (HAVS's fragment lists): each point's gradient (3
+   * floats, model coordinates, as GetPoints()) at attribute 2, the boundary
+   * vertices' copies with the next face order; uploaded when `version`
+   * changed. nullptr: none (the face orders copy no gradients).
+   */
+  bool UpdateGradients(const std::vector<float>* gradients, vtkMTimeType version);
   ///@}
 
   vtkIdType GetNumberOfFaces() const { return this->IndexCount / 3; }
@@ -143,8 +150,11 @@ private:
   GLsizei IndexCount = 0;
   std::vector<float> Points; // as uploaded, for the boundary vertices
   std::vector<float> Scalars;
-  size_t VertexCapacity = 0; // vertices the point and scalar buffers hold
-  int Components = 1;        // scalars per vertex
+  size_t VertexCapacity = 0;      // vertices the point and scalar buffers hold
+  int Components = 1;             // scalars per vertex
+  vtkHAVSGLBuffer GradientBuffer; // (shaded isosurfaces) attribute 2
+  std::vector<float> Gradients;   // as uploaded (empty: none this frame)
+  vtkMTimeType GradientsVersion = 0;
 
   vtkHAVSGLVertexArray SectionArray;
   vtkHAVSGLBuffer SectionPoints;

@@ -74,6 +74,7 @@ vtkHAVSShaders::Features vtkHAVSGLPassContext::ShaderFeatures() const
   f.Clipping = this->Request.Planes && this->Request.Planes->GetNumberOfPlanes() > 0;
   f.Projection = this->Request.View ? (this->Request.View->Parallel ? 1 : 0) : -1;
   f.IsoSurfaces = this->Request.IsoSurfaces;
+  f.IsoShade = this->Request.IsoShade ? 2 : 0;
   return f;
 }
 
@@ -93,7 +94,9 @@ vtkShaderProgram* vtkHAVSGLPassContext::Program(
 
 vtkShaderProgram* vtkHAVSGLPassContext::FaceProgram(const std::string& fragmentShader)
 {
-  return this->Program(vtkHAVSShaders::FaceVertexShader(this->Request.CellScalars), fragmentShader);
+  return this->Program(
+    vtkHAVSShaders::FaceVertexShader(this->Request.CellScalars, this->Request.IsoShade),
+    fragmentShader);
 }
 
 vtkShaderProgram* vtkHAVSGLPassContext::QuadProgram(const std::string& fragmentShader)

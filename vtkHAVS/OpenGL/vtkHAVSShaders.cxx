@@ -73,7 +73,7 @@ std::string Compose(const char* templ, int k, int pixelStride,
           << "#define HAVS_CLIPPING " << (features.Clipping ? 1 : 0) << "\n"
           << "#define HAVS_PROJECTION " << features.Projection << "\n"
           << "#define HAVS_ISO " << features.IsoSurfaces << "\n"
-          << "#define HAVS_ISO_SHADE " << (features.IsoShade ? 1 : 0) << "\n";
+          << "#define HAVS_ISO_SHADE " << features.IsoShade << "\n";
   Replace(source, "//HAVS::Defines", defines.str());
   Replace(source, "//HAVS::KBufferLib", vtkHAVSKBufferLib);
   Replace(source, "//HAVS::CellOpticsLib", CellOpticsLib());
@@ -88,7 +88,7 @@ std::string CellSegmentShader(const char* templ, bool opaque, int blend, bool ce
 {
   vtkHAVSShaders::Features features;
   features.IsoSurfaces = isoSurfaces;
-  features.IsoShade = isoShade && isoSurfaces != 0;
+  features.IsoShade = isoShade && isoSurfaces != 0 ? 1 : 0;
   features.CountViolations = false;
   features.Tagging = false;
   features.Opaque = opaque;
@@ -113,11 +113,12 @@ std::string UnpackEntries(const std::string& pairPrefix, int k)
 }
 }
 
-std::string vtkHAVSShaders::FaceVertexShader(bool cellScalars)
+std::string vtkHAVSShaders::FaceVertexShader(bool cellScalars, bool isoShade)
 {
   std::string source = vtkHAVSFaceVS;
   Replace(source, "//HAVS::Defines",
-    std::string("#define HAVS_CELL_SCALARS ") + (cellScalars ? "1" : "0") + "\n");
+    std::string("#define HAVS_CELL_SCALARS ") + (cellScalars ? "1" : "0") +
+      "\n#define HAVS_ISO_SHADE " + (isoShade ? "2" : "0") + "\n");
   return source;
 }
 
@@ -268,10 +269,23 @@ std::string vtkHAVSShaders::ResolveShader(int path, int k, bool groupVote, const
       declarations = "layout(r32ui, binding = 0) uniform readonly uimage2D havsListHeads;\n"
                      "layout(std430, binding = 1) readonly buffer HAVSListNodes { uvec4 "
                      "havsNodes[]; };\n"
-                     "uniform int havsNodeCapacity;\n";
+                     "uniform int havsNodeCapacity;\n"
+                     "#if HAVS_ISO_SHADE == 2\n"
+                     "layout(std430, binding = 13) readonly buffer HAVSListGradients { vec4 "
+                     "havsNodeGradients[]; };\n"
+                     "#endif\n"
+                     "HAVS_ENTRY havsListEntry(uvec4 entry, uint node)\n"
+                     "{\n"
+                     "  HAVS_ENTRY e = havsEntry(uintBitsToFloat(entry.x), "
+                     "uintBitsToFloat(entry.y));\n"
+                     "#if HAVS_ISO_SHADE == 2\n"
+                     "  e.g = havsNodeGradients[node].xyz;\n"
+                     "#endif\n"
+                     "  return e;\n"
+                     "}\n";
       std::ostringstream l;
-      l << "E[0] = vec2(HAVS_NO_FRONT, 0.0);\n"
-        << "  for (int i = 1; i < HAVS_K; ++i) { E[i] = vec2(HAVS_EMPTY, 0.0); }\n"
+      l << "E[0] = havsEntry(HAVS_NO_FRONT, 0.0);\n"
+        << "  for (int i = 1; i < HAVS_K; ++i) { E[i] = havsEntry(HAVS_EMPTY, 0.0); }\n"
         << "  uint node = imageLoad(havsListHeads, pixel).r;\n"
         << "  for (uint n = 0u; n < uint(havsNodeCapacity); ++n)\n"
         << "  {\n"
@@ -281,8 +295,7 @@ std::string vtkHAVSShaders::ResolveShader(int path, int k, bool groupVote, const
         << "    uvec4 entry = havsNodes[walking ? node : 0u];\n"
         << "    if (walking)\n"
         << "    {\n"
-        << "      havsInsertBackToFront(color, E, vec2(uintBitsToFloat(entry.x), "
-           "uintBitsToFloat(entry.y)), opaqueDistance);\n"
+        << "      havsInsertBackToFront(color, E, havsListEntry(entry, node), opaqueDistance);\n"
         << "      node = entry.z;\n"
         << "    }\n"
         << "  }\n";

@@ -45,8 +45,11 @@ struct vtkHAVSKBufferShaderFeatures
   bool CellScalars = false;    ///< a fragment carries the scalar of the cell behind it
   bool Clipping = true;        ///< clipping or near planes cut the mesh (a loop over them)
   int Projection = -1;         ///< 0 perspective, 1 parallel, -1 per frame (a uniform)
-  int IsoSurfaces = 0;   ///< 0 none, 1 the isosurface blend, 2 the mixed mode (vtkHAVSIsoSurfaces)
-  bool IsoShade = false; ///< the isosurfaces lit (HAVS_ISO_SHADE: the cell mappers only)
+  int IsoSurfaces = 0; ///< 0 none, 1 the isosurface blend, 2 the mixed mode (vtkHAVSIsoSurfaces)
+  /// The isosurfaces lit (HAVS_ISO_SHADE): 0 no, 1 by the cells' gradient
+  /// fields (the cell mappers), 2 by the gradients the entries carry (HAVS's
+  /// fragment lists).
+  int IsoShade = 0;
 };
 
 class VTKHAVSOPENGL_EXPORT vtkHAVSShaders
@@ -65,7 +68,7 @@ public:
   using Features = vtkHAVSKBufferShaderFeatures;
 
   /// Vertex shader of the passes that rasterize the faces (point or cell scalars).
-  static std::string FaceVertexShader(bool cellScalars = false);
+  static std::string FaceVertexShader(bool cellScalars = false, bool isoShade = false);
   /// Vertex shader of the full-viewport passes.
   static std::string QuadVertexShader();
 

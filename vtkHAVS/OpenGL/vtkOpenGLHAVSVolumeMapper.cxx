@@ -158,6 +158,10 @@ bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request, FrameResult&
   const int geometry = this->GLMesh->UpdateGeometry(request.Mesh);
   result.GeometryUploaded = geometry == vtkHAVSGLMesh::UploadedGeometry;
   result.ScalarsUploaded = geometry == vtkHAVSGLMesh::UploadedScalars;
+  // (Shaded isosurfaces: the points' gradients before the order, which copies
+  // the boundary vertices' ones.)
+  this->GLMesh->UpdateGradients(
+    request.IsoShade ? request.PointGradients : nullptr, request.PointGradientsVersion);
   bool failed = false;
   result.OrderUploaded = this->GLMesh->UpdateFaceOrder(*request.DrawTriangles,
     *request.DrawBoundary, request.Tagging, request.DrawOrderVersion, &failed);

@@ -21,6 +21,12 @@ flat out vec2 havsCellScalars;
 layout(location = 1) in float scalarNormalized; // the point scalar mapped to [0, 1] over the table range
 out float havsScalar;
 #endif
+#if HAVS_ISO_SHADE
+// Shaded isosurfaces: the point's gradient (vtkHAVSPointGradients), interpolated
+// over the face as the point gradients are inside a tetrahedron.
+layout(location = 2) in vec3 gradientMC;
+out vec3 havsGradient;
+#endif
 
 uniform mat4 havsMCRC; // model -> eye-relative world (volume matrix included)
 uniform mat4 havsMCDC; // model -> clip
@@ -34,6 +40,9 @@ void main()
   havsCellScalars = cellScalarsNormalized;
 #else
   havsScalar = scalarNormalized;
+#endif
+#if HAVS_ISO_SHADE
+  havsGradient = gradientMC;
 #endif
   gl_Position = havsMCDC * vec4(vertexMC, 1.0);
 }

@@ -66,6 +66,23 @@
 #define HAVS_ISO_SHADE 0
 #endif
 
+// An entry (see the top): vec2(distance, code). HAVS_ISO_SHADE 2 (HAVS's
+// fragment lists shading isosurfaces) adds the fragment's interpolated point
+// gradient (model coordinates), read where a segment crosses an isovalue.
+#if HAVS_ISO_SHADE == 2
+struct HavsEntry
+{
+  float x; // distance
+  float y; // code
+  vec3 g;  // gradient
+};
+#define HAVS_ENTRY HavsEntry
+#define havsEntry(d, c) HavsEntry(d, c, vec3(0.0))
+#else
+#define HAVS_ENTRY vec2
+#define havsEntry(d, c) vec2(d, c)
+#endif
+
 // The face passes' scalar input (declared with HAVS_FACE_SCALAR_INPUT) and the
 // fragment's scalar, havsFaceScalar(). Point scalars: interpolated across the
 // face. Cell scalars (HAVS_CELL_SCALARS): the face's two cells' values, and the
@@ -168,7 +185,7 @@ float havsScalarOf(float code)
 
 // The order in which fragments leave: distance, ties broken internal < exit
 // < entry (see above); a tie is a difference below float rounding.
-float havsLeaveKey(vec2 e)
+float havsLeaveKey(HAVS_ENTRY e)
 {
   float rank = e.y > 3.5 ? 2.0 : (e.y > 1.5 ? 1.0 : 0.0);
   return e.x + rank * 4.0e-6 * abs(e.x);
@@ -282,6 +299,12 @@ uniform vec3 havsLightDiffuse[HAVS_MAX_LIGHTS];   // colour times intensity
 uniform vec3 havsLightSpecular[HAVS_MAX_LIGHTS];
 uniform vec4 havsShading;      // ambient, diffuse, specular, specular power
 uniform mat3 havsNormalMatrix; // model gradient -> world normal
+vec3 havsShadeToEye = vec3(0.0, 0.0, 1.0);
+#if HAVS_ISO_SHADE == 2
+// (HAVS: the segment's two entries' gradients, set by havsSegment.)
+vec3 havsShadeGradientFrom = vec3(0.0);
+vec3 havsShadeGradientTo = vec3(0.0);
+#else
 layout(std430, binding = 13) readonly buffer HAVSGradientFields
 {
   vec4 havsGradientFields[];
@@ -289,17 +312,32 @@ layout(std430, binding = 13) readonly buffer HAVSGradientFields
 int havsShadeCell = 0;
 vec3 havsShadeFrom = vec3(0.0);
 vec3 havsShadeTo = vec3(0.0);
-vec3 havsShadeToEye = vec3(0.0, 0.0, 1.0);
+#endif
+
+// The direction towards the eye (world) of the pixel at fragCoord.
+vec3 havsPixelToEye(vec2 fragCoord)
+{
+  if (havsParallel != 0)
+  {
+    return -havsDirectionOfProjection;
+  }
+  vec4 p = havsDCRC * vec4(fragCoord / havsViewportSize * 2.0 - 1.0, 0.0, 1.0);
+  return -normalize(p.xyz / p.w);
+}
 
 // The surface of premultiplied colour rgba where the segment is crossed at
 // its share t, lit.
 vec4 havsShadeSurface(vec4 rgba, float t)
 {
+#if HAVS_ISO_SHADE == 2
+  vec3 g = mix(havsShadeGradientFrom, havsShadeGradientTo, t);
+#else
   vec3 p = mix(havsShadeFrom, havsShadeTo, t);
   int row = 3 * havsShadeCell;
   vec3 g = vec3(dot(havsGradientFields[row].xyz, p) + havsGradientFields[row].w,
     dot(havsGradientFields[row + 1].xyz, p) + havsGradientFields[row + 1].w,
     dot(havsGradientFields[row + 2].xyz, p) + havsGradientFields[row + 2].w);
+#endif
   vec3 n = havsNormalMatrix * g;
   float len = length(n);
   if (!(rgba.a > 0.0) || !(len > 0.0) || isinf(len))
@@ -366,8 +404,19 @@ vec4 havsIsoSegment(float sf, float sb, float len)
 }
 #endif
 
+// The entry where the segment from a to b (one cell: scalar and gradient
+// linear) is cut at `distance`, share t of it.
+HAVS_ENTRY havsCut(HAVS_ENTRY a, HAVS_ENTRY b, float distance, float t)
+{
+  HAVS_ENTRY e = havsEntry(distance, mix(havsScalarOf(a.y), havsScalarOf(b.y), t));
+#if HAVS_ISO_SHADE == 2
+  e.g = mix(a.g, b.g, t);
+#endif
+  return e;
+}
+
 // Premultiplied colour and opacity of the segment from a to b.
-vec4 havsSegment(vec2 a, vec2 b)
+vec4 havsSegment(HAVS_ENTRY a, HAVS_ENTRY b)
 {
   float len = b.x - a.x;
   if (havsIsExit(a.y) || !(len > 0.0) || len > havsGapLength)
@@ -381,6 +430,10 @@ vec4 havsSegment(vec2 a, vec2 b)
 #elif HAVS_CELL_SCALARS
   return havsCellSegment(havsScalarOf(a.y), len);
 #elif HAVS_ISO
+#if HAVS_ISO_SHADE == 2
+  havsShadeGradientFrom = a.g;
+  havsShadeGradientTo = b.g;
+#endif
   return havsIsoSegment(havsScalarOf(a.y), havsScalarOf(b.y), len);
 #else
   return havsTableSegment(havsScalarOf(a.y), havsScalarOf(b.y), len);
@@ -392,7 +445,7 @@ vec4 havsSegment(vec2 a, vec2 b)
 // cutting the last segment there with its scalar interpolated. One table
 // look-up either way: a rasterizer that runs both sides of a branch (llvmpipe
 // masks lanes instead of branching) pays for each look-up written.
-void havsAdvance(inout vec4 color, inout vec2 front, vec2 p, float opaqueDistance)
+void havsAdvance(inout vec4 color, inout HAVS_ENTRY front, HAVS_ENTRY p, float opaqueDistance)
 {
   if (front.x == HAVS_DONE)
   {
@@ -418,14 +471,14 @@ void havsAdvance(inout vec4 color, inout vec2 front, vec2 p, float opaqueDistanc
     front.y = p.y < 1.5 ? front.y : havsScalarOf(front.y) + (p.y - havsScalarOf(p.y));
     return;
   }
-  vec2 back = p;
+  HAVS_ENTRY back = p;
 #if HAVS_OPAQUE
   bool reached = p.x > opaqueDistance;
   if (reached)
   {
     // Empty when the surface lies in front of the front (havsSegment: length <= 0).
     float t = clamp((opaqueDistance - front.x) / (p.x - front.x), 0.0, 1.0);
-    back = vec2(opaqueDistance, mix(havsScalarOf(front.y), havsScalarOf(p.y), t));
+    back = havsCut(front, p, opaqueDistance, t);
   }
 #endif
   if (front.x > HAVS_NO_FRONT)
@@ -439,13 +492,13 @@ void havsAdvance(inout vec4 color, inout vec2 front, vec2 p, float opaqueDistanc
   }
 #endif
 #if HAVS_OPAQUE
-  front = reached ? vec2(HAVS_DONE, 0.0) : p;
+  front = reached ? havsEntry(HAVS_DONE, 0.0) : p;
 #else
   front = p;
 #endif
 }
 
-bool havsRayEnded(vec4 color, vec2 front)
+bool havsRayEnded(vec4 color, HAVS_ENTRY front)
 {
   return front.x == HAVS_DONE || color.a >= havsTerminationOpacity;
 }
@@ -465,7 +518,7 @@ bool havsRayEnded(vec4 color, vec2 front)
 // of the hollow sphere: 0.017 to 0.048 at 1 or 2 pixels in three of four views
 // while only internal pairs counted). Other boundary fragments keep the rank
 // order of havsLeaveKey.
-bool havsCellTieLeaves(vec2 e, float eKey, vec2 later, float laterKey)
+bool havsCellTieLeaves(HAVS_ENTRY e, float eKey, HAVS_ENTRY later, float laterKey)
 {
   float margin = (later.y < 1.5 && (e.y < 1.5 || e.y > 3.5)) ? HAVS_CELL_TIE * abs(laterKey) : 0.0;
   return e.x < HAVS_EMPTY && eKey < laterKey + margin;
@@ -475,14 +528,14 @@ bool havsCellTieLeaves(vec2 e, float eKey, vec2 later, float laterKey)
 // The slot (1 … K-1, in arrival order) of the waiting fragment that leaves
 // before the others and before f, HAVS_K when f does: from the latest arrival
 // to the earliest, an earlier one takes the place when havsCellTieLeaves.
-int havsLeavingSlot(vec2 E[HAVS_K], vec2 f)
+int havsLeavingSlot(HAVS_ENTRY E[HAVS_K], HAVS_ENTRY f)
 {
   int slot = HAVS_K;
-  vec2 leaving = f;
+  HAVS_ENTRY leaving = f;
   float leavingKey = havsLeaveKey(f);
   for (int i = HAVS_K - 1; i >= 1; --i)
   {
-    vec2 e = E[i];
+    HAVS_ENTRY e = E[i];
     float key = havsLeaveKey(e);
     bool leaves = havsCellTieLeaves(e, key, leaving, leavingKey);
     slot = leaves ? i : slot;
@@ -505,7 +558,7 @@ int havsLeavingSlot(vec2 E[HAVS_K], vec2 f)
 // this one (combustor 512^2, view 0, k = 2: draw 300 -> 230 ms, same image;
 // havs_gpu_bench on the benchmark's dumped frame).
 void havsInsert(
-  inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float opaqueDistance, float tolerance)
+  inout vec4 color, inout HAVS_ENTRY E[HAVS_K], HAVS_ENTRY f, float opaqueDistance, float tolerance)
 {
 #if HAVS_COUNT_VIOLATIONS
   if (E[0].x > HAVS_NO_FRONT && f.x < E[0].x - tolerance)
@@ -513,11 +566,11 @@ void havsInsert(
     havsCountViolation();
   }
 #endif
-  vec2 leaving = f;
+  HAVS_ENTRY leaving = f;
 #if HAVS_K == 2
   // k = 2 (the default) written out: the loop below, unrolled by hand, still
   // draws 1.15x slower on llvmpipe (same image).
-  vec2 w = E[1];
+  HAVS_ENTRY w = E[1];
   bool empty = w.x >= HAVS_EMPTY;
 #if HAVS_CELL_SCALARS
   bool leaves = havsCellTieLeaves(w, havsLeaveKey(w), f, havsLeaveKey(f));
@@ -562,7 +615,7 @@ void havsInsert(
   bool stored = false; // an empty slot took the carried fragment
   for (int i = 1; i < HAVS_K; ++i)
   {
-    vec2 e = E[i];
+    HAVS_ENTRY e = E[i];
     bool empty = e.x >= HAVS_EMPTY;
     float key = havsLeaveKey(e);
     bool leaves = !stored && !empty && key < leavingKey;
@@ -579,13 +632,13 @@ void havsInsert(
 }
 
 // After the last fragment: the waiting entries leave in depth order.
-void havsFlush(inout vec4 color, inout vec2 E[HAVS_K], float opaqueDistance)
+void havsFlush(inout vec4 color, inout HAVS_ENTRY E[HAVS_K], float opaqueDistance)
 {
   for (int n = 1; n < HAVS_K; ++n)
   {
 #if HAVS_CELL_SCALARS && HAVS_K > 2
     // The same near-tie rule as havsInsert's (no newcomer: an empty one).
-    int nearest = havsLeavingSlot(E, vec2(HAVS_EMPTY, 0.0));
+    int nearest = havsLeavingSlot(E, havsEntry(HAVS_EMPTY, 0.0));
     nearest = nearest == HAVS_K ? 0 : nearest;
 #else
     int nearest = 0;
@@ -656,7 +709,7 @@ bool havsClipRay(vec3 originRC, vec3 dirRC, inout float tLow, inout float tHigh)
 // section's (an entry or an exit by its role). With tagging, a boundary face
 // is drawn with vertices of its own whose scalar is + 2 (vtkHAVSGLMesh): the
 // fragment knows it is on the boundary from its scalar alone.
-vec2 havsFaceEntry(vec3 positionRC, float scalar)
+HAVS_ENTRY havsFaceEntry(vec3 positionRC, float scalar)
 {
   float code;
 #if HAVS_TAGGING
@@ -677,7 +730,7 @@ vec2 havsFaceEntry(vec3 positionRC, float scalar)
       code += 2.0;
     }
   }
-  return vec2(havsDistance(positionRC), code);
+  return havsEntry(havsDistance(positionRC), code);
 }
 
 // Back to front, for the fragment-list resolve: a pixel's list comes out in
@@ -687,7 +740,7 @@ vec2 havsFaceEntry(vec3 positionRC, float scalar)
 // and the segment from it to the back is composited under ("under" operator
 // reversed: the new segment goes in front). Exact when the fragments leave in
 // depth order, in particular for any list no longer than HAVS_K - 1.
-void havsRetreat(inout vec4 color, inout vec2 back, vec2 p, float opaqueDistance)
+void havsRetreat(inout vec4 color, inout HAVS_ENTRY back, HAVS_ENTRY p, float opaqueDistance)
 {
 #if HAVS_COUNT_VIOLATIONS
   if (back.x > HAVS_NO_FRONT && p.x > back.x + HAVS_TIE * abs(back.x))
@@ -705,11 +758,11 @@ void havsRetreat(inout vec4 color, inout vec2 back, vec2 p, float opaqueDistance
   }
   if (back.x > HAVS_NO_FRONT && p.x < opaqueDistance)
   {
-    vec2 b = back;
+    HAVS_ENTRY b = back;
     if (back.x > opaqueDistance)
     {
       float t = clamp((opaqueDistance - p.x) / (back.x - p.x), 0.0, 1.0);
-      b = vec2(opaqueDistance, mix(havsScalarOf(p.y), havsScalarOf(back.y), t));
+      b = havsCut(p, back, opaqueDistance, t);
     }
     vec4 segment = havsSegment(p, b);
     color = segment + (1.0 - segment.a) * color;
@@ -722,7 +775,7 @@ void havsRetreat(inout vec4 color, inout vec2 back, vec2 p, float opaqueDistance
 // the one to leave after it, within HAVS_GRAZE) takes the exit's role, so the
 // segment behind it is empty, as front to back. (The fragment-list resolve:
 // blunt fin, 1024^2, view 0, pixel (524, 363) was 0.142 off without it.)
-vec2 havsGrazeRole(vec2 leaving, vec2 next)
+HAVS_ENTRY havsGrazeRole(HAVS_ENTRY leaving, HAVS_ENTRY next)
 {
 #if HAVS_TAGGING
   if (next.x < HAVS_EMPTY && havsIsExit(next.y) && leaving.y < 1.5 &&
@@ -734,12 +787,12 @@ vec2 havsGrazeRole(vec2 leaving, vec2 next)
   return leaving;
 }
 
-void havsInsertBackToFront(inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float opaqueDistance)
+void havsInsertBackToFront(inout vec4 color, inout HAVS_ENTRY E[HAVS_K], HAVS_ENTRY f, float opaqueDistance)
 {
-  vec2 leaving = f;
+  HAVS_ENTRY leaving = f;
   int farthest = 0;
   float leavingKey = havsLeaveKey(f);
-  vec2 next = vec2(HAVS_EMPTY, 0.0); // the farthest of those that stay
+  HAVS_ENTRY next = havsEntry(HAVS_EMPTY, 0.0); // the farthest of those that stay
   float nextKey = HAVS_NO_FRONT;
   for (int i = 1; i < HAVS_K; ++i)
   {
@@ -770,7 +823,7 @@ void havsInsertBackToFront(inout vec4 color, inout vec2 E[HAVS_K], vec2 f, float
   havsRetreat(color, E[0], havsGrazeRole(leaving, next), opaqueDistance);
 }
 
-void havsFlushBackToFront(inout vec4 color, inout vec2 E[HAVS_K], float opaqueDistance)
+void havsFlushBackToFront(inout vec4 color, inout HAVS_ENTRY E[HAVS_K], float opaqueDistance)
 {
   for (int n = 1; n < HAVS_K; ++n)
   {
@@ -796,7 +849,7 @@ void havsFlushBackToFront(inout vec4 color, inout vec2 E[HAVS_K], float opaqueDi
     {
       return;
     }
-    vec2 next = second > 0 ? E[second] : vec2(HAVS_EMPTY, 0.0);
+    HAVS_ENTRY next = second > 0 ? E[second] : havsEntry(HAVS_EMPTY, 0.0);
     havsRetreat(color, E[0], havsGrazeRole(E[farthest], next), opaqueDistance);
     E[farthest].x = HAVS_EMPTY;
   }

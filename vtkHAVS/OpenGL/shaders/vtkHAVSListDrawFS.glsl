@@ -12,6 +12,14 @@ in vec3 havsPositionRC;
 HAVS_FACE_SCALAR_INPUT
 
 uniform int havsNodeCapacity;
+#if HAVS_ISO_SHADE
+// Shaded isosurfaces: each node's interpolated point gradient beside it.
+in vec3 havsGradient;
+layout(std430, binding = 13) buffer HAVSListGradients
+{
+  vec4 havsNodeGradients[];
+};
+#endif
 
 layout(r32ui, binding = 0) uniform coherent uimage2D havsListHeads;
 
@@ -30,11 +38,14 @@ void main()
   {
     discard;
   }
-  vec2 f = havsFaceEntry(havsPositionRC, havsFaceScalar());
+  HAVS_ENTRY f = havsFaceEntry(havsPositionRC, havsFaceScalar());
   uint node = atomicAdd(havsNodeCount, 1u);
   if (node < uint(havsNodeCapacity))
   {
     uint next = imageAtomicExchange(havsListHeads, ivec2(gl_FragCoord.xy), node);
     havsNodes[node] = uvec4(floatBitsToUint(f.x), floatBitsToUint(f.y), next, 0u);
+#if HAVS_ISO_SHADE
+    havsNodeGradients[node] = vec4(havsGradient, 0.0);
+#endif
   }
 }

@@ -17,7 +17,10 @@ void main()
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float opaqueDistance = havsOpaqueDistance(gl_FragCoord.xy);
   vec4 color = vec4(0.0);
-  vec2 E[HAVS_K];
+  HAVS_ENTRY E[HAVS_K];
+#if HAVS_ISO_SHADE == 2
+  havsShadeToEye = havsPixelToEye(gl_FragCoord.xy);
+#endif
   //HAVS::ResolveLoad
 #ifdef HAVS_BACK_TO_FRONT
   havsFlushBackToFront(color, E, opaqueDistance);
