@@ -106,6 +106,7 @@
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
+#include "vtkLightCollection.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkMultiBlockPLOT3DReader.h"
 #include "vtkNew.h"
@@ -278,25 +279,31 @@ double PeakMegabytes()
   return usage.ru_maxrss / 1024.0;
 }
 
-/// The isosurfaces of the iso-* and isomix-* configurations: none, the
-/// isosurface blend, or isosurfaces inside the composite volume.
+/// The isosurfaces of the iso-*, isomix-* and isoshade-* configurations:
+/// none, the isosurface blend, isosurfaces inside the composite volume, or
+/// the isosurface blend shaded (the property's ShadeOn, the renderer's light).
 enum IsoMode
 {
   NoIsoSurfaces = 0,
   IsoSurfaceBlend = 1,
-  IsoSurfacesInComposite = 2
+  IsoSurfacesInComposite = 2,
+  IsoSurfaceBlendShaded = 3
 };
 
-/// The isosurface mode a configuration's name asks for (iso-*, isomix-*)
-/// and, in `prefix`, the length of that prefix (0: none).
+/// The isosurface mode a configuration's name asks for (iso-*, isomix-*,
+/// isoshade-*) and, in `prefix`, the length of that prefix (0: none).
 IsoMode IsoModeOf(const std::string& config, size_t* prefix = nullptr)
 {
   const IsoMode mode = config.rfind("iso-", 0) == 0 ? IsoSurfaceBlend
     : config.rfind("isomix-", 0) == 0               ? IsoSurfacesInComposite
+    : config.rfind("isoshade-", 0) == 0             ? IsoSurfaceBlendShaded
                                                     : NoIsoSurfaces;
   if (prefix)
   {
-    *prefix = mode == IsoSurfaceBlend ? 4 : mode == IsoSurfacesInComposite ? 7 : 0;
+    *prefix = mode == IsoSurfaceBlend  ? 4
+      : mode == IsoSurfacesInComposite ? 7
+      : mode == IsoSurfaceBlendShaded  ? 9
+                                       : 0;
   }
   return mode;
 }
@@ -313,7 +320,8 @@ size_t TranslucentPrefix(const std::string& config)
 /// `layers`, the translucent plane's peeled layers as events along the rays).
 std::vector<float> ReferenceImage(const Options& o, const std::string& dataset,
   vtkUnstructuredGrid* grid, vtkVolumeProperty* property, vtkCamera* camera, int view,
-  bool* computed = nullptr, int iso = NoIsoSurfaces, vtkHAVSTranslucentLayers* layers = nullptr)
+  bool* computed = nullptr, int iso = NoIsoSurfaces, vtkHAVSTranslucentLayers* layers = nullptr,
+  vtkLightCollection* lights = nullptr)
 {
   if (computed)
   {
@@ -324,6 +332,7 @@ std::vector<float> ReferenceImage(const Options& o, const std::string& dataset,
   key << o.CacheDir << "/" << dataset << "_" << kPropertyVersion << "_v" << view << "_" << o.Size
       << (iso == IsoSurfaceBlend             ? "_iso"
              : iso == IsoSurfacesInComposite ? "_isomix"
+             : iso == IsoSurfaceBlendShaded  ? "_isoshade"
                                              : "")
       << (layers ? "_translucent1" : "") << ".f32";
   std::vector<float> image(values);
@@ -337,11 +346,12 @@ std::vector<float> ReferenceImage(const Options& o, const std::string& dataset,
   reference->SetProperty(property);
   reference->SetCamera(camera);
   reference->SetSize(o.Size, o.Size);
-  if (iso == IsoSurfaceBlend)
+  if (iso == IsoSurfaceBlend || iso == IsoSurfaceBlendShaded)
   {
     reference->SetBlendMode(vtkHAVSMapperBase::ISOSURFACE_BLEND);
   }
   reference->SetIsoSurfacesInComposite(iso == IsoSurfacesInComposite);
+  reference->SetLights(lights);
   for (int i = 0; layers && i < layers->GetNumberOfLayers(); ++i)
   {
     vtkNew<vtkFloatArray> depth, rgba;
@@ -383,46 +393,12 @@ std::vector<uint8_t> FoldedPixels(const Options& o, const std::string& dataset,
   {
     return {};
   }
-  std::fill(mask.begin(), mask.end(), 0);
   vtkNew<vtkHAVSReferenceRenderer> reference;
   reference->SetInputData(grid);
   reference->SetProperty(MakeProperty(grid));
   reference->SetCamera(camera);
   reference->SetSize(o.Size, o.Size);
-  vtkNew<vtkHAVSVisibilityOrder> order;
-  if (reference->ComputeFragments() && order->Build(reference->GetFaceSet(), grid) &&
-    order->GetNumberOfFoldedFaces() > 0)
-  {
-    const vtkIdType faces = reference->GetFaceSet()->GetNumberOfFaces();
-    std::vector<uint8_t> foldedCell(static_cast<size_t>(grid->GetNumberOfCells()), 0);
-    for (vtkIdType f = 0; f < faces; ++f)
-    {
-      if (order->IsFaceFolded(f))
-      {
-        vtkIdType c[2];
-        order->GetFaceTetrahedra(f, c);
-        foldedCell[c[0]] = 1;
-        if (c[1] >= 0)
-        {
-          foldedCell[c[1]] = 1;
-        }
-      }
-    }
-    for (size_t p = 0; p < pixels; ++p)
-    {
-      const vtkIdType pixel = static_cast<vtkIdType>(p);
-      for (auto* f = reference->GetPixelFragmentsBegin(pixel);
-           f != reference->GetPixelFragmentsEnd(pixel) && !mask[p]; ++f)
-      {
-        if (f->Face < static_cast<uint32_t>(faces))
-        {
-          vtkIdType c[2];
-          order->GetFaceTetrahedra(f->Face, c);
-          mask[p] = foldedCell[c[0]] || (c[1] >= 0 && foldedCell[c[1]]) ? 1 : 0;
-        }
-      }
-    }
-  }
+  reference->ComputeFoldedPixels(mask);
   std::system(("mkdir -p '" + o.CacheDir + "'").c_str());
   std::ofstream(key.str(), std::ios::binary)
     .write(reinterpret_cast<const char*>(mask.data()), pixels);
@@ -893,6 +869,10 @@ int RunWorker(const Options& o)
     property->GetIsoSurfaceValues()->SetNumberOfContours(2);
     property->GetIsoSurfaceValues()->SetValue(0, range[0] + 0.35 * (range[1] - range[0]));
     property->GetIsoSurfaceValues()->SetValue(1, range[0] + 0.65 * (range[1] - range[0]));
+    // isoshade-*: lit by the renderer's headlight (the property's default
+    // coefficients but for the specular's).
+    property->SetShade(iso == IsoSurfaceBlendShaded ? 1 : 0);
+    property->SetSpecular(0.3);
   }
 
   std::vector<double> frame, sort, gather, draw, flush, composite, upload, readback, layers;
@@ -1152,7 +1132,7 @@ int RunWorker(const Options& o)
     }
     if (iso != NoIsoSurfaces)
     {
-      if (iso == IsoSurfaceBlend)
+      if (iso == IsoSurfaceBlend || iso == IsoSurfaceBlendShaded)
       {
         base->SetBlendMode(vtkHAVSMapperBase::ISOSURFACE_BLEND);
       }
@@ -1326,7 +1306,8 @@ int RunWorker(const Options& o)
         vtkNew<vtkFloatArray> rgba;
         window->GetRGBAPixelData(0, 0, o.Size - 1, o.Size - 1, 0, rgba);
         const std::vector<float> exact = ReferenceImage(o, dataset, grid, property, camera, view,
-          nullptr, iso, translucentPrefix > 0 ? intermix->GetLayers() : nullptr);
+          nullptr, iso, translucentPrefix > 0 ? intermix->GetLayers() : nullptr,
+          iso == IsoSurfaceBlendShaded ? renderer->GetLights() : nullptr);
         const std::vector<uint8_t> folded = FoldedPixels(o, dataset, grid, camera, view, false);
         if (folded.empty())
         {
@@ -1835,7 +1816,8 @@ bool IsIsoRun(const Row& r)
     (r.count("command") &&
       (r.at("command").find(",iso-") != std::string::npos ||
         r.at("command").find(" iso-") != std::string::npos ||
-        r.at("command").find("isomix-") != std::string::npos));
+        r.at("command").find("isomix-") != std::string::npos ||
+        r.at("command").find("isoshade-") != std::string::npos));
 }
 
 /// A row of a translucent run (issue 46: its translucent-* rows, the rows
@@ -2090,6 +2072,7 @@ std::string IsoReport(const std::vector<Row>& allRows)
     }
     const Row* iso = FindRow(rows, r, "iso-" + config);
     const Row* mixed = FindRow(rows, r, "isomix-" + config);
+    const Row* shaded = FindRow(rows, r, "isoshade-" + config);
     const double composite = Value(r, "ms_median");
     auto ratio = [composite](const Row* x)
     {
@@ -2103,7 +2086,8 @@ std::string IsoReport(const std::vector<Row>& allRows)
           << Cell(r, "ms_median", "%.1f") << " | " << Cell(*iso, "ms_median", "%.1f") << " | "
           << ratio(iso) << " | " << error(iso) << " | "
           << (mixed ? Cell(*mixed, "ms_median", "%.1f") : "-") << " | " << ratio(mixed) << " | "
-          << error(mixed) << " |\n";
+          << error(mixed) << " | " << (shaded ? Cell(*shaded, "ms_median", "%.1f") : "-") << " | "
+          << ratio(shaded) << " | " << error(shaded) << " |\n";
   }
   if (table.str().empty())
   {
@@ -2115,15 +2099,19 @@ std::string IsoReport(const std::vector<Row>& allRows)
         "two isovalues, at 35 % and 65 % of the scalar range, in the volume property's "
         "`GetIsoSurfaceValues()`): each crossing takes the transfer functions' colour and "
         "opacity at its value, nothing between. isomix-<configuration>: the composite volume "
-        "with the same isosurfaces inside (`IsoSurfacesInComposite`). Times as above (medians "
+        "with the same isosurfaces inside (`IsoSurfacesInComposite`). isoshade-<configuration>: "
+        "the isosurface blend lit (`ShadeOn`, the renderer's headlight; normals of the "
+        "interpolated point gradients; HAVS takes its fragment-list path for them). Times as "
+        "above (medians "
         "over the views); the ratios are against the same configuration's composite frame in "
         "the same run. Error: the float result against the exact reference of the same mode "
         "(vtkHAVSReferenceRenderer's isosurface events), RMSE / max (MISSION.md's exact: "
         "RMSE < 5e-4, max < 0.01).\n\n"
      << "| data set | size | configuration | composite ms | isosurfaces ms | iso / composite | "
         "iso float RMSE / max | composite with isosurfaces ms | mixed / composite | mixed "
-        "float RMSE / max |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|\n"
+        "float RMSE / max | shaded isosurfaces ms | shaded / composite | shaded float RMSE / "
+        "max |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n"
      << table.str();
   return md.str();
 }

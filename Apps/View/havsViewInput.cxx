@@ -133,6 +133,10 @@ void Input::Key(const std::string& key)
   {
     action = this->TheScene.ToggleTranslucentPlane();
   }
+  else if (key == "g")
+  {
+    action = this->TheScene.ToggleShading();
+  }
   else if (key == "v")
   {
     action = this->TheScene.ToggleViolationCount();

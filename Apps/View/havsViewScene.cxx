@@ -355,6 +355,15 @@ std::string Scene::ToggleIsoSurfacesInComposite()
 }
 
 //------------------------------------------------------------------------------
+std::string Scene::ToggleShading()
+{
+  // The property's ShadeOn: the project's mappers light their isosurfaces
+  // (the volume between them stays unshaded); VTK's mappers shade as they do.
+  this->Property->SetShade(this->Property->GetShade() ? 0 : 1);
+  return std::string("isosurfaces shaded: ") + (this->Property->GetShade() ? "on" : "off");
+}
+
+//------------------------------------------------------------------------------
 std::string Scene::ToggleTranslucentPlane()
 {
   if (this->Plane)
@@ -579,7 +588,7 @@ std::string Scene::KeyHelp()
          "o  next order (centroid, MPVO, automatic)\n"
          "m  next mapper (HAVS, HAVS cell projection, PT, ZSweep, RayCast)\n"
          "b  next blend mode (composite, maximum, minimum, additive, isosurfaces)\n"
-         "i  isosurfaces in the volume on/off\n"
+         "i  isosurfaces in the volume on/off  g  isosurfaces shaded on/off\n"
          "p  a translucent plane through the mesh on/off (intermixed)\n"
          "l  level of detail on/off       c  next colour map\n"
          "v  count order violations on/off\n"

@@ -78,6 +78,7 @@ public:
   std::string ToggleLevelOfDetail();
   std::string ToggleIsoSurfacesInComposite();
   std::string ToggleTranslucentPlane();
+  std::string ToggleShading();
   std::string ToggleViolationCount();
   std::string NextColorPreset();
   std::string ToggleOverlay();

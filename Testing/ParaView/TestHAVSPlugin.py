@@ -382,6 +382,29 @@ if args.mode == "serial":
                   and control > 5 * rmse,
                   "%s, %s: RMSE %.5f (max %.4f) against the reference; control, values 1 %% "
                   "off: %.5f" % (name, label, rmse, worst, control))
+    # Shaded (the panel's Shade isosurfaces and its coefficients): lit by the view's lights
+    # (ParaView's light kit), against the reference lit by the same lights. Control: unshaded.
+    display.HAVSBlendMode = "Isosurface"
+    display.HAVSIsosurfacesInComposite = 0
+    display.HAVSShade = 1
+    shade = (0.2, 0.7, 0.3, 12.0)
+    display.HAVSAmbient, display.HAVSDiffuse, display.HAVSSpecular, display.HAVSSpecularPower = \
+        shade
+    unlit = reference_rgb(grid, lut, pwf, unit, camera, blend=5, isovalues=values)
+    for name in ("HAVS", "HAVS Ray Cast", "HAVS Cell Projection"):
+        display.HAVSMapper = name
+        Render(view)
+        lights = view.GetRenderer().GetLights()
+        exact = reference_rgb(grid, lut, pwf, unit, camera, blend=5, isovalues=values,
+                              shade=shade, lights=lights)
+        shot = os.path.join(args.out, "havs_plugin_iso_shaded_%s.png" % name.replace(" ", "_"))
+        SaveScreenshot(shot, view, ImageResolution=[SIZE, SIZE])
+        rmse, worst = compare(png_rgb(shot), exact)
+        control, _ = compare(png_rgb(shot), unlit)
+        check(lights.GetNumberOfItems() > 0 and rmse < 0.01 and control > 5 * rmse,
+              "%s, shaded isosurfaces (%d lights): RMSE %.5f (max %.4f) against the reference; "
+              "control, unshaded: %.5f" % (name, lights.GetNumberOfItems(), rmse, worst, control))
+    display.HAVSShade = 0
     display.HAVSBlendMode = "Composite"
     display.HAVSIsosurfacesInComposite = 0
     display.HAVSIsosurfaceValues = []

@@ -182,14 +182,22 @@ def compare(a, b):
 
 
 def reference_image(grid, lut, pwf, unit_distance, camera, size=SIZE, blend=0, isovalues=(),
-                    mixed=False):
+                    mixed=False, shade=None, lights=None):
     """The exact image (vtkHAVSReferenceRenderer) of `grid` with ParaView's colour and opacity
     maps: premultiplied RGBA, size x size tuples, bottom row first. `blend`: vtkVolumeMapper's
-    blend mode (5: the isosurfaces `isovalues`); `mixed`: the composite with them inside."""
+    blend mode (5: the isosurfaces `isovalues`); `mixed`: the composite with them inside;
+    `shade`: (ambient, diffuse, specular, specular power) to light the isosurfaces by
+    `lights` (a vtkLightCollection)."""
     prop = vtkVolumeProperty()
     prop.SetColor(lut.GetClientSideObject())
     prop.SetScalarOpacity(pwf.GetClientSideObject())
     prop.SetScalarOpacityUnitDistance(unit_distance)
+    if shade:
+        prop.ShadeOn()
+        prop.SetAmbient(shade[0])
+        prop.SetDiffuse(shade[1])
+        prop.SetSpecular(shade[2])
+        prop.SetSpecularPower(shade[3])
     for i, value in enumerate(isovalues):
         prop.GetIsoSurfaceValues().SetValue(i, value)
     reference = vtkhavs.vtkHAVSReferenceRenderer()
@@ -199,6 +207,8 @@ def reference_image(grid, lut, pwf, unit_distance, camera, size=SIZE, blend=0, i
     reference.SetSize(size, size)
     reference.SetBlendMode(blend)
     reference.SetIsoSurfacesInComposite(mixed)
+    if lights is not None:
+        reference.SetLights(lights)
     reference.Render()
     return reference.GetImage()
 

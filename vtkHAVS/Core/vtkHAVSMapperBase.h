@@ -113,10 +113,11 @@ public:
    * once). With the property's ShadeOn the surfaces are lit by the
    * renderer's lights with the normals of the interpolated point gradients
    * (vtkHAVSIsoSurfaces::Shade, vtkHAVSPointGradients) where the mapper
-   * CanShadeIsoSurfaces() (the ray caster and the cell projection; HAVS draws
-   * them unshaded, warned once: its k-buffer keeps no gradients); the volume
-   * between them stays unshaded. Cell scalars have no crossings inside a
-   * cell: nothing is drawn (warned once).
+   * CanShadeIsoSurfaces() (all three: the ray caster and the cell projection
+   * from each cell's gradient field, HAVS on its fragment-list path, whose
+   * nodes carry the fragments' gradients); the volume between them stays
+   * unshaded. Cell scalars have no crossings inside a cell: nothing is drawn
+   * (warned once).
    *
    * IsoSurfacesInComposite (off by default): under the composite blend the
    * same surfaces are drawn inside the volume (the thesis' mixed mode): each

@@ -16,6 +16,7 @@
 #include "vtkHAVSPointGradients.h"
 #include "vtkHAVSPreIntegrationTable.h"
 #include "vtkHAVSTetrahedralizer.h"
+#include "vtkHAVSVisibilityOrder.h"
 
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -151,6 +152,54 @@ void vtkHAVSReferenceRenderer::SetVolumeMatrix(vtkMatrix4x4* matrix)
     this->VolumeMatrix->Identity();
   }
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkHAVSReferenceRenderer::ComputeFoldedPixels(std::vector<uint8_t>& mask)
+{
+  const vtkIdType pixels = static_cast<vtkIdType>(this->Size[0]) * this->Size[1];
+  mask.assign(static_cast<size_t>(std::max<vtkIdType>(pixels, 0)), 0);
+  if ((this->Fragments.empty() || this->PixelStart.size() != static_cast<size_t>(pixels) + 1) &&
+    !this->ComputeFragments())
+  {
+    return 0;
+  }
+  vtkNew<vtkHAVSVisibilityOrder> order;
+  if (!order->Build(this->Faces, this->Input) || order->GetNumberOfFoldedFaces() == 0)
+  {
+    return 0;
+  }
+  const vtkIdType faces = this->Faces->GetNumberOfFaces();
+  std::vector<uint8_t> foldedCell(static_cast<size_t>(this->Input->GetNumberOfCells()), 0);
+  for (vtkIdType f = 0; f < faces; ++f)
+  {
+    if (order->IsFaceFolded(f))
+    {
+      vtkIdType c[2];
+      order->GetFaceTetrahedra(f, c);
+      foldedCell[c[0]] = 1;
+      if (c[1] >= 0)
+      {
+        foldedCell[c[1]] = 1;
+      }
+    }
+  }
+  vtkIdType count = 0;
+  for (vtkIdType p = 0; p < pixels; ++p)
+  {
+    for (const Fragment* f = this->GetPixelFragmentsBegin(p);
+         f != this->GetPixelFragmentsEnd(p) && !mask[p]; ++f)
+    {
+      if (f->Face < static_cast<uint32_t>(faces))
+      {
+        vtkIdType c[2];
+        order->GetFaceTetrahedra(f->Face, c);
+        mask[p] = foldedCell[c[0]] || (c[1] >= 0 && foldedCell[c[1]]) ? 1 : 0;
+      }
+    }
+    count += mask[p];
+  }
+  return count;
 }
 
 //------------------------------------------------------------------------------

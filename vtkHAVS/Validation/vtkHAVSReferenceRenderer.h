@@ -218,6 +218,16 @@ public:
   /// Pixels whose ray started inside the mesh at a plane, in the last frame.
   vtkGetMacro(NumberOfStartedInside, vtkIdType);
 
+  /**
+   * MISSION.md's folded pixels: those whose ray crosses a folded cell (one of
+   * the two tetrahedra of an internal face with both on one side: an inverted
+   * cell and the cell it overlaps, vtkHAVSVisibilityOrder), where no image is
+   * exact. `mask` (Size pixels, bottom row first) gets 1 there; returns how
+   * many (0 for a mesh without folds). Uses the fragments of the last
+   * ComputeFragments() or Render() (computes them when there are none).
+   */
+  vtkIdType ComputeFoldedPixels(std::vector<uint8_t>& mask);
+
   /// One hit of a pixel's ray with a face.
   struct Fragment
   {

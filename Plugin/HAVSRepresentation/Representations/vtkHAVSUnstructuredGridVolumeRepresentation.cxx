@@ -489,6 +489,36 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetIsosurfaceValue(int i, doub
   this->Modified();
 }
 
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSShade(int on)
+{
+  this->Property->SetShade(on != 0 ? 1 : 0);
+  this->Modified();
+}
+
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSAmbient(double value)
+{
+  this->Property->SetAmbient(value);
+  this->Modified();
+}
+
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSDiffuse(double value)
+{
+  this->Property->SetDiffuse(value);
+  this->Modified();
+}
+
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSSpecular(double value)
+{
+  this->Property->SetSpecular(value);
+  this->Modified();
+}
+
+void vtkHAVSUnstructuredGridVolumeRepresentation::SetHAVSSpecularPower(double value)
+{
+  this->Property->SetSpecularPower(value);
+  this->Modified();
+}
+
 double vtkHAVSUnstructuredGridVolumeRepresentation::GetHAVSLastLODFraction()
 {
   return this->HAVSMapper->GetLastFrameStatistics()->GetLevelOfDetailFraction();

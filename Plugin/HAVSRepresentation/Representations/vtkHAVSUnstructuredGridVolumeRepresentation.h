@@ -156,6 +156,17 @@ public:
   void SetHAVSIntermixTranslucentGeometry(int on);
   void SetNumberOfIsosurfaces(int count);
   void SetIsosurfaceValue(int i, double value);
+  /**
+   * The isosurfaces lit (the volume property's Shade and its lighting
+   * coefficients; vtkHAVSIsoSurfaces::Shade): the view's lights, the normal
+   * of the interpolated point gradients, for the three mappers. The volume
+   * between them stays unshaded.
+   */
+  void SetHAVSShade(int on);
+  void SetHAVSAmbient(double value);
+  void SetHAVSDiffuse(double value);
+  void SetHAVSSpecular(double value);
+  void SetHAVSSpecularPower(double value);
   ///@}
 
   /// The order violations of the last frame this rank rendered (counted when
