@@ -83,6 +83,29 @@ std::vector<float> BothShow(const std::vector<float>& image, const std::vector<f
   return kept;
 }
 
+/// How many pixels of `image` are the colour `surface` (1e-5), empty (1e-6), or neither.
+struct PlanePixels
+{
+  size_t OnSurface = 0, Empty = 0, Other = 0;
+};
+PlanePixels CountPlanePixels(const std::vector<float>& image, const double surface[4])
+{
+  PlanePixels n;
+  for (size_t p = 0; p + 3 < image.size(); p += 4)
+  {
+    double toSurface = 0.0, toEmpty = 0.0;
+    for (int c = 0; c < 4; ++c)
+    {
+      toSurface = std::max(toSurface, std::fabs(image[p + c] - surface[c]));
+      toEmpty = std::max(toEmpty, std::fabs(static_cast<double>(image[p + c])));
+    }
+    n.OnSurface += toSurface < 1e-5 ? 1 : 0;
+    n.Empty += toEmpty < 1e-6 ? 1 : 0;
+    n.Other += toSurface >= 1e-5 && toEmpty >= 1e-6 ? 1 : 0;
+  }
+  return n;
+}
+
 /// The exact image under `blend` (the mixed mode with `mixed`).
 std::vector<float> Reference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
   vtkCamera* camera, int size, int blend, bool mixed)
@@ -115,19 +138,8 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
     havstest::PlaceCamera(s.Renderer, 25.0, 35.0, false);
     s.Window->Render();
     const std::vector<float> image = havstest::FloatResult(mapper);
-    size_t onSurface = 0, empty = 0, other = 0;
-    for (size_t p = 0; p + 3 < image.size(); p += 4)
-    {
-      double toSurface = 0.0, toEmpty = 0.0;
-      for (int c = 0; c < 4; ++c)
-      {
-        toSurface = std::max(toSurface, std::fabs(image[p + c] - surface[c]));
-        toEmpty = std::max(toEmpty, std::fabs(static_cast<double>(image[p + c])));
-      }
-      onSurface += toSurface < 1e-5 ? 1 : 0;
-      empty += toEmpty < 1e-6 ? 1 : 0;
-      other += toSurface >= 1e-5 && toEmpty >= 1e-6 ? 1 : 0;
-    }
+    const PlanePixels n = CountPlanePixels(image, surface);
+    const size_t onSurface = n.OnSurface, empty = n.Empty, other = n.Other;
     std::printf("%s: the plane z = 0.55 (colour %.4f %.4f %.4f, opacity %.4f): %zu pixels on it, "
                 "%zu empty, %zu other\n",
       name.c_str(), surface[0], surface[1], surface[2], surface[3], onSurface, empty, other);
@@ -171,18 +183,8 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
       lit[c] = std::min(1.0, std::max(0.0, value)) * a;
     }
     const double* expected = lit;
-    size_t onSurface = 0, other = 0;
-    for (size_t p = 0; p + 3 < image.size(); p += 4)
-    {
-      double toSurface = 0.0, toEmpty = 0.0;
-      for (int c = 0; c < 4; ++c)
-      {
-        toSurface = std::max(toSurface, std::fabs(image[p + c] - expected[c]));
-        toEmpty = std::max(toEmpty, std::fabs(static_cast<double>(image[p + c])));
-      }
-      onSurface += toSurface < 1e-5 ? 1 : 0;
-      other += toSurface >= 1e-5 && toEmpty >= 1e-6 ? 1 : 0;
-    }
+    const PlanePixels n = CountPlanePixels(image, expected);
+    const size_t onSurface = n.OnSurface, other = n.Other;
     std::printf("%s: the plane z = 0.55 shaded (n.l %.4f): expected %.4f %.4f %.4f (unshaded "
                 "%.4f %.4f %.4f): %zu pixels on it, %zu other\n",
       name.c_str(), nl, expected[0], expected[1], expected[2], surface[0], surface[1], surface[2],

@@ -18,10 +18,19 @@ VTK_ABI_NAMESPACE_BEGIN
 
 namespace
 {
-/// Tetrahedron t's corners (double) and its edge matrix (rows x_i - x_0).
+/// A tetrahedron's corners (double) and its edge matrix (rows x_i - x_0);
+/// false for a point id out of range.
 template <class T>
-void Corners(const std::vector<T>& points, const uint32_t* ids, double x[4][3], double e[3][3])
+bool Corners(const std::vector<T>& points, size_t numberOfPoints, const uint32_t* ids,
+  double x[4][3], double e[3][3])
 {
+  for (int v = 0; v < 4; ++v)
+  {
+    if (ids[v] >= numberOfPoints)
+    {
+      return false;
+    }
+  }
   for (int v = 0; v < 4; ++v)
   {
     for (int k = 0; k < 3; ++k)
@@ -36,6 +45,7 @@ void Corners(const std::vector<T>& points, const uint32_t* ids, double x[4][3], 
       e[i][k] = x[i + 1][k] - x[0][k];
     }
   }
+  return true;
 }
 
 /// Whether a tetrahedron with edge matrix `e` has a volume worth solving
@@ -64,17 +74,11 @@ void ComputeGradients(const std::vector<T>& points, const std::vector<T>& scalar
       for (vtkIdType t = begin; t < end; ++t)
       {
         const uint32_t* ids = &tets[4 * static_cast<size_t>(t)];
-        bool valid = true;
-        for (int v = 0; v < 4; ++v)
-        {
-          valid = valid && ids[v] < numberOfPoints;
-        }
-        if (!valid)
+        double x[4][3], e[3][3];
+        if (!Corners(points, numberOfPoints, ids, x, e))
         {
           continue;
         }
-        double x[4][3], e[3][3];
-        Corners(points, ids, x, e);
         const double det = vtkMath::Determinant3x3(e);
         if (!Solvable(e, det))
         {
@@ -158,17 +162,11 @@ void vtkHAVSPointGradients::ComputeFields(const std::vector<float>& points,
       for (vtkIdType t = begin; t < end; ++t)
       {
         const uint32_t* ids = &tets[4 * static_cast<size_t>(t)];
-        bool valid = true;
-        for (int v = 0; v < 4; ++v)
-        {
-          valid = valid && ids[v] < numberOfPoints;
-        }
-        if (!valid)
+        double x[4][3], e[3][3], g[4][3];
+        if (!Corners(points, numberOfPoints, ids, x, e))
         {
           continue;
         }
-        double x[4][3], e[3][3], g[4][3];
-        Corners(points, ids, x, e);
         for (int v = 0; v < 4; ++v)
         {
           for (int k = 0; k < 3; ++k)
