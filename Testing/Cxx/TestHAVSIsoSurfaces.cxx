@@ -156,6 +156,8 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
     property->SetDiffuse(0.7);
     property->SetSpecular(0.4);
     property->SetSpecularPower(8.0);
+    vtkNew<vtkCamera> parallel; // (PlaceCamera turns the camera it is given)
+    s.Renderer->SetActiveCamera(parallel);
     havstest::PlaceCamera(s.Renderer, 25.0, 35.0, true);
     s.Window->Render();
     s.Window->Render(); // (the headlight placed at the camera)
