@@ -17,6 +17,8 @@
 //   centroid of every internal face (continuous); control: each
 //   tetrahedron's own constant gradient jumps there by more than 1e-3;
 // - a flat tetrahedron weighs nothing; a point of it alone gets 0;
+// - vtkHAVSMesh::MakeTaggedVertices copies the boundary vertices' gradients
+//   with their points (HAVS's shaded isosurfaces);
 // - Shade: Phong's terms by hand for a light along the normal, the normal
 //   turned towards the eye, a zero gradient left unshaded, the colour clamped;
 //   MakeShading takes the lights that are on, their colours times intensity.
@@ -25,6 +27,7 @@
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSIsoSurfaces.h"
+#include "vtkHAVSMesh.h"
 #include "vtkHAVSPointGradients.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -245,6 +248,23 @@ int TestHAVSPointGradients(int, char*[])
     havstest::Check(g[0] == 1.0 && g[1] == 2.0 && g[2] == 3.0 && g[3 * 4] == 0.0 &&
         g[3 * 5 + 1] == 0.0 && std::fabs(f[0] - 0.5) < 1e-6 && std::fabs(f[1] - 1.0) < 1e-6,
       "a flat tetrahedron weighs nothing; its field is its corners' mean, constant");
+  }
+
+  // 3b. The boundary vertices' gradients go with their points.
+  {
+    const std::vector<float> pts = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0 };
+    const std::vector<float> s = { 0.1f, 0.2f, 0.3f, 0.4f };
+    const std::vector<float> g = { 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12 };
+    const std::vector<uint32_t> triangles = { 0, 1, 2, 1, 3, 2 };
+    const std::vector<uint8_t> boundary = { 0, 1 };
+    std::vector<float> taggedPoints, taggedScalars, taggedGradients;
+    std::vector<uint32_t> indices;
+    const size_t faces = vtkHAVSMesh::MakeTaggedVertices(
+      pts, s, 1, triangles, boundary, taggedPoints, taggedScalars, indices, &g, &taggedGradients);
+    const std::vector<float> expected = { 4, 5, 6, 10, 11, 12, 7, 8, 9 };
+    havstest::Check(faces == 1 && taggedGradients == expected && indices[3] == 4 &&
+        taggedPoints[3] == 1.0f && taggedPoints[4] == 1.0f,
+      "MakeTaggedVertices: the boundary face's vertices carry their points' gradients");
   }
 
   // 4. Shade and MakeShading.

@@ -67,9 +67,6 @@ public:
   vtkTypeMacro(vtkHAVSCellProjectionMapper, vtkHAVSMapperBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// ShadeOn lights the isosurfaces (each crossing's cell knows its gradient field).
-  bool CanShadeIsoSurfaces() const override { return true; }
-
   enum CellOrders
   {
     CellOrderMPVO = 0,    ///< exact (default)

@@ -261,12 +261,10 @@ bool vtkHAVSMapperBase::PrepareTable(vtkVolume* volume)
   const bool ok = vtkHAVSMapperInputs::PrepareTable(
     this, volume, this->Mesh, this->Table, this->TableScalarResolution, this->TableLengthResolution,
     this->MapperName,
-    [this, volume](int which, const std::string& m)
+    [this](int which, const std::string& m)
     {
-      // (The isosurface blend draws no volume: its surfaces are what
-      // ShadeOn lights, where the mapper can.)
-      if (which == vtkHAVSMapperInputs::WarnShading && this->BlendMode == ISOSURFACE_BLEND &&
-        this->CanShadeIsoSurfaces())
+      // (The isosurface blend draws no volume: its surfaces are what ShadeOn lights.)
+      if (which == vtkHAVSMapperInputs::WarnShading && this->BlendMode == ISOSURFACE_BLEND)
       {
         return;
       }
@@ -359,17 +357,9 @@ void vtkHAVSMapperBase::PrepareIsoSurfaces(vtkRenderer* renderer, vtkVolume* vol
     iso.MakeShading(volume->GetProperty(), this->Mesh->GetComponent(),
       renderer ? renderer->GetLights() : nullptr, volume->GetMatrix());
   }
-  if (iso.Shaded && !this->CanShadeIsoSurfaces())
-  {
-    iso.Shaded = false;
-    this->WarnOnce(vtkHAVSMapperInputs::WarnIsoShading,
-      std::string(this->MapperName) +
-        " draws its isosurfaces unshaded: its k-buffer keeps no gradients to light them with "
-        "(vtkHAVSRayCastMapper and vtkHAVSCellProjectionMapper shade them; said once).");
-  }
   if (iso.Shaded && (iso.DroppedLights > 0 || iso.PositionalLights > 0))
   {
-    this->WarnOnce(vtkHAVSMapperInputs::WarnIsoShading,
+    this->WarnOnce(vtkHAVSMapperInputs::WarnIsoLights,
       std::string(this->MapperName) + " lights its isosurfaces with the first " +
         std::to_string(vtkHAVSIsoSurfaces::MaximumLights) +
         " lights that are on, each directional (a positional light shines from its position "
@@ -396,43 +386,40 @@ void vtkHAVSMapperBase::PrepareIsoSurfaces(vtkRenderer* renderer, vtkVolume* vol
 }
 
 //------------------------------------------------------------------------------
-const std::vector<float>& vtkHAVSMapperBase::GetIsoGradientFields(vtkMTimeType& version)
+const std::vector<float>& vtkHAVSMapperBase::UpdateIsoGradients(
+  IsoGradients& made, bool fields, vtkMTimeType& version)
 {
   const vtkMTimeType key[2] = { this->Mesh->GetBuildTime(), this->Mesh->GetScalarTime() };
-  if (this->IsoGradientFieldsTime.GetMTime() == 0 || key[0] != this->IsoGradientFieldsKey[0] ||
-    key[1] != this->IsoGradientFieldsKey[1])
+  if (made.Time.GetMTime() == 0 || key[0] != made.Key[0] || key[1] != made.Key[1])
   {
     std::vector<double> gradients;
     const std::vector<uint32_t>& tets = this->Mesh->GetFaceSet()->GetTetrahedra();
     vtkHAVSPointGradients::Compute(
       this->Mesh->GetPoints(), this->Mesh->GetScalars(), tets, gradients);
-    vtkHAVSPointGradients::ComputeFields(
-      this->Mesh->GetPoints(), tets, gradients, this->IsoGradientFields);
-    this->IsoGradientFieldsKey[0] = key[0];
-    this->IsoGradientFieldsKey[1] = key[1];
-    this->IsoGradientFieldsTime.Modified();
+    if (fields)
+    {
+      vtkHAVSPointGradients::ComputeFields(this->Mesh->GetPoints(), tets, gradients, made.Values);
+    }
+    else
+    {
+      made.Values.assign(gradients.begin(), gradients.end());
+    }
+    made.Key[0] = key[0];
+    made.Key[1] = key[1];
+    made.Time.Modified();
   }
-  version = this->IsoGradientFieldsTime.GetMTime();
-  return this->IsoGradientFields;
+  version = made.Time.GetMTime();
+  return made.Values;
 }
 
-//------------------------------------------------------------------------------
+const std::vector<float>& vtkHAVSMapperBase::GetIsoGradientFields(vtkMTimeType& version)
+{
+  return this->UpdateIsoGradients(this->IsoGradientFields, true, version);
+}
+
 const std::vector<float>& vtkHAVSMapperBase::GetIsoPointGradients(vtkMTimeType& version)
 {
-  const vtkMTimeType key[2] = { this->Mesh->GetBuildTime(), this->Mesh->GetScalarTime() };
-  if (this->IsoPointGradientsTime.GetMTime() == 0 || key[0] != this->IsoPointGradientsKey[0] ||
-    key[1] != this->IsoPointGradientsKey[1])
-  {
-    std::vector<double> gradients;
-    vtkHAVSPointGradients::Compute(this->Mesh->GetPoints(), this->Mesh->GetScalars(),
-      this->Mesh->GetFaceSet()->GetTetrahedra(), gradients);
-    this->IsoPointGradients.assign(gradients.begin(), gradients.end());
-    this->IsoPointGradientsKey[0] = key[0];
-    this->IsoPointGradientsKey[1] = key[1];
-    this->IsoPointGradientsTime.Modified();
-  }
-  version = this->IsoPointGradientsTime.GetMTime();
-  return this->IsoPointGradients;
+  return this->UpdateIsoGradients(this->IsoPointGradients, false, version);
 }
 
 //------------------------------------------------------------------------------

@@ -112,10 +112,10 @@ public:
    * vtkHAVSIsoSurfaces::MaximumCount values (more: the lowest ones, warned
    * once). With the property's ShadeOn the surfaces are lit by the
    * renderer's lights with the normals of the interpolated point gradients
-   * (vtkHAVSIsoSurfaces::Shade, vtkHAVSPointGradients) where the mapper
-   * CanShadeIsoSurfaces() (all three: the ray caster and the cell projection
-   * from each cell's gradient field, HAVS on its fragment-list path, whose
-   * nodes carry the fragments' gradients); the volume between them stays
+   * (vtkHAVSIsoSurfaces::Shade, vtkHAVSPointGradients): the ray caster and
+   * the cell projection from each cell's gradient field, HAVS on its
+   * fragment-list path (whose nodes carry the fragments' gradients; such
+   * frames take it whatever KBufferPath says). The volume between them stays
    * unshaded. Cell scalars have no crossings inside a cell: nothing is drawn
    * (warned once).
    *
@@ -129,8 +129,6 @@ public:
   vtkBooleanMacro(IsoSurfacesInComposite, bool);
   /// The surfaces the last frame drew (none outside the two modes above).
   const vtkHAVSIsoSurfaces& GetFrameIsoSurfaces() const { return this->FrameIsoSurfaces; }
-  /// Whether this mapper lights its isosurfaces under ShadeOn (see above).
-  virtual bool CanShadeIsoSurfaces() const { return false; }
   /**
    * The shaded isosurfaces' gradient fields (vtkHAVSPointGradients::
    * ComputeFields over the mesh's tetrahedra, model coordinates), made when
@@ -522,12 +520,19 @@ protected:
   int LastIntermixLayers = 0;
   int IntermixSlab = 0; ///< the slab RenderView draws (0 outside intermixed frames)
   vtkHAVSIsoSurfaces FrameIsoSurfaces;
-  std::vector<float> IsoGradientFields;      ///< GetIsoGradientFields
-  vtkMTimeType IsoGradientFieldsKey[2] = {}; ///< the mesh's build and scalar times they are of
-  vtkTimeStamp IsoGradientFieldsTime;
-  std::vector<float> IsoPointGradients;      ///< GetIsoPointGradients
-  vtkMTimeType IsoPointGradientsKey[2] = {}; ///< as IsoGradientFieldsKey
-  vtkTimeStamp IsoPointGradientsTime;
+  /// What GetIsoGradientFields or GetIsoPointGradients made, and of which
+  /// mesh (its build and scalar times).
+  struct IsoGradients
+  {
+    std::vector<float> Values;
+    vtkMTimeType Key[2] = { 0, 0 };
+    vtkTimeStamp Time;
+  };
+  IsoGradients IsoGradientFields, IsoPointGradients;
+  /// `made` again from the mesh's point gradients (`fields`: each cell's
+  /// field of them, else the gradients) when the mesh or its scalars changed.
+  const std::vector<float>& UpdateIsoGradients(
+    IsoGradients& made, bool fields, vtkMTimeType& version);
   vtkNew<vtkHAVSLevelOfDetailController> ImageControl;
 
 private:

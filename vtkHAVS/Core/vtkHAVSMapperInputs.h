@@ -60,6 +60,7 @@ public:
     WarnIsoSurfaces,
     WarnIsoSurfaceCells,
     WarnIsoShading,
+    WarnIsoLights,
     NumberOfOnceWarnings
   };
   using WarnOnce = std::function<void(int, const std::string&)>;

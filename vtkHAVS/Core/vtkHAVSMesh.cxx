@@ -791,7 +791,8 @@ size_t vtkHAVSMesh::GetMemoryBytes() const
 size_t vtkHAVSMesh::MakeTaggedVertices(const std::vector<float>& points,
   const std::vector<float>& scalars, int components, const std::vector<uint32_t>& triangles,
   const std::vector<uint8_t>& boundary, std::vector<float>& taggedPoints,
-  std::vector<float>& taggedScalars, std::vector<uint32_t>& indices)
+  std::vector<float>& taggedScalars, std::vector<uint32_t>& indices,
+  const std::vector<float>* vectors, std::vector<float>* taggedVectors)
 {
   const size_t faces = triangles.size() / 3;
   const size_t nc = static_cast<size_t>(components);
@@ -802,6 +803,11 @@ size_t vtkHAVSMesh::MakeTaggedVertices(const std::vector<float>& points,
   }
   taggedPoints.assign(9 * boundaryFaces, 0.0f);
   taggedScalars.assign(3 * nc * boundaryFaces, 0.0f);
+  const bool copyVectors = vectors && taggedVectors && vectors->size() == points.size();
+  if (taggedVectors)
+  {
+    taggedVectors->assign(copyVectors ? 9 * boundaryFaces : 0, 0.0f);
+  }
   if (boundaryFaces == 0)
   {
     indices.clear(); // nothing rewritten: the triangles are drawn as they are
@@ -823,6 +829,10 @@ size_t vtkHAVSMesh::MakeTaggedVertices(const std::vector<float>& points,
     {
       const uint32_t p = triangles[3 * f + v];
       std::copy_n(&points[3 * size_t(p)], 3, &taggedPoints[3 * b]);
+      if (copyVectors)
+      {
+        std::copy_n(&(*vectors)[3 * size_t(p)], 3, &(*taggedVectors)[3 * b]);
+      }
       for (size_t c = 0; c < nc; ++c)
       {
         taggedScalars[nc * b + c] = scalars[nc * p + (swapPair ? 1 - c : c)] + 2.0f;

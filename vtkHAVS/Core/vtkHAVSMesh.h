@@ -210,13 +210,16 @@ public:
    * `taggedScalars`; `indices` is `triangles` with those faces' ids
    * rewritten (empty without boundary faces: `triangles` are drawn as they
    * are). What the GPU draws with tagging on (vtkHAVSGLMesh) and what
-   * the stand-alone GPU program's cases hold (Apps/GPUBench). Returns the
-   * number of boundary faces.
+   * the stand-alone GPU program's cases hold (Apps/GPUBench). With
+   * `vectors` (3 floats a point, as `points`: the shaded isosurfaces' point
+   * gradients), their copies too in `taggedVectors`. Returns the number of
+   * boundary faces.
    */
   static size_t MakeTaggedVertices(const std::vector<float>& points,
     const std::vector<float>& scalars, int components, const std::vector<uint32_t>& triangles,
     const std::vector<uint8_t>& boundary, std::vector<float>& taggedPoints,
-    std::vector<float>& taggedScalars, std::vector<uint32_t>& indices);
+    std::vector<float>& taggedScalars, std::vector<uint32_t>& indices,
+    const std::vector<float>* vectors = nullptr, std::vector<float>* taggedVectors = nullptr);
   const double* GetShift() const { return this->Shift; }
   /// The points' bounds in model coordinates (shifted).
   const double* GetBounds() const { return this->Bounds; }

@@ -69,9 +69,6 @@ public:
   vtkTypeMacro(vtkHAVSRayCastMapper, vtkHAVSMapperBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// ShadeOn lights the isosurfaces (each crossing's cell knows its gradient field).
-  bool CanShadeIsoSurfaces() const override { return true; }
-
   // Blend modes (vtkHAVSMapperBase): composite (default), maximum and
   // minimum intensity (the extremal scalar along the ray in the mesh coloured
   // by the transfer function), additive (VTK's: the integral of tau(s) s,

@@ -375,6 +375,11 @@ vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
   r.TerminationOpacity = static_cast<float>(this->EarlyRayTerminationOpacity);
   r.CellScalars = this->Mesh->HasCellScalars();
   r.IsoSurfaces = this->FrameIsoSurfaces.ShaderMode(this->BlendMode);
+  r.IsoShade = this->FrameIsoSurfaces.Shaded; // (the fragment-list path: see RenderView)
+  if (r.IsoShade)
+  {
+    r.PointGradients = &this->GetIsoPointGradients(r.PointGradientsVersion);
+  }
   r.Tagging = this->BoundaryMode == BoundaryTagging ||
     (this->BoundaryMode == BoundaryAutomatic &&
       (!this->Mesh->GetFaceSet()->IsConvex() || this->SkippingCells));
@@ -456,11 +461,6 @@ void vtkHAVSVolumeMapper::RenderView(
     this->WarnOnce(WarnK, message.c_str());
   }
   FrameRequest request = this->MakeRequest(view, path, k, this->NeedsOpaqueDepth(renderer));
-  if (this->FrameIsoSurfaces.Shaded)
-  {
-    request.IsoShade = true;
-    request.PointGradients = &this->GetIsoPointGradients(request.PointGradientsVersion);
-  }
 
   // 6. The near and clipping planes, and the mesh's sections with them.
   this->UpdatePlanes(view);

@@ -82,10 +82,6 @@ public:
   vtkTypeMacro(vtkHAVSVolumeMapper, vtkHAVSMapperBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// ShadeOn lights the isosurfaces on the fragment-list path (its nodes carry
-  /// the fragments' gradients; such frames take it whatever KBufferPath says).
-  bool CanShadeIsoSurfaces() const override { return true; }
-
   enum KBufferPaths
   {
     KBufferPathAutomatic = 0,

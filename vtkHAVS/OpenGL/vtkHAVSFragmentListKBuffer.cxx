@@ -56,9 +56,14 @@ void vtkHAVSFragmentListKBuffer::GrowNodes(GLuint capacity)
     GL_SHADER_STORAGE_BUFFER, nullptr, size_t(this->Capacity) * kNodeBytes, 0, GL_DYNAMIC_COPY);
   if (this->NodeGradients.GetHandle())
   {
-    this->NodeGradients.Update(GL_SHADER_STORAGE_BUFFER, nullptr,
-      size_t(this->Capacity) * kNodeGradientBytes, 0, GL_DYNAMIC_COPY);
+    this->GrowNodeGradients();
   }
+}
+
+void vtkHAVSFragmentListKBuffer::GrowNodeGradients()
+{
+  this->NodeGradients.Update(GL_SHADER_STORAGE_BUFFER, nullptr,
+    size_t(this->Capacity) * kNodeGradientBytes, 0, GL_DYNAMIC_COPY);
 }
 
 //------------------------------------------------------------------------------
@@ -79,8 +84,7 @@ bool vtkHAVSFragmentListKBuffer::Allocate(vtkHAVSGLPassContext& context)
   // Shaded isosurfaces: a gradient beside every node (released when not).
   if (context.Request.IsoShade && !this->NodeGradients.GetHandle())
   {
-    this->NodeGradients.Update(GL_SHADER_STORAGE_BUFFER, nullptr,
-      size_t(this->Capacity) * kNodeGradientBytes, 0, GL_DYNAMIC_COPY);
+    this->GrowNodeGradients();
   }
   else if (!context.Request.IsoShade && this->NodeGradients.GetHandle())
   {

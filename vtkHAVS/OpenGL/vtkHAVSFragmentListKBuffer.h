@@ -58,6 +58,8 @@ private:
   void operator=(const vtkHAVSFragmentListKBuffer&) = delete;
 
   void GrowNodes(GLuint capacity);
+  /// NodeGradients at the pool's capacity (shaded isosurfaces).
+  void GrowNodeGradients();
 
   vtkHAVSGLImage Heads;          ///< each pixel's first node (R32UI)
   vtkHAVSGLBuffer Nodes;         ///< the node pool

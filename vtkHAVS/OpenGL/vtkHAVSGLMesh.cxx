@@ -96,19 +96,13 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
   const int nc = this->Components;
   const std::vector<uint32_t>* indices = &triangles;
   std::vector<uint32_t> rewritten;
-  std::vector<float> points, scalars, gradients, unused;
-  const size_t boundaryFaces = tagged ? vtkHAVSMesh::MakeTaggedVertices(this->Points, this->Scalars,
-                                          nc, triangles, boundary, points, scalars, rewritten)
-                                      : 0;
+  std::vector<float> points, scalars, gradients;
+  // (Shaded isosurfaces: the boundary vertices' gradients copied with them.)
   const bool shaded = !this->Gradients.empty() && this->Gradients.size() == this->Points.size();
-  if (boundaryFaces > 0 && shaded)
-  {
-    // The boundary vertices' gradients: the same copies of their points' (the
-    // gradients taken as the points to copy).
-    std::vector<uint32_t> same;
-    vtkHAVSMesh::MakeTaggedVertices(
-      this->Gradients, this->Scalars, nc, triangles, boundary, gradients, unused, same);
-  }
+  const size_t boundaryFaces = tagged
+    ? vtkHAVSMesh::MakeTaggedVertices(this->Points, this->Scalars, nc, triangles, boundary, points,
+        scalars, rewritten, shaded ? &this->Gradients : nullptr, &gradients)
+    : 0;
   if (boundaryFaces > 0)
   {
     // The boundary faces' own vertices, in draw order, after the points.
