@@ -81,10 +81,12 @@ if args.mode == "mpi":
     counts = [int(c) for c in gather_all(controller, ranks, tets_here)]
     whole = grid.GetNumberOfCells()
     check(all(c > 0 for c in counts), "every rank holds a non-empty piece: %s" % counts)
-    # The cells on the kd cuts are split there (issue 44): the pieces hold more cells
-    # than the grid, the pieces' images are checked against the exact one below.
+    # The cells on the kd cuts go to every rank whose box they touch, each rank clipping
+    # its piece to its box (issue 44, the default redistribution): the pieces hold more
+    # cells than the grid, the pieces' images are checked against the exact one below.
     check(sum(counts) >= whole,
-          "the pieces cover the grid, split at the cuts: %s = %d tetrahedra for the grid's %d"
+          "the pieces cover the grid, cells on the cuts on both sides: %s = %d tetrahedra for "
+          "the grid's %d"
           % (" + ".join(str(c) for c in counts), sum(counts), whole))
 
 # The image: a screenshot (collective; rank 0 writes the composited image).

@@ -13,8 +13,8 @@ per rank, two ways:
 
 Each case is the other's control: the warning must come for the one and not for the other.
 
-Then the interleaved pieces with UseDataPartitions off (ParaView redistributes them, split at its
-kd cuts): no warning, and no crash. VTK 9.2's .pvtu reader (vtkXMLPUnstructuredGridReader) hands
+Then the interleaved pieces with UseDataPartitions off (ParaView redistributes them along its kd
+cuts): no warning, and no crash. VTK 9.2's .pvtu reader (vtkXMLPUnstructuredGridReader) hands
 vtkUnstructuredGrid::SetCells an uninitialized cell-types array; a stray byte 42 (VTK_POLYHEDRON)
 there leaves the grid with empty polyhedron face arrays, on which vtkExtractCells, in
 vtkRedistributeDataSetFilter::SplitDataSet, reads past the end (SIGSEGV; issue 44). Whether that

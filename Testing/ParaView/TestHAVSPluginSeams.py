@@ -2,16 +2,19 @@
 """The plugin's parallel image is exact across ranks (issue 44): mpiexec -np N pvbatch --symmetric.
 
 ParaView splits the grid over the ranks along a kd-tree and IceT composites the ranks' images
-in the order of their boxes. The HAVS Volume representation asks for the cells on the cuts to
-be split there (or clipped to each rank's box), so each rank's piece lies in its box and the
-order is exact. Each mapper offered (HAVS, HAVS Ray Cast, HAVS Cell Projection) is checked on
+in the order of their boxes. The HAVS Volume representation asks for every cell that touches a
+rank's box to go there, the mapper clipping the piece to the box (`--redistribution clip`, the
+default), or for the cells on the cuts to be split there by ParaView (`split`), so that each
+rank's piece lies in its box and the order is exact. Each mapper offered (HAVS, HAVS Ray Cast, HAVS Cell Projection) is checked on
 several views against the exact reference (vtkHAVSReferenceRenderer), in two parts:
 
-- the distribution: the exact images of the ranks' pieces, composited in float in the order of
-  the ranks' boxes, equal the exact image of the whole grid (max <= 0.5/255 on the Delaunay
+- the distribution: the exact images of the ranks' pieces (clipped by the planes their mappers
+  hold: the box's under `clip`, and with `--user-plane` the user's own first), composited in
+  float in the order of the ranks' boxes, equal the exact image of the whole grid (max <= 0.5/255 on the Delaunay
   grid, whose coordinates are double; 1/255 on float32 data, where the split's new points move
-  a grazing ray's hits by a hair). Control: with ParaView's stock redistribution (whole cells
-  to one rank) that composite misses the bound (a seam).
+  a grazing ray's hits by a hair). Controls: with ParaView's stock redistribution (whole cells
+  to one rank) that composite misses the bound (a seam); under `clip` the same pieces without
+  their planes miss it (the cells on the cuts counted twice).
 - the rendering: the screenshot equals what IceT makes of the exact pieces' images (each rounded
   to 8 bits, composited with IceT's 8-bit "over", which truncates): max <= 2/255 at 2 ranks
   (3/255 at 4) and RMSE <= 0.35/255 for every mapper and view.
@@ -24,11 +27,12 @@ The grid is written once as a .vtu (the same tetrahedra for the reference and fo
 rank 0 reads it whole and ParaView redistributes it, as it does any reader's output.
 
 Arguments: --plugin PATH --out DIR [--data delaunay|hexes|bluntfin|loxpost] [--size N] [--views N]
-  [--mappers a,b] [--redistribution split|clip|whole] [--control] [--csv PATH]
+  [--mappers a,b] [--redistribution split|clip|whole] [--control] [--user-plane] [--csv PATH]
 Environment: HAVS_DATA_DIR (shared/data). Run under Xvfb (Debian's ParaView is GLX-only).
 """
 import argparse
 import functools
+import json
 import math
 import os
 import sys
@@ -45,7 +49,8 @@ from vtkmodules.vtkRenderingCore import vtkCamera
 from vtkmodules.vtkParallelCore import vtkDummyController
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkStructuredGrid
+from vtkmodules.vtkCommonDataModel import (vtkPlane, vtkPlaneCollection, vtkPolyData,
+                                            vtkStructuredGrid)
 from vtkmodules.vtkFiltersCore import vtkAppendFilter
 from vtkmodules.vtkFiltersCore import vtkDelaunay3D
 
@@ -72,6 +77,10 @@ parser.add_argument("--distribution-max", type=float, default=None,
                     help="the distribution's bound in 1/255 (default: 0.05 for the Delaunay grid, "
                     "whose coordinates are double; 1 for the float32 data sets)")
 parser.add_argument("--csv", help="append one row per image here (rank 0)")
+parser.add_argument("--user-plane", action="store_true",
+                    help="give each mapper a clipping plane of the user's own (oblique): the "
+                    "clip redistribution keeps it beside the rank's box; the reference of the "
+                    "whole grid is clipped by it")
 args, _ = parser.parse_known_args()
 
 MODES = {"whole": 0, "split": 1, "clip": 2}
@@ -236,8 +245,11 @@ def set_view(index):
 
 def write_piece(mode):
     """This rank's piece as the active mapper sees it (after the representation's merge),
-    written for rank 0's reference; its cell count on every rank."""
-    piece = rep.GetActiveVolumeMapper().GetInput()
+    and the clipping planes the representation gave the mapper (its kd box's inner faces,
+    under the clip redistribution), written for rank 0's reference; its cell count on every
+    rank."""
+    mapper = rep.GetActiveVolumeMapper()
+    piece = mapper.GetInput()
     cells = piece.GetNumberOfCells() if piece else 0
     if cells:
         writer = vtkXMLUnstructuredGridWriter()
@@ -246,6 +258,16 @@ def write_piece(mode):
         writer.SetDataModeToAppended()
         writer.EncodeAppendedDataOff()
         writer.Write()
+        collection = mapper.GetClippingPlanes()
+        planes = []
+        for i in range(collection.GetNumberOfItems() if collection else 0):
+            plane = collection.GetItem(i)
+            planes.append(list(plane.GetOrigin()) + list(plane.GetNormal()))
+        # The representation puts the mapper's own planes first, the box's last.
+        display.UpdatePropertyInformation()
+        region = int(display.GetProperty("HAVSLastRegionPlanes").GetElement(0))
+        with open(piece_path(mode, rank) + ".planes.json", "w") as out:
+            json.dump({"planes": planes, "region": region}, out)
     every = gather(cells)
     if controller and ranks > 1:
         controller.Barrier()
@@ -254,6 +276,30 @@ def write_piece(mode):
 
 def piece_path(mode, r):
     return os.path.join(args.out, "seams_%s_%d_%s_piece%d.vtu" % (args.data, ranks, mode, r))
+
+
+# The user's own clipping plane (oblique, through the grid off its centre), as the reference
+# takes planes: its origin and normal.
+USER_PLANE = None
+if args.user_plane:
+    bounds = grid.GetBounds()
+    origin = [bounds[0] + 0.62 * (bounds[1] - bounds[0]), bounds[2] + 0.5 * (bounds[3] - bounds[2]),
+              bounds[4] + 0.5 * (bounds[5] - bounds[4])]
+    normal = list(numpy.array([-1.0, 0.35, 0.2]) / numpy.linalg.norm([-1.0, 0.35, 0.2]))
+    USER_PLANE = {"planes": [origin + normal], "region": 0}
+    user_planes = vtkPlaneCollection()
+    user_plane = vtkPlane()
+    user_plane.SetOrigin(origin)
+    user_plane.SetNormal(normal)
+    user_planes.AddItem(user_plane)
+
+
+def give_user_plane():
+    """The active mapper's own planes: the user's plane, unless it holds them already (then its
+    collection is the representation's, which starts with them)."""
+    mapper = rep.GetActiveVolumeMapper()
+    if USER_PLANE and mapper.GetClippingPlanes() is None:
+        mapper.SetClippingPlanes(user_planes)
 
 
 def render_all(mode):
@@ -267,6 +313,7 @@ def render_all(mode):
     for mapper in args.mappers.split(","):
         display.HAVSMapper = mapper
         for v in range(args.views):
+            give_user_plane()
             set_view(v)
             start = time.perf_counter()
             Render(view)
@@ -288,19 +335,45 @@ def render_all(mode):
     return shots, cells, first
 
 
-def exact_rgba(data, camera):
-    """The exact premultiplied RGBA image of `data` (size x size x 4, bottom row first)."""
-    image = reference_image(data, lut, pwf, display.ScalarOpacityUnitDistance, camera, args.size)
+def exact_rgba(camera, data, planes=None):
+    """The exact premultiplied RGBA image of `data` (size x size x 4, bottom row first), clipped
+    by `planes` ([origin + normal], the side the normal points to kept) if given."""
+    collection = None
+    if planes and planes["planes"]:
+        collection = vtkPlaneCollection()
+        for values in planes["planes"]:
+            plane = vtkPlane()
+            plane.SetOrigin(values[:3])
+            plane.SetNormal(values[3:])
+            collection.AddItem(plane)
+    image = reference_image(data, lut, pwf, display.ScalarOpacityUnitDistance, camera, args.size,
+                            planes=collection)
     return vtk_to_numpy(image).astype(numpy.float64).reshape(args.size, args.size, 4)
 
 
 def read_piece(path):
+    """A rank's piece and its clipping planes."""
     piece_reader = vtkXMLUnstructuredGridReader()
     piece_reader.SetFileName(path)
     piece_reader.Update()
     data = piece_reader.GetOutput()
     data.GetPointData().SetActiveScalars(array)
-    return data
+    with open(path + ".planes.json") as planes:
+        return data, json.load(planes)
+
+
+def region_box(data, planes):
+    """A piece's bounds within its box's clipping planes (the last `region` of them): its
+    rank's kd box where the planes cut it (the test's volume has no transform, so those planes
+    are axis-aligned in the data's coordinates)."""
+    box = list(data.GetBounds())
+    for values in planes["planes"][len(planes["planes"]) - planes["region"]:]:
+        axis = int(numpy.argmax(numpy.abs(values[3:])))
+        if values[3 + axis] > 0:
+            box[2 * axis] = max(box[2 * axis], values[axis])
+        else:
+            box[2 * axis + 1] = min(box[2 * axis + 1], values[axis])
+    return box
 
 
 def box_order(boxes, camera):
@@ -353,46 +426,68 @@ for mode in modes:
     results[mode] = render_all(mode)
 
 if rank == 0:
-    exact = {v: exact_rgba(grid, cameras[v]) for v in range(args.views)}
+    exact = {v: exact_rgba(cameras[v], grid, USER_PLANE) for v in range(args.views)}
     exact8 = {v: numpy.round(numpy.clip(exact[v][:, :, :3], 0.0, 1.0) * 255.0) for v in exact}
-    # The ranks' boxes: the split pieces' bounds (the cuts do not depend on the mode).
-    split_boxes = None
+    # The ranks' boxes: the split pieces' bounds, or the clipped pieces' bounds within their
+    # planes (the cuts do not depend on the mode).
+    boxes = None
     pieces = {}
     for mode in modes:
         cells = results[mode][1]
         pieces[mode] = {r: read_piece(piece_path(mode, r)) for r in range(ranks) if cells[r] > 0}
-        if mode == "split":
-            split_boxes = {r: pieces[mode][r].GetBounds() for r in pieces[mode]}
+        if mode in ("split", "clip"):
+            boxes = {r: region_box(*pieces[mode][r]) for r in pieces[mode]}
     rows = []
     for mode in modes:
         shots, cells, first = results[mode]
         print("%s: cells per rank %s (%d in all, %d in the grid), first frame %.2f s"
               % (mode, [int(c) for c in cells], int(sum(cells)), grid.GetNumberOfCells(), first),
               flush=True)
-        piece_checks = ranks > 1 and split_boxes is not None and mode in ("split", "whole")
+        exact_mode = mode in ("split", "clip")
+        piece_checks = ranks > 1 and boxes is not None
         floor = {}
         icet = {}
         seams = []
+        overlaps = []
         for v in range(args.views):
             if not piece_checks:
                 continue
-            owners = sorted(split_boxes)
-            ranked = [owners[i] for i in box_order([split_boxes[r] for r in owners], cameras[v])]
-            images = [exact_rgba(pieces[mode][r], cameras[v]) for r in ranked
+            owners = sorted(boxes)
+            ranked = [owners[i] for i in box_order([boxes[r] for r in owners], cameras[v])]
+            images = [exact_rgba(cameras[v], *pieces[mode][r]) for r in ranked
                       if r in pieces[mode]]
+            if USER_PLANE:
+                check(all(pieces[mode][r][1]["planes"][0] == USER_PLANE["planes"][0]
+                          for r in pieces[mode]), "%s, %d ranks: every rank's mapper kept the "
+                      "user's own plane first" % (mode, ranks))
             float_rmse, float_max = errors(composite(images, False),
                                            numpy.clip(exact[v][:, :, :3], 0, 1) * 255.0)
             icet[v] = composite(images, True)
             floor[v] = errors(icet[v], exact8[v])
-            if mode == "split":
-                check(float_max <= DISTRIBUTION_MAX, "split, %d ranks, view %d: the exact pieces "
+            if exact_mode:
+                check(float_max <= DISTRIBUTION_MAX, "%s, %d ranks, view %d: the exact pieces "
                       "composited in box order are the exact whole image (max %.3f/255 <= %g, "
-                      "RMSE %.4f/255)" % (ranks, v, float_max, DISTRIBUTION_MAX, float_rmse))
+                      "RMSE %.4f/255)" % (mode, ranks, v, float_max, DISTRIBUTION_MAX, float_rmse))
+                if mode == "clip":
+                    # Control: the same pieces without their planes overlap (every cell that
+                    # touches a box is in it whole), so their composite misses the bound.
+                    unclipped = [exact_rgba(cameras[v], pieces[mode][r][0], USER_PLANE)
+                                 for r in ranked if r in pieces[mode]]
+                    overlap_rmse, overlap_max = errors(
+                        composite(unclipped, False), numpy.clip(exact[v][:, :, :3], 0, 1) * 255.0)
+                    overlaps.append(overlap_max)
+                    print("control, clip pieces without their planes, %d ranks, view %d: max "
+                          "%.3f/255, RMSE %.4f/255" % (ranks, v, overlap_max, overlap_rmse),
+                          flush=True)
             else:
                 seams.append(float_max)
                 print("control, whole cells, %d ranks, view %d: the exact pieces composited in "
                       "box order, against the exact whole image: max %.3f/255, RMSE %.4f/255"
                       % (ranks, v, float_max, float_rmse), flush=True)
+        if overlaps:
+            check(min(overlaps) > DISTRIBUTION_MAX, "control, clip pieces without their planes, "
+                  "%d ranks: every view misses the distribution's bound (best view max "
+                  "%.3f/255 > %g/255)" % (ranks, min(overlaps), DISTRIBUTION_MAX))
         if seams:
             check(max(seams) > DISTRIBUTION_MAX, "control, whole cells (ParaView's stock), %d "
                   "ranks: the exact pieces composited in box order miss the distribution's bound "
@@ -407,11 +502,12 @@ if rank == 0:
                 icet_rmse, icet_max = errors(shown, icet[v])
                 line += ("; IceT's floor RMSE %.3f, max %.0f; against IceT's composite of the "
                          "exact pieces RMSE %.3f, max %.0f" % (floor[v] + (icet_rmse, icet_max)))
-                if mode == "split":
+                if exact_mode:
                     check(icet_max <= MAX_BOUND and icet_rmse <= RMSE_BOUND,
-                          "split, %s, %d ranks, view %d: the image is IceT's composite of the "
+                          "%s, %s, %d ranks, view %d: the image is IceT's composite of the "
                           "exact pieces within max %g/255 and RMSE %g/255 (RMSE %.3f, max %.0f)"
-                          % (mapper, ranks, v, MAX_BOUND, RMSE_BOUND, icet_rmse, icet_max))
+                          % (mode, mapper, ranks, v, MAX_BOUND, RMSE_BOUND, icet_rmse,
+                             icet_max))
             elif ranks == 1:
                 check(peak <= MAX_BOUND and rmse <= RMSE_BOUND,
                       "%s, 1 rank, view %d: the image is the exact image within max %g/255 and "

@@ -182,12 +182,13 @@ def compare(a, b):
 
 
 def reference_image(grid, lut, pwf, unit_distance, camera, size=SIZE, blend=0, isovalues=(),
-                    mixed=False, shade=None, lights=None):
+                    mixed=False, shade=None, lights=None, planes=None):
     """The exact image (vtkHAVSReferenceRenderer) of `grid` with ParaView's colour and opacity
     maps: premultiplied RGBA, size x size tuples, bottom row first. `blend`: vtkVolumeMapper's
     blend mode (5: the isosurfaces `isovalues`); `mixed`: the composite with them inside;
     `shade`: (ambient, diffuse, specular, specular power) to light the isosurfaces by
-    `lights` (a vtkLightCollection)."""
+    `lights` (a vtkLightCollection); `planes`: clipping planes (a vtkPlaneCollection, world
+    coordinates, each keeping the side its normal points to)."""
     prop = vtkVolumeProperty()
     prop.SetColor(lut.GetClientSideObject())
     prop.SetScalarOpacity(pwf.GetClientSideObject())
@@ -209,6 +210,8 @@ def reference_image(grid, lut, pwf, unit_distance, camera, size=SIZE, blend=0, i
     reference.SetIsoSurfacesInComposite(mixed)
     if lights is not None:
         reference.SetLights(lights)
+    if planes is not None:
+        reference.SetClippingPlanes(planes)
     reference.Render()
     return reference.GetImage()
 

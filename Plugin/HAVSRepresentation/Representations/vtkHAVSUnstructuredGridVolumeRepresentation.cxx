@@ -17,6 +17,7 @@
 #include "vtkContourValues.h"
 #include "vtkDataSet.h"
 #include "vtkHAVSCellProjectionMapper.h"
+#include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSFrameStatistics.h"
 #include "vtkHAVSIntermixPass.h"
 #include "vtkHAVSRayCastMapper.h"
@@ -549,15 +550,23 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::SetRedistribution(int mode)
 void vtkHAVSUnstructuredGridVolumeRepresentation::UpdateRegionPlanes(
   vtkInformation* inInfo, vtkHAVSMapperBase* active)
 {
-  // Only planes this representation put there are removed: a user's own
-  // collection on a mapper is left alone.
+  // RegionPlanes is this representation's collection: the user's own planes of
+  // the active mapper (any collection it holds that is not ours, kept in
+  // UserPlanes) followed by this rank's kd box. A mapper that is not active
+  // gets its own planes back.
   for (const auto& named : this->Mappers)
   {
-    if (named.second != active && named.second->GetClippingPlanes() == this->RegionPlanes)
+    vtkHAVSMapperBase* mapper = named.second;
+    if (mapper->GetClippingPlanes() != this->RegionPlanes)
     {
-      named.second->SetClippingPlanes(static_cast<vtkPlaneCollection*>(nullptr));
+      this->UserPlanes[mapper] = mapper->GetClippingPlanes();
+    }
+    else if (mapper != active)
+    {
+      mapper->SetClippingPlanes(this->UserPlanes[mapper]);
     }
   }
+  vtkPlaneCollection* user = this->UserPlanes[active];
   this->RegionPlanes->RemoveAllItems();
   this->LastRegionPlanes = 0;
   auto* controller = vtkMultiProcessController::GetGlobalController();
@@ -566,11 +575,14 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::UpdateRegionPlanes(
   const int rank = controller ? controller->GetLocalProcessId() : 0;
   const bool clip = this->Redistribution == RedistributionClip && !this->UseDataPartitions &&
     ranks > 1 && delivery && static_cast<int>(delivery->GetCuts().size()) == ranks;
-  if (!clip)
+  const std::vector<vtkBoundingBox> cuts =
+    clip ? delivery->GetCuts() : std::vector<vtkBoundingBox>();
+  const vtkBoundingBox whole = UnionOfCuts(cuts);
+  if (!clip || !cuts[rank].IsValid() || !whole.IsValid())
   {
     if (active->GetClippingPlanes() == this->RegionPlanes)
     {
-      active->SetClippingPlanes(static_cast<vtkPlaneCollection*>(nullptr));
+      active->SetClippingPlanes(user);
     }
     return;
   }
@@ -578,19 +590,14 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::UpdateRegionPlanes(
   // outer faces hold the whole grid). The cuts are in the data's
   // coordinates, the mappers' planes in world coordinates: through the
   // volume's matrix (points by M, normals by M^-T).
-  const std::vector<vtkBoundingBox>& cuts = delivery->GetCuts();
-  const vtkBoundingBox whole = UnionOfCuts(cuts);
   const vtkBoundingBox& box = cuts[rank];
-  if (!box.IsValid() || !whole.IsValid())
-  {
-    return;
-  }
   vtkNew<vtkMatrix4x4> matrix;
   this->Actor->GetMatrix(matrix);
   vtkNew<vtkMatrix4x4> inverseTranspose;
   vtkMatrix4x4::Invert(matrix, inverseTranspose);
   inverseTranspose->Transpose();
   const double tolerance = 1e-9 * whole.GetDiagonalLength();
+  std::vector<vtkSmartPointer<vtkPlane>> region;
   for (int axis = 0; axis < 3; ++axis)
   {
     for (int side = 0; side < 2; ++side)
@@ -608,21 +615,37 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::UpdateRegionPlanes(
       normal[axis] = side == 0 ? 1.0 : -1.0; // into the box: that side is kept
       matrix->MultiplyPoint(origin, origin);
       inverseTranspose->MultiplyPoint(normal, normal);
-      vtkNew<vtkPlane> plane;
+      auto plane = vtkSmartPointer<vtkPlane>::New();
       plane->SetOrigin(origin[0] / origin[3], origin[1] / origin[3], origin[2] / origin[3]);
       plane->SetNormal(normal[0], normal[1], normal[2]);
-      this->RegionPlanes->AddItem(plane);
-      ++this->LastRegionPlanes;
+      region.push_back(plane);
     }
   }
+  // The user's planes first, as many as fit beside the box's (the mappers use
+  // vtkHAVSFramePlanes::MaximumClippingPlanes); the box's are all needed, or
+  // the cells this rank shares with its neighbours would be drawn twice.
+  const int room = vtkHAVSFramePlanes::MaximumClippingPlanes - static_cast<int>(region.size());
+  const int own = user ? user->GetNumberOfItems() : 0;
+  for (int i = 0; i < std::min(own, room); ++i)
+  {
+    this->RegionPlanes->AddItem(user->GetItem(i));
+  }
+  if (own > room && !this->WarnedPlanes)
+  {
+    this->WarnedPlanes = true;
+    vtkWarningMacro("The HAVS mapper's own clipping planes ("
+      << own << ") and this rank's kd box (" << region.size() << " planes) exceed the mappers' "
+      << vtkHAVSFramePlanes::MaximumClippingPlanes << "; only the first " << std::max(room, 0)
+      << " of the mapper's planes are used (Redistribution: clip to the region). Use the split "
+         "redistribution to keep them all.");
+  }
+  for (const auto& plane : region)
+  {
+    this->RegionPlanes->AddItem(plane);
+  }
+  this->LastRegionPlanes = static_cast<int>(region.size());
   if (active->GetClippingPlanes() != this->RegionPlanes)
   {
-    if (active->GetClippingPlanes() && active->GetClippingPlanes()->GetNumberOfItems() > 0)
-    {
-      vtkWarningMacro("The HAVS mapper's own clipping planes are replaced by this rank's kd box "
-                      "(Redistribution: clip to the region); use the split redistribution to "
-                      "keep them.");
-    }
     active->SetClippingPlanes(this->RegionPlanes);
   }
   this->RegionPlanes->Modified();
