@@ -16,6 +16,8 @@
 //   gradients at its corners and is the same from both tetrahedra at the
 //   centroid of every internal face (continuous); control: each
 //   tetrahedron's own constant gradient jumps there by more than 1e-3;
+//   InterpolateInCells (HAVS's plane sections' vertices) gives each
+//   tetrahedron's field at points inside it; control: another one's weights;
 // - a flat tetrahedron weighs nothing; a point of it alone gets 0;
 // - vtkHAVSMesh::MakeTaggedVertices copies the boundary vertices' gradients
 //   with their points (HAVS's shaded isosurfaces);
@@ -230,6 +232,63 @@ int TestHAVSPointGradients(int, char*[])
     havstest::Check(worstCorner < 1e-5, "quadratic: each field is its corners' gradients there");
     havstest::Check(shared > 100 && worstJump < 1e-5, "quadratic: the fields are continuous");
     havstest::Check(controlJump > 1e-3, "control: the tetrahedra's own gradients jump");
+
+    // The points' gradients interpolated at points inside the tetrahedra (as
+    // at a plane section's vertices): the tetrahedra's fields there. Three
+    // points a "triangle", one triangle a tetrahedron, and a last one with
+    // a cell out of range (0). Control: the next tetrahedron's weights.
+    std::vector<float> floatGradients(gradients.begin(), gradients.end());
+    std::vector<float> positions;
+    std::vector<uint32_t> cells, wrongCells;
+    const double mixes[3][4] = { { 0.1, 0.2, 0.3, 0.4 }, { 0.25, 0.25, 0.5, 0.0 },
+      { 0.7, 0.1, 0.1, 0.1 } };
+    for (size_t t = 0; t < numberOfTets; ++t)
+    {
+      for (const auto& w : mixes)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          double x = 0.0;
+          for (int v = 0; v < 4; ++v)
+          {
+            x += w[v] * points[3 * tets[4 * t + v] + k];
+          }
+          positions.push_back(static_cast<float>(x));
+        }
+      }
+      cells.push_back(static_cast<uint32_t>(t));
+      wrongCells.push_back(static_cast<uint32_t>((t + 1) % numberOfTets));
+    }
+    positions.insert(positions.end(), 9, 0.5f);
+    cells.push_back(static_cast<uint32_t>(numberOfTets));
+    wrongCells.push_back(0);
+    std::vector<float> at, wrong;
+    vtkHAVSPointGradients::InterpolateInCells(points, tets, floatGradients, positions, cells, at);
+    vtkHAVSPointGradients::InterpolateInCells(
+      points, tets, floatGradients, positions, wrongCells, wrong);
+    double worstInside = 0.0, controlInside = 0.0;
+    for (size_t t = 0; t < numberOfTets; ++t)
+    {
+      for (int v = 0; v < 3; ++v)
+      {
+        const size_t i = 9 * t + 3 * v;
+        const double p[3] = { positions[i], positions[i + 1], positions[i + 2] };
+        double g[3];
+        FieldAt(fields, t, p, g);
+        for (int k = 0; k < 3; ++k)
+        {
+          worstInside = std::max(worstInside, std::fabs(at[i + k] - g[k]));
+          controlInside = std::max(controlInside, std::fabs(wrong[i + k] - g[k]));
+        }
+      }
+    }
+    const bool outOfRange = std::all_of(at.end() - 9, at.end(), [](float g) { return g == 0.0f; });
+    std::printf("quadratic field interpolated inside %zu tetrahedra: off their fields by %.2e; "
+                "control (the next tetrahedron's weights) %.2e\n",
+      numberOfTets, worstInside, controlInside);
+    havstest::Check(worstInside < 1e-5 && outOfRange,
+      "InterpolateInCells: the tetrahedra's fields inside them; 0 for a cell out of range");
+    havstest::Check(controlInside > 1e-3, "control: another tetrahedron's weights differ");
   }
 
   // 3. A flat tetrahedron weighs nothing.

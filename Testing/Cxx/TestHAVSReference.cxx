@@ -32,6 +32,8 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkRenderWindow.h"
@@ -173,6 +175,72 @@ int TestHAVSReference(int, char*[])
             << std::endl;
   havstest::Check(bad == 0, "aligned rays: one entry and one exit each");
   havstest::Check(ties > 0, "the aligned view does hit shared edges and vertices");
+
+  // Clipping planes whose kept interval lies just outside the mesh: the
+  // tetrahedron (0,0,0) (1,0,0) (0,1,0) (0,0,1) seen along +z, its rays
+  // leaving it through the face x + y + z = 1, and planes parallel to that
+  // face keeping 1 + 1e-4 <= x + y + z <= 1.5, where no cell is. VTK's
+  // tetrahedron counts a point 1e-4 outside it as inside (EvaluatePosition's
+  // 1e-3 tolerance): taken so, each ray started inside at the first plane
+  // and ran on to the second with the cell's value (alpha up to 0.5).
+  // Expected: nothing. Control: the planes keeping 0.5 <= x + y + z <= 1.5
+  // draw the tetrahedron's part there.
+  {
+    vtkNew<vtkUnstructuredGrid> corner;
+    vtkNew<vtkPoints> cornerPoints;
+    cornerPoints->SetDataTypeToDouble();
+    const double c[4][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+    for (const auto& p : c)
+    {
+      cornerPoints->InsertNextPoint(p);
+    }
+    corner->SetPoints(cornerPoints);
+    const vtkIdType cornerIds[4] = { 0, 1, 2, 3 };
+    corner->InsertNextCell(VTK_TETRA, 4, cornerIds);
+    vtkNew<vtkDoubleArray> cornerScalars;
+    cornerScalars->SetNumberOfTuples(4);
+    cornerScalars->Fill(0.5);
+    corner->GetPointData()->SetScalars(cornerScalars);
+    vtkNew<vtkCamera> below;
+    below->ParallelProjectionOn();
+    below->SetPosition(0.3, 0.3, -10.0);
+    below->SetFocalPoint(0.3, 0.3, 0.5);
+    below->SetViewUp(0, 1, 0);
+    below->SetParallelScale(0.5);
+    below->SetClippingRange(1.0, 20.0);
+    vtkNew<vtkHAVSReferenceRenderer> clipped;
+    clipped->SetInputData(corner);
+    clipped->SetProperty(constant);
+    clipped->SetCamera(below);
+    clipped->SetSize(32, 32);
+    auto maxAlpha = [&](double from)
+    {
+      const double n = 1.0 / std::sqrt(3.0);
+      vtkNew<vtkPlane> nearer, farther;
+      nearer->SetOrigin(from, 0, 0);
+      nearer->SetNormal(n, n, n); // keeps x + y + z >= from
+      farther->SetOrigin(1.5, 0, 0);
+      farther->SetNormal(-n, -n, -n); // keeps x + y + z <= 1.5
+      vtkNew<vtkPlaneCollection> planes;
+      planes->AddItem(nearer);
+      planes->AddItem(farther);
+      clipped->SetClippingPlanes(planes);
+      clipped->Render();
+      double largest = 0.0;
+      for (vtkIdType i = 0; i < clipped->GetImage()->GetNumberOfTuples(); ++i)
+      {
+        largest = std::max(largest, clipped->GetImage()->GetComponent(i, 3));
+      }
+      return largest;
+    };
+    const double outside = maxAlpha(1.0 + 1e-4);
+    const double control = maxAlpha(0.5);
+    std::cout << "planes just outside the mesh: max alpha " << outside
+              << "; control, planes keeping x + y + z in [0.5, 1.5]: max alpha " << control
+              << std::endl;
+    havstest::Check(outside == 0.0, "planes keeping only the outside of the mesh: nothing drawn");
+    havstest::Check(control > 0.3, "control: planes keeping part of the mesh draw it");
+  }
 
   // Linear ramp along the view: s = z, opacity(s) = s, unit distance 1.
   auto ramp = vtkHAVSDataSets::MakeBox(4, 4, 4, 0.25, 0.0, 1.0);

@@ -462,6 +462,20 @@ if rank == 0:
                       "user's own plane first" % (mode, ranks))
             float_rmse, float_max = errors(composite(images, False),
                                            numpy.clip(exact[v][:, :, :3], 0, 1) * 255.0)
+            if os.environ.get("HAVS_SEAMS_DEBUG"):
+                cam = cameras[v]
+                print("DEBUG camera %s" % json.dumps({
+                    "position": cam.GetPosition(), "focal": cam.GetFocalPoint(),
+                    "up": cam.GetViewUp(), "angle": cam.GetViewAngle(),
+                    "parallel": cam.GetParallelProjection(), "scale": cam.GetParallelScale(),
+                    "range": cam.GetClippingRange(), "order": ranked}), flush=True)
+                diff = numpy.abs(composite(images, False)
+                                 - numpy.clip(exact[v][:, :, :3], 0, 1) * 255.0).max(axis=2)
+                for flat in numpy.argsort(diff, axis=None)[-6:]:
+                    y, x = divmod(int(flat), args.size)
+                    print("DEBUG view %d pixel (%d, %d): %.3f/255; pieces %s; whole %s" % (
+                        v, x, y, diff[y, x], [list(numpy.round(im[y, x] * 255, 3)) for im in images],
+                        list(numpy.round(exact[v][y, x] * 255, 3))), flush=True)
             icet[v] = composite(images, True)
             floor[v] = errors(icet[v], exact8[v])
             if exact_mode:

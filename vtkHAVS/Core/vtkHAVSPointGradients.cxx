@@ -219,4 +219,67 @@ void vtkHAVSPointGradients::ComputeFields(const std::vector<float>& points,
     });
 }
 
+//------------------------------------------------------------------------------
+void vtkHAVSPointGradients::InterpolateInCells(const std::vector<float>& points,
+  const std::vector<uint32_t>& tets, const std::vector<float>& gradients,
+  const std::vector<float>& positions, const std::vector<uint32_t>& cells, std::vector<float>& out)
+{
+  const size_t numberOfPoints = std::min(points.size() / 3, gradients.size() / 3);
+  const size_t numberOfTets = tets.size() / 4;
+  const vtkIdType triangles = static_cast<vtkIdType>(std::min(cells.size(), positions.size() / 9));
+  out.assign(positions.size(), 0.0f);
+  vtkSMPTools::For(0, triangles,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const uint32_t cell = cells[static_cast<size_t>(t)];
+        double x[4][3], e[3][3];
+        if (cell >= numberOfTets || !Corners(points, numberOfPoints, &tets[4 * cell], x, e))
+        {
+          continue;
+        }
+        const uint32_t* ids = &tets[4 * cell];
+        const double det = vtkMath::Determinant3x3(e);
+        const bool solvable = Solvable(e, det);
+        double inverse[3][3];
+        if (solvable)
+        {
+          vtkMath::Invert3x3(e, inverse);
+        }
+        for (int v = 0; v < 3; ++v)
+        {
+          const size_t at = 9 * static_cast<size_t>(t) + 3 * v;
+          // The barycentric weights: lambda = (E^T)^-1 (p - x0) for corners
+          // 1..3, the rest for corner 0; a flat tetrahedron's mean.
+          double w[4] = { 0.25, 0.25, 0.25, 0.25 };
+          if (solvable)
+          {
+            double d[3];
+            for (int k = 0; k < 3; ++k)
+            {
+              d[k] = static_cast<double>(positions[at + k]) - x[0][k];
+            }
+            w[0] = 1.0;
+            for (int i = 0; i < 3; ++i)
+            {
+              // ((E^T)^-1)[i][k] = inverse[k][i].
+              w[i + 1] = inverse[0][i] * d[0] + inverse[1][i] * d[1] + inverse[2][i] * d[2];
+              w[0] -= w[i + 1];
+            }
+          }
+          for (int k = 0; k < 3; ++k)
+          {
+            double g = 0.0;
+            for (int i = 0; i < 4; ++i)
+            {
+              g += w[i] * static_cast<double>(gradients[3 * static_cast<size_t>(ids[i]) + k]);
+            }
+            out[at + k] = static_cast<float>(g);
+          }
+        }
+      }
+    });
+}
+
 VTK_ABI_NAMESPACE_END

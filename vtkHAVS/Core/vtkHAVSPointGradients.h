@@ -74,6 +74,19 @@ public:
   static void ComputeFields(const std::vector<float>& points, const std::vector<uint32_t>& tets,
     const std::vector<double>& gradients, std::vector<float>& fields);
 
+  /**
+   * The points' `gradients` (3 floats a point) interpolated at `positions`
+   * (3 floats a vertex, 3 vertices a triangle, in `points`' frame), each
+   * triangle in the tetrahedron `cells` names (its index in `tets`), with
+   * that tetrahedron's barycentric weights: the field above, as at a plane
+   * section's vertices (HAVS draws a clipping plane's section as fragments;
+   * vtkHAVSFramePlanes::Section). A flat tetrahedron gives its points' mean;
+   * a cell out of range, 0. `out`: 3 floats a vertex.
+   */
+  static void InterpolateInCells(const std::vector<float>& points,
+    const std::vector<uint32_t>& tets, const std::vector<float>& gradients,
+    const std::vector<float>& positions, const std::vector<uint32_t>& cells,
+    std::vector<float>& out);
   /// Bytes of ComputeFields' output for `tets` tetrahedra.
   static size_t FieldBytes(size_t tets) { return tets * FloatsPerCell * sizeof(float); }
 };

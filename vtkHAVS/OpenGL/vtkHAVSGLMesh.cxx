@@ -12,6 +12,7 @@
 #include "vtkHAVSGLCapabilities.h"
 
 #include "vtkHAVSMesh.h"
+#include "vtkHAVSPointGradients.h"
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
@@ -142,10 +143,12 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSGLMesh::UploadSections(const std::vector<vtkHAVSFramePlanes::Section>& sections)
+void vtkHAVSGLMesh::UploadSections(
+  const std::vector<vtkHAVSFramePlanes::Section>& sections, const std::vector<uint32_t>& tets)
 {
   this->SectionDraws.clear();
   std::vector<float> points, scalars;
+  std::vector<uint32_t> cells;
   for (const vtkHAVSFramePlanes::Section& section : sections)
   {
     const GLsizei count = static_cast<GLsizei>(section.Scalars.size());
@@ -160,6 +163,8 @@ void vtkHAVSGLMesh::UploadSections(const std::vector<vtkHAVSFramePlanes::Section
     {
       scalars.insert(scalars.end(), static_cast<size_t>(this->Components), s);
     }
+    cells.insert(cells.end(), section.Cells.begin(), section.Cells.end());
+    cells.resize(points.size() / 9, 0); // (a section without its cells: out of range below)
   }
   if (this->SectionDraws.empty())
   {
@@ -167,6 +172,17 @@ void vtkHAVSGLMesh::UploadSections(const std::vector<vtkHAVSFramePlanes::Section
   }
   UploadVertexAttributes(this->SectionArray, this->SectionPoints, this->SectionScalars, points,
     scalars, GL_STREAM_DRAW, this->Components);
+  if (!this->Gradients.empty() && this->Gradients.size() == this->Points.size())
+  {
+    // Shaded isosurfaces: the sections' vertices carry the interpolated
+    // gradients at attribute 2, as the faces' vertices do (a crossing between
+    // a section's fragment and a face's mixes the two).
+    std::vector<float> gradients;
+    vtkHAVSPointGradients::InterpolateInCells(
+      this->Points, tets, this->Gradients, points, cells, gradients);
+    this->SectionGradients.Update(GL_ARRAY_BUFFER, gradients, 0, GL_STREAM_DRAW);
+    this->SectionArray.SetAttribute(2, this->SectionGradients, 3);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -251,8 +267,9 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
 //------------------------------------------------------------------------------
 void vtkHAVSGLMesh::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (vtkHAVSGLBuffer* b : { &this->PointBuffer, &this->ScalarBuffer, &this->IndexBuffer,
-         &this->SectionPoints, &this->SectionScalars, &this->GradientBuffer })
+  for (vtkHAVSGLBuffer* b :
+    { &this->PointBuffer, &this->ScalarBuffer, &this->IndexBuffer, &this->SectionPoints,
+      &this->SectionScalars, &this->GradientBuffer, &this->SectionGradients })
   {
     b->Release();
   }
@@ -262,6 +279,7 @@ void vtkHAVSGLMesh::ReleaseGraphicsResources(vtkWindow* window)
   this->IndexCount = 0;
   this->VertexCapacity = 0;
   this->GeometryVersion = this->ScalarVersion = this->OrderVersion = this->SectionsVersion = 0;
+  this->SectionsGradientsVersion = 0;
   this->OrderTagged = false;
   this->Gradients.clear();
   this->GradientsVersion = 0;
@@ -332,15 +350,16 @@ bool vtkHAVSGLMesh::UpdateFaceOrder(const std::vector<uint32_t>& triangles,
   return true;
 }
 
-bool vtkHAVSGLMesh::UpdateSections(
-  const std::vector<vtkHAVSFramePlanes::Section>& sections, vtkMTimeType version)
+bool vtkHAVSGLMesh::UpdateSections(const std::vector<vtkHAVSFramePlanes::Section>& sections,
+  vtkMTimeType version, const std::vector<uint32_t>& tets)
 {
-  if (this->SectionsVersion == version)
+  if (this->SectionsVersion == version && this->SectionsGradientsVersion == this->GradientsVersion)
   {
     return false;
   }
-  this->UploadSections(sections);
+  this->UploadSections(sections, tets);
   this->SectionsVersion = version;
+  this->SectionsGradientsVersion = this->GradientsVersion;
   return true;
 }
 

@@ -75,7 +75,8 @@ public:
   /// UploadFaceOrder.
   void UploadScalars(const std::vector<float>& scalars);
   /// The sections of the next frames (empty: none).
-  void UploadSections(const std::vector<vtkHAVSFramePlanes::Section>& sections);
+  void UploadSections(
+    const std::vector<vtkHAVSFramePlanes::Section>& sections, const std::vector<uint32_t>& tets);
 
   ///@{
   /**
@@ -96,8 +97,11 @@ public:
   /// False when nothing was uploaded; `failed` when the upload failed.
   bool UpdateFaceOrder(const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& boundary,
     bool tagged, vtkMTimeType version, bool* failed);
-  bool UpdateSections(
-    const std::vector<vtkHAVSFramePlanes::Section>& sections, vtkMTimeType version);
+  /// The sections (again when `version` or the gradients changed); `tets`:
+  /// the mesh's tetrahedra, which the sections' Cells index (shaded
+  /// isosurfaces: the gradients interpolated at the sections' vertices).
+  bool UpdateSections(const std::vector<vtkHAVSFramePlanes::Section>& sections,
+    vtkMTimeType version, const std::vector<uint32_t>& tets);
   /**
    * Shaded isosurfaces (HAVS's fragment lists): each point's gradient (3
    * floats, model coordinates, as GetPoints()) at attribute 2, the boundary
@@ -159,6 +163,8 @@ private:
   vtkHAVSGLVertexArray SectionArray;
   vtkHAVSGLBuffer SectionPoints;
   vtkHAVSGLBuffer SectionScalars;
+  vtkHAVSGLBuffer SectionGradients; // (shaded isosurfaces) attribute 2
+  vtkMTimeType SectionsGradientsVersion = 0;
   struct SectionDraw
   {
     int PlaneIndex;

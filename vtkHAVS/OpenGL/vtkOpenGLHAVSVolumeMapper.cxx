@@ -10,6 +10,7 @@
 #include "vtkOpenGLHAVSVolumeMapper.h"
 
 #include "vtkHAVSExtremumPass.h"
+#include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFragmentListKBuffer.h"
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSFramebufferFetchKBuffer.h"
@@ -169,7 +170,8 @@ bool vtkOpenGLHAVSVolumeMapper::Upload(const FrameRequest& request, FrameResult&
   {
     return false;
   }
-  this->GLMesh->UpdateSections(request.Planes->GetSections(), request.Planes->GetSectionsVersion());
+  this->GLMesh->UpdateSections(request.Planes->GetSections(), request.Planes->GetSectionsVersion(),
+    request.Mesh->GetFaceSet()->GetTetrahedra());
   result.TableUploaded = this->Resources->GetTable()->Update(request.Table, request.TableVersion);
   return true;
 }

@@ -590,10 +590,45 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
             double model[3] = { m[0] / m[3], m[1] / m[3], m[2] / m[3] };
             double pcoords[3], weights[8];
             int subId = 0;
-            const vtkIdType c = locator->FindCell(model, 0.0, cell, subId, pcoords, weights);
+            vtkIdType c = locator->FindCell(model, 0.0, cell, subId, pcoords, weights);
             if (c < 0 || grid->GetCellType(c) != VTK_TETRA)
             {
               return false;
+            }
+            // VTK's tetrahedron takes a point up to 1e-3 of its size outside
+            // it as inside (EvaluatePosition): a ray that leaves the mesh just
+            // before a plane would start inside at the plane and run on to
+            // the next one with the last cell's value. The cell must hold the
+            // point (barycentric weights >= -1e-7); else another near one
+            // that does, or none: the point is outside the mesh.
+            auto holds = [](const double* w)
+            { return std::min(std::min(w[0], w[1]), std::min(w[2], w[3])) >= -1e-7; };
+            if (!holds(weights))
+            {
+              c = -1;
+              const double box[6] = { model[0] - margin, model[0] + margin, model[1] - margin,
+                model[1] + margin, model[2] - margin, model[2] + margin };
+              vtkNew<vtkIdList> near;
+              locator->FindCellsWithinBounds(const_cast<double*>(box), near);
+              for (vtkIdType i = 0; i < near->GetNumberOfIds() && c < 0; ++i)
+              {
+                const vtkIdType id = near->GetId(i);
+                double closest[3], distance2;
+                if (grid->GetCellType(id) == VTK_TETRA)
+                {
+                  grid->GetCell(id, cell);
+                  if (cell->EvaluatePosition(model, closest, subId, pcoords, distance2, weights) ==
+                      1 &&
+                    holds(weights))
+                  {
+                    c = id;
+                  }
+                }
+              }
+              if (c < 0)
+              {
+                return false;
+              }
             }
             scalar = 0.0;
             if (cellData)
