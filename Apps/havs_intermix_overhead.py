@@ -18,23 +18,17 @@ timed to the end of Render():
 Prints both with the ratio and the difference per frame. Speed only: nothing
 is asserted (the tests assert correctness).
 """
-import glob
 import os
 import statistics
 import sys
 import time
 
-# The project's Python modules: an install, or the build tree beside this file.
-sys.path[:0] = glob.glob(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build",
-                                      "lib", "python3*", "*-packages"))
-import vtkhavs  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from havs_app_scene import MAPPERS, new_window, ramp_property  # noqa: E402
 from vtkhavs.vtkHAVSOpenGL import vtkHAVSIntermixPass  # noqa: E402
 from vtkhavs.vtkHAVSValidation import vtkHAVSDataSets  # noqa: E402
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction  # noqa: E402
-from vtkmodules.vtkRenderingCore import (  # noqa: E402
-    vtkColorTransferFunction, vtkRenderer, vtkVolume, vtkVolumeProperty)
+from vtkmodules.vtkRenderingCore import vtkVolume  # noqa: E402
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass  # noqa: E402
-import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: E402,F401  (the volume mappers' factories)
 
 dataset = sys.argv[1] if len(sys.argv) > 1 else "bluntfin"
 mapper_name = sys.argv[2] if len(sys.argv) > 2 else "havs"
@@ -43,22 +37,9 @@ size = int(sys.argv[3]) if len(sys.argv) > 3 else 512
 grid = vtkHAVSDataSets.Load(dataset)
 if grid is None or grid.GetNumberOfCells() == 0:
     sys.exit("cannot load %s (HAVS_DATA_DIR?)" % dataset)
-lo, hi = grid.GetPointData().GetScalars().GetRange()
-opacity, color, prop = vtkPiecewiseFunction(), vtkColorTransferFunction(), vtkVolumeProperty()
-opacity.AddPoint(lo, 0.0)
-opacity.AddPoint(hi, 0.5)
-color.AddRGBPoint(lo, 0, 0, 1)
-color.AddRGBPoint(hi, 1, 0, 0)
-prop.SetScalarOpacity(opacity)
-prop.SetColor(color)
-prop.SetScalarOpacityUnitDistance(grid.GetLength() / 20)
-
-window = vtkhavs.vtkHAVSRenderWindowFactory.CreateRenderWindow()
-window.SetSize(size, size)
-renderer = vtkRenderer()
-window.AddRenderer(renderer)
-mapper = {"havs": vtkhavs.vtkHAVSVolumeMapper, "raycast": vtkhavs.vtkHAVSRayCastMapper,
-          "cellproj": vtkhavs.vtkHAVSCellProjectionMapper}[mapper_name]()
+prop = ramp_property(grid)
+window, renderer = new_window(size)
+mapper = MAPPERS[mapper_name]()
 mapper.SetInputData(grid)
 volume = vtkVolume()
 volume.SetMapper(mapper)

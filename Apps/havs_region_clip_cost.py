@@ -21,28 +21,23 @@ medians, their ratio and the tetrahedra each mapper draws. vtkSMPTools' backend 
 VTK_SMP_BACKEND_IN_USE says (printed). Absolute times mean something only on a GPU; the ratio
 is the route's cost per frame on this machine.
 """
-import glob
 import os
 import statistics
 import sys
 import time
 
-sys.path[:0] = glob.glob(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build",
-                                      "lib", "python3*", "*-packages"))
-import vtkhavs  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from havs_app_scene import MAPPERS, new_window, ramp_property  # noqa: E402
 from vtkhavs.vtkHAVSValidation import vtkHAVSDataSets  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkIdList  # noqa: E402
-from vtkmodules.vtkCommonDataModel import (  # noqa: E402
-    vtkPiecewiseFunction, vtkPlane, vtkPlaneCollection)
+from vtkmodules.vtkCommonDataModel import vtkPlane, vtkPlaneCollection  # noqa: E402
 from vtkmodules.vtkFiltersCore import vtkStaticCleanUnstructuredGrid  # noqa: E402
+from vtkmodules.vtkFiltersGeneral import vtkTableBasedClipDataSet  # noqa: E402
+from vtkmodules.vtkRenderingCore import vtkVolume  # noqa: E402
 try:
     from vtkmodules.vtkFiltersCore import vtkExtractCells  # noqa: E402  (VTK 9.2, 9.3)
 except ImportError:
     from vtkmodules.vtkFiltersExtraction import vtkExtractCells  # noqa: E402
-from vtkmodules.vtkFiltersGeneral import vtkTableBasedClipDataSet  # noqa: E402
-from vtkmodules.vtkRenderingCore import (  # noqa: E402
-    vtkColorTransferFunction, vtkRenderer, vtkVolume, vtkVolumeProperty)
-import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: E402,F401
 
 dataset = sys.argv[1] if len(sys.argv) > 1 else "loxpost"
 mapper_name = sys.argv[2] if len(sys.argv) > 2 else "havs"
@@ -55,7 +50,6 @@ else:
     grid = vtkHAVSDataSets.Load(dataset)
 if grid is None or grid.GetNumberOfCells() == 0:
     sys.exit("cannot load %s (HAVS_DATA_DIR?)" % dataset)
-lo, hi = grid.GetPointData().GetScalars().GetRange()
 
 # The region: x (and y) at most the points' median, as a kd cut halves the points.
 points = grid.GetPoints()
@@ -108,21 +102,9 @@ merge.SetInputData(piece)
 merge.Update()
 split_piece = merge.GetOutput()
 
-opacity, color, prop = vtkPiecewiseFunction(), vtkColorTransferFunction(), vtkVolumeProperty()
-opacity.AddPoint(lo, 0.0)
-opacity.AddPoint(hi, 0.5)
-color.AddRGBPoint(lo, 0, 0, 1)
-color.AddRGBPoint(hi, 1, 0, 0)
-prop.SetScalarOpacity(opacity)
-prop.SetColor(color)
-prop.SetScalarOpacityUnitDistance(grid.GetLength() / 20)
-
-window = vtkhavs.vtkHAVSRenderWindowFactory.CreateRenderWindow()
-window.SetSize(size, size)
-renderer = vtkRenderer()
-window.AddRenderer(renderer)
-make = {"havs": vtkhavs.vtkHAVSVolumeMapper, "raycast": vtkhavs.vtkHAVSRayCastMapper,
-        "cellproj": vtkhavs.vtkHAVSCellProjectionMapper}[mapper_name]
+prop = ramp_property(grid)
+window, renderer = new_window(size)
+make = MAPPERS[mapper_name]
 routes = {}
 for name, data, clip in (("clip", clip_piece, planes), ("split", split_piece, None)):
     mapper = make()

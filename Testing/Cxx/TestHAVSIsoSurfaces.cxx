@@ -293,9 +293,14 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
       auto reference = havstest::MakeReference(grid, property, camera, size);
       reference->SetBlendMode(iso);
       reference->SetLights(s.Renderer->GetLights());
-      reference->Render();
-      vtkFloatArray* ri = reference->GetImage();
-      const std::vector<float> exactShaded(ri->GetPointer(0), ri->GetPointer(0) + 4 * size * size);
+      // The reference's image as it is set up now.
+      auto exactNow = [&]()
+      {
+        reference->Render();
+        vtkFloatArray* ri = reference->GetImage();
+        return std::vector<float>(ri->GetPointer(0), ri->GetPointer(0) + 4 * size * size);
+      };
+      const std::vector<float> exactShaded = exactNow();
       const auto ds = havstest::Compare(shaded, exactShaded, edge);
       const auto unlit = havstest::Compare(shaded, exact, edge);
       // Control: a light turned 20 degrees about the view-up.
@@ -317,8 +322,7 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
       light->SetFocalPoint(focal);
       turned->AddItem(light);
       reference->SetLights(turned);
-      reference->Render();
-      const std::vector<float> exactTurned(ri->GetPointer(0), ri->GetPointer(0) + 4 * size * size);
+      const std::vector<float> exactTurned = exactNow();
       const auto dt = havstest::Compare(shaded, exactTurned, edge);
       havstest::PrintDifference(at + ": shaded isosurfaces", ds);
       havstest::PrintDifference(at + ": control, unshaded", unlit);
@@ -334,9 +338,7 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
       reference->SetLights(s.Renderer->GetLights());
       reference->SetBlendMode(0);
       reference->SetIsoSurfacesInComposite(true);
-      reference->Render();
-      const std::vector<float> exactMixedShaded(
-        ri->GetPointer(0), ri->GetPointer(0) + 4 * size * size);
+      const std::vector<float> exactMixedShaded = exactNow();
       const auto dms = havstest::Compare(mixedShaded, exactMixedShaded, edge);
       const auto controlMs = havstest::Compare(mixedShaded, exactMixed, edge);
       havstest::PrintDifference(at + ": mixed, shaded", dms);
@@ -366,9 +368,7 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
         reference->SetBlendMode(iso);
         reference->SetIsoSurfacesInComposite(false);
         reference->SetClippingPlanes(planes);
-        reference->Render();
-        const std::vector<float> exactClipped(
-          ri->GetPointer(0), ri->GetPointer(0) + 4 * size * size);
+        const std::vector<float> exactClipped = exactNow();
         const auto dc = havstest::Compare(clipped, exactClipped, edge);
         const auto controlC = havstest::Compare(clipped, exactShaded, edge);
         havstest::PrintDifference(at + ": shaded, clipped", dc);
