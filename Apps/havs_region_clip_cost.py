@@ -70,30 +70,30 @@ extract.SetInputData(grid)
 extract.SetCellList(ids)
 extract.Update()
 clip_piece = extract.GetOutput()
-planes = vtkPlaneCollection()
-for axis in range(cuts):
+def median_plane(axis, sign):
+    """The plane through the median on `axis` with normal sign * that axis."""
     plane = vtkPlane()
     origin = [0.0, 0.0, 0.0]
     origin[axis] = medians[axis]
     normal = [0.0, 0.0, 0.0]
-    normal[axis] = -1.0  # keeps x <= the median
+    normal[axis] = sign
     plane.SetOrigin(origin)
     plane.SetNormal(normal)
-    planes.AddItem(plane)
+    return plane
+
+
+# The clip route's mapper planes, each keeping x (y) <= the median (the side its normal points
+# to).
+planes = vtkPlaneCollection()
+for axis in range(cuts):
+    planes.AddItem(median_plane(axis, -1.0))
 
 # split: the grid clipped there (each plane in turn), coincident points merged.
 piece = grid
 for axis in range(cuts):
-    plane = vtkPlane()
-    origin = [0.0, 0.0, 0.0]
-    origin[axis] = medians[axis]
-    normal = [0.0, 0.0, 0.0]
-    normal[axis] = 1.0
-    plane.SetOrigin(origin)
-    plane.SetNormal(normal)
     clipper = vtkTableBasedClipDataSet()
     clipper.SetInputData(piece)
-    clipper.SetClipFunction(plane)
+    clipper.SetClipFunction(median_plane(axis, 1.0))
     clipper.InsideOutOn()  # keeps x <= the median
     clipper.Update()
     piece = clipper.GetOutput()

@@ -5,16 +5,17 @@ ParaView splits the grid over the ranks along a kd-tree and IceT composites the 
 in the order of their boxes. The HAVS Volume representation asks for every cell that touches a
 rank's box to go there, the mapper clipping the piece to the box (`--redistribution clip`, the
 default), or for the cells on the cuts to be split there by ParaView (`split`), so that each
-rank's piece lies in its box and the order is exact. Each mapper offered (HAVS, HAVS Ray Cast, HAVS Cell Projection) is checked on
-several views against the exact reference (vtkHAVSReferenceRenderer), in two parts:
+rank's piece lies in its box and the order is exact. Each mapper offered (HAVS, HAVS Ray Cast,
+HAVS Cell Projection) is checked on several views against the exact reference
+(vtkHAVSReferenceRenderer), in two parts:
 
 - the distribution: the exact images of the ranks' pieces (clipped by the planes their mappers
   hold: the box's under `clip`, and with `--user-plane` the user's own first), composited in
-  float in the order of the ranks' boxes, equal the exact image of the whole grid (max <= 0.5/255 on the Delaunay
-  grid, whose coordinates are double; 1/255 on float32 data, where the split's new points move
-  a grazing ray's hits by a hair). Controls: with ParaView's stock redistribution (whole cells
-  to one rank) that composite misses the bound (a seam); under `clip` the same pieces without
-  their planes miss it (the cells on the cuts counted twice).
+  float in the order of the ranks' boxes, equal the exact image of the whole grid (max <=
+  0.5/255 on the Delaunay grid, whose coordinates are double; 1/255 on float32 data, where the
+  split's new points move a grazing ray's hits by a hair). Controls: with ParaView's stock
+  redistribution (whole cells to one rank) that composite misses the bound (a seam); under
+  `clip` the same pieces without their planes miss it (the cells on the cuts counted twice).
 - the rendering: the screenshot equals what IceT makes of the exact pieces' images (each rounded
   to 8 bits, composited with IceT's 8-bit "over", which truncates): max <= 2/255 at 2 ranks
   (3/255 at 4) and RMSE <= 0.35/255 for every mapper and view.
@@ -278,20 +279,29 @@ def piece_path(mode, r):
     return os.path.join(args.out, "seams_%s_%d_%s_piece%d.vtu" % (args.data, ranks, mode, r))
 
 
-# The user's own clipping plane (oblique, through the grid off its centre), as the reference
-# takes planes: its origin and normal.
+def plane_collection(planes):
+    """A vtkPlaneCollection of `planes` ({"planes": [origin + normal, ...], "region": the number
+    of the last ones that are the rank's box}, as write_piece records them); None for none."""
+    if not planes or not planes["planes"]:
+        return None
+    collection = vtkPlaneCollection()
+    for values in planes["planes"]:
+        plane = vtkPlane()
+        plane.SetOrigin(values[:3])
+        plane.SetNormal(values[3:])
+        collection.AddItem(plane)
+    return collection
+
+
+# The user's own clipping plane (oblique, through the grid off its centre).
 USER_PLANE = None
 if args.user_plane:
     bounds = grid.GetBounds()
-    origin = [bounds[0] + 0.62 * (bounds[1] - bounds[0]), bounds[2] + 0.5 * (bounds[3] - bounds[2]),
-              bounds[4] + 0.5 * (bounds[5] - bounds[4])]
+    origin = [bounds[0] + 0.62 * (bounds[1] - bounds[0]),
+              bounds[2] + 0.5 * (bounds[3] - bounds[2]), bounds[4] + 0.5 * (bounds[5] - bounds[4])]
     normal = list(numpy.array([-1.0, 0.35, 0.2]) / numpy.linalg.norm([-1.0, 0.35, 0.2]))
     USER_PLANE = {"planes": [origin + normal], "region": 0}
-    user_planes = vtkPlaneCollection()
-    user_plane = vtkPlane()
-    user_plane.SetOrigin(origin)
-    user_plane.SetNormal(normal)
-    user_planes.AddItem(user_plane)
+    user_planes = plane_collection(USER_PLANE)
 
 
 def give_user_plane():
@@ -337,17 +347,9 @@ def render_all(mode):
 
 def exact_rgba(camera, data, planes=None):
     """The exact premultiplied RGBA image of `data` (size x size x 4, bottom row first), clipped
-    by `planes` ([origin + normal], the side the normal points to kept) if given."""
-    collection = None
-    if planes and planes["planes"]:
-        collection = vtkPlaneCollection()
-        for values in planes["planes"]:
-            plane = vtkPlane()
-            plane.SetOrigin(values[:3])
-            plane.SetNormal(values[3:])
-            collection.AddItem(plane)
+    by `planes` (plane_collection's, the side each normal points to kept) if given."""
     image = reference_image(data, lut, pwf, display.ScalarOpacityUnitDistance, camera, args.size,
-                            planes=collection)
+                            planes=plane_collection(planes))
     return vtk_to_numpy(image).astype(numpy.float64).reshape(args.size, args.size, 4)
 
 
@@ -427,7 +429,8 @@ for mode in modes:
 
 if rank == 0:
     exact = {v: exact_rgba(cameras[v], grid, USER_PLANE) for v in range(args.views)}
-    exact8 = {v: numpy.round(numpy.clip(exact[v][:, :, :3], 0.0, 1.0) * 255.0) for v in exact}
+    exact255 = {v: numpy.clip(exact[v][:, :, :3], 0.0, 1.0) * 255.0 for v in exact}
+    exact8 = {v: numpy.round(exact255[v]) for v in exact}
     # The ranks' boxes: the split pieces' bounds, or the clipped pieces' bounds within their
     # planes (the cuts do not depend on the mode).
     boxes = None
@@ -449,6 +452,10 @@ if rank == 0:
         icet = {}
         seams = []
         overlaps = []
+        if USER_PLANE and piece_checks:
+            check(all(pieces[mode][r][1]["planes"][0] == USER_PLANE["planes"][0]
+                      for r in pieces[mode]), "%s, %d ranks: every rank's mapper kept the "
+                  "user's own plane first" % (mode, ranks))
         for v in range(args.views):
             if not piece_checks:
                 continue
@@ -456,26 +463,7 @@ if rank == 0:
             ranked = [owners[i] for i in box_order([boxes[r] for r in owners], cameras[v])]
             images = [exact_rgba(cameras[v], *pieces[mode][r]) for r in ranked
                       if r in pieces[mode]]
-            if USER_PLANE:
-                check(all(pieces[mode][r][1]["planes"][0] == USER_PLANE["planes"][0]
-                          for r in pieces[mode]), "%s, %d ranks: every rank's mapper kept the "
-                      "user's own plane first" % (mode, ranks))
-            float_rmse, float_max = errors(composite(images, False),
-                                           numpy.clip(exact[v][:, :, :3], 0, 1) * 255.0)
-            if os.environ.get("HAVS_SEAMS_DEBUG"):
-                cam = cameras[v]
-                print("DEBUG camera %s" % json.dumps({
-                    "position": cam.GetPosition(), "focal": cam.GetFocalPoint(),
-                    "up": cam.GetViewUp(), "angle": cam.GetViewAngle(),
-                    "parallel": cam.GetParallelProjection(), "scale": cam.GetParallelScale(),
-                    "range": cam.GetClippingRange(), "order": ranked}), flush=True)
-                diff = numpy.abs(composite(images, False)
-                                 - numpy.clip(exact[v][:, :, :3], 0, 1) * 255.0).max(axis=2)
-                for flat in numpy.argsort(diff, axis=None)[-6:]:
-                    y, x = divmod(int(flat), args.size)
-                    print("DEBUG view %d pixel (%d, %d): %.3f/255; pieces %s; whole %s" % (
-                        v, x, y, diff[y, x], [list(numpy.round(im[y, x] * 255, 3)) for im in images],
-                        list(numpy.round(exact[v][y, x] * 255, 3))), flush=True)
+            float_rmse, float_max = errors(composite(images, False), exact255[v])
             icet[v] = composite(images, True)
             floor[v] = errors(icet[v], exact8[v])
             if exact_mode:
@@ -487,8 +475,7 @@ if rank == 0:
                     # touches a box is in it whole), so their composite misses the bound.
                     unclipped = [exact_rgba(cameras[v], pieces[mode][r][0], USER_PLANE)
                                  for r in ranked if r in pieces[mode]]
-                    overlap_rmse, overlap_max = errors(
-                        composite(unclipped, False), numpy.clip(exact[v][:, :, :3], 0, 1) * 255.0)
+                    overlap_rmse, overlap_max = errors(composite(unclipped, False), exact255[v])
                     overlaps.append(overlap_max)
                     print("control, clip pieces without their planes, %d ranks, view %d: max "
                           "%.3f/255, RMSE %.4f/255" % (ranks, v, overlap_max, overlap_rmse),

@@ -99,7 +99,7 @@ bool vtkHAVSGLMesh::UploadFaceOrder(
   std::vector<uint32_t> rewritten;
   std::vector<float> points, scalars, gradients;
   // (Shaded isosurfaces: the boundary vertices' gradients copied with them.)
-  const bool shaded = !this->Gradients.empty() && this->Gradients.size() == this->Points.size();
+  const bool shaded = this->HasGradients();
   const size_t boundaryFaces = tagged
     ? vtkHAVSMesh::MakeTaggedVertices(this->Points, this->Scalars, nc, triangles, boundary, points,
         scalars, rewritten, shaded ? &this->Gradients : nullptr, &gradients)
@@ -172,7 +172,7 @@ void vtkHAVSGLMesh::UploadSections(
   }
   UploadVertexAttributes(this->SectionArray, this->SectionPoints, this->SectionScalars, points,
     scalars, GL_STREAM_DRAW, this->Components);
-  if (!this->Gradients.empty() && this->Gradients.size() == this->Points.size())
+  if (this->HasGradients())
   {
     // Shaded isosurfaces: the sections' vertices carry the interpolated
     // gradients at attribute 2, as the faces' vertices do (a crossing between

@@ -158,6 +158,11 @@ private:
   int Components = 1;             // scalars per vertex
   vtkHAVSGLBuffer GradientBuffer; // (shaded isosurfaces) attribute 2
   std::vector<float> Gradients;   // as uploaded (empty: none this frame)
+  /// Whether this frame's vertices carry gradients (one per point).
+  bool HasGradients() const
+  {
+    return !this->Gradients.empty() && this->Gradients.size() == this->Points.size();
+  }
   vtkMTimeType GradientsVersion = 0;
 
   vtkHAVSGLVertexArray SectionArray;

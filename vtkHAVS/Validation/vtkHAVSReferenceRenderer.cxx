@@ -606,10 +606,10 @@ bool vtkHAVSReferenceRenderer::ComputeFragments()
             if (!holds(weights))
             {
               c = -1;
-              const double box[6] = { model[0] - margin, model[0] + margin, model[1] - margin,
+              double box[6] = { model[0] - margin, model[0] + margin, model[1] - margin,
                 model[1] + margin, model[2] - margin, model[2] + margin };
               vtkNew<vtkIdList> near;
-              locator->FindCellsWithinBounds(const_cast<double*>(box), near);
+              locator->FindCellsWithinBounds(box, near);
               for (vtkIdType i = 0; i < near->GetNumberOfIds() && c < 0; ++i)
               {
                 const vtkIdType id = near->GetId(i);
