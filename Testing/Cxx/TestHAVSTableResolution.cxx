@@ -111,6 +111,30 @@ int TestHAVSTableResolution(int, char*[])
   havstest::Check(chooser->NeedsRebuild(table, ramp, 0, range, 1.5, 128, 128),
     "an edited transfer function needs a rebuild");
   chooser->Build(table, ramp, 0, range, 1.5, 128, 128);
+  // An edit (issue 45) starts from the last choice: the ramp's middle opacity
+  // node moved by 10 % builds one table, the same size, within the bound.
+  havstest::Check(table->GetScalarResolution() == 64, "the edited ramp gets 64^3");
+  ramp->GetScalarOpacity()->AddPoint(0.9, 0.22);
+  chooser->Build(table, ramp, 0, range, 1.5, 128, 128);
+  std::cout << "edit: " << chooser->GetLastCandidates() << " candidate(s), "
+            << table->GetScalarResolution() << "^3, measured " << chooser->GetLastError()
+            << std::endl;
+  havstest::Check(chooser->GetLastCandidates() == 1 && table->GetScalarResolution() == 64 &&
+      chooser->GetLastError() <= bound,
+    "an edit builds the last choice alone");
+  // Functions that no longer need it go down: a faint constant (error far
+  // below the bound at every size) is tried at 32^3 and kept.
+  auto faint = havstest::MakeConstantProperty(1.0, 0.5, 0.2, 0.01, 1.0);
+  chooser->Build(table, faint, 0, range, 1.5, 128, 128);
+  std::cout << "faint after the ramp: " << chooser->GetLastCandidates() << " candidates, "
+            << table->GetScalarResolution() << "^3, measured " << chooser->GetLastError()
+            << std::endl;
+  havstest::Check(table->GetScalarResolution() == 32 && chooser->GetLastCandidates() == 2,
+    "from the last choice down to the smallest that meets the bound");
+  // ... and back up: the ramp again needs 64^3 (32^3 misses: control above).
+  chooser->Build(table, ramp, 0, range, 1.5, 128, 128);
+  havstest::Check(table->GetScalarResolution() == 64 && chooser->GetLastError() <= bound,
+    "from the last choice up to the size that meets the bound");
   chooser->SetErrorBound(bound / 2);
   havstest::Check(
     chooser->NeedsRebuild(table, ramp, 0, range, 1.5, 128, 128), "a new bound needs a rebuild");
@@ -130,13 +154,19 @@ int TestHAVSTableResolution(int, char*[])
   const double peak64 = chooser->MeasureError(table, peak, 0);
   std::cout << "peak 64^3: measured " << peak64 << std::endl;
   havstest::Check(peak64 > bound, "control: the peak's 64^3 table misses the bound");
-  havstest::Check(chooser->Build(table, peak, 0, range, 0.2, 128, 128), "peak builds");
-  std::cout << "peak: " << chooser->GetLastCandidates() << " candidates, chose "
-            << table->GetScalarResolution() << "^3, measured " << chooser->GetLastError()
+  // (A fresh chooser: the search from the smallest.)
+  vtkNew<vtkHAVSTableResolution> fresh;
+  havstest::Check(fresh->Build(table, peak, 0, range, 0.2, 128, 128), "peak builds");
+  std::cout << "peak: " << fresh->GetLastCandidates() << " candidates, chose "
+            << table->GetScalarResolution() << "^3, measured " << fresh->GetLastError()
             << std::endl;
   havstest::Check(table->GetScalarResolution() > 64, "the peak needs more than 64^3");
-  havstest::Check(chooser->GetLastCandidates() == 2,
+  havstest::Check(fresh->GetLastCandidates() == 2,
     "the peak's 32^3 misses by more than 6 times: 64^3 is skipped");
+  // From the ramp's last choice (64^3) the peak goes up too.
+  chooser->Build(table, peak, 0, range, 0.2, 128, 128);
+  havstest::Check(table->GetScalarResolution() > 64 && chooser->GetLastCandidates() == 2,
+    "the peak after the ramp: 64^3 misses, the next size");
 
   // A bound no table meets: the largest allowed.
   chooser->SetErrorBound(1e-9);

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric> // For std::gcd
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -105,19 +106,77 @@ inline void CompositeStep(const OpticalSample& a, const OpticalSample& b, double
   transmittance *= attenuation;
 }
 
+/// The optics at `count` evenly spaced scalars from a to b (both included; a
+/// may exceed b), written to out[0], out[stride], ...: the same values as
+/// Evaluate() at each (to rounding of the scalars), in one pass of each
+/// function (VTK's GetTable walks its nodes once; GetValue and GetColor call
+/// it once per scalar, which is most of a probe's cost, issue 45). A colour
+/// function on a logarithmic scale (its GetTable spaces the scalars in
+/// log10) or in indexed lookup (GetColor's own path) is evaluated one scalar
+/// at a time.
+void EvaluateEvenly(vtkVolumeProperty* property, int component, double a, double b, int count,
+  OpticalSample* out, int stride)
+{
+  if (count <= 0)
+  {
+    return;
+  }
+  vtkColorTransferFunction* rgb = property->GetColorChannels(component) == 1
+    ? nullptr
+    : property->GetRGBTransferFunction(component);
+  if (count == 1 || (rgb && (rgb->GetScale() != VTK_CTF_LINEAR || rgb->GetIndexedLookup())))
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      out[i * stride] =
+        Evaluate(property, component, count == 1 ? a : a + (b - a) * i / (count - 1));
+    }
+    return;
+  }
+  // GetTable needs increasing scalars: sample from the smaller end, and
+  // write a descending run backwards.
+  const bool ascending = a <= b;
+  const double lo = ascending ? a : b, hi = ascending ? b : a;
+  std::vector<double> opacity(count), color(3 * static_cast<size_t>(count));
+  property->GetScalarOpacity(component)->GetTable(lo, hi, count, opacity.data());
+  if (rgb)
+  {
+    rgb->GetTable(lo, hi, count, color.data());
+  }
+  else
+  {
+    property->GetGrayTransferFunction(component)->GetTable(lo, hi, count, color.data(), 3);
+  }
+  const double unit = property->GetScalarOpacityUnitDistance(component);
+  for (int i = 0; i < count; ++i)
+  {
+    OpticalSample& sample = out[(ascending ? i : count - 1 - i) * stride];
+    sample.Tau = std::max(0.0, opacity[i]) / unit;
+    const double* c = color.data() + 3 * static_cast<size_t>(i);
+    sample.Color[0] = c[0];
+    sample.Color[1] = rgb ? c[1] : c[0];
+    sample.Color[2] = rgb ? c[2] : c[0];
+  }
+}
+
 /// The optics at the ends of n uniform sub-steps of (sf -> sb): at
 /// sf + (sb - sf) j / n, j = 0 .. n. Given the samples of n / 2 (`coarser`),
-/// those are the even ones here, bit for bit ((sb - sf) 2j / 2n rounds as
-/// (sb - sf) j / n), and only the odd ones are evaluated.
+/// those are the even ones here, and only the odd ones are evaluated.
 void SampleSteps(vtkVolumeProperty* property, int component, double sf, double sb, int n,
   const std::vector<OpticalSample>* coarser, std::vector<OpticalSample>& out)
 {
   out.resize(n + 1);
-  for (int j = 0; j <= n; ++j)
+  if (!coarser)
   {
-    out[j] = coarser && j % 2 == 0 ? (*coarser)[j / 2]
-                                   : Evaluate(property, component, sf + (sb - sf) * j / n);
+    EvaluateEvenly(property, component, sf, sb, n + 1, out.data(), 1);
+    return;
   }
+  for (int j = 0; j <= n; j += 2)
+  {
+    out[j] = (*coarser)[j / 2];
+  }
+  EvaluateEvenly(property, component, sf + (sb - sf) / n, sf + (sb - sf) * (n - 1) / n, n / 2,
+    out.data() + 1, 2);
 }
 
 /// The segment of `length` composited over the sub-steps between `samples`.
@@ -297,7 +356,7 @@ void vtkHAVSPreIntegrationTable::IntegrateSegment(vtkVolumeProperty* property, i
 }
 
 //------------------------------------------------------------------------------
-void vtkHAVSPreIntegrationTable::Zero()
+void vtkHAVSPreIntegrationTable::Zero(bool lengthZeroOnly)
 {
   const size_t ns = static_cast<size_t>(this->ScalarResolution);
   const size_t floats = ns * ns * this->LengthResolution * 4;
@@ -307,7 +366,15 @@ void vtkHAVSPreIntegrationTable::Zero()
     // its memory follows, rather than staying at the largest table built.
     std::vector<float>().swap(this->Table);
   }
-  this->Table.assign(floats, 0.0f);
+  if (lengthZeroOnly && this->Table.size() == floats)
+  {
+    // The same size again (an edit): every entry of length > 0 is written.
+    std::fill_n(this->Table.begin(), ns * ns * 4, 0.0f);
+  }
+  else
+  {
+    this->Table.assign(floats, 0.0f);
+  }
   this->TransferFunction1D.assign(ns * 4, 0.0f);
   this->Additive1D.assign(2 * AdditiveResolution, 0.0f);
   this->BuiltScalarResolution = this->ScalarResolution;
@@ -343,29 +410,33 @@ bool vtkHAVSPreIntegrationTable::Build(
   this->ScalarRange[1] = scalarRange[1];
   this->MaxLength = maxLength;
   this->LengthLogScale = 0.0;
-  this->Zero();
   if (!property)
   {
+    this->Zero();
     vtkErrorMacro("No volume property.");
     return false;
   }
   if (!std::isfinite(scalarRange[0]) || !std::isfinite(scalarRange[1]) ||
     scalarRange[0] > scalarRange[1])
   {
+    this->Zero();
     vtkErrorMacro("Invalid scalar range [" << scalarRange[0] << ", " << scalarRange[1] << "].");
     return false;
   }
   if (!(property->GetScalarOpacityUnitDistance(component) > 0.0))
   {
+    this->Zero();
     vtkErrorMacro("ScalarOpacityUnitDistance must be positive, it is "
       << property->GetScalarOpacityUnitDistance(component) << ".");
     return false;
   }
   if (!(maxLength > 0.0) || !std::isfinite(maxLength))
   {
+    this->Zero();
     vtkWarningMacro("Non-positive maximum segment length " << maxLength << ": the table is empty.");
     return true;
   }
+  this->Zero(true); // every entry below is written, but those of length 0
 
   const int ns = this->ScalarResolution;
   const int nl = this->LengthResolution;
@@ -427,10 +498,12 @@ bool vtkHAVSPreIntegrationTable::Build(
   // The additive blend's integrand g(s) = tau(s) * s (s normalized) and its
   // integral G, exact for g linear between the nodes (the trapezoid rule).
   double integral = 0.0, previous = 0.0;
+  std::vector<OpticalSample> additive(AdditiveResolution);
+  EvaluateEvenly(property, component, lo, lo + span, AdditiveResolution, additive.data(), 1);
   for (int i = 0; i < AdditiveResolution; ++i)
   {
     const double sn = static_cast<double>(i) / (AdditiveResolution - 1);
-    const double g = Evaluate(property, component, lo + span * sn).Tau * sn;
+    const double g = additive[i].Tau * sn;
     if (i > 0)
     {
       integral += 0.5 * (previous + g) / (AdditiveResolution - 1);
@@ -524,78 +597,109 @@ bool vtkHAVSPreIntegrationTable::Build(
           }
         }
       });
-    // One task per j, both directions: a sub-step's depth, attenuation and
-    // weights are the same either way; only its ends swap.
-    vtkSMPTools::For(1, static_cast<vtkIdType>(cells) + 1,
+    // The sub-steps' reciprocal depths (a multiplication per sub-step below,
+    // not a division).
+    std::vector<double> inverseStepDepth(steps);
+    for (int k = 0; k < steps; ++k)
+    {
+      inverseStepDepth[k] = stepDepth[k] > 0.0 ? 1.0 / stepDepth[k] : 0.0;
+    }
+    // A sub-step's composite depends on j and L only through
+    // scale = L (NS - 1) / j, its world length per unit normalized scalar. On
+    // the linear length axis (L = l lengthStep) that is a function of l / j:
+    // the pairs (q j0, q l0) share the interval composites of (j0, l0), which
+    // are computed once (for the coprime pairs, about 61 % of them) and
+    // windowed at every multiple. One task per j0, both directions: a
+    // sub-step's depth, attenuation and weights are the same either way; only
+    // its ends swap.
+    vtkSMPTools::For(1, static_cast<vtkIdType>(cells) + 1, 1,
       [&](vtkIdType begin, vtkIdType end)
       {
-        std::vector<Composite> step[2] = { std::vector<Composite>(steps),
-          std::vector<Composite>(steps) };
-        std::vector<Composite> cell(cells), prefix(cells), suffix(cells);
+        // cell[0]: the intervals forward, cell[1]: backward (see below).
+        std::vector<Composite> cell[2] = { std::vector<Composite>(cells),
+          std::vector<Composite>(cells) };
+        std::vector<Composite> prefix(cells), suffix(cells);
         std::vector<double> unitAttenuation(steps), attenuation(steps);
         for (vtkIdType task = begin; task < end; ++task)
         {
-          const int j = static_cast<int>(task);
+          const int j0 = static_cast<int>(task);
           // World length per unit normalized scalar, per unit segment length.
-          const double density = static_cast<double>(cells) / j;
+          const double density = static_cast<double>(cells) / j0;
           for (int k = 0; k < steps; ++k)
           {
             unitAttenuation[k] = logarithmic ? 0.0 : std::exp(-stepDepth[k] * density * lengthStep);
             attenuation[k] = 1.0;
           }
-          for (int l = 1; l < nl; ++l)
+          for (int l0 = 1; l0 < nl; ++l0)
           {
-            const double scale = density * layerLength[l];
-            const double inverseScale = 1.0 / scale;
-            for (int k = 0; k < steps; ++k)
+            if (!logarithmic)
             {
-              const double depth = stepDepth[k] * scale;
-              attenuation[k] = logarithmic ? std::exp(-depth) : attenuation[k] * unitAttenuation[k];
-              if (attenuation[k] < TinyAttenuation)
+              // exp(-depth) at this length, by the recurrence (no exp).
+              for (int k = 0; k < steps; ++k)
               {
-                attenuation[k] = 0.0; // no denormals in the products below
+                const double a = attenuation[k] * unitAttenuation[k];
+                attenuation[k] = a < TinyAttenuation ? 0.0 : a; // no denormals below
               }
-              const double inverseDepth = stepDepth[k] > 0.0 ? inverseScale / stepDepth[k] : 0.0;
-              double front, back;
-              StepWeights(depth, inverseDepth, attenuation[k], front, back);
-              for (int d = 0; d < 2; ++d)
+              if (std::gcd(j0, l0) != 1)
               {
-                // d = 0: forward (increasing scalar), 1: backward.
-                Composite& c = step[d][k];
-                c.Color[0] = c.Color[1] = c.Color[2] = 0.0;
-                c.Transmittance = attenuation[k];
-                StepColor(d == 0 ? fine[k] : fine[k + 1], d == 0 ? fine[k + 1] : fine[k], front,
-                  back, attenuation[k], 1.0, c.Color);
+                continue; // (j0, l0) is a multiple of a coprime pair
               }
             }
-            for (int d = 0; d < 2; ++d)
+            const double scale = density * layerLength[l0];
+            const double inverseScale = 1.0 / scale;
+            // The intervals, front to back, each its sub-steps composited as
+            // they are computed: forward (increasing scalar), interval i's
+            // sub-steps in increasing order, cell[0][i]; backward (b < f),
+            // in decreasing order, cell[1][cells - 1 - i], so that a window
+            // of cells is again front to back.
+            for (int i = 0; i < cells; ++i)
             {
-              const bool forward = d == 0;
-              const std::vector<Composite>& stepsOfDirection = step[d];
-              // The intervals, front to back: forward, interval i's sub-steps in
-              // increasing order; backward (b < f), cell m is interval
-              // cells - 1 - m, its sub-steps in decreasing order, so that a
-              // window of cells is again front to back.
-              for (int m = 0; m < cells; ++m)
+              Composite forward = { { 0, 0, 0 }, 1.0 }, backward = { { 0, 0, 0 }, 1.0 };
+              for (int k = tableSample[i]; k < tableSample[i + 1]; ++k)
               {
-                const int i = forward ? m : cells - 1 - m;
-                const int first = tableSample[i], last = tableSample[i + 1];
-                Composite c = forward ? stepsOfDirection[first] : stepsOfDirection[last - 1];
-                for (int k = first + 1; k < last; ++k)
+                const double depth = stepDepth[k] * scale;
+                double a = attenuation[k];
+                if (logarithmic)
                 {
-                  c = Over(c, stepsOfDirection[forward ? k : first + last - 1 - k]);
+                  a = std::exp(-depth);
+                  a = a < TinyAttenuation ? 0.0 : a;
                 }
-                cell[m] = c;
+                double front, back;
+                StepWeights(depth, inverseScale * inverseStepDepth[k], a, front, back);
+                const OpticalSample& lower = fine[k];
+                const OpticalSample& upper = fine[k + 1];
+                Composite step = { { 0, 0, 0 }, a };
+                StepColor(lower, upper, front, back, a, 1.0, step.Color);
+                forward = Over(forward, step);
+                step.Color[0] = step.Color[1] = step.Color[2] = 0.0;
+                StepColor(upper, lower, front, back, a, 1.0, step.Color);
+                backward = Over(step, backward);
               }
-              WindowComposites(cell.data(), cells, j, prefix.data(), suffix.data(),
-                [&](int s, const Composite& w)
-                {
-                  // Forward: entry (s, s + j); backward: cells s .. s + j - 1 are
-                  // intervals cells - 1 - s down to cells - s - j: entry
-                  // (cells - s, cells - s - j).
-                  const int f = forward ? s : cells - s;
-                  store(f, forward ? f + j : f - j, l, w);
-                });
+              cell[0][i] = forward;
+              cell[1][cells - 1 - i] = backward;
+            }
+            // Every entry of j = q j0 at layer q l0 (only q = 1 on the
+            // logarithmic axis): a window of j intervals.
+            for (int q = 1; q * j0 <= cells && q * l0 < nl; ++q)
+            {
+              const int j = q * j0, l = q * l0;
+              for (int d = 0; d < 2; ++d)
+              {
+                const bool forward = d == 0;
+                WindowComposites(cell[d].data(), cells, j, prefix.data(), suffix.data(),
+                  [&](int s, const Composite& w)
+                  {
+                    // Forward: entry (s, s + j); backward: cells s .. s + j - 1
+                    // are intervals cells - 1 - s down to cells - s - j: entry
+                    // (cells - s, cells - s - j).
+                    const int f = forward ? s : cells - s;
+                    store(f, forward ? f + j : f - j, l, w);
+                  });
+              }
+              if (logarithmic)
+              {
+                break;
+              }
             }
           }
         }

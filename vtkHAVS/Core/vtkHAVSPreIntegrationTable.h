@@ -210,7 +210,9 @@ private:
   vtkHAVSPreIntegrationTable(const vtkHAVSPreIntegrationTable&) = delete;
   void operator=(const vtkHAVSPreIntegrationTable&) = delete;
 
-  void Zero();
+  /// An all-zero table of the set size (lengthZeroOnly and the size
+  /// unchanged: only the entries of length 0, for Build() to write the rest).
+  void Zero(bool lengthZeroOnly = false);
   vtkNew<vtkHAVSCellOptics> CellOptics;
 
   int ScalarResolution = 128;

@@ -156,14 +156,22 @@ bool vtkHAVSTableResolution::Build(vtkHAVSPreIntegrationTable* table, vtkVolumeP
   int maxLengthResolution)
 {
   const double start = vtkTimerLog::GetUniversalTime();
+  // The search starts from the last choice unless this object's settings or
+  // the largest sizes changed since (then from the smallest).
+  const bool fresh = this->LastChoice == 0 || maxScalarResolution != this->BuiltMaxima[0] ||
+    maxLengthResolution != this->BuiltMaxima[1] || this->GetMTime() > this->BuildTime;
   this->BuildTime.Modified();
   this->BuiltMaxima[0] = maxScalarResolution;
   this->BuiltMaxima[1] = maxLengthResolution;
   this->LastCandidates = 0;
   this->LastError = 0.0;
   const int largest = std::max(maxScalarResolution, maxLengthResolution);
-  int n = std::min(this->SmallestResolution, largest);
+  const int smallest = std::min(this->SmallestResolution, largest);
+  int n = fresh ? smallest : std::min(std::max(this->LastChoice, smallest), largest);
   bool ok = true;
+  bool descending = !fresh;  // the last choice may be larger than needed now
+  int refused = 0;           // a smaller size that missed the bound, going down
+  double above = 0.0;        // the error of the size above it
   std::vector<Probe> probes; // integrated once for every candidate
 
   for (;;)
@@ -172,20 +180,45 @@ bool vtkHAVSTableResolution::Build(vtkHAVSPreIntegrationTable* table, vtkVolumeP
     table->SetLengthResolution(std::min(n, maxLengthResolution));
     ok = table->Build(property, component, scalarRange, maxLength);
     ++this->LastCandidates;
-    const bool last = n >= largest;
     if (!ok)
     {
       break;
     }
-    this->LastError = this->MeasureError(table, property, component, probes);
-    if (last || this->LastError <= this->ErrorBound)
+    if (refused == n)
+    {
+      this->LastError = above; // rebuilt after the smaller size missed
+      break;
+    }
+    const double error = this->MeasureError(table, property, component, probes);
+    this->LastError = error;
+    if (error <= this->ErrorBound)
+    {
+      // The measure falls with the square of the resolution: going down
+      // from the last choice, the half size is tried where it is predicted
+      // (4 times the error) to meet the bound too.
+      if (descending && n / 2 >= smallest && 4.0 * error <= this->ErrorBound)
+      {
+        above = error;
+        n /= 2;
+        continue;
+      }
+      break;
+    }
+    if (descending && n < std::min(this->LastChoice, largest))
+    {
+      // The half size missed after all: back to the size above, built again.
+      refused = n = 2 * n;
+      continue;
+    }
+    descending = false;
+    if (n >= largest)
     {
       break;
     }
-    // The measure falls with the square of the resolution: where even the
-    // next size would miss the bound by half again, skip it.
-    n = std::min(this->LastError > 6.0 * this->ErrorBound ? 4 * n : 2 * n, largest);
+    // Where even the next size would miss the bound by half again, skip it.
+    n = std::min(error > 6.0 * this->ErrorBound ? 4 * n : 2 * n, largest);
   }
+  this->LastChoice = n;
   this->LastSeconds = vtkTimerLog::GetUniversalTime() - start;
   return ok;
 }
@@ -211,6 +244,7 @@ void vtkHAVSTableResolution::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastError: " << this->LastError << "\n";
   os << indent << "LastCandidates: " << this->LastCandidates << "\n";
   os << indent << "LastSeconds: " << this->LastSeconds << "\n";
+  os << indent << "LastChoice: " << this->LastChoice << "\n";
 }
 
 VTK_ABI_NAMESPACE_END

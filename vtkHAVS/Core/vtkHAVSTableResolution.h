@@ -22,6 +22,13 @@
  * largest) and measures each table's error, and keeps the first within
  * ErrorBound (when none is, the largest). The error falls with the square of
  * the resolution: a size whose error exceeds 6 ErrorBound skips the next one.
+ * A rebuild for new functions, range or lengths (a transfer-function edit,
+ * issue 45) starts from the last choice instead: kept where it meets the
+ * bound, the half size tried only where it is predicted to meet it too (4
+ * times the error within the bound), larger sizes as above where it misses.
+ * An edit then builds one table, not every size below the choice. A change
+ * of the bound, the other settings or the largest sizes searches from the
+ * smallest again.
  *
  * The error measured is the one that accumulates along a ray: at ProbeCount
  * segments drawn uniformly over the table's domain (fixed seed), the largest
@@ -155,6 +162,7 @@ private:
   int LastCandidates = 0;
   double LastSeconds = 0.0;
   int BuiltMaxima[2] = { 0, 0 };
+  int LastChoice = 0; // the resolution the last Build() kept (0: none yet)
   vtkTimeStamp BuildTime;
 };
 
