@@ -209,6 +209,63 @@ void IntegrateSteps(vtkVolumeProperty* property, int component, double sf, doubl
   CompositeSamples(samples, length, rgba);
 }
 
+/// CompositeStep's colours for a run of sub-steps, both directions, as
+/// weights of their ends' colours: sub-step k (between fine samples k and
+/// k + 1, optical depth depth[k] * scale, attenuation[k]) has forward (lower
+/// end in front) colour lowerForward[k] c_k + upperForward[k] c_{k+1} and
+/// backward colour lowerBackward[k] c_k + upperBackward[k] c_{k+1}. Written
+/// without branches so that the compiler vectorizes it (the file is built
+/// with -fno-trapping-math where the compiler has it: a comparison that may
+/// raise an exception flag is not if-converted otherwise); most of a table's
+/// build is here (issue 45).
+// (The outputs alias nothing: said so, for the vectorizer's sake.)
+#if defined(__GNUC__) || defined(__clang__) || defined(_MSC_VER)
+#define HAVS_RESTRICT __restrict
+#else
+#define HAVS_RESTRICT
+#endif
+// On x86-64 ELF an AVX2 clone too, chosen at load time where the processor
+// has it (4 doubles a vector instead of 2: a 64^3 table in 2.7 ms instead of
+// 3.4 ms on 2 cores).
+#if defined(__x86_64__) && defined(__ELF__) && defined(__has_attribute)
+#if __has_attribute(target_clones)
+#define HAVS_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#endif
+#endif
+#ifndef HAVS_VECTOR_CLONES
+#define HAVS_VECTOR_CLONES
+#endif
+HAVS_VECTOR_CLONES void StepWeightsRun(int count, double scale, double inverseScale,
+  const double* HAVS_RESTRICT depth, const double* HAVS_RESTRICT inverseDepth,
+  const double* HAVS_RESTRICT attenuation, const double* HAVS_RESTRICT tau,
+  double* HAVS_RESTRICT lowerForward, double* HAVS_RESTRICT upperForward,
+  double* HAVS_RESTRICT lowerBackward, double* HAVS_RESTRICT upperBackward)
+{
+  for (int k = 0; k < count; ++k)
+  {
+    const double x = depth[k] * scale;
+    const double a = attenuation[k];
+    const double opacity = 1.0 - a;
+    const double r = opacity * (inverseScale * inverseDepth[k]);
+    // StepWeights, its series where the sub-step is thin.
+    const bool thin = x < 1e-3;
+    const double frontSeries = 0.5 - x * (1.0 / 6 - x * (1.0 / 24 - x * (1.0 / 120)));
+    const double backSeries = 0.5 - x * (1.0 / 3 - x * (1.0 / 8 - x * (1.0 / 30)));
+    const double front = thin ? frontSeries : 1.0 - r;
+    const double back = thin ? backSeries : r - a;
+    // StepColor: the ends weighed by their extinctions, normalized, times
+    // the opacity (where a sum is 0 so are its terms: any finite divisor).
+    const double wfl = front * tau[k], wfu = back * tau[k + 1];
+    const double wbu = front * tau[k + 1], wbl = back * tau[k];
+    const double kf = opacity / std::max(wfl + wfu, 1e-300);
+    const double kb = opacity / std::max(wbu + wbl, 1e-300);
+    lowerForward[k] = kf * wfl;
+    upperForward[k] = kf * wfu;
+    lowerBackward[k] = kb * wbl;
+    upperBackward[k] = kb * wbu;
+  }
+}
+
 /// Below this a sub-step's attenuation is taken as 0 (what it lets through
 /// changes no entry; no denormals in the products of attenuations).
 constexpr double TinyAttenuation = 1e-200;
@@ -604,6 +661,18 @@ bool vtkHAVSPreIntegrationTable::Build(
     {
       inverseStepDepth[k] = stepDepth[k] > 0.0 ? 1.0 / stepDepth[k] : 0.0;
     }
+    // The fine samples' extinctions and colours as arrays.
+    std::vector<double> tau(fineCount);
+    std::vector<double> color[3] = { std::vector<double>(fineCount), std::vector<double>(fineCount),
+      std::vector<double>(fineCount) };
+    for (int k = 0; k < fineCount; ++k)
+    {
+      tau[k] = fine[k].Tau;
+      for (int c = 0; c < 3; ++c)
+      {
+        color[c][k] = fine[k].Color[c];
+      }
+    }
     // A sub-step's composite depends on j and L only through
     // scale = L (NS - 1) / j, its world length per unit normalized scalar. On
     // the linear length axis (L = l lengthStep) that is a function of l / j:
@@ -620,6 +689,8 @@ bool vtkHAVSPreIntegrationTable::Build(
           std::vector<Composite>(cells) };
         std::vector<Composite> prefix(cells), suffix(cells);
         std::vector<double> unitAttenuation(steps), attenuation(steps);
+        std::vector<double> weight[4] = { std::vector<double>(steps), std::vector<double>(steps),
+          std::vector<double>(steps), std::vector<double>(steps) }; // StepWeightsRun's
         for (vtkIdType task = begin; task < end; ++task)
         {
           const int j0 = static_cast<int>(task);
@@ -647,33 +718,37 @@ bool vtkHAVSPreIntegrationTable::Build(
             }
             const double scale = density * layerLength[l0];
             const double inverseScale = 1.0 / scale;
-            // The intervals, front to back, each its sub-steps composited as
-            // they are computed: forward (increasing scalar), interval i's
-            // sub-steps in increasing order, cell[0][i]; backward (b < f),
-            // in decreasing order, cell[1][cells - 1 - i], so that a window
-            // of cells is again front to back.
+            if (logarithmic)
+            {
+              for (int k = 0; k < steps; ++k)
+              {
+                const double a = std::exp(-stepDepth[k] * scale);
+                attenuation[k] = a < TinyAttenuation ? 0.0 : a; // no denormals below
+              }
+            }
+            StepWeightsRun(steps, scale, inverseScale, stepDepth.data(), inverseStepDepth.data(),
+              attenuation.data(), tau.data(), weight[0].data(), weight[1].data(), weight[2].data(),
+              weight[3].data());
+            // The intervals, front to back: forward (increasing scalar),
+            // interval i's sub-steps in increasing order, cell[0][i];
+            // backward (b < f), in decreasing order, cell[1][cells - 1 - i],
+            // so that a window of cells is again front to back.
             for (int i = 0; i < cells; ++i)
             {
               Composite forward = { { 0, 0, 0 }, 1.0 }, backward = { { 0, 0, 0 }, 1.0 };
               for (int k = tableSample[i]; k < tableSample[i + 1]; ++k)
               {
-                const double depth = stepDepth[k] * scale;
-                double a = attenuation[k];
-                if (logarithmic)
+                const double a = attenuation[k];
+                for (int c = 0; c < 3; ++c)
                 {
-                  a = std::exp(-depth);
-                  a = a < TinyAttenuation ? 0.0 : a;
+                  const double lower = color[c][k], upper = color[c][k + 1];
+                  forward.Color[c] +=
+                    forward.Transmittance * (weight[0][k] * lower + weight[1][k] * upper);
+                  backward.Color[c] =
+                    weight[2][k] * lower + weight[3][k] * upper + a * backward.Color[c];
                 }
-                double front, back;
-                StepWeights(depth, inverseScale * inverseStepDepth[k], a, front, back);
-                const OpticalSample& lower = fine[k];
-                const OpticalSample& upper = fine[k + 1];
-                Composite step = { { 0, 0, 0 }, a };
-                StepColor(lower, upper, front, back, a, 1.0, step.Color);
-                forward = Over(forward, step);
-                step.Color[0] = step.Color[1] = step.Color[2] = 0.0;
-                StepColor(upper, lower, front, back, a, 1.0, step.Color);
-                backward = Over(step, backward);
+                forward.Transmittance *= a;
+                backward.Transmittance *= a;
               }
               cell[0][i] = forward;
               cell[1][cells - 1 - i] = backward;

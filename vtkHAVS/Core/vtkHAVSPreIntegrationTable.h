@@ -46,8 +46,22 @@
  * prefix). The entry is the same front-to-back composite of the same
  * sub-steps as integrating it alone, in another association: O(NS^2 NL)
  * compositing operations and O(NS NL (NS SubdivisionsPerInterval)) sub-steps,
- * instead of O(NS^3 NL SubdivisionsPerInterval) sub-steps. Each j, both
- * directions, is a task run in parallel (vtkSMPTools).
+ * instead of O(NS^3 NL SubdivisionsPerInterval) sub-steps. On the linear
+ * length axis a sub-step's share depends on j and l only through l / j: the
+ * interval composites of a coprime (j, l) serve every multiple (q j, q l),
+ * so they are computed for about 61 % of the pairs. The sub-steps' weights
+ * are computed in one branch-free, vectorized run per (j, l) before their
+ * intervals are composited (an AVX2 clone on x86-64). Each j, both
+ * directions and its multiples, is a task run in parallel (vtkSMPTools).
+ * (Issue 45: a 64^3 table for the benchmark's function in 2.7 ms on 2 cores,
+ * 7.1 ms before these three changes.)
+ *
+ * The functions are evaluated through VTK's GetTable over runs of evenly
+ * spaced scalars (the additive blend's function, IntegrateSegment's
+ * sub-steps), one pass over their nodes each, rather than one GetValue /
+ * GetColor call a scalar (most of the error probes' cost; the same values
+ * up to the rounding of the scalars). A colour function on a logarithmic
+ * scale or in indexed lookup is evaluated one scalar at a time.
  *
  * The length axis is linear (L = u MaxLength) unless the longest segment
  * spans many optical lengths (MaxLength * tau_max > 16, tau_max the largest
