@@ -95,6 +95,8 @@ int TestHAVSTableResolution(int, char*[])
             << " candidates, " << chooser->GetLastSeconds() << " s), measured "
             << chooser->GetLastError() << ", at 1000 other segments " << mean << std::endl;
   havstest::Check(table->GetScalarResolution() == 64, "the ramp gets 64^3");
+  havstest::Check(chooser->GetLastCandidates() == 2,
+    "control for the edit below: the first search builds 32^3 and 64^3");
   havstest::Check(chooser->GetLastError() <= bound, "the chosen table meets the bound");
   havstest::Check(mean <= bound, "the chosen table meets the bound at other segments");
   // The measure does not depend on the longest segment (per unit distance).
