@@ -170,6 +170,35 @@ int TestHAVSTableResolution(int, char*[])
   havstest::Check(table->GetScalarResolution() > 64 && chooser->GetLastCandidates() == 2,
     "the peak after the ramp: 64^3 misses, the next size");
 
+  // Going down mispredicted: a faint spike on the 64^3 grid's nodes (20/63,
+  // 21/63, 22/63) measures 5.1e-5 at 64^3 and 1.1e-5 at 128^3 (4.5 times
+  // less, where the rule assumes at most 4). With a bound between them,
+  // 128^3 is chosen; an edit starts there, tries 64^3 (predicted within),
+  // which misses, and builds 128^3 again: three tables, 128^3 kept.
+  auto spike = havstest::MakeConstantProperty(1.0, 0.5, 0.2, 0.0, 1.0);
+  spike->GetScalarOpacity()->RemoveAllPoints();
+  spike->GetScalarOpacity()->AddPoint(0.0, 0.0);
+  spike->GetScalarOpacity()->AddPoint(20.0 / 63, 0.0);
+  spike->GetScalarOpacity()->AddPoint(21.0 / 63, 0.1);
+  spike->GetScalarOpacity()->AddPoint(22.0 / 63, 0.0);
+  spike->GetScalarOpacity()->AddPoint(1.0, 0.0);
+  vtkNew<vtkHAVSTableResolution> spiky;
+  spiky->SetErrorBound(4.8e-5);
+  spiky->Build(table, spike, 0, range, 1.5, 128, 128);
+  std::cout << "spike: " << spiky->GetLastCandidates() << " candidates, "
+            << table->GetScalarResolution() << "^3, measured " << spiky->GetLastError()
+            << std::endl;
+  havstest::Check(table->GetScalarResolution() == 128 && spiky->GetLastError() * 4 <= 4.8e-5,
+    "the spike: 128^3, predicting 64^3 within the bound");
+  spike->GetScalarOpacity()->Modified(); // an edit that changes nothing
+  spiky->Build(table, spike, 0, range, 1.5, 128, 128);
+  std::cout << "spike edited: " << spiky->GetLastCandidates() << " candidates, "
+            << table->GetScalarResolution() << "^3, measured " << spiky->GetLastError()
+            << std::endl;
+  havstest::Check(spiky->GetLastCandidates() == 3 && table->GetScalarResolution() == 128 &&
+      spiky->GetLastError() <= 4.8e-5,
+    "a mispredicted half size: the size above built again and kept");
+
   // A bound no table meets: the largest allowed.
   chooser->SetErrorBound(1e-9);
   chooser->Build(table, ramp, 0, range, 1.5, 64, 32);

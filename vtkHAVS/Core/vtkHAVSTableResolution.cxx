@@ -170,8 +170,9 @@ bool vtkHAVSTableResolution::Build(vtkHAVSPreIntegrationTable* table, vtkVolumeP
   int n = fresh ? smallest : std::min(std::max(this->LastChoice, smallest), largest);
   bool ok = true;
   bool descending = !fresh;  // the last choice may be larger than needed now
-  int refused = 0;           // a smaller size that missed the bound, going down
-  double above = 0.0;        // the error of the size above it
+  int upper = 0;             // going down: the size above the one tried (0: none)
+  double upperError = 0.0;   // and its error
+  bool rebuilding = false;   // building `upper` again: the half size missed
   std::vector<Probe> probes; // integrated once for every candidate
 
   for (;;)
@@ -184,9 +185,9 @@ bool vtkHAVSTableResolution::Build(vtkHAVSPreIntegrationTable* table, vtkVolumeP
     {
       break;
     }
-    if (refused == n)
+    if (rebuilding)
     {
-      this->LastError = above; // rebuilt after the smaller size missed
+      this->LastError = upperError;
       break;
     }
     const double error = this->MeasureError(table, property, component, probes);
@@ -198,16 +199,18 @@ bool vtkHAVSTableResolution::Build(vtkHAVSPreIntegrationTable* table, vtkVolumeP
       // (4 times the error) to meet the bound too.
       if (descending && n / 2 >= smallest && 4.0 * error <= this->ErrorBound)
       {
-        above = error;
+        upper = n;
+        upperError = error;
         n /= 2;
         continue;
       }
       break;
     }
-    if (descending && n < std::min(this->LastChoice, largest))
+    if (upper > 0)
     {
       // The half size missed after all: back to the size above, built again.
-      refused = n = 2 * n;
+      n = upper;
+      rebuilding = true;
       continue;
     }
     descending = false;
