@@ -379,6 +379,14 @@ int TestHAVSFaceSet(int, char*[])
   CheckConvexMesh("image block", faces, block, blockTets, blockFaces, 2 * boundaryQuads,
     blockCentre, 2.0 * 1.0 * 8.0);
   havstest::CheckNear(faces->GetCentroidOrigin()[2], 34.0, 1e-12, "centroid origin");
+  // The same cells given one type (SetCells(VTK_TETRA, cells): VTK 9.6 holds
+  // the types as a vtkConstantArray, where GetCellTypesArray() is nullptr; the
+  // face set crashed on it before).
+  vtkNew<vtkUnstructuredGrid> singleType;
+  singleType->SetPoints(block->GetPoints());
+  singleType->SetCells(VTK_TETRA, block->GetCells());
+  CheckConvexMesh("image block, one cell type", faces, singleType, blockTets, blockFaces,
+    2 * boundaryQuads, blockCentre, 2.0 * 1.0 * 8.0);
 
   // Shuffled point ids, shuffled cells, random inversions.
   const int n = 8;

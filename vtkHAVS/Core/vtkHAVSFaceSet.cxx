@@ -710,8 +710,15 @@ bool vtkHAVSFaceSet::Build(vtkUnstructuredGrid* grid)
     table.Status.resize(static_cast<size_t>(numberOfCells));
     vtkSMPThreadLocal<CellCounts> counts;
     vtkUnsignedCharArray* ghostArray = grid->GetCellGhostArray();
-    havs_vtk::VisitCells(grid->GetCells(), ReadCells{},
-      havs_vtk::CellTypeBytes(grid)->GetPointer(0),
+    const vtkSmartPointer<vtkUnsignedCharArray> types = havs_vtk::CellTypeBytes(grid);
+    if (!types || types->GetNumberOfTuples() < numberOfCells)
+    {
+      vtkErrorMacro("Build: the grid has " << numberOfCells << " cells but "
+                                           << (types ? types->GetNumberOfTuples() : 0)
+                                           << " cell types.");
+      return false;
+    }
+    havs_vtk::VisitCells(grid->GetCells(), ReadCells{}, types->GetPointer(0),
       ghostArray ? ghostArray->GetPointer(0) : nullptr, coordinates.data(), numberOfPoints, table,
       counts);
     for (const CellCounts& local : counts)

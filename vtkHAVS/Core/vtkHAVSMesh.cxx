@@ -167,7 +167,7 @@ uint64_t vtkHAVSMesh::GeometryHashOf(vtkDataSet* data)
   {
     mixArray(grid->GetCells() ? grid->GetCells()->GetConnectivityArray() : nullptr);
     mixArray(grid->GetCells() ? grid->GetCells()->GetOffsetsArray() : nullptr);
-    mixArray(havs_vtk::CellTypeBytes(grid));
+    mixArray(havs_vtk::CellTypeArray(grid));
   }
   else if (!vtkStructuredGrid::SafeDownCast(data) && !vtkImageData::SafeDownCast(data) &&
     !vtkRectilinearGrid::SafeDownCast(data))

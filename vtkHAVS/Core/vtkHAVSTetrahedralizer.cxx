@@ -1172,7 +1172,7 @@ bool vtkHAVSTetrahedralizer::IsTetrahedral(vtkDataSet* data)
   {
     return true;
   }
-  vtkUnsignedCharArray* types = havs_vtk::CellTypeBytes(grid);
+  const vtkSmartPointer<vtkUnsignedCharArray> types = havs_vtk::CellTypeBytes(grid);
   if (!types)
   {
     return false;

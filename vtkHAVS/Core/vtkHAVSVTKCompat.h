@@ -16,9 +16,10 @@
  *
  * - Cell type queries: vtkCellTypes' static ones are deprecated in VTK 9.6
  *   for vtkCellTypeUtilities (VTK >= 9.4).
- * - An unstructured grid's cell types as bytes: GetCellTypesArray() is
- *   deprecated in VTK 9.6 (GetCellTypes() may hold a constant array there);
- *   the deprecated call still gives the bytes, converting where needed.
+ * - An unstructured grid's cell types: GetCellTypesArray() is deprecated in
+ *   VTK 9.6, and gives nullptr there for a grid made with SetCells(type,
+ *   cells), whose GetCellTypes() is a vtkConstantArray (a crash before this
+ *   was known); CellTypeBytes converts such an array.
  * - vtkCellArray::Visit is deprecated in VTK 9.6 for Dispatch, which hands
  *   the functor the raw arrays (possibly implicit) instead of the storage
  *   state; vtkHAVS's functors read the storage state, so Visit stays, called
@@ -31,6 +32,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellTypes.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVersionMacros.h"
@@ -84,12 +86,39 @@ inline const char* CellTypeClassName(int type)
 #endif
 }
 
-/// The grid's cell types, one byte a cell (nullptr for a grid without cells).
-inline vtkUnsignedCharArray* CellTypeBytes(vtkUnstructuredGrid* grid)
+/// The grid's cell types array as the grid holds it (VTK 9.6: a grid given
+/// one type by SetCells(type, cells) holds a vtkConstantArray; nullptr for a
+/// grid without cells): to read through vtkDataArray.
+inline vtkDataArray* CellTypeArray(vtkUnstructuredGrid* grid)
 {
-  VTKHAVS_DEPRECATED_BEGIN
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 6, 0)
+  return grid->GetCellTypes();
+#else
   return grid->GetCellTypesArray();
-  VTKHAVS_DEPRECATED_END
+#endif
+}
+
+/// The grid's cell types, one byte a cell: the grid's own array where it is
+/// one, else (VTK 9.6's constant array, where GetCellTypesArray() gives
+/// nullptr) a copy made from it; nullptr for a grid without cells.
+inline vtkSmartPointer<vtkUnsignedCharArray> CellTypeBytes(vtkUnstructuredGrid* grid)
+{
+  vtkDataArray* types = CellTypeArray(grid);
+  if (!types)
+  {
+    return nullptr;
+  }
+  if (auto* bytes = vtkUnsignedCharArray::FastDownCast(types))
+  {
+    return bytes;
+  }
+  auto bytes = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  bytes->SetNumberOfTuples(types->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < types->GetNumberOfTuples(); ++i)
+  {
+    bytes->SetValue(i, static_cast<unsigned char>(types->GetComponent(i, 0)));
+  }
+  return bytes;
 }
 
 /// cells->Visit(functor, args...): the functor gets the cell array's storage state.
