@@ -248,13 +248,8 @@ HAVS_VECTOR_CLONES void StepWeightsRun(int count, double scale, double inverseSc
     const double x = depth[k] * scale;
     const double a = attenuation[k];
     const double opacity = 1.0 - a;
-    const double r = opacity * (inverseScale * inverseDepth[k]);
-    // StepWeights, its series where the sub-step is thin.
-    const bool thin = x < 1e-3;
-    const double frontSeries = 0.5 - x * (1.0 / 6 - x * (1.0 / 24 - x * (1.0 / 120)));
-    const double backSeries = 0.5 - x * (1.0 / 3 - x * (1.0 / 8 - x * (1.0 / 30)));
-    const double front = thin ? frontSeries : 1.0 - r;
-    const double back = thin ? backSeries : r - a;
+    double front, back;
+    StepWeights(x, inverseScale * inverseDepth[k], a, front, back);
     // StepColor: the ends weighed by their extinctions, normalized, times
     // the opacity (where a sum is 0 so are its terms: any finite divisor).
     const double wfl = front * tau[k], wfu = back * tau[k + 1];
@@ -705,28 +700,19 @@ bool vtkHAVSPreIntegrationTable::Build(
           }
           for (int l0 = 1; l0 < nl; ++l0)
           {
-            if (!logarithmic)
-            {
-              // exp(-depth) at this length, by the recurrence (no exp).
-              for (int k = 0; k < steps; ++k)
-              {
-                const double a = attenuation[k] * unitAttenuation[k];
-                attenuation[k] = a < TinyAttenuation ? 0.0 : a; // no denormals below
-              }
-              if (std::gcd(j0, l0) != 1)
-              {
-                continue; // (j0, l0) is a multiple of a coprime pair
-              }
-            }
             const double scale = density * layerLength[l0];
             const double inverseScale = 1.0 / scale;
-            if (logarithmic)
+            // exp(-depth) at this length: by the recurrence on the linear
+            // axis (no exp), then only the coprime pairs go on.
+            for (int k = 0; k < steps; ++k)
             {
-              for (int k = 0; k < steps; ++k)
-              {
-                const double a = std::exp(-stepDepth[k] * scale);
-                attenuation[k] = a < TinyAttenuation ? 0.0 : a; // no denormals below
-              }
+              const double a =
+                logarithmic ? std::exp(-stepDepth[k] * scale) : attenuation[k] * unitAttenuation[k];
+              attenuation[k] = a < TinyAttenuation ? 0.0 : a; // no denormals below
+            }
+            if (!logarithmic && std::gcd(j0, l0) != 1)
+            {
+              continue; // (j0, l0) is a multiple of a coprime pair
             }
             StepWeightsRun(steps, scale, inverseScale, stepDepth.data(), inverseStepDepth.data(),
               attenuation.data(), tau.data(), weight[0].data(), weight[1].data(), weight[2].data(),
@@ -757,7 +743,8 @@ bool vtkHAVSPreIntegrationTable::Build(
             }
             // Every entry of j = q j0 at layer q l0 (only q = 1 on the
             // logarithmic axis): a window of j intervals.
-            for (int q = 1; q * j0 <= cells && q * l0 < nl; ++q)
+            const int multiples = logarithmic ? 1 : std::min(cells / j0, (nl - 1) / l0);
+            for (int q = 1; q <= multiples; ++q)
             {
               const int j = q * j0, l = q * l0;
               for (int d = 0; d < 2; ++d)
@@ -772,10 +759,6 @@ bool vtkHAVSPreIntegrationTable::Build(
                     const int f = forward ? s : cells - s;
                     store(f, forward ? f + j : f - j, l, w);
                   });
-              }
-              if (logarithmic)
-              {
-                break;
               }
             }
           }
