@@ -281,9 +281,16 @@ void vtkHAVSGLImage::Resize(GLenum internalFormat, int width, int height)
   this->Size[1] = height;
 }
 
-void vtkHAVSGLImage::Clear(GLenum format, GLenum type, const void* value)
+void vtkHAVSGLImage::Clear(GLenum format, GLenum type, const void* value, int width, int height)
 {
-  glClearTexImage(this->Handle, 0, format, type, value);
+  if (width > 0 && height > 0)
+  {
+    glClearTexSubImage(this->Handle, 0, 0, 0, 0, width, height, 1, format, type, value);
+  }
+  else
+  {
+    glClearTexImage(this->Handle, 0, format, type, value);
+  }
 }
 
 void vtkHAVSGLImage::BindImage(GLuint unit) const

@@ -178,8 +178,11 @@ public:
 
   /// Storage of `internalFormat` at this size (made again only when it changed).
   void Resize(GLenum internalFormat, int width, int height);
-  /// Every texel set to `value` (`format`/`type` as glClearTexImage's).
-  void Clear(GLenum format, GLenum type, const void* value);
+  /// Every texel set to `value` (`format`/`type` as glClearTexImage's), or
+  /// only those of the lower left `width` x `height` corner where both are
+  /// above 0 (a reduced image drawn there: clearing the rest costs a full
+  /// image's bandwidth every frame).
+  void Clear(GLenum format, GLenum type, const void* value, int width = 0, int height = 0);
   /// Bound to image unit `unit` for reading and writing.
   void BindImage(GLuint unit) const;
   static void UnbindImage(GLuint unit);

@@ -212,19 +212,20 @@ void vtkOpenGLHAVSRayCastMapper::SetUniforms(vtkOpenGLRenderWindow* window,
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLHAVSRayCastMapper::ClearRays(const TileGrid& grid)
+void vtkOpenGLHAVSRayCastMapper::ClearRays(const TileGrid& grid, int width, int height)
 {
   GLObjects& gl = *this->GL;
   // Per tile: no pass yet.
   const std::vector<GLuint> none(static_cast<size_t>(grid.Tiles), 0u);
   gl.TilePasses.Update(GL_SHADER_STORAGE_BUFFER, none, 0, GL_STREAM_DRAW);
   gl.PeelTiles.Update(GL_SHADER_STORAGE_BUFFER, none, 0, GL_STREAM_DRAW);
-  // Per pixel: no entry yet, the ray has reached nothing, opacity 0.
+  // Per drawn pixel (the images' lower left width x height): no entry yet,
+  // the ray has reached nothing, opacity 0.
   const GLuint noKey = 0xffffffffu, noCell = 0;
   const float fresh[4] = { -3.0e38f, 0.0f, -3.0e38f, 0.0f };
-  gl.EntryKey.Clear(GL_RED_INTEGER, GL_UNSIGNED_INT, &noKey);
-  gl.EntryCell.Clear(GL_RED_INTEGER, GL_UNSIGNED_INT, &noCell);
-  gl.RayState.Clear(GL_RGBA, GL_FLOAT, fresh);
+  gl.EntryKey.Clear(GL_RED_INTEGER, GL_UNSIGNED_INT, &noKey, width, height);
+  gl.EntryCell.Clear(GL_RED_INTEGER, GL_UNSIGNED_INT, &noCell, width, height);
+  gl.RayState.Clear(GL_RGBA, GL_FLOAT, fresh, width, height);
   gl.EntryKey.BindImage(EntryKeyUnit);
   gl.EntryCell.BindImage(EntryCellUnit);
   gl.RayState.BindImage(RayStateUnit);
@@ -403,7 +404,7 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
 
   // 3. Every ray unstarted, the result cleared. The stencil state VTK's state
   // holds is put back after the frame.
-  this->ClearRays(grid);
+  this->ClearRays(grid, width, height);
   vtkOpenGLState::ScopedglEnableDisable stencilTest(state, GL_STENCIL_TEST);
   GLint stencil[7] = { GL_ALWAYS, 0, -1, GL_KEEP, GL_KEEP, GL_KEEP, -1 };
   {

@@ -89,7 +89,7 @@ private:
   void SetUniforms(vtkOpenGLRenderWindow* window, const Programs& programs, const RayFrame& frame,
     const TileGrid& grid);
   /// Per pixel no entry, no ray, opacity 0; the counts zeroed; the buffers and images bound.
-  void ClearRays(const TileGrid& grid);
+  void ClearRays(const TileGrid& grid, int width, int height);
   /// One pass's peel: the nearest front-facing boundary entry beyond each ray's reach.
   void Peel(vtkOpenGLRenderWindow* window, const Programs& programs, const RayFrame& frame,
     const TileGrid& grid, int pass, int sectionTriangles, vtkHAVSGLQueries& queries);
