@@ -14,7 +14,9 @@
 // every pixel where both images show a surface: none of the size^2 / 2000
 // worst left out as edge pixels; a pixel one image leaves empty is the
 // silhouette's, a ray grazing the boundary; the rays through folded cells,
-// which have no exact image, are left out and counted).
+// which have no exact image, are left out and counted; for the cell
+// projection, the control: its face scalars not snapped to the isovalues,
+// NoIsoSnapForTesting, must miss a pixel in one of the views).
 // 1. Analytic: the box [0, 1]^3 with s = z and the isovalue 0.55 (between
 //    the vertices' planes): every pixel is the surface's premultiplied
 //    colour at 0.55 (the ray crosses the plane z = 0.55 once) or empty.
@@ -40,6 +42,7 @@
 #include "havsTestProperties.h"
 #include "havsTestScenes.h"
 
+#include "vtkHAVSCellProjectionMapper.h"
 #include "vtkHAVSDataSets.h"
 #include "vtkHAVSIsoSurfaces.h"
 #include "vtkHAVSReferenceRenderer.h"
@@ -227,6 +230,7 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
   auto s = havstest::MakeScene(grid, mapper, property, size, size);
   vtkCamera* camera = s.Renderer->GetActiveCamera();
   const size_t edge = static_cast<size_t>(size) * size / 2000;
+  int unsnappedMisses = 0, unsnappedViews = 0; // the cell projection's strict control
   for (int v = 0; v < views; ++v)
   {
     havstest::PlaceStandardView(s.Renderer, grid, v, views, true);
@@ -263,6 +267,20 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
         all);
       havstest::Check(havstest::WithinExactBound(all),
         at + ": the isosurface pair is exact at every pixel both show");
+      if (auto* cells = vtkHAVSCellProjectionMapper::SafeDownCast(mapper))
+      {
+        // Control: the cell projection's face scalars not snapped to the
+        // isovalues (some view must miss a pixel; counted over the views).
+        cells->SetNoIsoSnapForTesting(true);
+        s.Window->Render();
+        const auto unsnapped = havstest::FloatResult(mapper);
+        cells->SetNoIsoSnapForTesting(false);
+        const auto u = havstest::Compare(
+          BothShow(unsnapped, exact, folded), BothShow(exact, unsnapped, folded), 0);
+        havstest::PrintDifference(at + ": control, the face scalars not snapped", u);
+        unsnappedMisses += havstest::WithinExactBound(u) ? 0 : 1;
+        ++unsnappedViews;
+      }
     }
 
     mapper->SetBlendModeToComposite();
@@ -385,6 +403,13 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
       }
       property->ShadeOff();
     }
+  }
+  if (unsnappedViews > 0)
+  {
+    std::printf("%s %s: control: %d of %d views miss without the face scalars' snap\n",
+      name.c_str(), dataSet.c_str(), unsnappedMisses, unsnappedViews);
+    havstest::Check(unsnappedMisses > 0,
+      name + " " + dataSet + ": control: without the snap a view misses a pixel");
   }
   return havstest::Result();
 }

@@ -257,6 +257,7 @@ void vtkHAVSCellProjectionMapper::RenderView(
   frame.Opaque = this->NeedsOpaqueDepth(renderer);
   frame.KeepResult = this->KeepFloatResult;
   frame.WrongExit = this->WrongExitForTesting;
+  frame.NoIsoSnap = this->NoIsoSnapForTesting;
   frame.MeasureStages = this->MeasureStageTimes;
   frame.RestoreCells = [this]() { this->ComputeCells(); };
   if (this->DrawCells(renderer, frame, &this->LastDrawSeconds))
@@ -276,6 +277,7 @@ void vtkHAVSCellProjectionMapper::PrintSelf(ostream& os, vtkIndent indent)
      << ", NonConvexMethod: " << this->NonConvexMethod << "\n";
   os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";
   os << indent << "WrongExitForTesting: " << this->WrongExitForTesting
+     << ", NoIsoSnapForTesting: " << this->NoIsoSnapForTesting
      << ", ReverseOrderForTesting: " << this->ReverseOrderForTesting
      << ", ShuffleOrderForTesting: " << this->ShuffleOrderForTesting << "\n";
   os << indent << "Last frame: " << this->LastCellsDrawn << " cells, " << this->LastCycleBreaks

@@ -105,6 +105,18 @@ public:
   ///@}
 
   ///@{
+  /// Testing aid (a negative control): the isosurfaces without the face
+  /// scalars' snap. A cell's entry and exit scalars come from its own field,
+  /// so the two cells that share a face give it values a rounding apart, and
+  /// an isovalue between them was crossed in both cells or in neither; the
+  /// shader takes a face scalar within 1e-6 (of the normalized range) of an
+  /// isovalue as the isovalue, which the half-open rule then counts once (the
+  /// cell behind the face). Off by default.
+  vtkSetMacro(NoIsoSnapForTesting, bool);
+  vtkGetMacro(NoIsoSnapForTesting, bool);
+  ///@}
+
+  ///@{
   /// Testing aid (a negative control): the cells drawn in the reverse of the
   /// chosen order (back to front under front-to-back blending). Off by default.
   vtkSetMacro(ReverseOrderForTesting, bool);
@@ -154,6 +166,7 @@ public:
     bool Opaque = false;                  ///< opaque geometry may end the rays
     bool KeepResult = false;
     bool WrongExit = false;
+    bool NoIsoSnap = false;
     bool MeasureStages = false;
     /// Makes Cells again when they were freed after an upload and the GPU
     /// needs them (its buffers were released).
@@ -186,6 +199,7 @@ private:
   int CellOrder = CellOrderMPVO;
   int NonConvexMethod = 1; // vtkHAVSVisibilityOrder::NonConvexBoundaryLayers
   bool WrongExitForTesting = false;
+  bool NoIsoSnapForTesting = false;
   bool ReverseOrderForTesting = false;
   bool ShuffleOrderForTesting = false;
   bool MeasureStageTimes = false;

@@ -142,6 +142,8 @@ void vtkOpenGLHAVSCellProjectionMapper::SetUniforms(
   }
   program->SetUniformMatrix3x3("havsModelToWorld", linear);
   program->SetUniformi("havsWrongExit", frame.WrongExit ? 1 : 0);
+  // The face scalars' snap to the isovalues (only the isosurface variants read it).
+  program->SetUniformf("havsIsoSnap", frame.NoIsoSnap ? -1.0f : 1.0e-6f);
   this->GL->Records.SetUniforms(program);
   program->SetUniformf("havsGapLength", NoGapLength);
 }

@@ -284,6 +284,17 @@ uniform int havsIsoCount;
 uniform float havsIsoValues[HAVS_MAX_ISO];
 uniform vec4 havsIsoColors[HAVS_MAX_ISO];
 
+// A scalar within `snap` of an isovalue taken as that isovalue (the cell
+// projection's face scalars, vtkHAVSCellProjectionFS).
+float havsSnapToIso(float s, float snap)
+{
+  for (int i = 0; i < havsIsoCount; ++i)
+  {
+    s = abs(s - havsIsoValues[i]) <= snap ? havsIsoValues[i] : s;
+  }
+  return s;
+}
+
 #if HAVS_ISO_SHADE
 // Shaded isosurfaces (the property's ShadeOn; vtkHAVSIsoSurfaces::Shade, here
 // in float): Phong's model with the normal of the interpolated point
