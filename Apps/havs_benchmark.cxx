@@ -830,6 +830,10 @@ FloorRun MeasureFloor(vtkRenderWindow* window, vtkCamera* camera, vtkUnstructure
   auto* rayCast = vtkHAVSRayCastMapper::SafeDownCast(base);
   FloorRun run;
   base->SetLevelOfDetailTargetSeconds(0.0);
+  // Without the edges' mask: a budget the smallest image misses drops it
+  // (vtkHAVSMapperBase::EdgeUpsampling), so the floor is the frame without it.
+  const bool edges = base->GetEdgeUpsampling();
+  base->EdgeUpsamplingOff();
   for (const double scale : { 1.0, 0.1, 0.01 })
   {
     base->SetImageScale(scale);
@@ -884,6 +888,7 @@ FloorRun MeasureFloor(vtkRenderWindow* window, vtkCamera* camera, vtkUnstructure
     }
   }
   base->SetImageScale(1.0);
+  base->SetEdgeUpsampling(edges);
   if (havs)
   {
     havs->SetLevelOfDetailFraction(1.0);

@@ -467,6 +467,19 @@ double vtkHAVSMapperBase::ChooseImageScale(vtkVolume* volume)
   this->FaceShare = pixels > 0.0 ? std::min(1.0, detail / pixels) : 0.0;
   double scale = std::max(std::sqrt(pixels), this->MinimumImageScale);
   scale = std::min(scale, this->ImageScale);
+  // The edges' mask where it fits: dropped at the smallest image once a frame
+  // there took longer than the budget, back when the image grows again.
+  const bool smallest = this->ImageReduction && scale <= this->MinimumImageScale;
+  if (!smallest)
+  {
+    this->EdgesDroppedForBudget = false;
+  }
+  else if (this->ImageControl->GetLastSeconds() > this->FrameBudget(volume) &&
+    this->LastImageScale <= this->MinimumImageScale)
+  {
+    this->EdgesDroppedForBudget = true;
+  }
+  this->LastEdgeUpsampling = this->EdgeUpsampling && scale < 1.0 && !this->EdgesDroppedForBudget;
   this->LastImageScale = scale;
   this->LastDetail = scale * scale * this->FaceShare;
   return scale;
@@ -534,6 +547,7 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
         if (layers > 0)
         {
           scale = this->LastImageScale = 1.0;
+          this->LastEdgeUpsampling = false;
           this->LastDetail = this->FaceShare;
         }
         const vtkHAVSViewFrame view =
@@ -610,7 +624,10 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
      << (this->ShaderHooks.FragmentUniforms ? "applied" : "none") << ", "
      << this->ShaderHooks.Ignored.size() << " parts left out\n";
   os << indent << "ImageReduction: " << this->ImageReduction
-     << ", MinimumImageScale: " << this->MinimumImageScale << ", ImageScale: " << this->ImageScale
+     << ", MinimumImageScale: " << this->MinimumImageScale
+     << ", EdgeUpsampling: " << this->EdgeUpsampling << " (last frame: " << this->LastEdgeUpsampling
+     << ")"
+     << ", ImageScale: " << this->ImageScale
      << ", LevelOfDetailTargetSeconds: " << this->LevelOfDetailTargetSeconds << "\n";
   os << indent << "LastImageScale: " << this->LastImageScale << ", LastDetail: " << this->LastDetail
      << "\n";

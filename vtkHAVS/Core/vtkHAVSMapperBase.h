@@ -327,8 +327,8 @@ public:
    * at a reduced scale of the viewport along each axis, as many pixels as the
    * last frames' times say fit (a vtkHAVSLevelOfDetailController on the share
    * of the full frame's detail), and the composite upsamples it (bilinear,
-   * premultiplied) over the viewport. A still frame (a budget the last full
-   * frame fits) draws the whole viewport: the exact image. HAVS shares the
+   * premultiplied; with EdgeUpsampling, edges kept sharp) over the viewport. A still frame (a
+   * budget the last full frame fits) draws the whole viewport: the exact image. HAVS shares the
    * detail between the image and its face subset when its own LevelOfDetail
    * is on (vtkHAVSVolumeMapper: each takes the square root of the share).
    * Off: every frame draws the whole viewport (HAVS's face subset then has its
@@ -337,6 +337,28 @@ public:
   vtkSetMacro(ImageReduction, bool);
   vtkGetMacro(ImageReduction, bool);
   vtkBooleanMacro(ImageReduction, bool);
+  /**
+   * How a reduced image keeps the volume's edges sharp (on by default): the
+   * mesh's boundary faces are drawn at every viewport pixel into a coverage
+   * mask, behind which opaque geometry hides them; a pixel the mask leaves
+   * empty gets nothing from the volume, as in the exact image, instead of
+   * the reduced image's blur; a covered one upsamples bilinearly. The
+   * silhouette and the edges of opaque geometry in front of the volume stay
+   * as sharp as in a full frame; those of opaque geometry inside it, and
+   * the volume's own features, are as blurred as the scale makes them. Not
+   * where the near plane may cut the mesh's bounds (plain bilinear). Costs
+   * one draw of the (front) boundary faces at the viewport's size, only in
+   * reduced frames; where they can be: once the level of detail is at the
+   * smallest image (MinimumImageScale) and a frame still took longer than
+   * the budget, the next frames at the smallest image go without the mask,
+   * until the image grows again (GetLastEdgeUpsampling). Off: plain bilinear.
+   */
+  vtkSetMacro(EdgeUpsampling, bool);
+  vtkGetMacro(EdgeUpsampling, bool);
+  vtkBooleanMacro(EdgeUpsampling, bool);
+  /// Whether the last frame asked for the coverage mask (EdgeUpsampling, a
+  /// reduced image, not dropped for the budget).
+  vtkGetMacro(LastEdgeUpsampling, bool);
   /// The smallest scale a reduced image takes, per axis (default 0.1: 1 % of the pixels).
   vtkSetClampMacro(MinimumImageScale, double, 0.01, 1.0);
   vtkGetMacro(MinimumImageScale, double);
@@ -510,6 +532,9 @@ protected:
   vtkNew<vtkHAVSFramePlanes> Planes;
   bool ImageReduction = true;
   double MinimumImageScale = 0.1;
+  bool EdgeUpsampling = true;
+  bool LastEdgeUpsampling = false;
+  bool EdgesDroppedForBudget = false; // at the smallest image, over the budget
   double ImageScale = 1.0;
   double LevelOfDetailTargetSeconds = 0.0;
   double LastImageScale = 1.0;

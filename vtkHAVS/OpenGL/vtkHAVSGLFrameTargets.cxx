@@ -9,10 +9,13 @@
 =========================================================================*/
 #include "vtkHAVSGLFrameTargets.h"
 
+#include "vtkHAVSFaceSet.h"
 #include "vtkHAVSMapperInputs.h"
+#include "vtkHAVSMesh.h"
 #include "vtkHAVSShaderHooks.h"
 #include "vtkHAVSShaders.h"
 #include "vtkHAVSTranslucentLayers.h"
+#include "vtkHAVSViewFrame.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -67,6 +70,164 @@ void vtkHAVSGLFrameTargets::Resize(int fullWidth, int fullHeight, int width, int
   }
   this->Size[0] = std::min(width, fullWidth);
   this->Size[1] = std::min(height, fullHeight);
+  this->CoverageMesh = nullptr;
+  this->CoverageDrawn = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::SetCoverage(
+  vtkHAVSMesh* mesh, const vtkHAVSViewFrame& view, bool opaque)
+{
+  this->CoverageMesh = nullptr;
+  this->CoverageDrawn = false;
+  if (!mesh || !mesh->IsValid() || !view.IsReduced())
+  {
+    return;
+  }
+  // Where the near plane may cut the mesh, rays start inside it, where no
+  // boundary face is: no mask.
+  const double* b = mesh->GetBounds();
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double p[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
+      1.0 };
+    double clip[4] = { 0, 0, 0, 0 };
+    for (int r = 0; r < 4; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        clip[r] += view.ModelToClip[4 * r + c] * p[c];
+      }
+    }
+    if (clip[3] <= 0.0 || clip[2] < -clip[3])
+    {
+      return;
+    }
+  }
+  vtkHAVSViewFrame::ToColumnMajor(view.ModelToClip, this->CoverageModelToClip);
+  this->CoverageFlipFacing = view.FlipFacing;
+  this->CoverageMesh = mesh;
+  this->CoverageOpaque = opaque;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSGLFrameTargets::DrawCoverage()
+{
+  vtkHAVSMesh* mesh = this->CoverageMesh;
+  const vtkMTimeType version = mesh->GetBuildTime();
+  if (this->CoveragePoints.GetVersion() != version || !this->CoverageArray.IsCreated())
+  {
+    vtkHAVSFaceSet* faces = mesh->GetFaceSet();
+    const std::vector<float>& points = mesh->GetPoints();
+    const std::vector<uint32_t>& ids = faces->GetFaceVertices();
+    const std::vector<uint8_t>& boundary = faces->GetBoundaryFlags();
+    std::vector<float> positions;
+    positions.reserve(9 * static_cast<size_t>(faces->GetNumberOfBoundaryFaces()));
+    for (size_t f = 0; f < boundary.size(); ++f)
+    {
+      if (boundary[f])
+      {
+        for (int v = 0; v < 3; ++v)
+        {
+          const float* p = &points[3 * static_cast<size_t>(ids[3 * f + v])];
+          positions.insert(positions.end(), p, p + 3);
+        }
+      }
+    }
+    this->CoverageVertices = static_cast<GLsizei>(positions.size() / 3);
+    if (positions.empty())
+    {
+      return false;
+    }
+    if (!this->CoveragePoints.Update(GL_ARRAY_BUFFER, positions, version))
+    {
+      return false;
+    }
+    this->CoverageArray.SetBuffers(this->CoveragePoints, nullptr);
+  }
+  if (this->CoverageVertices == 0)
+  {
+    return false;
+  }
+  vtkShaderProgram* program = this->Window->GetShaderCache()->ReadyShaderProgram(
+    vtkHAVSShaders::CoverageVertexShader().c_str(), vtkHAVSShaders::CoverageShader().c_str(), "");
+  if (!program || !program->GetCompiled())
+  {
+    return false;
+  }
+  if (!this->Coverage)
+  {
+    this->Coverage = vtkSmartPointer<vtkTextureObject>::New();
+    this->Coverage->SetContext(this->Window);
+    this->Coverage->SetInternalFormat(GL_R8);
+    this->Coverage->SetFormat(GL_RED);
+    this->Coverage->SetDataType(GL_UNSIGNED_BYTE);
+    this->Coverage->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Coverage->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->Coverage->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->Coverage->SetWrapT(vtkTextureObject::ClampToEdge);
+    this->Coverage->Allocate2D(this->FullSize[0], this->FullSize[1], 1, VTK_UNSIGNED_CHAR);
+    this->CoverageFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->CoverageFramebuffer->SetContext(this->Window);
+    this->Window->GetState()->PushFramebufferBindings();
+    this->CoverageFramebuffer->Bind();
+    this->CoverageFramebuffer->AddColorAttachment(0, this->Coverage);
+    this->Window->GetState()->PopFramebufferBindings();
+  }
+  vtkOpenGLState* state = this->Window->GetState();
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglColorMask colorMask(state);
+  vtkOpenGLState::ScopedglClearColor clearColor(state);
+  state->PushFramebufferBindings();
+  this->CoverageFramebuffer->Bind();
+  this->CoverageFramebuffer->ActivateDrawBuffer(0);
+  state->vtkglViewport(0, 0, this->FullSize[0], this->FullSize[1]);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  // The front faces only (wound outward; clockwise on screen where the
+  // volume's matrix mirrors): a ray enters the closed boundary through one
+  // before it can leave through a back face, so they cover what all do, at
+  // half the fragments.
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(GL_BACK);
+  glFrontFace(this->CoverageFlipFacing ? GL_CW : GL_CCW);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  this->OpaqueDepth->Activate();
+  program->SetUniformMatrix4x4("havsMCDC", this->CoverageModelToClip);
+  program->SetUniformi("havsOpaqueDepth", this->OpaqueDepth->GetTextureUnit());
+  program->SetUniformi("havsCoverageOpaque", this->CoverageOpaque ? 1 : 0);
+  this->CoverageArray.Bind();
+  glDrawArrays(GL_TRIANGLES, 0, this->CoverageVertices);
+  vtkHAVSGLVertexArray::Unbind();
+  glFrontFace(GL_CCW);
+  this->OpaqueDepth->Deactivate();
+  state->PopFramebufferBindings();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHAVSGLFrameTargets::ReadCoverage(std::vector<unsigned char>& mask)
+{
+  mask.clear();
+  if (!this->CoverageDrawn || !this->Coverage)
+  {
+    return;
+  }
+  mask.resize(static_cast<size_t>(this->FullSize[0]) * this->FullSize[1]);
+  vtkOpenGLState* state = this->Window->GetState();
+  state->PushReadFramebufferBinding();
+  this->CoverageFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+  this->CoverageFramebuffer->ActivateReadBuffer(0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, this->FullSize[0], this->FullSize[1], GL_RED, GL_UNSIGNED_BYTE, mask.data());
+  state->PopReadFramebufferBinding();
 }
 
 //------------------------------------------------------------------------------
@@ -457,6 +618,30 @@ bool vtkHAVSGLFrameTargets::Composite(int originX, int originY)
   {
     vtkWarningMacro("The volume's fragment custom uniforms could not all be set in the composite.");
   }
+  const bool reduced = this->Size[0] != this->FullSize[0] || this->Size[1] != this->FullSize[1];
+  if (reduced && this->CoverageMesh && !this->CoverageDrawn)
+  {
+    this->CoverageDrawn = this->DrawCoverage();
+    this->CoverageMesh = nullptr; // drawn once a frame (a kept result composited again reuses it)
+    program = this->Window->GetShaderCache()->ReadyShaderProgram(
+      vtkHAVSShaders::QuadVertexShader().c_str(), this->CompositeSource.c_str(), "");
+    if (!program || !program->GetCompiled())
+    {
+      return false;
+    }
+    if (uniforms && !uniforms->SetUniforms(program))
+    {
+      vtkWarningMacro(
+        "The volume's fragment custom uniforms could not all be set in the composite.");
+    }
+  }
+  const bool useCoverage = reduced && this->CoverageDrawn;
+  if (useCoverage)
+  {
+    this->Coverage->Activate();
+    program->SetUniformi("havsCoverageTexture", this->Coverage->GetTextureUnit());
+  }
+  program->SetUniformi("havsUseCoverage", useCoverage ? 1 : 0);
   this->Result->Activate();
   program->SetUniformi("havsResultTexture", this->Result->GetTextureUnit());
   const float origin[2] = { static_cast<float>(originX), static_cast<float>(originY) };
@@ -467,13 +652,16 @@ bool vtkHAVSGLFrameTargets::Composite(int originX, int originY)
     this->FullSize[1] > 0 ? static_cast<float>(this->Size[1]) / this->FullSize[1] : 1.0f
   };
   program->SetUniform2f("havsResultScale", scale);
-  program->SetUniformi(
-    "havsResultReduced", this->Size[0] != this->FullSize[0] || this->Size[1] != this->FullSize[1]);
+  program->SetUniformi("havsResultReduced", reduced ? 1 : 0);
   // The drawn image's last texel (the result texture is of the full size).
   const int last[2] = { std::max(this->Size[0] - 1, 0), std::max(this->Size[1] - 1, 0) };
   program->SetUniform2i("havsResultLast", last);
   this->DrawFullViewport();
   this->Result->Deactivate();
+  if (useCoverage)
+  {
+    this->Coverage->Deactivate();
+  }
   return true;
 }
 
@@ -532,6 +720,17 @@ void vtkHAVSGLFrameTargets::ReleaseSizeDependent(vtkWindow* window)
   {
     this->DepthResolveFramebuffer->ReleaseGraphicsResources(window);
   }
+  if (this->Coverage)
+  {
+    this->Coverage->ReleaseGraphicsResources(window);
+  }
+  if (this->CoverageFramebuffer)
+  {
+    this->CoverageFramebuffer->ReleaseGraphicsResources(window);
+  }
+  this->Coverage = nullptr;
+  this->CoverageFramebuffer = nullptr;
+  this->CoverageDrawn = false;
   this->DepthResolveFramebuffer = nullptr;
   this->OpaqueDepth = nullptr;
   this->Result = nullptr;
@@ -555,6 +754,10 @@ void vtkHAVSGLFrameTargets::ReleaseGraphicsResources(vtkWindow* window)
   }
   this->ViolationCounter.Release();
   this->EmptyVertexArray.Release();
+  this->CoveragePoints.Release();
+  this->CoverageArray.Release();
+  this->CoverageVertices = 0;
+  this->CoverageMesh = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -565,6 +768,8 @@ void vtkHAVSGLFrameTargets::PrintSelf(ostream& os, vtkIndent indent)
      << this->FullSize[0] << " x " << this->FullSize[1] << ")\n";
   os << indent << "LastCaptureMultisampled: " << this->LastCaptureMultisampled << "\n";
   os << indent << "LastCaptureResolved: " << this->LastCaptureResolved << "\n";
+  os << indent << "LastCoverageUsed: " << this->CoverageDrawn
+     << ", coverage vertices: " << this->CoverageVertices << "\n";
 }
 
 VTK_ABI_NAMESPACE_END

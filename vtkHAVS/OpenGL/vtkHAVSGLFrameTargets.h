@@ -39,8 +39,10 @@
 
 VTK_ABI_NAMESPACE_BEGIN
 
+class vtkHAVSMesh;
 class vtkHAVSShaderHooks;
 class vtkHAVSTranslucentLayers;
+class vtkHAVSViewFrame;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
@@ -122,9 +124,30 @@ public:
   /// The count, and the first pixels (x, y) into `pixels`.
   std::uint64_t ReadViolationCounter(std::vector<int>& pixels, std::uint64_t* shaded = nullptr);
 
+  /**
+   * The volume's edges in a reduced frame (the level of detail's): the mesh
+   * whose boundary faces Composite() draws at the viewport's full size into
+   * a coverage mask, before it upsamples (vtkHAVSCoverageFS): the pixels no
+   * boundary face covers in front of the opaque depth (`opaque`: whether
+   * this frame captured it) stay empty, as in the exact image, and the
+   * covered ones upsample bilinearly (vtkHAVSCompositeFS): the silhouette
+   * and the edges of opaque geometry in front stay sharp.
+   * Called once a frame, after Resize(); nothing is drawn for a full-size
+   * frame, nor where the near plane cuts the mesh's bounds (the volume is
+   * then seen through the section, not a boundary face: plain bilinear).
+   * The boundary faces' positions go to the GPU at the first reduced frame
+   * of a mesh (9 floats a boundary face).
+   */
+  void SetCoverage(vtkHAVSMesh* mesh, const vtkHAVSViewFrame& view, bool opaque);
+  /// Whether the last Composite() upsampled with the coverage mask.
+  bool GetLastCoverageUsed() const { return this->CoverageDrawn; }
+  /// Reads the coverage mask back (full size, bottom row first; empty when none was drawn).
+  void ReadCoverage(std::vector<unsigned char>& mask);
+
   /// Composites the result over VTK's framebuffer (viewport, of the full
   /// size, set by the caller), with the shader hooks last set applied; a
-  /// reduced result is upsampled (bilinear, premultiplied).
+  /// reduced result is upsampled (bilinear, premultiplied; with the coverage
+  /// mask where SetCoverage() gave one).
   bool Composite(int originX, int originY);
   /**
    * Translucent layers intermixed with the volume (vtkHAVSIntermixPass;
@@ -176,6 +199,8 @@ private:
   void ClampOpaqueDepth(vtkTextureObject* layerDepth);
   /// Adds the slab drawn to the intermixed sum (the last: the sum into the result).
   bool AccumulateIntermix(int originX, int originY);
+  /// Draws the coverage mask SetCoverage() asked for (false: none could be drawn).
+  bool DrawCoverage();
   /// The vtkTextureObject depth format of the read framebuffer's depth, -1 if none.
   static int ReadFramebufferDepthFormat();
 
@@ -203,6 +228,18 @@ private:
   int KeptSize[2] = { 0, 0 };
   vtkHAVSGLBuffer ViolationCounter;
   vtkHAVSGLVertexArray EmptyVertexArray;
+  // The coverage mask (SetCoverage): this frame's request, the boundary
+  // faces' positions, the mask and its framebuffer.
+  vtkHAVSMesh* CoverageMesh = nullptr; // the mapper's, not owned
+  float CoverageModelToClip[16] = {};
+  bool CoverageOpaque = false;
+  bool CoverageFlipFacing = false;
+  bool CoverageDrawn = false;
+  vtkHAVSGLBuffer CoveragePoints;
+  vtkHAVSGLVertexArray CoverageArray;
+  GLsizei CoverageVertices = 0;
+  vtkSmartPointer<vtkTextureObject> Coverage;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> CoverageFramebuffer;
 };
 
 VTK_ABI_NAMESPACE_END

@@ -99,7 +99,7 @@ constexpr int AdditiveBlend = 4;
 //------------------------------------------------------------------------------
 vtkOpenGLRenderWindow* vtkHAVSGLMapperResources::BeginFrame(vtkRenderer* renderer,
   vtkObject* mapper, const char* mapperName, const char* needs, const vtkHAVSViewFrame& view,
-  bool opaque, const vtkHAVSFramePlanes& planes)
+  bool opaque, const vtkHAVSFramePlanes& planes, vtkHAVSMesh* mesh)
 {
   vtkOpenGLRenderWindow* window = this->Prepare(renderer, mapper, mapperName, needs);
   if (!window)
@@ -107,6 +107,7 @@ vtkOpenGLRenderWindow* vtkHAVSGLMapperResources::BeginFrame(vtkRenderer* rendere
     return nullptr;
   }
   this->Targets->Resize(view.FullWidth, view.FullHeight, view.Width, view.Height);
+  this->Targets->SetCoverage(mesh, view, opaque);
   if (opaque)
   {
     this->Targets->CaptureOpaqueDepth(

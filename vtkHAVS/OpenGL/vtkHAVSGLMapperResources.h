@@ -47,6 +47,7 @@ class vtkHAVSGLFrameTargets;
 class vtkHAVSGLSection;
 class vtkHAVSGLTable;
 class vtkHAVSMapperBase;
+class vtkHAVSMesh;
 class vtkHAVSViewFrame;
 class vtkShaderProgram;
 class vtkOpenGLRenderWindow;
@@ -107,12 +108,14 @@ public:
   /**
    * The start of a cell-projection or ray-cast frame: the window prepared
    * (Prepare), the targets at the view's size, the opaque depth captured
-   * when `opaque`, the near plane's section of `planes` uploaded if new.
+   * when `opaque`, the near plane's section of `planes` uploaded if new,
+   * the coverage mask of `mesh` asked for (vtkHAVSGLFrameTargets::SetCoverage;
+   * nullptr: none).
    * nullptr, with Prepare's error, without a usable window.
    */
   vtkOpenGLRenderWindow* BeginFrame(vtkRenderer* renderer, vtkObject* mapper,
     const char* mapperName, const char* needs, const vtkHAVSViewFrame& view, bool opaque,
-    const vtkHAVSFramePlanes& planes);
+    const vtkHAVSFramePlanes& planes, vtkHAVSMesh* mesh);
   /// The near plane's section this frame: its triangles (0: none), and its draw
   /// with each triangle's cell at `cellBinding`.
   int GetSectionTriangles() const { return this->SectionTriangles; }

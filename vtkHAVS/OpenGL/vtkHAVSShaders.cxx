@@ -20,6 +20,8 @@
 #include "vtkHAVSCellRecordsLib.h"
 #include "vtkHAVSClearFS.h"
 #include "vtkHAVSCompositeFS.h"
+#include "vtkHAVSCoverageFS.h"
+#include "vtkHAVSCoverageVS.h"
 #include "vtkHAVSExtremumDrawFS.h"
 #include "vtkHAVSExtremumResolveFS.h"
 #include "vtkHAVSFaceVS.h"
@@ -329,6 +331,16 @@ std::string vtkHAVSShaders::ExtremumResolveShader(bool cellScalars)
 std::string vtkHAVSShaders::TrivialShader()
 {
   return vtkHAVSTrivialFS;
+}
+
+std::string vtkHAVSShaders::CoverageVertexShader()
+{
+  return vtkHAVSCoverageVS;
+}
+
+std::string vtkHAVSShaders::CoverageShader()
+{
+  return vtkHAVSCoverageFS;
 }
 
 std::string vtkHAVSShaders::CompositeShader(

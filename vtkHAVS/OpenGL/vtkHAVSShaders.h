@@ -123,6 +123,12 @@ public:
   static std::string CompositeShader(
     const vtkHAVSShaderHooks* hooks = nullptr, const std::string& uniformDeclarations = "");
   ///@{
+  /// The level of detail's coverage mask (vtkHAVSGLFrameTargets::SetCoverage):
+  /// the boundary faces' positions, marked where they lie before the opaque depth.
+  static std::string CoverageVertexShader();
+  static std::string CoverageShader();
+  ///@}
+  ///@{
   /// vtkHAVSCellProjectionMapper: the faces' vertex shader, and the fragment
   /// shader (the k-buffer library's segment look-up; the opaque cut compiled
   /// in with `opaque`; `blend`: vtkHAVSCellProjectionMapper's blend mode:

@@ -155,8 +155,9 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   // 1. The window, the targets, the section; what changed uploaded.
   const vtkHAVSViewFrame& view = *frame.View;
   const bool opaque = frame.Opaque;
-  vtkOpenGLRenderWindow* window = this->Resources->BeginFrame(
-    renderer, this, "vtkHAVSCellProjectionMapper", "storage buffers", view, opaque, *frame.Planes);
+  vtkOpenGLRenderWindow* window =
+    this->Resources->BeginFrame(renderer, this, "vtkHAVSCellProjectionMapper", "storage buffers",
+      view, opaque, *frame.Planes, this->GetLastEdgeUpsampling() ? frame.Mesh : nullptr);
   if (!window)
   {
     return false;

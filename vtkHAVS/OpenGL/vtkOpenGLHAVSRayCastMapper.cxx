@@ -366,8 +366,9 @@ bool vtkOpenGLHAVSRayCastMapper::DrawRays(
 {
   // 1. The window, the targets, the section; what changed uploaded; the images at the view's size.
   const vtkHAVSViewFrame& view = *frame.View;
-  vtkOpenGLRenderWindow* window = this->Resources->BeginFrame(renderer, this,
-    "vtkHAVSRayCastMapper", "storage buffers, images", view, frame.Opaque, *frame.Planes);
+  vtkOpenGLRenderWindow* window =
+    this->Resources->BeginFrame(renderer, this, "vtkHAVSRayCastMapper", "storage buffers, images",
+      view, frame.Opaque, *frame.Planes, this->GetLastEdgeUpsampling() ? frame.Mesh : nullptr);
   if (!window)
   {
     return false;

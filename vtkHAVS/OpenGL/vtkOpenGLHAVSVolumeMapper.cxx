@@ -209,6 +209,8 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   const int width = view.Width, height = view.Height;
   vtkOpenGLState* state = window->GetState();
   targets->Resize(view.FullWidth, view.FullHeight, width, height);
+  targets->SetCoverage(
+    this->GetLastEdgeUpsampling() ? request.Mesh : nullptr, view, request.Opaque);
   if (request.Opaque)
   {
     targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, view.FullWidth, view.FullHeight, this);

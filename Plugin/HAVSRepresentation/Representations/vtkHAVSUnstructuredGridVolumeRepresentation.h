@@ -181,7 +181,8 @@ public:
    * The mappers' level of detail while the user interacts (on by default,
    * all three mappers): keep the volume, drawn within
    * InteractiveTargetSeconds by a reduced image (vtkHAVSMapperBase's
-   * ImageReduction, upsampled) and, for HAVS, the boundary faces and as many
+   * ImageReduction, upsampled with the edges kept sharp: EdgeUpsampling) and,
+   * for HAVS, the boundary faces and as many
    * of the most important internal faces (vtkHAVSVolumeMapper::SetLevelOfDetail)
    * as fit, with InteractiveKBufferSize entries; the whole image, every face,
    * when still. Off: ParaView's own LOD (its outline or surface geometry) as

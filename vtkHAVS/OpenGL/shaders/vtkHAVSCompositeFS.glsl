@@ -13,6 +13,10 @@ uniform vec2 havsViewportOrigin;
 uniform vec2 havsResultScale; // drawn pixels per viewport pixel (the level of detail's image)
 uniform int havsResultReduced;
 uniform ivec2 havsResultLast; // the drawn image's last texel (the texture is the viewport's size)
+// The coverage mask at the viewport's size (vtkHAVSCoverageFS): 0 where the
+// exact image gets nothing from the volume; havsUseCoverage: drawn this frame.
+uniform sampler2D havsCoverageTexture;
+uniform int havsUseCoverage;
 
 // The reduced image at a viewport pixel: bilinear between the four drawn
 // pixel centres around it (premultiplied colours, so coverage blends too),
@@ -31,6 +35,22 @@ vec4 havsUpsampled(vec2 pixel)
   return mix(a, b, f.y);
 }
 
+// The reduced image at a viewport pixel, with the coverage mask: empty where
+// no ray meets the volume (outside its silhouette, behind opaque geometry),
+// as the exact image is there, instead of the reduced image's blur; bilinear
+// where one does. (Not a weight over the covered drawn pixels only: a
+// volume's opacity fades to its silhouette as the rays' paths through it
+// shorten, and such a weight spreads the inner values out to the edge.)
+vec4 havsReduced(vec2 pixel)
+{
+  if (havsUseCoverage == 0)
+  {
+    return havsUpsampled(pixel);
+  }
+  return texelFetch(havsCoverageTexture, ivec2(pixel), 0).r > 0.5 ? havsUpsampled(pixel)
+                                                                  : vec4(0.0);
+}
+
 //VTK::CustomUniforms::Dec
 
 //VTK::Base::Dec
@@ -38,7 +58,7 @@ vec4 havsUpsampled(vec2 pixel)
 void main()
 {
   vec2 pixel = floor(gl_FragCoord.xy - havsViewportOrigin);
-  vec4 g_fragColor = havsResultReduced != 0 ? havsUpsampled(pixel)
+  vec4 g_fragColor = havsResultReduced != 0 ? havsReduced(pixel)
                                             : texelFetch(havsResultTexture, ivec2(pixel), 0);
 
   //VTK::Base::Exit
