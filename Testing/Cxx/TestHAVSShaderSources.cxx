@@ -63,6 +63,8 @@ int TestHAVSShaderSources(int, char*[])
   check(vtkHAVSShaders::ExtremumDrawShader(), "extremum_draw", "frag");
   check(vtkHAVSShaders::ExtremumResolveShader(), "extremum_resolve", "frag");
   check(vtkHAVSShaders::CompositeShader(), "composite", "frag");
+  check(vtkHAVSShaders::CoverageVertexShader(), "coverage", "vert");
+  check(vtkHAVSShaders::CoverageShader(), "coverage", "frag");
   check(vtkHAVSShaders::CellProjectionVertexShader(), "cell_projection", "vert");
   check(vtkHAVSShaders::CellProjectionShader(false), "cell_projection", "frag");
   check(vtkHAVSShaders::CellProjectionShader(true), "cell_projection_opaque", "frag");
