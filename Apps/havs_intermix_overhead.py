@@ -2,7 +2,7 @@
 """havs_intermix_overhead: what vtkHAVSIntermixPass costs where no translucent actor is present.
 
     VTK_SMP_BACKEND_IN_USE=STDThread HAVS_DATA_DIR=../shared/data \\
-        python3 Apps/havs_intermix_overhead.py [dataset] [havs|raycast|cellproj] [size]
+        python3 Apps/havs_intermix_overhead.py [dataset] [havs|raycast|cellproj] [size] [--paired=N]
 
 Issue 46: the intermixing pass is on by default only if it costs at most 2 % of
 a frame without translucent geometry. One window, one volume, no actor; the
@@ -19,6 +19,7 @@ Prints both with the ratio and the difference per frame. Speed only: nothing
 is asserted (the tests assert correctness).
 """
 import os
+import random
 import statistics
 import sys
 import time
@@ -30,9 +31,11 @@ from vtkhavs.vtkHAVSValidation import vtkHAVSDataSets  # noqa: E402
 from vtkmodules.vtkRenderingCore import vtkVolume  # noqa: E402
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass  # noqa: E402
 
-dataset = sys.argv[1] if len(sys.argv) > 1 else "bluntfin"
-mapper_name = sys.argv[2] if len(sys.argv) > 2 else "havs"
-size = int(sys.argv[3]) if len(sys.argv) > 3 else 512
+args = [a for a in sys.argv[1:] if not a.startswith("--paired")]
+paired = [int(a.split("=")[1]) for a in sys.argv[1:] if a.startswith("--paired=")]
+dataset = args[0] if len(args) > 0 else "bluntfin"
+mapper_name = args[1] if len(args) > 1 else "havs"
+size = int(args[2]) if len(args) > 2 else 512
 
 grid = vtkHAVSDataSets.Load(dataset)
 if grid is None or grid.GetNumberOfCells() == 0:
@@ -61,6 +64,38 @@ def block(name, frames):
         times.append(time.perf_counter() - start)
     return times
 
+
+def paired_rounds(rounds):
+    """--paired=N: N rounds of one timed frame with each pass (each after a
+    warm-up frame with it; the order swapped every round), the volume
+    visible. Each round's ratio is the intermix frame over the steps frame
+    beside it: the machine's drift, slower than a round, cancels. Prints the
+    mean ratio with its 95 % interval (normal approximation) and the median
+    with its 95 % interval (bootstrap: the frames' times have a long tail)."""
+    ratios = []
+    for round_ in range(rounds):
+        t = {}
+        for name in (("steps", "intermix") if round_ % 2 == 0 else ("intermix", "steps")):
+            t[name] = block(name, 1)[0]
+        ratios.append(t["intermix"] / t["steps"])
+    mean = statistics.fmean(ratios)
+    half = 1.96 * statistics.stdev(ratios) / len(ratios) ** 0.5
+    # The median's 95 % interval: 1,000 bootstrap resamples (seeded).
+    rng = random.Random(1)
+    medians = sorted(statistics.median(rng.choices(ratios, k=len(ratios))) for _ in range(1000))
+    print("| %s | %s | %d | %.4f | %.4f to %.4f | %.4f | %.4f to %.4f |" % (
+        dataset, mapper_name, rounds, mean, mean - half, mean + half, statistics.median(ratios),
+        medians[25], medians[974]))
+
+
+if paired:
+    print("%s, %s, %d^2, vtkSMPTools backend %s: paired rounds (the volume visible)" % (
+        dataset, mapper_name, size, os.environ.get("VTK_SMP_BACKEND_IN_USE", "VTK's default")))
+    print("| data set | mapper | rounds | intermix / steps, mean | 95 % interval | median "
+          "| 95 % interval |")
+    print("|---|---|---|---|---|---|---|")
+    paired_rounds(paired[0])
+    sys.exit(0)
 
 print("%s, %s, %d^2, %s, vtkSMPTools backend %s" % (
     dataset, mapper_name, size, window.GetClassName(),

@@ -32,20 +32,43 @@ VTK_ABI_NAMESPACE_BEGIN
 vtkStandardNewMacro(vtkHAVSGLFrameTargets);
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkTextureObject> vtkHAVSGLFrameTargets::NewFloatTexture(
-  vtkOpenGLRenderWindow* window, int w, int h)
+namespace
+{
+/// A 2D texture (nearest, clamped) of this size and format, in `window`.
+vtkSmartPointer<vtkTextureObject> NewTexture(vtkOpenGLRenderWindow* window, int w, int h,
+  unsigned int internalFormat, unsigned int format, int components, int vtkType)
 {
   auto texture = vtkSmartPointer<vtkTextureObject>::New();
   texture->SetContext(window);
-  texture->SetInternalFormat(GL_RGBA32F);
-  texture->SetFormat(GL_RGBA);
-  texture->SetDataType(GL_FLOAT);
+  texture->SetInternalFormat(internalFormat);
+  texture->SetFormat(format);
+  texture->SetDataType(vtkType == VTK_FLOAT ? GL_FLOAT : GL_UNSIGNED_BYTE);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   texture->SetWrapS(vtkTextureObject::ClampToEdge);
   texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->Allocate2D(w, h, 4, VTK_FLOAT);
+  texture->Allocate2D(w, h, components, vtkType);
   return texture;
+}
+
+/// A framebuffer whose one colour attachment is `texture`.
+vtkSmartPointer<vtkOpenGLFramebufferObject> NewColorFramebuffer(
+  vtkOpenGLRenderWindow* window, vtkTextureObject* texture)
+{
+  auto framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+  framebuffer->SetContext(window);
+  window->GetState()->PushFramebufferBindings();
+  framebuffer->Bind();
+  framebuffer->AddColorAttachment(0, texture);
+  window->GetState()->PopFramebufferBindings();
+  return framebuffer;
+}
+}
+
+vtkSmartPointer<vtkTextureObject> vtkHAVSGLFrameTargets::NewFloatTexture(
+  vtkOpenGLRenderWindow* window, int w, int h)
+{
+  return NewTexture(window, w, h, GL_RGBA32F, GL_RGBA, 4, VTK_FLOAT);
 }
 
 //------------------------------------------------------------------------------
@@ -59,12 +82,7 @@ void vtkHAVSGLFrameTargets::Resize(int fullWidth, int fullHeight, int width, int
     this->OpaqueDepth->AllocateDepth(fullWidth, fullHeight, vtkTextureObject::Float32);
     this->OpaqueDepthFormat = vtkTextureObject::Float32;
     this->Result = NewFloatTexture(this->Window, fullWidth, fullHeight);
-    this->ResultFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->ResultFramebuffer->SetContext(this->Window);
-    this->Window->GetState()->PushFramebufferBindings();
-    this->ResultFramebuffer->Bind();
-    this->ResultFramebuffer->AddColorAttachment(0, this->Result);
-    this->Window->GetState()->PopFramebufferBindings();
+    this->ResultFramebuffer = NewColorFramebuffer(this->Window, this->Result);
     this->FullSize[0] = fullWidth;
     this->FullSize[1] = fullHeight;
   }
@@ -157,22 +175,9 @@ bool vtkHAVSGLFrameTargets::DrawCoverage()
   }
   if (!this->Coverage)
   {
-    this->Coverage = vtkSmartPointer<vtkTextureObject>::New();
-    this->Coverage->SetContext(this->Window);
-    this->Coverage->SetInternalFormat(GL_R8);
-    this->Coverage->SetFormat(GL_RED);
-    this->Coverage->SetDataType(GL_UNSIGNED_BYTE);
-    this->Coverage->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->Coverage->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->Coverage->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->Coverage->SetWrapT(vtkTextureObject::ClampToEdge);
-    this->Coverage->Allocate2D(this->FullSize[0], this->FullSize[1], 1, VTK_UNSIGNED_CHAR);
-    this->CoverageFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->CoverageFramebuffer->SetContext(this->Window);
-    this->Window->GetState()->PushFramebufferBindings();
-    this->CoverageFramebuffer->Bind();
-    this->CoverageFramebuffer->AddColorAttachment(0, this->Coverage);
-    this->Window->GetState()->PopFramebufferBindings();
+    this->Coverage = NewTexture(
+      this->Window, this->FullSize[0], this->FullSize[1], GL_R8, GL_RED, 1, VTK_UNSIGNED_CHAR);
+    this->CoverageFramebuffer = NewColorFramebuffer(this->Window, this->Coverage);
   }
   vtkOpenGLState* state = this->Window->GetState();
   vtkOpenGLState::ScopedglViewport viewport(state);
