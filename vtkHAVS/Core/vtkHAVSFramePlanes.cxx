@@ -71,6 +71,7 @@ bool vtkHAVSFramePlanes::Update(
   const double* m = view.ModelToEyeRelative;
   this->Planes.clear();
   this->ModelPlanes.clear();
+  this->NearPlaneCutsMesh = false;
   std::vector<Cut> cuts;
   for (const Candidate& candidate : candidates)
   {
@@ -95,6 +96,7 @@ bool vtkHAVSFramePlanes::Update(
     {
       continue; // the whole mesh is kept: the plane changes nothing
     }
+    this->NearPlaneCutsMesh = this->NearPlaneCutsMesh || nearPlane;
     const int index = static_cast<int>(this->Planes.size());
     this->Planes.push_back(
       { static_cast<float>(candidate.Equation[0]), static_cast<float>(candidate.Equation[1]),

@@ -83,6 +83,9 @@ public:
 
   /// Planes that cut or discard the mesh (the near plane first when it does).
   int GetNumberOfPlanes() const { return static_cast<int>(this->Planes.size()); }
+  /// Whether the near plane cuts or discards the mesh's bounds this frame
+  /// (then it is plane 0; rays may start inside the mesh).
+  bool GetNearPlaneCutsMesh() const { return this->NearPlaneCutsMesh; }
   /// Plane i in eye-relative world coordinates: kept where dot(xyz, x) + w >= 0.
   const std::array<float, 4>& GetPlane(int i) const { return this->Planes[i]; }
   /// Plane i in the mesh's model coordinates (double), kept where >= 0.
@@ -117,6 +120,7 @@ private:
   };
 
   bool NearPlaneSectionsOnly = false;
+  bool NearPlaneCutsMesh = false;
   std::vector<std::array<float, 4>> Planes;
   std::vector<std::array<double, 4>> ModelPlanes;
   std::vector<Section> Sections;

@@ -10,6 +10,7 @@
 #include "vtkHAVSGLFrameTargets.h"
 
 #include "vtkHAVSFaceSet.h"
+#include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSMapperInputs.h"
 #include "vtkHAVSMesh.h"
 #include "vtkHAVSShaderHooks.h"
@@ -94,33 +95,15 @@ void vtkHAVSGLFrameTargets::Resize(int fullWidth, int fullHeight, int width, int
 
 //------------------------------------------------------------------------------
 void vtkHAVSGLFrameTargets::SetCoverage(
-  vtkHAVSMesh* mesh, const vtkHAVSViewFrame& view, bool opaque)
+  vtkHAVSMesh* mesh, const vtkHAVSViewFrame& view, const vtkHAVSFramePlanes& planes, bool opaque)
 {
   this->CoverageMesh = nullptr;
   this->CoverageDrawn = false;
-  if (!mesh || !mesh->IsValid() || !view.IsReduced())
+  // Where the near plane cuts the mesh's bounds, rays may start inside it,
+  // where no boundary face is: no mask.
+  if (!mesh || !mesh->IsValid() || !view.IsReduced() || planes.GetNearPlaneCutsMesh())
   {
     return;
-  }
-  // Where the near plane may cut the mesh, rays start inside it, where no
-  // boundary face is: no mask.
-  const double* b = mesh->GetBounds();
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    const double p[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
-      1.0 };
-    double clip[4] = { 0, 0, 0, 0 };
-    for (int r = 0; r < 4; ++r)
-    {
-      for (int c = 0; c < 4; ++c)
-      {
-        clip[r] += view.ModelToClip[4 * r + c] * p[c];
-      }
-    }
-    if (clip[3] <= 0.0 || clip[2] < -clip[3])
-    {
-      return;
-    }
   }
   vtkHAVSViewFrame::ToColumnMajor(view.ModelToClip, this->CoverageModelToClip);
   this->CoverageFlipFacing = view.FlipFacing;
@@ -162,10 +145,6 @@ bool vtkHAVSGLFrameTargets::DrawCoverage()
       return false;
     }
     this->CoverageArray.SetBuffers(this->CoveragePoints, nullptr);
-  }
-  if (this->CoverageVertices == 0)
-  {
-    return false;
   }
   vtkShaderProgram* program = this->Window->GetShaderCache()->ReadyShaderProgram(
     vtkHAVSShaders::CoverageVertexShader().c_str(), vtkHAVSShaders::CoverageShader().c_str(), "");
@@ -215,24 +194,6 @@ bool vtkHAVSGLFrameTargets::DrawCoverage()
   this->OpaqueDepth->Deactivate();
   state->PopFramebufferBindings();
   return true;
-}
-
-//------------------------------------------------------------------------------
-void vtkHAVSGLFrameTargets::ReadCoverage(std::vector<unsigned char>& mask)
-{
-  mask.clear();
-  if (!this->CoverageDrawn || !this->Coverage)
-  {
-    return;
-  }
-  mask.resize(static_cast<size_t>(this->FullSize[0]) * this->FullSize[1]);
-  vtkOpenGLState* state = this->Window->GetState();
-  state->PushReadFramebufferBinding();
-  this->CoverageFramebuffer->Bind(GL_READ_FRAMEBUFFER);
-  this->CoverageFramebuffer->ActivateReadBuffer(0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, this->FullSize[0], this->FullSize[1], GL_RED, GL_UNSIGNED_BYTE, mask.data());
-  state->PopReadFramebufferBinding();
 }
 
 //------------------------------------------------------------------------------
@@ -599,6 +560,12 @@ bool vtkHAVSGLFrameTargets::Composite(int originX, int originY)
       return true;
     }
   }
+  const bool reduced = this->Size[0] != this->FullSize[0] || this->Size[1] != this->FullSize[1];
+  if (reduced && this->CoverageMesh && !this->CoverageDrawn)
+  {
+    this->CoverageDrawn = this->DrawCoverage();
+    this->CoverageMesh = nullptr; // drawn once a frame (a kept result composited again reuses it)
+  }
   vtkOpenGLState* state = this->Window->GetState();
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
@@ -622,23 +589,6 @@ bool vtkHAVSGLFrameTargets::Composite(int originX, int originY)
   if (uniforms && !uniforms->SetUniforms(program))
   {
     vtkWarningMacro("The volume's fragment custom uniforms could not all be set in the composite.");
-  }
-  const bool reduced = this->Size[0] != this->FullSize[0] || this->Size[1] != this->FullSize[1];
-  if (reduced && this->CoverageMesh && !this->CoverageDrawn)
-  {
-    this->CoverageDrawn = this->DrawCoverage();
-    this->CoverageMesh = nullptr; // drawn once a frame (a kept result composited again reuses it)
-    program = this->Window->GetShaderCache()->ReadyShaderProgram(
-      vtkHAVSShaders::QuadVertexShader().c_str(), this->CompositeSource.c_str(), "");
-    if (!program || !program->GetCompiled())
-    {
-      return false;
-    }
-    if (uniforms && !uniforms->SetUniforms(program))
-    {
-      vtkWarningMacro(
-        "The volume's fragment custom uniforms could not all be set in the composite.");
-    }
   }
   const bool useCoverage = reduced && this->CoverageDrawn;
   if (useCoverage)

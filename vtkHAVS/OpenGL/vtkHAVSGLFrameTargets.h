@@ -39,6 +39,7 @@
 
 VTK_ABI_NAMESPACE_BEGIN
 
+class vtkHAVSFramePlanes;
 class vtkHAVSMesh;
 class vtkHAVSShaderHooks;
 class vtkHAVSTranslucentLayers;
@@ -133,16 +134,14 @@ public:
    * covered ones upsample bilinearly (vtkHAVSCompositeFS): the silhouette
    * and the edges of opaque geometry in front stay sharp.
    * Called once a frame, after Resize(); nothing is drawn for a full-size
-   * frame, nor where the near plane cuts the mesh's bounds (the volume is
-   * then seen through the section, not a boundary face: plain bilinear).
+   * frame, nor where the near plane cuts the mesh's bounds (`planes`:
+   * vtkHAVSFramePlanes::GetNearPlaneCutsMesh; the volume is then seen
+   * through the section, not a boundary face: plain bilinear).
    * The boundary faces' positions go to the GPU at the first reduced frame
    * of a mesh (9 floats a boundary face).
    */
-  void SetCoverage(vtkHAVSMesh* mesh, const vtkHAVSViewFrame& view, bool opaque);
-  /// Whether the last Composite() upsampled with the coverage mask.
-  bool GetLastCoverageUsed() const { return this->CoverageDrawn; }
-  /// Reads the coverage mask back (full size, bottom row first; empty when none was drawn).
-  void ReadCoverage(std::vector<unsigned char>& mask);
+  void SetCoverage(
+    vtkHAVSMesh* mesh, const vtkHAVSViewFrame& view, const vtkHAVSFramePlanes& planes, bool opaque);
 
   /// Composites the result over VTK's framebuffer (viewport, of the full
   /// size, set by the caller), with the shader hooks last set applied; a

@@ -107,7 +107,7 @@ vtkOpenGLRenderWindow* vtkHAVSGLMapperResources::BeginFrame(vtkRenderer* rendere
     return nullptr;
   }
   this->Targets->Resize(view.FullWidth, view.FullHeight, view.Width, view.Height);
-  this->Targets->SetCoverage(mesh, view, opaque);
+  this->Targets->SetCoverage(mesh, view, planes, opaque);
   if (opaque)
   {
     this->Targets->CaptureOpaqueDepth(

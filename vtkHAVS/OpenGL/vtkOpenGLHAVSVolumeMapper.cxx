@@ -210,7 +210,7 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
   vtkOpenGLState* state = window->GetState();
   targets->Resize(view.FullWidth, view.FullHeight, width, height);
   targets->SetCoverage(
-    this->GetLastEdgeUpsampling() ? request.Mesh : nullptr, view, request.Opaque);
+    this->GetLastEdgeUpsampling() ? request.Mesh : nullptr, view, *request.Planes, request.Opaque);
   if (request.Opaque)
   {
     targets->CaptureOpaqueDepth(view.OriginX, view.OriginY, view.FullWidth, view.FullHeight, this);
