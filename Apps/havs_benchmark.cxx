@@ -17,6 +17,7 @@
 // over the rounds: this machine's slow drifts hit every configuration alike.)
 // (--dump-case DIR: only write view 0 of each data set, drawn by each mapper
 // of --dump-kinds (havs_k2, havs_k6, cellprojection, raycast by default;
+// table<N>: the pre-integrated table at N^3 built on the GPU, for issue 45;
 // havs_k2_t43, havs_k6_t43: HAVS with the thesis' Table 4.3 settings),
 // as frame cases for Apps/GPUBench/havs_gpu_bench, with the exact image.)
 // (--from-csv a.csv,b.csv: only make the report again from earlier runs' CSVs;
@@ -58,7 +59,9 @@
 // edit-<configuration> (e.g. edit-havs-default, edit-tetraycast, edit-cellproj,
 // edit-pt): that configuration, then at view 0 still redraws and
 // transfer-function edits (one opacity node moved), with the edit's parts
-// (MeasureEdits); their own report section.
+// (MeasureEdits); their own report section. <configuration>-gputable (e.g.
+// edit-havs-default-gputable): a project mapper with its tables built on the
+// GPU (vtkHAVSMapperBase::PreIntegrationOnGPU).
 // lod-<percent>-<configuration> (e.g. lod-20-havs-default, lod-20-tetraycast,
 // lod-20-cellproj; any configuration of a vtkHAVSMapperBase mapper): at view 0
 // the full frame while the camera turns, then that share of it as the frame
@@ -84,6 +87,7 @@
 #include "vtkHAVSFaceSet.h"
 #include "vtkHAVSFaceSorter.h"
 #include "vtkHAVSFrameStatistics.h"
+#include "vtkHAVSGLTableBuilder.h"
 #include "vtkHAVSGeneratedBlock.h"
 #include "vtkHAVSImageMetrics.h"
 #include "vtkHAVSIntermixPass.h"
@@ -92,6 +96,7 @@
 #include "vtkHAVSRayCastMapper.h"
 #include "vtkHAVSReferenceRenderer.h"
 #include "vtkHAVSRenderWindowFactory.h"
+#include "vtkHAVSShaders.h"
 #include "vtkHAVSStandardViews.h"
 #include "vtkHAVSTranslucentLayers.h"
 #include "vtkHAVSVisibilityOrder.h"
@@ -109,6 +114,7 @@
 #include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkLightCollection.h"
+#include "vtkMath.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkMultiBlockPLOT3DReader.h"
 #include "vtkNew.h"
@@ -543,6 +549,50 @@ int DumpCases(const Options& o)
     }
     for (const std::string& kind : o.DumpKinds)
     {
+      if (kind.rfind("table", 0) == 0)
+      {
+        // table<N>: the pre-integrated table at N^3 of the data set's
+        // function, range and longest edge, for the GPU's build against the
+        // CPU's (issue 45; havs_gpu_cases makes its inputs and the CPU's table).
+        const int resolution = std::atoi(kind.c_str() + 5);
+        if (resolution < 2 || resolution > 1024)
+        {
+          std::cerr << "unknown case kind " << kind << " (table<N>, N from 2 to 1024)" << std::endl;
+          ++failures;
+          continue;
+        }
+        const std::string dir =
+          o.DumpCase + "/" + dataset + "_" + std::to_string(o.Size) + "_" + kind;
+        std::system(("mkdir -p '" + dir + "'").c_str());
+        double longest = 0.0;
+        vtkNew<vtkIdList> ids;
+        for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+        {
+          grid->GetCellPoints(c, ids);
+          for (vtkIdType a = 0; a < ids->GetNumberOfIds(); ++a)
+          {
+            for (vtkIdType b = a + 1; b < ids->GetNumberOfIds(); ++b)
+            {
+              double pa[3], pb[3];
+              grid->GetPoint(ids->GetId(a), pa);
+              grid->GetPoint(ids->GetId(b), pb);
+              longest = std::max(longest, vtkMath::Distance2BetweenPoints(pa, pb));
+            }
+          }
+        }
+        double range[2];
+        grid->GetPointData()->GetScalars()->GetRange(range);
+        std::ofstream(dir + "/table.comp")
+          << vtkHAVSShaders::TableComputeShader(resolution - 1, vtkHAVSGLTableBuilder::LocalSize);
+        std::ofstream(dir + "/case.txt")
+          << std::setprecision(17) << "format 2\nmapper table\nwidth " << resolution << "\nheight "
+          << resolution << "\ntable " << resolution << " " << resolution << " " << resolution
+          << "\nmax_length " << std::sqrt(longest) << "\nscalar_range " << range[0] << " "
+          << range[1] << "\ndataset " << dataset << "\nview 0\n"
+          << FrameDescription(mesh, camera, property);
+        std::cout << "wrote " << dir << std::endl;
+        continue;
+      }
       vtkSmartPointer<vtkHAVSMapperBase> mapper;
       std::string settings; // what havs_gpu_cases sets beyond the defaults
       if (kind == "havs_k2" || kind == "havs_k6" || kind == "havs_k2_t43" || kind == "havs_k6_t43")
@@ -992,6 +1042,15 @@ int RunWorker(const Options& o)
     std::cerr << "unknown configuration " << rowConfig << std::endl;
     return EXIT_FAILURE;
   }
+  // <configuration>-gputable: a project mapper with PreIntegrationOnGPU (issue 45).
+  const std::string gpuTableSuffix = "-gputable";
+  const bool gpuTable = config.size() > gpuTableSuffix.size() &&
+    config.compare(config.size() - gpuTableSuffix.size(), gpuTableSuffix.size(), gpuTableSuffix) ==
+      0;
+  if (gpuTable)
+  {
+    config.resize(config.size() - gpuTableSuffix.size());
+  }
   vtkSmartPointer<vtkUnstructuredGrid> grid = LoadDataSet(dataset);
   if (!grid || grid->GetNumberOfCells() == 0 || !grid->GetPointData()->GetScalars())
   {
@@ -1264,12 +1323,17 @@ int RunWorker(const Options& o)
       return EXIT_FAILURE;
     }
     auto* base = vtkHAVSMapperBase::SafeDownCast(mapper);
-    if ((iso != NoIsoSurfaces || budgetPercent > 0.0 || floorRun) && !base)
+    if ((iso != NoIsoSurfaces || budgetPercent > 0.0 || floorRun || gpuTable) && !base)
     {
       std::cerr << rowConfig
-                << ": isosurfaces, frame budgets and floors need a vtkHAVSMapperBase mapper"
+                << ": isosurfaces, frame budgets, floors and the GPU's table need a "
+                   "vtkHAVSMapperBase mapper"
                 << std::endl;
       return EXIT_FAILURE;
+    }
+    if (gpuTable)
+    {
+      base->PreIntegrationOnGPUOn();
     }
     if (iso != NoIsoSurfaces)
     {
@@ -2353,9 +2417,19 @@ std::string IsoReport(const std::vector<Row>& allRows)
 /// mapper, a new view, a still redraw, an edit and the edit's parts.
 std::string EditReport(const std::vector<Row>& allRows)
 {
-  std::vector<Row> rows;
-  std::copy_if(allRows.begin(), allRows.end(), std::back_inserter(rows), IsEdit);
-  if (rows.empty())
+  // A run with -gputable configurations: its rows go to their own table, each
+  // beside the same configuration on the CPU's table from that run.
+  auto gpuRun = [](const Row& r)
+  { return r.count("command") && r.at("command").find("-gputable") != std::string::npos; };
+  std::vector<Row> rows, gpuRows;
+  for (const Row& r : allRows)
+  {
+    if (IsEdit(r))
+    {
+      (gpuRun(r) ? gpuRows : rows).push_back(r);
+    }
+  }
+  if (rows.empty() && gpuRows.empty())
   {
     return std::string();
   }
@@ -2389,6 +2463,46 @@ std::string EditReport(const std::vector<Row>& allRows)
        << " | " << Cell(r, "edit_visibility_ms", "%.1f") << " | "
        << Cell(r, "edit_gather_ms", "%.1f") << " | " << Cell(r, "edit_upload_ms", "%.1f") << " | "
        << Cell(r, "edit_draw_ms", "%.1f") << " |\n";
+  }
+  if (!gpuRows.empty())
+  {
+    md << "\n### The table built on the GPU\n\n"
+       << "<configuration>-gputable: the same mapper with `PreIntegrationOnGPU` on (the table's "
+          "entries built by a compute shader from the CPU's fine samples and read back, "
+          "`vtkHAVSGLTableBuilder`), beside it on the CPU's table, in one run. Here the "
+          "\"GPU\" is llvmpipe on the same 2 cores: what it shows is the cost of the route "
+          "there, not on a GPU (the GPU check's table cases measure it there: "
+          "`Apps/GPUBench/gpu_check.sh`).\n\n"
+       << "| data set | size | configuration | CPU table ms | GPU table ms | GPU / CPU | still ms "
+          "(CPU, GPU) | edit / still, CPU table | edit / still, GPU table |\n"
+       << "|---|---|---|---|---|---|---|---|---|\n";
+    for (const Row& g : gpuRows)
+    {
+      const std::string config = g.at("config");
+      const std::string suffix = "-gputable";
+      if (config.size() <= suffix.size() ||
+        config.compare(config.size() - suffix.size(), suffix.size(), suffix) != 0)
+      {
+        continue;
+      }
+      const std::string base = config.substr(0, config.size() - suffix.size());
+      for (const Row& c : gpuRows)
+      {
+        if (c.at("config") != base || c.at("dataset") != g.at("dataset") ||
+          (c.count("size") ? c.at("size") : "") != (g.count("size") ? g.at("size") : ""))
+        {
+          continue;
+        }
+        char figures[256];
+        std::snprintf(figures, sizeof(figures), "%.1f | %.1f | %.1f | %.1f, %.1f | %.2f | %.2f",
+          Value(c, "edit_table_ms"), Value(g, "edit_table_ms"),
+          Value(g, "edit_table_ms") / Value(c, "edit_table_ms"), Value(c, "still_ms"),
+          Value(g, "still_ms"), Value(c, "edit_ms") / Value(c, "still_ms"),
+          Value(g, "edit_ms") / Value(g, "still_ms"));
+        md << "| " << g.at("dataset") << " | " << (g.count("size") ? g.at("size") : "-") << " | "
+           << base.substr(5) << " | " << figures << " |\n";
+      }
+    }
   }
   return md.str();
 }

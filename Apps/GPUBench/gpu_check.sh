@@ -5,7 +5,9 @@
 #   Apps/GPUBench/gpu_check.sh make [BUILD_DIR]   here: .gpubundle/havs-gpu-bundle.tar.xz
 #                                                 (the blunt fin, the LOX post and gen1M at
 #                                                 512² and 1024², every mapper; HAVS also
-#                                                 with Table 4.3's settings: *_t43)
+#                                                 with Table 4.3's settings: *_t43;
+#                                                 the blunt fin's table at 64³, 128³
+#                                                 and 256³ built by the compute shader)
 #   Apps/GPUBench/gpu_check.sh run [OUT_DIR]      there, in the repository's root: the
 #                                                 bundle's check, results under OUT_DIR
 #                                                 (default $OUT, else gpu-check-out)
@@ -23,7 +25,8 @@ case ${1:-} in
     HAVS_DATA_DIR=${HAVS_DATA_DIR:-$root/../shared/data} \
       bash "$root/Apps/GPUBench/make_gpu_bundle.sh" "$build" "$root/.gpubundle" \
       --datasets bluntfin,loxpost,gen1M --sizes 512,1024 --cache-dir "$build/benchmark-cache" \
-      --kinds havs_k2,havs_k6,havs_k2_t43,havs_k6_t43,cellprojection,raycast
+      --kinds havs_k2,havs_k6,havs_k2_t43,havs_k6_t43,cellprojection,raycast \
+      --tables table64,table128,table256
     ;;
   run)
     out=${2:-${OUT:-gpu-check-out}}
@@ -31,7 +34,7 @@ case ${1:-} in
       --budget 270
     ;;
   *)
-    sed -n '3,17p' "$0"
+    sed -n '3,19p' "$0"
     exit 2
     ;;
 esac

@@ -409,6 +409,35 @@ GLuint Compile(GLenum type, const std::string& source, const std::string& name)
 
 }
 
+GLuint ComputeProgram(const Case& c, const std::string& shader)
+{
+  const std::string source = c.Shader(shader);
+  if (source.empty())
+  {
+    Fail("missing shader " + shader);
+    return 0;
+  }
+  const GLuint s = Compile(GL_COMPUTE_SHADER, source, shader);
+  if (!s)
+  {
+    return 0;
+  }
+  GLuint program = gl.CreateProgram();
+  gl.AttachShader(program, s);
+  gl.LinkProgram(program);
+  gl.DeleteShader(s);
+  GLint ok = 0;
+  gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok)
+  {
+    char log[4096];
+    gl.GetProgramInfoLog(program, sizeof(log), nullptr, log);
+    Fail(shader + " does not link:\n" + log);
+    return 0;
+  }
+  return program;
+}
+
 GLuint Program(
   const Case& c, const std::string& vertex, const std::string& fragment, const std::string& name)
 {

@@ -16,6 +16,7 @@
 #include <GL/glcorearb.h>
 
 #include <cstdint>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <string>
@@ -112,7 +113,14 @@ namespace havsgpu
   X(PFNGLBEGINQUERYPROC, BeginQuery)                                                               \
   X(PFNGLENDQUERYPROC, EndQuery)                                                                   \
   X(PFNGLQUERYCOUNTERPROC, QueryCounter)                                                           \
-  X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)
+  X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)                                             \
+  X(PFNGLDISPATCHCOMPUTEPROC, DispatchCompute)                                                     \
+  X(PFNGLTEXSTORAGE3DPROC, TexStorage3D)                                                           \
+  X(PFNGLGETTEXIMAGEPROC, GetTexImage)                                                             \
+  X(PFNGLDELETEQUERIESPROC, DeleteQueries)                                                         \
+  X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                                       \
+  X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                                                         \
+  X(PFNGLDELETEPROGRAMPROC, DeleteProgram)
 
 struct GL
 {
@@ -190,6 +198,8 @@ bool ReadArray(const std::string& path, std::vector<T>& out)
 /// havsViewportSize from the case. 0, with the log printed, when it fails.
 GLuint Program(const Case& c, const std::string& vertex, const std::string& fragment,
   const std::string& program);
+/// A compute program of the case's shader `shader`; 0, with the log printed, when it fails.
+GLuint ComputeProgram(const Case& c, const std::string& shader);
 GLuint FloatTexture(int w, int h);
 GLuint Framebuffer(const std::vector<GLuint>& colors);
 void DrawBuffers(size_t n);
@@ -253,6 +263,16 @@ struct Options
     return this->Paths.empty() || this->Paths.find(path) != std::string::npos;
   }
 };
+
+/**
+ * A table case (mapper table, issue 45: README.md): the pre-integrated table
+ * built by the case's compute shader from the inputs havs_gpu_cases made,
+ * timed (--frames builds after a warm-up), read back and compared with the
+ * CPU's table of the same inputs (at most 5e-6 apart, as
+ * TestHAVSGLTableBuilder bounds it). With o.Control, the functions mirrored
+ * (their samples in reverse order): that table must miss. Returns the failures.
+ */
+int RunTableCase(const Case& c, const Options& o, std::ofstream* csv);
 
 /// One way of drawing the case's frame, timed as clear, draw, resolve.
 struct Path

@@ -24,7 +24,9 @@
 //     layout without a guard), fragment lists;
 //   - the cell projection: its cells in the exact visibility order;
 //   - the ray caster: peel and cast;
-// and the trivial shader of the raster bound of the same faces. Prints per
+// and the trivial shader of the raster bound of the same faces; a table case
+// (mapper table): the pre-integrated table's compute build, against the CPU's
+// (havsGPUTable.cxx). Prints per
 // path the median frame time (clear, draw, resolve), the draw alone, tets/s,
 // fragments/s, the ratio to the raster bound, and the image's error against
 // the mapper's own float result (where captured: --max-difference, default
@@ -183,6 +185,10 @@ int RunCase(const std::string& path, const Options& o, const Device& device, std
   if (!ReadCase(dir, c))
   {
     return 1;
+  }
+  if (c.Mapper == "table")
+  {
+    return RunTableCase(c, o, csv);
   }
   Paths paths;
   bool made = false;

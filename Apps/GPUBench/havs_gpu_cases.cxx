@@ -22,7 +22,8 @@
 // with the boundary faces' own and its faces in draw order; the cell projection's points,
 // tetrahedra, windings, cell records and order; the ray caster's points, boundary, neighbours and
 // cell records. The same core code made them where the case was captured, so havs_gpu_bench then
-// draws the captured frame.
+// draws the captured frame. A table case (mapper table): the CPU's table, timed, and the inputs
+// of the GPU's build of it (MakeTableCase).
 // --check: compare with the arrays already in the case instead of writing
 // (each file byte for byte; exits 1 on a difference).
 #include "vtkHAVSCellProjectionMapper.h"
@@ -54,6 +55,7 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -411,6 +413,66 @@ vtkSmartPointer<vtkUnstructuredGrid> MeshOf(const std::string& dir, const Descri
   return grid;
 }
 
+/**
+ * A table case (mapper table, issue 45): the pre-integrated table of the
+ * case's functions at its size, range and longest segment, built here on the
+ * CPU (table.f32; its median build time of 5 in cpu_table_ms.txt), and the
+ * inputs of the GPU's build (vtkHAVSPreIntegrationTable::Quadrature):
+ * samples.f32 (tau, r, g, b a fine sample), steps.f32, table_samples.i32,
+ * layers.f32.
+ */
+bool MakeTableCase(const std::string& dir, const Description& d, bool check, int* differences)
+{
+  vtkSmartPointer<vtkVolumeProperty> property = MakeProperty(d);
+  const std::vector<double> size = d.Numbers("table");
+  const std::vector<double> range = d.Numbers("scalar_range");
+  const double maxLength = std::atof(d.First("max_length").c_str());
+  if (!property || size.size() != 3 || range.size() != 2 || !(maxLength > 0.0))
+  {
+    std::fprintf(stderr,
+      "havs_gpu_cases: %s: a table case needs tf_* lines, table, scalar_range and max_length\n",
+      dir.c_str());
+    return false;
+  }
+  vtkNew<vtkHAVSPreIntegrationTable> table;
+  table->SetScalarResolution(static_cast<int>(size[0]));
+  table->SetLengthResolution(static_cast<int>(size[2]));
+  vtkHAVSPreIntegrationTable::Quadrature inputs;
+  table->SetEntryBuilder(
+    [&inputs](const vtkHAVSPreIntegrationTable::Quadrature& q, float*)
+    {
+      inputs = q;
+      return false; // built here, on the CPU
+    });
+  std::vector<double> seconds;
+  for (int i = 0; i < 5; ++i)
+  {
+    if (!table->Build(property, 0, range.data(), maxLength))
+    {
+      return false;
+    }
+    seconds.push_back(table->GetLastBuildSeconds());
+  }
+  std::sort(seconds.begin(), seconds.end());
+  Sink sink;
+  sink.Dir = dir;
+  sink.Check = check;
+  sink.PutTable(table);
+  sink.Put("samples.f32", inputs.Samples);
+  sink.Put("steps.f32", inputs.StepDepth);
+  sink.Put("table_samples.i32", inputs.TableSample);
+  sink.Put("layers.f32", inputs.LayerLength);
+  std::ofstream(dir + "/cpu_table_ms.txt") << 1e3 * seconds[2] << "\n";
+  std::printf("%s: table %d x %d x %d, %zu fine samples, %d arrays %s\n  CPU: table %.2f ms "
+              "(median of 5; vtkSMPTools %s, %d threads)\n",
+    dir.c_str(), table->GetBuiltScalarResolution(), table->GetBuiltScalarResolution(),
+    table->GetBuiltLengthResolution(), inputs.Samples.size() / 4, sink.Written,
+    check ? "checked" : "written", 1e3 * seconds[2], vtkSMPTools::GetBackend(),
+    vtkSMPTools::GetEstimatedNumberOfThreads());
+  *differences += sink.Differences;
+  return true;
+}
+
 /// One case's arrays written (or checked); false when the case cannot be made.
 bool MakeCase(const std::string& dir, bool check,
   std::map<std::string, vtkSmartPointer<vtkUnstructuredGrid>>& meshes, int* differences)
@@ -421,6 +483,10 @@ bool MakeCase(const std::string& dir, bool check,
     return false;
   }
   const std::string mapperKind = d.First("mapper");
+  if (mapperKind == "table")
+  {
+    return MakeTableCase(dir, d, check, differences);
+  }
   const int width = std::atoi(d.First("width").c_str());
   const int height = std::atoi(d.First("height").c_str());
   vtkSmartPointer<vtkUnstructuredGrid> grid = MeshOf(dir, d, meshes);

@@ -3,7 +3,8 @@
 # make_gpu_bundle.sh: the GPU check's bundle (issue 47), made on this machine.
 #
 #   Apps/GPUBench/make_gpu_bundle.sh BUILD_DIR OUT_DIR [--datasets a,b] [--sizes 512,1024]
-#                                    [--kinds a,b] [--cache-dir DIR] [--limit-mib N]
+#                                    [--kinds a,b] [--tables a,b] [--cache-dir DIR]
+#                                    [--limit-mib N]
 #
 # Writes OUT_DIR/havs-gpu-bundle.tar.xz (and OUT_DIR/bundle-size.txt, what it
 # holds and how big each part is), for run_gpu_bundle.sh on a machine with a
@@ -14,6 +15,9 @@
 #     (reference.u16) and folded-pixel mask, WITHOUT their large arrays, their
 #     pre-integration table and the mapper's llvmpipe result: the arrays and
 #     the table are made again there (havs_gpu_cases);
+#   - with --tables (e.g. table64,table128): table cases of the first data
+#     set, once: its pre-integrated table built by the GPU's compute shader
+#     against the CPU's build (issue 45), both made there;
 #   - the real meshes (.havsmesh: points, tetrahedra, scalars; the generated
 #     blocks gen1M, gen4M, gen10M and block<N> travel as their name only);
 #   - havs_gpu_bench (no VTK, the C++ runtime linked in) and havs_gpu_cases
@@ -26,7 +30,7 @@
 set -euo pipefail
 
 if [ $# -lt 2 ]; then
-  sed -n '3,26p' "$0"
+  sed -n '3,29p' "$0"
   exit 2
 fi
 build=$(cd "$1" && pwd)
@@ -36,12 +40,14 @@ datasets=bluntfin,loxpost,gen1M
 sizes=512,1024
 cache="$build/benchmark-cache"
 kinds=havs_k2,havs_k6,cellprojection,raycast
+tables=""
 limit=56
 while [ $# -gt 0 ]; do
   case $1 in
     --datasets) datasets=$2; shift 2 ;;
     --sizes) sizes=$2; shift 2 ;;
     --kinds) kinds=$2; shift 2 ;;
+    --tables) tables=$2; shift 2 ;;
     --cache-dir) cache=$2; shift 2 ;;
     --limit-mib) limit=$2; shift 2 ;;
     *) echo "make_gpu_bundle.sh: unknown option $1" >&2; exit 2 ;;
@@ -62,7 +68,12 @@ for size in ${sizes//,/ }; do
 done
 # The large arrays and the table are made again where the bundle runs (havs_gpu_cases); the
 # mapper's float result on llvmpipe stays here (the check is the exact image).
+if [ -n "$tables" ]; then
+  "$build/bin/havs_benchmark" --dump-case "$b/cases" --datasets "${datasets%%,*}" \
+    --size "${sizes%%,*}" --cache-dir "$cache" --dump-kinds "$tables"
+fi
 for d in "$b"/cases/*/; do
+  rm -f "$d"/{samples.f32,steps.f32,table_samples.i32,layers.f32,cpu_table_ms.txt}
   rm -f "$d"/{table.f32,points.f32,scalars.f32,indices.u32,tetrahedra.u32,mirrored.u32,order.u32} \
     "$d"/{cells.f32,boundary_faces.u32,boundary_cells.u32,neighbours.i32,result.f32}
 done

@@ -12,7 +12,9 @@
 # (gpu-check.log, gpu-check.csv), so that a run cut short still leaves what
 # it did; cases left when --budget (default 270 s) is spent are listed as not
 # run. The control (on the smallest cases): the wrong orders, which must
-# miss the exact image. Exit status 0 only when every case that ran drew the
+# miss the exact image. Table cases (make_gpu_bundle.sh --tables): the
+# pre-integrated table built by the compute shader against the CPU's, timed
+# on both; the control, the functions mirrored, must miss. Exit status 0 only when every case that ran drew the
 # exact image on every path, every control missed it, and nothing was left.
 set -u -o pipefail
 if [ $# -lt 2 ]; then
@@ -100,7 +102,7 @@ mapfile -t groups < <(
   done | sort -n -k1,1 -k2,2 | awk '{ print $3 }')
 failures=0
 notrun=()
-first=1
+declare -A controlled
 for group in "${groups[@]}"; do
   read -r -a dirs <<< "${members[$group]}"
   if [ "$(left)" -le 10 ]; then
@@ -120,8 +122,13 @@ for group in "${groups[@]}"; do
     say "FAILED (or cut short): havs_gpu_bench $group"
     failures=$((failures + 1))
   fi
-  if [ "$first" = 1 ] && [ "$control" = 1 ] && [ "$(left)" -gt 10 ]; then
-    # The control: each mapper's wrong order must miss the exact image.
+  # The controls: the first group of frames and the first of tables.
+  kind=frames
+  if grep -q '^mapper table' "${dirs[0]}/case.txt"; then kind=tables; fi
+  if [ -z "${controlled[$kind]:-}" ] && [ "$control" = 1 ] && [ "$(left)" -gt 10 ]; then
+    controlled[$kind]=1
+    # The control: each mapper's wrong order must miss the exact image (a
+    # table: the functions mirrored must miss the CPU's table).
     for d in "${dirs[@]}"; do
       if timeout "$(left)" "$b/bin/havs_gpu_bench" "$d" --frames 1 --control --csv "$csv" \
         >> "$log" 2>&1; then
@@ -132,7 +139,6 @@ for group in "${groups[@]}"; do
       fi
     done
   fi
-  first=0
   # The arrays are not needed any more: the disk holds one group's at a time.
   for d in "${dirs[@]}"; do
     find "$d" -name '*.f32' ! -name 'table.f32' -delete

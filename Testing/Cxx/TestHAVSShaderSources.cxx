@@ -65,6 +65,10 @@ int TestHAVSShaderSources(int, char*[])
   check(vtkHAVSShaders::CompositeShader(), "composite", "frag");
   check(vtkHAVSShaders::CoverageVertexShader(), "coverage", "vert");
   check(vtkHAVSShaders::CoverageShader(), "coverage", "frag");
+  // The table's compute shader at the smallest and the largest table (1 and
+  // 1023 intervals: its shared memory at the 32 KB GL guarantees).
+  check(vtkHAVSShaders::TableComputeShader(1, 64), "table_1", "comp");
+  check(vtkHAVSShaders::TableComputeShader(1023, 64), "table_1023", "comp");
   check(vtkHAVSShaders::CellProjectionVertexShader(), "cell_projection", "vert");
   check(vtkHAVSShaders::CellProjectionShader(false), "cell_projection", "frag");
   check(vtkHAVSShaders::CellProjectionShader(true), "cell_projection_opaque", "frag");

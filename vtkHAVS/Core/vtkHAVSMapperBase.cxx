@@ -45,6 +45,18 @@ vtkHAVSMapperBase::vtkHAVSMapperBase(const char* mapperName)
   : Mesh(vtkSmartPointer<vtkHAVSMesh>::New())
   , MapperName(mapperName)
 {
+  this->Table->SetEntryBuilder([this](const vtkHAVSPreIntegrationTable::Quadrature& inputs,
+                                 float* table) { return this->BuildTableEntries(inputs, table); });
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSMapperBase::BuildTableEntries(
+  const vtkHAVSPreIntegrationTable::Quadrature& inputs, float* table)
+{
+  const bool built = this->PreIntegrationOnGPU && this->Graphics && this->FrameRenderer &&
+    this->Graphics->BuildTableEntries(this->FrameRenderer, this, this->MapperName, inputs, table);
+  this->LastTableBuiltOnGPU = this->LastTableBuiltOnGPU || built;
+  return built;
 }
 
 vtkHAVSMapperBase::~vtkHAVSMapperBase()
@@ -506,6 +518,8 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastSectionTriangles = 0;
   this->LastIntermixLayers = 0;
   this->TableRebuilt = false;
+  this->LastTableBuiltOnGPU = false;
+  this->FrameRenderer = renderer; // (the tables' GPU build draws in its window)
   this->ResetLastFrame();
   this->InvokeEvent(vtkCommand::VolumeMapperRenderStartEvent, nullptr);
   bool viewDrawn = false;
@@ -574,6 +588,7 @@ void vtkHAVSMapperBase::Render(vtkRenderer* renderer, vtkVolume* volume)
     }
   }
 
+  this->FrameRenderer = nullptr;
   // 7. The frame's time (vtkVolume's estimate reads it) and 8. its end.
   this->TimeToDraw = vtkTimerLog::GetUniversalTime() - start;
   if (viewDrawn)
@@ -604,6 +619,8 @@ void vtkHAVSMapperBase::PrintSelf(ostream& os, vtkIndent indent)
      << ", TableLengthResolution: " << this->TableLengthResolution << "\n";
   os << indent << "AutomaticTableResolution: " << this->AutomaticTableResolution << " (error bound "
      << this->TableChooser->GetErrorBound() << ")\n";
+  os << indent << "PreIntegrationOnGPU: " << this->PreIntegrationOnGPU
+     << " (last table built on the GPU: " << this->LastTableBuiltOnGPU << ")\n";
   os << indent << "KeepFloatResult: " << this->KeepFloatResult << "\n";
   os << indent << "LargestGPUBuffer: " << this->LargestGPUBuffer << "\n";
   os << indent << "PlaneSections: " << this->PlaneSections

@@ -54,12 +54,13 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
-#include "vtkHAVSCoreModule.h"  // For export macro
-#include "vtkHAVSIsoSurfaces.h" // For vtkHAVSIsoSurfaces
-#include "vtkHAVSMemory.h"      // For vtkHAVSMemory::Part
-#include "vtkHAVSShaderHooks.h" // For vtkHAVSShaderHooks
-#include "vtkNew.h"             // For vtkNew
-#include "vtkSmartPointer.h"    // For vtkSmartPointer
+#include "vtkHAVSCoreModule.h"          // For export macro
+#include "vtkHAVSIsoSurfaces.h"         // For vtkHAVSIsoSurfaces
+#include "vtkHAVSMemory.h"              // For vtkHAVSMemory::Part
+#include "vtkHAVSPreIntegrationTable.h" // For vtkHAVSPreIntegrationTable::Quadrature
+#include "vtkHAVSShaderHooks.h"         // For vtkHAVSShaderHooks
+#include "vtkNew.h"                     // For vtkNew
+#include "vtkSmartPointer.h"            // For vtkSmartPointer
 #include "vtkUnstructuredGridVolumeMapper.h"
 
 #include <array>  // For std::array
@@ -216,6 +217,26 @@ public:
   int GetLastTableScalarResolution();
   int GetLastTableLengthResolution();
   double GetLastTableError();
+  ///@}
+
+  ///@{
+  /**
+   * Build the pre-integrated tables' entries on the GPU (off by default):
+   * the same quadrature from the same fine samples of the functions, by a
+   * compute shader in single precision (vtkHAVSGLTableBuilder), read back for
+   * the CPU's users of the table (cell visibility, the automatic resolution's
+   * probes). Entries agree with the CPU's to about 1e-6
+   * (TestHAVSGLTableBuilder). Where the context cannot (no OpenGL 4.3, more
+   * than 1024 table scalars) the CPU builds them, with an error once.
+   * Issue 45 measured it against the CPU's build (Documentation/benchmarks.md,
+   * Transfer-function edits): on llvmpipe's 2 cores the CPU build is the
+   * cheaper, hence off; on a GPU it was not measured.
+   */
+  vtkSetMacro(PreIntegrationOnGPU, bool);
+  vtkGetMacro(PreIntegrationOnGPU, bool);
+  vtkBooleanMacro(PreIntegrationOnGPU, bool);
+  /// Whether the last table build ran on the GPU.
+  vtkGetMacro(LastTableBuiltOnGPU, bool);
   ///@}
 
   ///@{
@@ -526,6 +547,11 @@ protected:
   vtkSmartPointer<vtkHAVSMesh> Mesh;
   vtkNew<vtkHAVSPreIntegrationTable> Table;
   bool AutomaticTableResolution = true;
+  bool PreIntegrationOnGPU = false;
+  bool LastTableBuiltOnGPU = false;
+  vtkRenderer* FrameRenderer = nullptr; ///< the renderer of the frame drawing now (else nullptr)
+  /// The tables' EntryBuilder: the graphics layer's GPU build, where PreIntegrationOnGPU.
+  bool BuildTableEntries(const vtkHAVSPreIntegrationTable::Quadrature& inputs, float* table);
   vtkNew<vtkHAVSTableResolution> TableChooser; ///< the automatic resolution's choice
   vtkTimeStamp TableBuildTime; ///< the table's version (changes when it was rebuilt)
   bool TableRebuilt = false;   ///< this frame rebuilt the table

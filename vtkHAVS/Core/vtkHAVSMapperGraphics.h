@@ -20,8 +20,9 @@
 #ifndef vtkHAVSMapperGraphics_h
 #define vtkHAVSMapperGraphics_h
 
-#include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
-#include "vtkHAVSCoreModule.h"   // For export macro
+#include "vtkHAVSABINamespace.h"        // For VTK_ABI_NAMESPACE_BEGIN
+#include "vtkHAVSCoreModule.h"          // For export macro
+#include "vtkHAVSPreIntegrationTable.h" // For vtkHAVSPreIntegrationTable::Quadrature
 #include "vtkObject.h"
 
 #include <cstddef> // For size_t
@@ -60,6 +61,19 @@ public:
   virtual void SetIntermixSlab(int vtkNotUsed(slab)) {}
   virtual void EndIntermix(bool vtkNotUsed(drawn)) {}
   ///@}
+
+  /**
+   * The pre-integrated table's entries built on the GPU
+   * (vtkHAVSMapperBase::PreIntegrationOnGPU, vtkHAVSPreIntegrationTable::
+   * EntryBuilder) in `renderer`'s window, for `mapper` (`mapperName` in its
+   * errors); false where it cannot (the CPU builds them).
+   */
+  virtual bool BuildTableEntries(vtkRenderer* vtkNotUsed(renderer), vtkObject* vtkNotUsed(mapper),
+    const char* vtkNotUsed(mapperName),
+    const vtkHAVSPreIntegrationTable::Quadrature& vtkNotUsed(inputs), float* vtkNotUsed(table))
+  {
+    return false;
+  }
 
 protected:
   vtkHAVSMapperGraphics() = default;

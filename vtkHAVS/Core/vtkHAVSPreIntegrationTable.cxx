@@ -597,6 +597,38 @@ bool vtkHAVSPreIntegrationTable::Build(
     out[3] = static_cast<float>(1.0 - c.Transmittance);
   };
 
+  this->LastBuiltByEntryBuilder = false;
+  if (this->Builder && !this->ExactIntegration)
+  {
+    // The entries built elsewhere (the GPU) from the same quadrature's inputs.
+    Quadrature inputs;
+    inputs.ScalarResolution = ns;
+    inputs.LengthResolution = nl;
+    inputs.Samples.resize(4 * static_cast<size_t>(fineCount));
+    for (int k = 0; k < fineCount; ++k)
+    {
+      inputs.Samples[4 * k] = static_cast<float>(fine[k].Tau);
+      for (int c = 0; c < 3; ++c)
+      {
+        inputs.Samples[4 * k + 1 + c] = static_cast<float>(fine[k].Color[c]);
+      }
+    }
+    inputs.StepDepth.resize(fineCount - 1);
+    for (int k = 0; k + 1 < fineCount; ++k)
+    {
+      inputs.StepDepth[k] = static_cast<float>(
+        0.5 * (fine[k].Tau + fine[k + 1].Tau) * (positions[k + 1] - positions[k]));
+    }
+    inputs.TableSample = tableSample;
+    inputs.LayerLength.assign(layerLength.begin(), layerLength.end());
+    if (this->Builder(inputs, this->Table.data()))
+    {
+      this->LastBuiltByEntryBuilder = true;
+      this->LastBuildSeconds = vtkTimerLog::GetUniversalTime() - start;
+      return true;
+    }
+  }
+
   if (this->ExactIntegration)
   {
     vtkSMPTools::For(0, static_cast<vtkIdType>(ns) * ns,
@@ -830,6 +862,8 @@ void vtkHAVSPreIntegrationTable::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxLength: " << this->MaxLength << "\n";
   os << indent << "LengthLogScale: " << this->LengthLogScale << "\n";
   os << indent << "LastBuildSeconds: " << this->LastBuildSeconds << "\n";
+  os << indent << "EntryBuilder: " << (this->Builder ? "set" : "none")
+     << ", last build by it: " << this->LastBuiltByEntryBuilder << "\n";
 }
 
 //------------------------------------------------------------------------------

@@ -82,8 +82,9 @@
 #include "vtkNew.h"            // For vtkNew
 #include "vtkObject.h"
 
-#include <cstddef> // For size_t
-#include <vector>  // For std::vector
+#include <cstddef>    // For size_t
+#include <functional> // For std::function
+#include <vector>     // For std::vector
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -216,6 +217,37 @@ public:
   /// The bytes its arrays hold (vtkHAVSMemory).
   size_t GetMemoryBytes() const;
 
+  /**
+   * What the windowed quadrature is computed from (issue 45: the table built
+   * elsewhere, e.g. on the GPU by vtkHAVSGLTableBuilder): the fine samples'
+   * optics, the sub-steps' extinction integrals, where each table scalar lies
+   * among the samples and each length layer's segment length. Entry (f, b, l),
+   * f != b, composites the sub-steps between TableSample[f] and TableSample[b]
+   * front to back (from f's side), sub-step k of optical depth
+   * StepDepth[k] L_l (NS - 1) / |b - f| with its ends' optics weighted as
+   * CompositeStep does; the diagonal is one sub-step of the optics at f of
+   * depth tau L_l.
+   */
+  struct Quadrature
+  {
+    int ScalarResolution = 0;
+    int LengthResolution = 0;
+    std::vector<float> Samples;     ///< per fine sample: tau, red, green, blue
+    std::vector<float> StepDepth;   ///< per sub-step k (samples k, k + 1): tau's integral over it
+    std::vector<int> TableSample;   ///< per table scalar: its fine sample
+    std::vector<float> LayerLength; ///< per length layer: the segment length L_l (L_0 = 0)
+  };
+  /**
+   * A builder of every entry of the table (GetTable()'s layout, length 0
+   * included) from the quadrature's inputs; false when it could not (the
+   * table is then built here). Build() calls it instead of its own windowed
+   * composites (not with ExactIntegration). Setting it changes no table.
+   */
+  using EntryBuilder = std::function<bool(const Quadrature&, float* table)>;
+  void SetEntryBuilder(EntryBuilder builder) { this->Builder = std::move(builder); }
+  /// Whether the last Build() had its entries built by the EntryBuilder.
+  bool GetLastBuiltByEntryBuilder() const { return this->LastBuiltByEntryBuilder; }
+
 protected:
   vtkHAVSPreIntegrationTable() = default;
   ~vtkHAVSPreIntegrationTable() override = default;
@@ -246,6 +278,8 @@ private:
   vtkVolumeProperty* BuiltProperty = nullptr; // identity only, never dereferenced
   vtkTimeStamp BuildTime;
   double LastBuildSeconds = 0.0;
+  EntryBuilder Builder;
+  bool LastBuiltByEntryBuilder = false;
 };
 
 VTK_ABI_NAMESPACE_END

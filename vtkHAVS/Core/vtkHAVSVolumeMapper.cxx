@@ -61,6 +61,9 @@ vtkHAVSVolumeMapper::vtkHAVSVolumeMapper()
   : vtkHAVSMapperBase("vtkHAVSVolumeMapper")
 {
   this->FaceOrder->SetProgressCallback([this](double p) { this->UpdateProgress(p); });
+  this->LongSegmentTable->SetEntryBuilder(
+    [this](const vtkHAVSPreIntegrationTable::Quadrature& inputs, float* table)
+    { return this->BuildTableEntries(inputs, table); });
 }
 vtkHAVSVolumeMapper::~vtkHAVSVolumeMapper() = default;
 

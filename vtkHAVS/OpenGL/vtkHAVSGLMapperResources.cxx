@@ -17,6 +17,7 @@
 #include "vtkHAVSGLFrameTargets.h"
 #include "vtkHAVSGLObjects.h"
 #include "vtkHAVSGLTable.h"
+#include "vtkHAVSGLTableBuilder.h"
 #include "vtkHAVSMapperBase.h"
 #include "vtkHAVSOpenGL.h"
 #include "vtkHAVSTranslucentLayers.h"
@@ -297,9 +298,19 @@ void vtkHAVSGLMapperResources::Release(vtkWindow* window)
   this->SectionTriangles = 0;
   this->IsoGradientFields->Release();
   this->Table->ReleaseGraphicsResources(home);
+  this->TableBuilder->ReleaseGraphicsResources(home);
   this->Targets->ReleaseGraphicsResources(home);
   home->RemoveObserver(this->WindowDeleteObserver);
   this->Window = nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHAVSGLMapperResources::BuildTableEntries(vtkRenderer* renderer, vtkObject* mapper,
+  const char* mapperName, const vtkHAVSPreIntegrationTable::Quadrature& inputs, float* table)
+{
+  vtkOpenGLRenderWindow* window =
+    this->Prepare(renderer, mapper, mapperName, "compute shaders for the table");
+  return window && this->TableBuilder->Build(window, inputs, table);
 }
 
 //------------------------------------------------------------------------------
@@ -308,6 +319,7 @@ void vtkHAVSGLMapperResources::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Window: " << this->Window << "\n";
   this->Table->PrintSelf(os, indent.GetNextIndent());
+  this->TableBuilder->PrintSelf(os, indent.GetNextIndent());
   this->Targets->PrintSelf(os, indent.GetNextIndent());
 }
 

@@ -46,6 +46,7 @@ class vtkHAVSGLCellRecords;
 class vtkHAVSGLFrameTargets;
 class vtkHAVSGLSection;
 class vtkHAVSGLTable;
+class vtkHAVSGLTableBuilder;
 class vtkHAVSMapperBase;
 class vtkHAVSMesh;
 class vtkHAVSViewFrame;
@@ -104,6 +105,10 @@ public:
   void SetIntermixSlab(int slab) override;
   void EndIntermix(bool drawn) override;
   ///@}
+  /// The table's entries built by the resources' vtkHAVSGLTableBuilder in
+  /// `renderer`'s window (prepared as by Prepare).
+  bool BuildTableEntries(vtkRenderer* renderer, vtkObject* mapper, const char* mapperName,
+    const vtkHAVSPreIntegrationTable::Quadrature& inputs, float* table) override;
 
   /**
    * The start of a cell-projection or ray-cast frame: the window prepared
@@ -181,6 +186,7 @@ private:
   vtkOpenGLRenderWindow* Window = nullptr;
   unsigned long WindowDeleteObserver = 0;
   vtkNew<vtkHAVSGLTable> Table;
+  vtkNew<vtkHAVSGLTableBuilder> TableBuilder;
   vtkNew<vtkHAVSGLFrameTargets> Targets;
   std::unique_ptr<vtkHAVSGLOwnObjects> Owned;
   std::unique_ptr<vtkHAVSGLSection> Section; // the near plane's section (cell projection, rays)

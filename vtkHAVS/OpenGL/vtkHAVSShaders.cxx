@@ -38,6 +38,7 @@
 #include "vtkHAVSRayCastTileVS.h"
 #include "vtkHAVSResolveFS.h"
 #include "vtkHAVSSaturationMarkFS.h"
+#include "vtkHAVSTableCS.h"
 #include "vtkHAVSTrivialFS.h"
 
 #include "vtkShaderProgram.h"
@@ -341,6 +342,15 @@ std::string vtkHAVSShaders::CoverageVertexShader()
 std::string vtkHAVSShaders::CoverageShader()
 {
   return vtkHAVSCoverageFS;
+}
+
+std::string vtkHAVSShaders::TableComputeShader(int cells, int local)
+{
+  std::string source = vtkHAVSTableCS;
+  Replace(source, "//HAVS::Defines",
+    "#define HAVS_CELLS " + std::to_string(cells) + "\n#define HAVS_LOCAL " +
+      std::to_string(local));
+  return source;
 }
 
 std::string vtkHAVSShaders::CompositeShader(

@@ -128,6 +128,9 @@ public:
   static std::string CoverageVertexShader();
   static std::string CoverageShader();
   ///@}
+  /// The pre-integrated table's compute shader (vtkHAVSGLTableBuilder): `cells`
+  /// = NS - 1 table intervals (1 to 1023), work groups of `local` threads.
+  static std::string TableComputeShader(int cells, int local);
   ///@{
   /// vtkHAVSCellProjectionMapper: the faces' vertex shader, and the fragment
   /// shader (the k-buffer library's segment look-up; the opaque cut compiled
