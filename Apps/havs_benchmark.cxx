@@ -2472,7 +2472,9 @@ std::string EditReport(const std::vector<Row>& allRows)
           "`vtkHAVSGLTableBuilder`), beside it on the CPU's table, in one run. Here the "
           "\"GPU\" is llvmpipe on the same 2 cores: what it shows is the cost of the route "
           "there, not on a GPU (the GPU check's table cases measure it there: "
-          "`Apps/GPUBench/gpu_check.sh`).\n\n"
+          "`Apps/GPUBench/gpu_check.sh`). The other two candidates, incremental rebuilds and "
+          "partial pre-integration, are counted in `table-candidates.md` "
+          "(`Apps/havs_table_candidates.py`).\n\n"
        << "| data set | size | configuration | CPU table ms | GPU table ms | GPU / CPU | still ms "
           "(CPU, GPU) | edit / still, CPU table | edit / still, GPU table |\n"
        << "|---|---|---|---|---|---|---|---|---|\n";

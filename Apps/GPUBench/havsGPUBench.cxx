@@ -407,6 +407,30 @@ GLuint Compile(GLenum type, const std::string& source, const std::string& name)
   return shader;
 }
 
+/// A program of `shaders` (deleted here); 0, with the log printed, when it does not link.
+GLuint Link(const std::vector<GLuint>& shaders, const std::string& name)
+{
+  GLuint program = gl.CreateProgram();
+  for (GLuint shader : shaders)
+  {
+    gl.AttachShader(program, shader);
+  }
+  gl.LinkProgram(program);
+  for (GLuint shader : shaders)
+  {
+    gl.DeleteShader(shader);
+  }
+  GLint ok = 0;
+  gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok)
+  {
+    char log[4096];
+    gl.GetProgramInfoLog(program, sizeof(log), nullptr, log);
+    Fail(name + " does not link:\n" + log);
+    return 0;
+  }
+  return program;
+}
 }
 
 GLuint ComputeProgram(const Case& c, const std::string& shader)
@@ -418,24 +442,7 @@ GLuint ComputeProgram(const Case& c, const std::string& shader)
     return 0;
   }
   const GLuint s = Compile(GL_COMPUTE_SHADER, source, shader);
-  if (!s)
-  {
-    return 0;
-  }
-  GLuint program = gl.CreateProgram();
-  gl.AttachShader(program, s);
-  gl.LinkProgram(program);
-  gl.DeleteShader(s);
-  GLint ok = 0;
-  gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok)
-  {
-    char log[4096];
-    gl.GetProgramInfoLog(program, sizeof(log), nullptr, log);
-    Fail(shader + " does not link:\n" + log);
-    return 0;
-  }
-  return program;
+  return s ? Link({ s }, shader) : 0;
 }
 
 GLuint Program(
@@ -452,19 +459,9 @@ GLuint Program(
   {
     return 0;
   }
-  GLuint program = gl.CreateProgram();
-  gl.AttachShader(program, v);
-  gl.AttachShader(program, f);
-  gl.LinkProgram(program);
-  gl.DeleteShader(v);
-  gl.DeleteShader(f);
-  GLint ok = 0;
-  gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok)
+  const GLuint program = Link({ v, f }, vertex + " + " + fragment);
+  if (!program)
   {
-    char log[4096];
-    gl.GetProgramInfoLog(program, sizeof(log), nullptr, log);
-    Fail(vertex + " + " + fragment + " do not link:\n" + log);
     return 0;
   }
   gl.UseProgram(program);

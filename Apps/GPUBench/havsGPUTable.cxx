@@ -22,8 +22,7 @@ namespace
 {
 double Seconds()
 {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-    .count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 }
 

@@ -76,8 +76,8 @@ double LargestDifference(vtkHAVSPreIntegrationTable* a, vtkHAVSPreIntegrationTab
 /// `property`'s table built on the CPU and on the GPU (in `window`); their
 /// largest difference, or -1 where the GPU did not build it.
 double CompareBuilds(vtkOpenGLRenderWindow* window, vtkHAVSGLTableBuilder* builder,
-  vtkVolumeProperty* cpuProperty, vtkVolumeProperty* gpuProperty, int ns, int nl,
-  double maxLength, double range[2], bool* logarithmic = nullptr)
+  vtkVolumeProperty* cpuProperty, vtkVolumeProperty* gpuProperty, int ns, int nl, double maxLength,
+  double range[2], bool* logarithmic = nullptr)
 {
   vtkNew<vtkHAVSPreIntegrationTable> cpu, gpu;
   for (vtkHAVSPreIntegrationTable* t : { cpu.Get(), gpu.Get() })
@@ -131,8 +131,8 @@ void MapperCase(const std::string& name)
   auto after = havstest::ReferenceImage(grid, property, s.Renderer->GetActiveCamera(), size);
   d = havstest::Compare(image, after, edge);
   havstest::PrintDifference(name + ", GPU table after an edit", d);
-  havstest::Check(havstest::WithinExactBound(d) && havstest::AllFinite(image),
-    name + ": exact after the edit");
+  havstest::Check(
+    havstest::WithinExactBound(d) && havstest::AllFinite(image), name + ": exact after the edit");
   const auto control = havstest::Compare(image, before, edge);
   havstest::PrintDifference(name + ", control: the reference before the edit", control);
   havstest::Check(!havstest::WithinExactBound(control), name + ": control fails");

@@ -597,6 +597,12 @@ bool vtkHAVSPreIntegrationTable::Build(
     out[3] = static_cast<float>(1.0 - c.Transmittance);
   };
 
+  // The sub-steps' extinction integrals over their scalar span (normalized).
+  std::vector<double> stepDepth(fineCount - 1);
+  for (int k = 0; k + 1 < fineCount; ++k)
+  {
+    stepDepth[k] = 0.5 * (fine[k].Tau + fine[k + 1].Tau) * (positions[k + 1] - positions[k]);
+  }
   this->LastBuiltByEntryBuilder = false;
   if (this->Builder && !this->ExactIntegration)
   {
@@ -613,12 +619,7 @@ bool vtkHAVSPreIntegrationTable::Build(
         inputs.Samples[4 * k + 1 + c] = static_cast<float>(fine[k].Color[c]);
       }
     }
-    inputs.StepDepth.resize(fineCount - 1);
-    for (int k = 0; k + 1 < fineCount; ++k)
-    {
-      inputs.StepDepth[k] = static_cast<float>(
-        0.5 * (fine[k].Tau + fine[k + 1].Tau) * (positions[k + 1] - positions[k]));
-    }
+    inputs.StepDepth.assign(stepDepth.begin(), stepDepth.end());
     inputs.TableSample = tableSample;
     inputs.LayerLength.assign(layerLength.begin(), layerLength.end());
     if (this->Builder(inputs, this->Table.data()))
@@ -660,12 +661,6 @@ bool vtkHAVSPreIntegrationTable::Build(
     // compositing operations an entry however long the segment.
     const int cells = ns - 1;
     const int steps = fineCount - 1;
-    // The sub-steps' extinction integrals over their scalar span (normalized).
-    std::vector<double> stepDepth(steps);
-    for (int k = 0; k < steps; ++k)
-    {
-      stepDepth[k] = 0.5 * (fine[k].Tau + fine[k + 1].Tau) * (positions[k + 1] - positions[k]);
-    }
     // The diagonal (f == b): one sub-step of the constant optics at f.
     vtkSMPTools::For(0, ns,
       [&](vtkIdType begin, vtkIdType end)

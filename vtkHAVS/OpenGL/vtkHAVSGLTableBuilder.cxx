@@ -89,8 +89,8 @@ bool vtkHAVSGLTableBuilder::MakeProgram(int cells)
 }
 
 //------------------------------------------------------------------------------
-bool vtkHAVSGLTableBuilder::Build(vtkOpenGLRenderWindow* window,
-  const vtkHAVSPreIntegrationTable::Quadrature& inputs, float* table)
+bool vtkHAVSGLTableBuilder::Build(
+  vtkOpenGLRenderWindow* window, const vtkHAVSPreIntegrationTable::Quadrature& inputs, float* table)
 {
   const int ns = inputs.ScalarResolution, nl = inputs.LengthResolution;
   const int cells = ns - 1;

@@ -31,9 +31,9 @@
 
 #include "vtkHAVSABINamespace.h" // For VTK_ABI_NAMESPACE_BEGIN
 
-#include "vtkHAVSGLObjects.h"            // For vtkHAVSGLBuffer
-#include "vtkHAVSOpenGLModule.h"         // For export macro
-#include "vtkHAVSPreIntegrationTable.h"  // For vtkHAVSPreIntegrationTable::Quadrature
+#include "vtkHAVSGLObjects.h"           // For vtkHAVSGLBuffer
+#include "vtkHAVSOpenGLModule.h"        // For export macro
+#include "vtkHAVSPreIntegrationTable.h" // For vtkHAVSPreIntegrationTable::Quadrature
 #include "vtkObject.h"
 #include "vtkSmartPointer.h"  // For vtkSmartPointer
 #include "vtkTextureObject.h" // For vtkSmartPointer<vtkTextureObject>
