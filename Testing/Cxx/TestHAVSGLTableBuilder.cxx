@@ -61,13 +61,6 @@ double LargestDifference(vtkHAVSPreIntegrationTable* a, vtkHAVSPreIntegrationTab
   for (size_t i = 0; i < n; ++i)
   {
     const double d = std::fabs(static_cast<double>(a->GetTable()[i]) - b->GetTable()[i]);
-    if (d > largest && getenv("HAVS_DEBUG_TABLE"))
-    {
-      const size_t e = i / 4;
-      const int ns = a->GetBuiltScalarResolution();
-      std::printf("      at f %d b %d l %d c %d: %.9g vs %.9g\n", int(e % ns), int(e / ns % ns),
-        int(e / ns / ns), int(i % 4), a->GetTable()[i], b->GetTable()[i]);
-    }
     largest = std::max(largest, std::isfinite(d) ? d : INFINITY);
   }
   return largest;
