@@ -114,7 +114,6 @@
 #include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkLightCollection.h"
-#include "vtkMath.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkMultiBlockPLOT3DReader.h"
 #include "vtkNew.h"
@@ -512,6 +511,22 @@ std::string FrameDescription(
   return d.str();
 }
 
+/// <configuration>-gputable: a project mapper with PreIntegrationOnGPU (issue 45).
+const std::string GPUTableSuffix = "-gputable";
+
+/// Whether `config` ends with GPUTableSuffix (after more than it); then `base`
+/// is the configuration without it.
+bool StripGPUTable(const std::string& config, std::string& base)
+{
+  const size_t n = GPUTableSuffix.size();
+  if (config.size() <= n || config.compare(config.size() - n, n, GPUTableSuffix) != 0)
+  {
+    return false;
+  }
+  base = config.substr(0, config.size() - n);
+  return true;
+}
+
 /// --dump-case DIR: view 0 of each data set at --size, drawn by each mapper
 /// of --dump-kinds with its defaults (HAVS at k = 2 and 6), written as frame
 /// cases DIR/<data set>_<size>_<kind> (Apps/GPUBench/README.md) with the
@@ -564,22 +579,9 @@ int DumpCases(const Options& o)
         const std::string dir =
           o.DumpCase + "/" + dataset + "_" + std::to_string(o.Size) + "_" + kind;
         std::system(("mkdir -p '" + dir + "'").c_str());
-        double longest = 0.0;
-        vtkNew<vtkIdList> ids;
-        for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
-        {
-          grid->GetCellPoints(c, ids);
-          for (vtkIdType a = 0; a < ids->GetNumberOfIds(); ++a)
-          {
-            for (vtkIdType b = a + 1; b < ids->GetNumberOfIds(); ++b)
-            {
-              double pa[3], pb[3];
-              grid->GetPoint(ids->GetId(a), pa);
-              grid->GetPoint(ids->GetId(b), pb);
-              longest = std::max(longest, vtkMath::Distance2BetweenPoints(pa, pb));
-            }
-          }
-        }
+        // The longest segment in a cell, as the mappers take it: their face set's longest edge.
+        vtkNew<vtkHAVSFaceSet> faces;
+        faces->Build(grid);
         double range[2];
         grid->GetPointData()->GetScalars()->GetRange(range);
         std::ofstream(dir + "/table.comp")
@@ -587,7 +589,7 @@ int DumpCases(const Options& o)
         std::ofstream(dir + "/case.txt")
           << std::setprecision(17) << "format 2\nmapper table\nwidth " << resolution << "\nheight "
           << resolution << "\ntable " << resolution << " " << resolution << " " << resolution
-          << "\nmax_length " << std::sqrt(longest) << "\nscalar_range " << range[0] << " "
+          << "\nmax_length " << faces->GetLongestEdge() << "\nscalar_range " << range[0] << " "
           << range[1] << "\ndataset " << dataset << "\nview 0\n"
           << FrameDescription(mesh, camera, property);
         std::cout << "wrote " << dir << std::endl;
@@ -1042,15 +1044,7 @@ int RunWorker(const Options& o)
     std::cerr << "unknown configuration " << rowConfig << std::endl;
     return EXIT_FAILURE;
   }
-  // <configuration>-gputable: a project mapper with PreIntegrationOnGPU (issue 45).
-  const std::string gpuTableSuffix = "-gputable";
-  const bool gpuTable = config.size() > gpuTableSuffix.size() &&
-    config.compare(config.size() - gpuTableSuffix.size(), gpuTableSuffix.size(), gpuTableSuffix) ==
-      0;
-  if (gpuTable)
-  {
-    config.resize(config.size() - gpuTableSuffix.size());
-  }
+  const bool gpuTable = StripGPUTable(config, config);
   vtkSmartPointer<vtkUnstructuredGrid> grid = LoadDataSet(dataset);
   if (!grid || grid->GetNumberOfCells() == 0 || !grid->GetPointData()->GetScalars())
   {
@@ -2420,7 +2414,7 @@ std::string EditReport(const std::vector<Row>& allRows)
   // A run with -gputable configurations: its rows go to their own table, each
   // beside the same configuration on the CPU's table from that run.
   auto gpuRun = [](const Row& r)
-  { return r.count("command") && r.at("command").find("-gputable") != std::string::npos; };
+  { return r.count("command") && r.at("command").find(GPUTableSuffix) != std::string::npos; };
   std::vector<Row> rows, gpuRows;
   for (const Row& r : allRows)
   {
@@ -2480,14 +2474,11 @@ std::string EditReport(const std::vector<Row>& allRows)
        << "|---|---|---|---|---|---|---|---|---|\n";
     for (const Row& g : gpuRows)
     {
-      const std::string config = g.at("config");
-      const std::string suffix = "-gputable";
-      if (config.size() <= suffix.size() ||
-        config.compare(config.size() - suffix.size(), suffix.size(), suffix) != 0)
+      std::string base;
+      if (!StripGPUTable(g.at("config"), base))
       {
         continue;
       }
-      const std::string base = config.substr(0, config.size() - suffix.size());
       for (const Row& c : gpuRows)
       {
         if (c.at("config") != base || c.at("dataset") != g.at("dataset") ||

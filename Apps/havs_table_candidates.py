@@ -121,11 +121,10 @@ def touched_share(lo, hi, changed, n):
     touched = 0
     for f in range(n):
         for g in range(f, n):
-            # The fine samples of [f, g]: is one strictly inside (a, b)?
-            if f == g:
-                hit = a < f < b
-            else:
-                hit = max(a, f) < min(b, g) or (a < f < b) or (a < g < b)
+            # The fine samples of [f, g]: is one strictly inside (a, b)? For f < g,
+            # exactly when the two overlap: f or g is then inside, or (a, b) lies
+            # within [f, g] and holds the moved node.
+            hit = a < f < b if f == g else max(a, f) < min(b, g)
             touched += (1 if f == g else 2) if hit else 0
     return touched / (n * n)
 

@@ -15,6 +15,7 @@
 #include <EGL/eglext.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -38,6 +39,17 @@ bool Fail(const std::string& what)
 {
   std::fprintf(stderr, "havs_gpu_bench: %s\n", what.c_str());
   return false;
+}
+
+double Now()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double Median(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  return values.empty() ? 0.0 : values[values.size() / 2];
 }
 
 namespace

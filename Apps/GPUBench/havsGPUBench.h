@@ -132,6 +132,10 @@ extern GL gl;
 
 /// Prints "havs_gpu_bench: what" to stderr; false.
 bool Fail(const std::string& what);
+/// Seconds on a steady clock.
+double Now();
+/// The median of `values` (0 for none).
+double Median(std::vector<double> values);
 
 /// What the context runs on, for the report.
 struct Device

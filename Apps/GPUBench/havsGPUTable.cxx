@@ -12,19 +12,11 @@
 #include "havsGPUBench.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 
 namespace havsgpu
 {
-namespace
-{
-double Seconds()
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-}
 
 int RunTableCase(const Case& c, const Options& o, std::ofstream* csv)
 {
@@ -86,12 +78,12 @@ int RunTableCase(const Case& c, const Options& o, std::ofstream* csv)
   for (int f = -1; f < o.Frames; ++f) // one warm-up build
   {
     gl.Finish();
-    const double t0 = Seconds();
+    const double t0 = Now();
     gl.QueryCounter(queries[0], GL_TIMESTAMP);
     gl.DispatchCompute(static_cast<GLuint>(ns), static_cast<GLuint>(nl), 2);
     gl.QueryCounter(queries[1], GL_TIMESTAMP);
     gl.Finish();
-    const double t1 = Seconds();
+    const double t1 = Now();
     GLuint64 begin = 0, end = 0;
     gl.GetQueryObjectui64v(queries[0], GL_QUERY_RESULT, &begin);
     gl.GetQueryObjectui64v(queries[1], GL_QUERY_RESULT, &end);
@@ -103,10 +95,10 @@ int RunTableCase(const Case& c, const Options& o, std::ofstream* csv)
   }
   gl.MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
   std::vector<float> built(cpu.size());
-  const double r0 = Seconds();
+  const double r0 = Now();
   gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
   gl.GetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, built.data());
-  const double read = Seconds() - r0;
+  const double read = Now() - r0;
   double largest = 0.0;
   for (size_t i = 0; i < built.size(); ++i)
   {
@@ -116,9 +108,7 @@ int RunTableCase(const Case& c, const Options& o, std::ofstream* csv)
   const double bound = 5e-6;
   const bool equal = largest <= bound;
   const double cpuMs = std::atof(ReadText(c.Dir + "/cpu_table_ms.txt").c_str());
-  std::sort(compute.begin(), compute.end());
-  std::sort(gpu.begin(), gpu.end());
-  const double wallMs = 1e3 * compute[compute.size() / 2], gpuMs = 1e3 * gpu[gpu.size() / 2];
+  const double wallMs = 1e3 * Median(compute), gpuMs = 1e3 * Median(gpu);
   std::printf("\n## %s: table %d x %d x %d, %zu fine samples%s\n", name.c_str(), ns, ns, nl,
     samples.size() / 4, o.Control ? ", CONTROL (the functions mirrored: must fail)" : "");
   std::printf("| build | ms (median of %d) | GPU ms (timer query) | read back ms | CPU build ms "

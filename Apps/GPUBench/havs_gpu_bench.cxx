@@ -39,7 +39,6 @@
 #include "havsGPUBench.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -49,17 +48,6 @@
 namespace
 {
 using namespace havsgpu;
-
-double Now()
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-double Median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 /// An image's error against another (RMSE and max over the RGBA components).
 struct Error

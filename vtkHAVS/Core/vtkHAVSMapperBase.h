@@ -226,8 +226,9 @@ public:
    * compute shader in single precision (vtkHAVSGLTableBuilder), read back for
    * the CPU's users of the table (cell visibility, the automatic resolution's
    * probes). Entries agree with the CPU's to about 1e-6
-   * (TestHAVSGLTableBuilder). Where the context cannot (no OpenGL 4.3, more
-   * than 1024 table scalars) the CPU builds them, with an error once.
+   * (TestHAVSGLTableBuilder). Where the context cannot (no OpenGL 4.3, a
+   * shader that does not compile, more than 1024 table scalars) the CPU
+   * builds them, with an error.
    * Issue 45 measured it against the CPU's build (Documentation/benchmarks.md,
    * Transfer-function edits): on llvmpipe's 2 cores the CPU build is the
    * cheaper, hence off; on a GPU it was not measured.
