@@ -24,7 +24,10 @@ said otherwise, each a collective step:
   cell is a wedge or a pyramid as often as a tetrahedron, and becomes several), its mapper's
   time to draw the median frame (TimeToDraw);
 - compositing: the frame less the slowest rank's draw (IceT's exchange and blend, the
-  read-back, the synchronization).
+  read-back, the synchronization, and with `--float-composite 1`, the default, the
+  representation's float composite of the ranks' images after IceT's);
+- float composite: whether the median frame's ranks were composited in float, and the
+  slowest rank's seconds in it (the gather of the float images on rank 0 and its composite).
 The SMP backend (VTK_SMP_BACKEND_IN_USE) is recorded: each rank runs its own threads.
 """
 import argparse
@@ -39,7 +42,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 FIELDS = ["data", "tets", "ranks", "mapper", "size", "smp", "update_s", "first_frame_s",
           "first_draw_max_s", "pipeline_s",
           "frame_s", "draw_max_s", "draw_min_s", "compositing_s", "cells_min", "cells_max",
-          "cells_sum", "cells_added", "redistribution", "mesh_tets_max", "mesh_tets_sum"]
+          "cells_sum", "cells_added", "redistribution", "mesh_tets_max", "mesh_tets_sum",
+          "float_composite", "float_composite_s"]
 
 
 def report(path, output):
@@ -62,28 +66,38 @@ def report(path, output):
         "ranks less the pipeline at one); *first draw*: the slowest rank's first draw (its mesh,",
         "order and table prepared); *frame*: the median still frame at a turned camera; *draw*:",
         "the slowest and the fastest rank's mapper time (TimeToDraw) in that frame;",
-        "*compositing*: the frame less the slowest draw. *Cells*: each rank's cells after the",
+        "*compositing*: the frame less the slowest draw; *of which float composite*: the",
+        "slowest rank's seconds in the representation's float composite of the ranks' images",
+        "(after IceT's; the gather on rank 0 and its composite). *Cells*: each rank's cells after the",
         "redistribution (a split cell may be a wedge or a pyramid); *tetrahedra drawn*: all ranks'",
         "tetrahedra as their mappers draw them, and how many more than the grid's.",
         "",
         "| data set | tets | ranks | route | mapper | SMP | first frame | pipeline | first draw "
-        "| frame | draw (max / min) | compositing | cells per rank (min–max) | tetrahedra drawn "
-        "(added) |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        "| frame | draw (max / min) | compositing | of which float composite "
+        "| cells per rank (min–max) | tetrahedra drawn (added) |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for r in rows:
         drawn = r.get("mesh_tets_sum") or ""
         added = ("%s (+%.1f %%)" % (drawn, 100.0 * (float(drawn) - float(r["tets"]))
                                     / max(1.0, float(r["tets"]))) if drawn else "not recorded")
+        if int(r["ranks"]) < 2:
+            floated = "—"
+        elif r.get("float_composite") in (None, ""):
+            floated = "IceT 8-bit (before the float composite)"
+        elif int(r["float_composite"]):
+            floated = "%.3f" % float(r["float_composite_s"])
+        else:
+            floated = "off (IceT 8-bit)"
         lines.append(
             "| %s | %s | %s | %s | %s | %s | %.2f | %.2f | %.2f | %.3f | %.3f / %.3f | %.3f "
-            "| %s–%s | %s |"
+            "| %s | %s–%s | %s |"
             % (r["data"], r["tets"], r["ranks"],
                r.get("redistribution") or ("split" if int(r["ranks"]) > 1 else "none"),
                r["mapper"], r["smp"],
                float(r["first_frame_s"]), float(r["pipeline_s"]), float(r["first_draw_max_s"]),
                float(r["frame_s"]), float(r["draw_max_s"]),
-               float(r["draw_min_s"]), float(r["compositing_s"]), r["cells_min"],
+               float(r["draw_min_s"]), float(r["compositing_s"]), floated, r["cells_min"],
                r["cells_max"], added))
     lines += [
         "",
@@ -114,6 +128,9 @@ def main():
     parser.add_argument("--mapper", default="HAVS")
     parser.add_argument("--frames", type=int, default=5)
     parser.add_argument("--redistribution", choices=["clip", "split"], default="clip")
+    parser.add_argument("--float-composite", type=int, choices=[0, 1], default=1,
+                        help="the representation's HAVSFloatComposite (1: the ranks' images "
+                        "composited in float; 0: IceT's 8-bit image)")
     parser.add_argument("--work", default="/tmp/havs_parallel_benchmark")
     parser.add_argument("--csv")
     args, _ = parser.parse_known_args()
@@ -172,6 +189,7 @@ def main():
     display.HAVSMapper = args.mapper
     display.HAVSKBufferSize = 2  # the mapper's defaults, not the tests' k = 14
     display.HAVSRedistribution = {"split": 1, "clip": 2}[args.redistribution]
+    display.HAVSFloatComposite = args.float_composite
     view.ResetCamera()
     camera = view.GetActiveCamera()
     camera.Azimuth(30.0)
@@ -189,7 +207,7 @@ def main():
     rep = display.GetClientSideObject().GetActiveRepresentation()
     first = rep.GetActiveVolumeMapper()
     first_draws = gather(first.GetTimeToDraw() if first else 0.0)
-    frames, draws = [], []
+    frames, draws, floats = [], [], []
     for _ in range(args.frames):
         camera.Azimuth(20.0)
         barrier()
@@ -199,6 +217,10 @@ def main():
         frames.append(time.perf_counter() - start)
         mapper = rep.GetActiveVolumeMapper()
         draws.append(gather(mapper.GetTimeToDraw() if mapper else 0.0))
+        display.UpdatePropertyInformation()
+        floats.append((display.GetProperty("HAVSLastFloatComposite").GetElement(0),
+                       max(gather(display.GetProperty("HAVSLastFloatCompositeSeconds")
+                                  .GetElement(0)))))
     median = sorted(range(len(frames)), key=lambda i: frames[i])[len(frames) // 2]
     mapper = rep.GetActiveVolumeMapper()
     piece = mapper.GetInput() if mapper else None
@@ -220,6 +242,8 @@ def main():
             "cells_sum": int(sum(cells)), "cells_added": int(sum(cells) - total),
             "redistribution": args.redistribution if ranks > 1 else "none",
             "mesh_tets_max": int(max(mesh_tets)), "mesh_tets_sum": int(sum(mesh_tets)),
+            "float_composite": int(floats[median][0]),
+            "float_composite_s": "%.4f" % floats[median][1],
         }
         print("RESULT " + " ".join("%s=%s" % (k, row[k]) for k in FIELDS), flush=True)
         if args.csv:

@@ -16,13 +16,15 @@ HAVS Cell Projection) is checked on several views against the exact reference
   split's new points move a grazing ray's hits by a hair). Controls: with ParaView's stock
   redistribution (whole cells to one rank) that composite misses the bound (a seam); under
   `clip` the same pieces without their planes miss it (the cells on the cuts counted twice).
-- the rendering: the screenshot equals what IceT makes of the exact pieces' images (each rounded
-  to 8 bits, composited with IceT's 8-bit "over", which truncates): max <= 2/255 at 2 ranks
-  (3/255 at 4) and RMSE <= 0.35/255 for every mapper and view.
+- the rendering: the screenshot against the exact image of the whole grid rounded to 8 bits,
+  within issue 44's bound (max <= 2/255, RMSE <= 0.25/255) for every mapper and view, the
+  ranks' images composited in float (the representation's FloatComposite: every rank says so).
+  Control (--control): the same frames composited by IceT in 8 bits (FloatComposite off) miss
+  the RMSE bound on the worst view (IceT rounds each rank's image and truncates each blend).
 
-Also printed (and in --csv): the screenshot against the exact image of the whole grid rounded to
-8 bits, and the floor that IceT's 8-bit arithmetic alone puts under that figure (the exact
-pieces composited as IceT does, against the same exact image).
+Also printed (and in --csv): the floor that IceT's 8-bit arithmetic alone puts under the error
+(the exact pieces composited as IceT does, against the same exact image), and the screenshot
+against that IceT composite of the exact pieces.
 
 The grid is written once as a .vtu (the same tetrahedra for the reference and for ParaView):
 rank 0 reads it whole and ParaView redistributes it, as it does any reader's output.
@@ -78,6 +80,10 @@ parser.add_argument("--distribution-max", type=float, default=None,
                     help="the distribution's bound in 1/255 (default: 0.05 for the Delaunay grid, "
                     "whose coordinates are double; 1 for the float32 data sets)")
 parser.add_argument("--csv", help="append one row per image here (rank 0)")
+parser.add_argument("--no-float-composite", action="store_true",
+                    help="IceT's 8-bit composite in every mode (FloatComposite off; debugging)")
+parser.add_argument("--table-size", type=int, default=0,
+                    help="a fixed pre-integration table of this size (default: the automatic one)")
 parser.add_argument("--user-plane", action="store_true",
                     help="give each mapper a clipping plane of the user's own (oblique): the "
                     "clip redistribution keeps it beside the rank's box; the reference of the "
@@ -85,13 +91,15 @@ parser.add_argument("--user-plane", action="store_true",
 args, _ = parser.parse_known_args()
 
 MODES = {"whole": 0, "split": 1, "clip": 2}
+# "icet8": the redistribution asked for, composited by IceT in 8 bits (the float control).
 DISTRIBUTION_MAX = (args.distribution_max if args.distribution_max is not None
                     else 0.5 if args.data in ("delaunay", "hexes") else 1.0)
-# The rendering (the screenshot against IceT's composite of the exact pieces), in 1/255: a
-# rank's value a hair off the exact one rounds the other way, and IceT carries that through
-# its blends, one more level of them for each doubling of the ranks (measured: max 2 at 2
-# ranks, 3 at 4; RMSE 0.24-0.31).
-RMSE_BOUND = 0.35
+# The rendering (the screenshot against the exact image rounded to 8 bits), in 1/255: issue
+# 44's bound. The mappers' own float error (RMSE about 1e-4) rounds a share of the values the
+# other way: serially 0.20-0.23 on the Delaunay grid with a 256 table (--table-size), 0.23-0.27
+# with the automatic one, which the issue's bound would miss on one view.
+RMSE_BOUND = 0.25
+MAX_BOUND = 2.0
 # The distribution (the exact pieces composited in float against the exact whole image), in
 # 1/255: the split's new points are exact in double coordinates up to the rounding of a
 # point cut twice (the Delaunay grid: 0.000 at 2 ranks, 0.34 at 4; ParaView's whole cells
@@ -101,7 +109,6 @@ VIEWS = [(30.0, 20.0), (120.0, -15.0), (215.0, 50.0), (300.0, 5.0), (75.0, 70.0)
 
 
 controller, rank, ranks = mpi_setup()
-MAX_BOUND = 1.0 + math.ceil(math.log2(max(ranks, 2)))
 failures = []
 
 
@@ -228,6 +235,9 @@ lut, pwf = style_havs_volume(display, array, grid.GetPointData().GetArray(array)
                              grid.GetLength())
 if args.data_partitions:
     display.UseDataPartitions = 1
+if args.table_size:
+    display.HAVSAutomaticTable = 0
+    display.HAVSTableResolution = args.table_size
 rep = display.GetClientSideObject().GetActiveRepresentation()
 camera = view.GetActiveCamera()
 
@@ -316,7 +326,8 @@ def render_all(mode):
     """Screenshots of every view with every mapper under redistribution `mode`;
     ([(mapper, view, path, seconds, planes per rank)], cells per rank, seconds of the first
     frame, which redistributes)."""
-    display.HAVSRedistribution = MODES[mode]
+    display.HAVSRedistribution = MODES[args.redistribution if mode == "icet8" else mode]
+    display.HAVSFloatComposite = 0 if mode == "icet8" or args.no_float_composite else 1
     shots = []
     cells = None
     first = None
@@ -334,14 +345,23 @@ def render_all(mode):
                 # is collective: rank 0 cannot move the view's camera alone later).
                 cameras[v] = vtkCamera()
                 cameras[v].DeepCopy(view.GetRenderer().GetActiveCamera())
+                if rank == 0:  # beside the pieces, to look at one again
+                    with open(os.path.join(args.out, "camera%d.json" % v), "w") as out:
+                        c = cameras[v]
+                        json.dump({"position": c.GetPosition(), "focal": c.GetFocalPoint(),
+                                   "up": c.GetViewUp(), "angle": c.GetViewAngle(),
+                                   "parallel": c.GetParallelProjection(),
+                                   "scale": c.GetParallelScale(),
+                                   "clipping": c.GetClippingRange()}, out)
             if cells is None:
                 cells = write_piece(mode)
             display.UpdatePropertyInformation()
             planes = gather(display.GetProperty("HAVSLastRegionPlanes").GetElement(0))
+            floats = gather(display.GetProperty("HAVSLastFloatComposite").GetElement(0))
             path = os.path.join(args.out, "seams_%s_%d_%s_%s_%d.png"
                                 % (args.data, ranks, mode, mapper.replace(" ", ""), v))
             SaveScreenshot(path, view, ImageResolution=[args.size, args.size])
-            shots.append((mapper, v, path, seconds, planes))
+            shots.append((mapper, v, path, seconds, planes, floats))
     return shots, cells, first
 
 
@@ -422,7 +442,7 @@ def errors(a, b):
 
 
 cameras = {}
-modes = [args.redistribution] + (["whole"] if args.control else [])
+modes = [args.redistribution] + (["icet8", "whole"] if args.control else [])
 results = {}
 for mode in modes:
     results[mode] = render_all(mode)
@@ -436,18 +456,22 @@ if rank == 0:
     boxes = None
     pieces = {}
     for mode in modes:
+        if mode == "icet8":
+            continue  # the same pieces as the redistribution asked for
         cells = results[mode][1]
         pieces[mode] = {r: read_piece(piece_path(mode, r)) for r in range(ranks) if cells[r] > 0}
         if mode in ("split", "clip"):
             boxes = {r: region_box(*pieces[mode][r]) for r in pieces[mode]}
     rows = []
+    icet_floor = {}  # per view: IceT's 8-bit composite of the exact pieces against the exact image
+    icet_images = {}
     for mode in modes:
         shots, cells, first = results[mode]
         print("%s: cells per rank %s (%d in all, %d in the grid), first frame %.2f s"
               % (mode, [int(c) for c in cells], int(sum(cells)), grid.GetNumberOfCells(), first),
               flush=True)
         exact_mode = mode in ("split", "clip")
-        piece_checks = ranks > 1 and boxes is not None
+        piece_checks = ranks > 1 and boxes is not None and mode in pieces
         floor = {}
         icet = {}
         seams = []
@@ -493,31 +517,43 @@ if rank == 0:
             check(max(seams) > DISTRIBUTION_MAX, "control, whole cells (ParaView's stock), %d "
                   "ranks: the exact pieces composited in box order miss the distribution's bound "
                   "(worst view max %.3f/255 > %g/255)" % (ranks, max(seams), DISTRIBUTION_MAX))
-        for mapper, v, path, seconds, planes in shots:
+        if mode in pieces:
+            icet_floor.update(floor)
+            icet_images.update(icet)
+        worst = 0.0
+        for mapper, v, path, seconds, planes, floats in shots:
             shown = png_array(path)
             rmse, peak = errors(shown, exact8[v])
+            worst = max(worst, rmse)
             line = ("%-6s %-21s view %d, %d ranks: against the exact image RMSE %.3f/255, max "
                     "%.0f/255" % (mode, mapper, v, ranks, rmse, peak))
             icet_rmse, icet_max = (float("nan"), float("nan"))
-            if v in icet:
-                icet_rmse, icet_max = errors(shown, icet[v])
+            if v in icet_images:
+                icet_rmse, icet_max = errors(shown, icet_images[v])
                 line += ("; IceT's floor RMSE %.3f, max %.0f; against IceT's composite of the "
-                         "exact pieces RMSE %.3f, max %.0f" % (floor[v] + (icet_rmse, icet_max)))
-                if exact_mode:
-                    check(icet_max <= MAX_BOUND and icet_rmse <= RMSE_BOUND,
-                          "%s, %s, %d ranks, view %d: the image is IceT's composite of the "
-                          "exact pieces within max %g/255 and RMSE %g/255 (RMSE %.3f, max %.0f)"
-                          % (mode, mapper, ranks, v, MAX_BOUND, RMSE_BOUND, icet_rmse,
-                             icet_max))
-            elif ranks == 1:
+                         "exact pieces RMSE %.3f, max %.0f" % (icet_floor[v] + (icet_rmse,
+                                                                               icet_max)))
+            if exact_mode:
+                if ranks > 1:
+                    check(all(f == 1 for f in floats), "%s, %s, %d ranks, view %d: every rank "
+                          "composited in float (%s)" % (mode, mapper, ranks, v,
+                                                        [int(f) for f in floats]))
                 check(peak <= MAX_BOUND and rmse <= RMSE_BOUND,
-                      "%s, 1 rank, view %d: the image is the exact image within max %g/255 and "
-                      "RMSE %g/255" % (mapper, v, MAX_BOUND, RMSE_BOUND))
+                      "%s, %s, %d ranks, view %d: the image is the exact image within max %g/255 "
+                      "and RMSE %g/255 (RMSE %.3f, max %.0f)"
+                      % (mode, mapper, ranks, v, MAX_BOUND, RMSE_BOUND, rmse, peak))
+            if mode == "icet8":
+                check(all(f == 0 for f in floats), "control, %s, %d ranks, view %d: IceT's "
+                      "8-bit composite on every rank (%s)" % (mapper, ranks, v,
+                                                              [int(f) for f in floats]))
             print(line + "; planes %s, %.2f s" % ([int(p) for p in planes], seconds), flush=True)
-            fl = floor.get(v, (float("nan"), float("nan")))
+            fl = icet_floor.get(v, (float("nan"), float("nan")))
             rows.append((args.data, ranks, mode, mapper, v, rmse, peak, fl[0], fl[1], icet_rmse,
                          icet_max, int(sum(cells)), int(max(cells)), int(max(planes)), seconds,
                          first))
+        if mode == "icet8" and ranks > 1:
+            check(worst > RMSE_BOUND, "control, IceT's 8-bit composite, %d ranks: the worst view "
+                  "misses the RMSE bound (RMSE %.3f/255 > %g/255)" % (ranks, worst, RMSE_BOUND))
     if args.csv:
         new = not os.path.exists(args.csv)
         with open(args.csv, "a") as out:

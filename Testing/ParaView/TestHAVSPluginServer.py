@@ -129,6 +129,24 @@ for mapper in ("HAVS", "HAVS Ray Cast", "HAVS Cell Projection"):
     check(d_turned > 0.25 / 255,
           "%s: control, the reference of a view turned 2 degrees misses it (RMSE %.2f/255)"
           % (mapper, 255 * d_turned))
+    # The server's ranks composited their images in float (the representation's
+    # FloatComposite) and that image reached the client: IceT's 8-bit composite of the same
+    # frame (FloatComposite off) is another image, farther from the exact one. (The
+    # representation's HAVSLastFloatComposite says so on the server's ranks; a client reads
+    # its own copy of the representation, which renders nothing.)
+    cell_display.HAVSFloatComposite = 0
+    Render(view)
+    SaveScreenshot(cell_png + ".icet.png", view, ImageResolution=[SIZE, SIZE])
+    icet_shot = png_rgb(cell_png + ".icet.png")
+    cell_display.HAVSFloatComposite = 1
+    d_icet, worst_icet = compare(icet_shot, exact_cells)
+    changed = sum(1 for a, b in zip(shot, icet_shot) if a != b)
+    print("%s, IceT's 8-bit composite instead (FloatComposite off): RMSE %.3f/255, max "
+          "%.1f/255; %d pixels differ from the float composite" % (mapper, 255 * d_icet,
+                                                                   255 * worst_icet, changed))
+    check(changed > 0 and d_cells < d_icet, "%s: the client shows the server's float composite "
+          "(%d pixels differ from IceT's 8-bit one; RMSE %.3f/255 against IceT's %.3f/255)"
+          % (mapper, changed, 255 * d_cells, 255 * d_icet))
 
 print("PASSED" if not failures else "FAILED", flush=True)
 sys.stdout.flush()

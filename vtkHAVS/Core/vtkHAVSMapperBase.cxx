@@ -174,6 +174,11 @@ bool vtkHAVSMapperBase::GetFloatResult(vtkFloatArray* rgba, int size[2])
   return vtkHAVSMapperInputs::CopyResult(this->GetKeptResult(size), size, rgba);
 }
 
+vtkMTimeType vtkHAVSMapperBase::GetFloatResultTime()
+{
+  return this->Graphics ? this->Graphics->GetKeptResultTime() : 0;
+}
+
 //------------------------------------------------------------------------------
 bool vtkHAVSMapperBase::PrepareMesh(vtkVolume* volume)
 {

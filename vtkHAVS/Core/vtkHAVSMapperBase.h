@@ -270,6 +270,12 @@ public:
   vtkGetMacro(KeepFloatResult, bool);
   vtkBooleanMacro(KeepFloatResult, bool);
   bool GetFloatResult(vtkFloatArray* rgba, int size[2]);
+  /**
+   * When the kept float result was made (a vtkTimeStamp's time, 0 when none
+   * was): later than a vtkTimeStamp taken before a frame when that frame made
+   * it (a frame that draws nothing keeps the last one).
+   */
+  vtkMTimeType GetFloatResultTime();
   ///@}
 
   ///@{

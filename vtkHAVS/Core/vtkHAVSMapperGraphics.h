@@ -42,6 +42,8 @@ public:
   virtual void Release(vtkWindow* window) = 0;
   /// The last frame's kept float result and its size; nullptr without one.
   virtual const std::vector<float>* GetKeptResult(int size[2]) = 0;
+  /// When the kept result was last made (a vtkTimeStamp's time; 0: never).
+  virtual vtkMTimeType GetKeptResultTime() = 0;
   /// The bytes of the GPU buffers the graphics layer holds (on llvmpipe in
   /// host memory too): the memory ledger's "GPU buffers" (vtkHAVSMemory).
   virtual size_t GetMemoryBytes() const { return 0; }

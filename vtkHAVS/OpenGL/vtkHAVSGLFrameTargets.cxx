@@ -385,6 +385,7 @@ void vtkHAVSGLFrameTargets::ReadKeptResult()
   this->ReadResult(this->KeptResult);
   this->KeptSize[0] = this->Size[0];
   this->KeptSize[1] = this->Size[1];
+  this->KeptTime.Modified();
 }
 
 //------------------------------------------------------------------------------

@@ -31,6 +31,7 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h"  // For vtkSmartPointer
 #include "vtkTextureObject.h" // For vtkSmartPointer<vtkTextureObject>
+#include "vtkTimeStamp.h"     // For vtkTimeStamp
 
 #include <cstdint>          // For std::uint64_t
 #include <initializer_list> // For std::initializer_list
@@ -119,6 +120,8 @@ public:
   void KeepResult();
   /// The kept copy and its size; nullptr before one.
   const std::vector<float>* GetKeptResult(int size[2]) const;
+  /// When the kept result was last read back (0: never).
+  vtkMTimeType GetKeptResultTime() const { return this->KeptTime.GetMTime(); }
 
   /// Zeroes the order-violation counter and binds it (binding 3).
   void ResetViolationCounter();
@@ -225,6 +228,7 @@ private:
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResultFramebuffer;
   std::vector<float> KeptResult;
   int KeptSize[2] = { 0, 0 };
+  vtkTimeStamp KeptTime; // when KeptResult was read back
   vtkHAVSGLBuffer ViolationCounter;
   vtkHAVSGLVertexArray EmptyVertexArray;
   // The coverage mask (SetCoverage): this frame's request, the boundary

@@ -89,6 +89,11 @@ const std::vector<float>* vtkHAVSGLMapperResources::GetKeptResult(int size[2])
   return this->Targets->GetKeptResult(size);
 }
 
+vtkMTimeType vtkHAVSGLMapperResources::GetKeptResultTime()
+{
+  return this->Targets->GetKeptResultTime();
+}
+
 namespace
 {
 /// The most planes the shaders take: 6 clipping planes and the near plane.

@@ -96,6 +96,7 @@ public:
   void Release(vtkWindow* window) override;
   /// The targets' kept float result (vtkHAVSGLFrameTargets::GetKeptResult).
   const std::vector<float>* GetKeptResult(int size[2]) override;
+  vtkMTimeType GetKeptResultTime() override;
   /// Every vtkHAVSGLBuffer of the process (vtkHAVSGLBuffer::GetLiveBytes): with
   /// one mapper, its own.
   size_t GetMemoryBytes() const override;

@@ -40,8 +40,12 @@
 #include "vtkVolumeRepresentationPreprocessor.h"
 
 #if __has_include("vtkIceTCompositePass.h")
+#include "vtkHAVSRankCompositePass.h"
 #include "vtkIceTCompositePass.h"
 #define HAVS_PLUGIN_HAS_ICET 1
+#else
+class vtkHAVSRankCompositePass;
+class vtkIceTCompositePass;
 #endif
 
 #include <dlfcn.h>
@@ -104,15 +108,20 @@ protected:
 };
 vtkStandardNewMacro(vtkHAVSIntermixDefaultPass);
 
+/// `pass`'s default pass replaced by a vtkHAVSIntermixDefaultPass (once).
+void InstallIntermixIn(vtkIceTCompositePass* icet);
+
 /**
  * Puts a vtkHAVSIntermixDefaultPass in place of ParaView's default pass in
  * `renderer`'s passes (serial: camera pass -> default pass, behind ParaView's
  * image processing passes; under MPI: camera pass -> IceT's composite pass ->
- * default pass). Again every frame: ParaView makes its passes anew when its
- * settings change. Nothing when another pass stands there (OSPRay, value
- * passes) or one is in place already.
+ * default pass, and a vtkHAVSRankCompositePass between the camera pass and
+ * IceT's, which composites the ranks' volumes in float). Again every frame:
+ * ParaView makes its passes anew when its settings change. Nothing when
+ * another pass stands there (OSPRay, value passes) or one is in place
+ * already. Returns the rank composite pass (nullptr in serial).
  */
-void InstallIntermix(vtkRenderer* renderer)
+vtkRenderPass* InstallIntermix(vtkRenderer* renderer)
 {
   vtkRenderPass* pass = renderer ? renderer->GetPass() : nullptr;
   for (int depth = 0; pass && depth < 8; ++depth)
@@ -129,19 +138,38 @@ void InstallIntermix(vtkRenderer* renderer)
 #if HAVS_PLUGIN_HAS_ICET
       else if (auto* icet = vtkIceTCompositePass::SafeDownCast(inner))
       {
-        if (vtkPVDefaultPass::SafeDownCast(icet->GetRenderPass()))
-        {
-          vtkNew<vtkHAVSIntermixDefaultPass> intermix;
-          intermix->Default = icet->GetRenderPass();
-          icet->SetRenderPass(intermix);
-        }
+        InstallIntermixIn(icet);
+        vtkNew<vtkHAVSRankCompositePass> ranks;
+        ranks->SetIceTPass(icet);
+        camera->SetDelegatePass(ranks);
+        return ranks;
+      }
+      else if (auto* ranks = vtkHAVSRankCompositePass::SafeDownCast(inner))
+      {
+        InstallIntermixIn(ranks->GetIceTPass());
+        return ranks;
       }
 #endif
-      return;
+      return nullptr;
     }
     auto* processing = vtkImageProcessingPass::SafeDownCast(pass);
     pass = processing ? processing->GetDelegatePass() : nullptr;
   }
+  return nullptr;
+}
+
+void InstallIntermixIn(vtkIceTCompositePass* icet)
+{
+#if HAVS_PLUGIN_HAS_ICET
+  if (icet && vtkPVDefaultPass::SafeDownCast(icet->GetRenderPass()))
+  {
+    vtkNew<vtkHAVSIntermixDefaultPass> intermix;
+    intermix->Default = icet->GetRenderPass();
+    icet->SetRenderPass(intermix);
+  }
+#else
+  (void)icet;
+#endif
 }
 }
 
@@ -726,7 +754,19 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
   // IntermixTranslucentGeometry), through the view's renderer's passes.
   if (auto* view = vtkPVRenderView::SafeDownCast(this->GetView()))
   {
-    InstallIntermix(view->GetRenderer());
+    this->RankComposite = InstallIntermix(view->GetRenderer());
+  }
+  // Under MPI the ranks' still frames composited in float
+  // (vtkHAVSRankCompositePass) from the mappers' kept float results.
+  {
+    auto* global = vtkMultiProcessController::GetGlobalController();
+    const bool parallel = global && global->GetNumberOfProcesses() > 1;
+    const bool still = !inInfo->Has(vtkPVRenderView::USE_LOD());
+    for (const auto& named : this->Mappers)
+    {
+      named.second->SetKeepFloatResult(named.second == active && parallel && still &&
+        this->FloatComposite && this->RankComposite != nullptr);
+    }
   }
   this->UpdateRegionPlanes(inInfo, vtkHAVSMapperBase::SafeDownCast(active));
   this->WarnIfPartitionsOverlap(inInfo);
@@ -773,6 +813,30 @@ int vtkHAVSUnstructuredGridVolumeRepresentation::ProcessViewRequest(
 }
 
 //------------------------------------------------------------------------------
+int vtkHAVSUnstructuredGridVolumeRepresentation::GetLastFloatComposite()
+{
+#if HAVS_PLUGIN_HAS_ICET
+  if (auto* ranks = vtkHAVSRankCompositePass::SafeDownCast(this->RankComposite))
+  {
+    return ranks->GetLastFloatComposite();
+  }
+#endif
+  return -1;
+}
+
+double vtkHAVSUnstructuredGridVolumeRepresentation::GetLastFloatCompositeSeconds()
+{
+#if HAVS_PLUGIN_HAS_ICET
+  auto* ranks = vtkHAVSRankCompositePass::SafeDownCast(this->RankComposite);
+  if (ranks && ranks->GetLastFloatComposite() == 1)
+  {
+    return ranks->GetLastCompositeSeconds();
+  }
+#endif
+  return 0.0;
+}
+
+//------------------------------------------------------------------------------
 void vtkHAVSUnstructuredGridVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -783,6 +847,8 @@ void vtkHAVSUnstructuredGridVolumeRepresentation::PrintSelf(ostream& os, vtkInde
   os << indent << "InteractiveTargetSeconds: " << this->InteractiveTargetSeconds << "\n";
   os << indent << "Redistribution: " << this->Redistribution << "\n";
   os << indent << "LastRegionPlanes: " << this->LastRegionPlanes << "\n";
+  os << indent << "FloatComposite: " << this->FloatComposite << "\n";
+  os << indent << "LastFloatComposite: " << this->GetLastFloatComposite() << "\n";
   for (const auto& named : this->Mappers)
   {
     os << indent << named.first << ":\n";
