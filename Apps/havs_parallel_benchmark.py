@@ -109,7 +109,10 @@ def report(path, output):
         "share of the cells, the *draw* columns' ratio to the one-rank frame), the route adds "
         "the tetrahedra the table shows, and compositing becomes "
         "IceT's network exchange of the 8-bit images (size² × 4 bytes a rank, binary swap), "
-        "which these figures do not measure.",
+        "which these figures do not measure. The float composite gathers every rank's float "
+        "image on rank 0 (size² × 16 bytes a rank, 4 MiB at 512²) and composites there: "
+        "on a network that gather grows with the ranks where IceT's binary swap does not; a "
+        "float binary swap would be its replacement at scale (not built).",
         "",
     ]
     with open(output, "w") as f:
