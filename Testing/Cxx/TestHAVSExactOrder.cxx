@@ -554,10 +554,16 @@ int TestHAVSExactOrder(int argc, char* argv[])
   // Negative controls. Real data: the centroid order at k = 2 is not exact
   // (the control). Non-convex test meshes: MPVO without a non-convex
   // method is not exact where rays re-enter the mesh.
+  // (Of the combustor's 14 views at 128^2 the centroid order misses the
+  // bounds in one (max 0.011); the 5 views of the shorter run
+  // subset overflow, up to k = 4, and say so, but stay within them, max
+  // 0.0012. There the control is the overflow alone.)
   const OrderResult& control = synthetic ? results[1] : results[0];
-  havstest::Check(control.MaxK > 2 && control.Violations > 0 && control.ViewsMissingBounds > 0,
-    std::string("negative control: ") + control.Name +
-      " at k = 2 overflows, says so, and misses the bounds");
+  const bool allViews = numberOfViews == 14;
+  havstest::Check(
+    control.MaxK > 2 && control.Violations > 0 && (control.ViewsMissingBounds > 0 || !allViews),
+    std::string("negative control: ") + control.Name + " at k = 2 overflows, says so" +
+      (allViews ? ", and misses the bounds" : " (the bounds: 14 views only)"));
   std::printf("Automatic: MPVO in %d of the views; views where the centroid order overflowed and "
               "Automatic kept it: %d; Automatic frames with order violations (but next to folded "
               "cells or rasterization effects): %d\n",
