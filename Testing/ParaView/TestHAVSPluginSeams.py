@@ -357,10 +357,12 @@ def render_all(mode):
                 cells = write_piece(mode)
             display.UpdatePropertyInformation()
             planes = gather(display.GetProperty("HAVSLastRegionPlanes").GetElement(0))
-            floats = gather(display.GetProperty("HAVSLastFloatComposite").GetElement(0))
             path = os.path.join(args.out, "seams_%s_%d_%s_%s_%d.png"
                                 % (args.data, ranks, mode, mapper.replace(" ", ""), v))
             SaveScreenshot(path, view, ImageResolution=[args.size, args.size])
+            # How the screenshot's own frame was composited.
+            display.UpdatePropertyInformation()
+            floats = gather(display.GetProperty("HAVSLastFloatComposite").GetElement(0))
             shots.append((mapper, v, path, seconds, planes, floats))
     return shots, cells, first
 

@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <vector>
 
 VTK_ABI_NAMESPACE_BEGIN
 vtkStandardNewMacro(vtkHAVSRankCompositePass);
@@ -139,7 +140,7 @@ void vtkHAVSRankCompositePass::Render(const vtkRenderState* s)
 
 //------------------------------------------------------------------------------
 int vtkHAVSRankCompositePass::RankImage(
-  const vtkRenderState* s, unsigned long since, const int size[2], std::vector<float>& image) const
+  const vtkRenderState* s, unsigned long since, const int size[2], vtkFloatArray* image) const
 {
   vtkIceTCompositePass* icet = this->IceTPass;
   if (!icet->GetUseOrderedCompositing() || !icet->GetOrderedCompositingHelper())
@@ -191,34 +192,29 @@ int vtkHAVSRankCompositePass::RankImage(
       return OtherProps;
     }
   }
-  const size_t values = 4 * static_cast<size_t>(size[0]) * size[1];
-  image.assign(values, 0.0f);
-  if (!mapper)
-  {
-    return Eligible;
-  }
-  if (!mapper->GetKeepFloatResult())
+  if (mapper && !mapper->GetKeepFloatResult())
   {
     return NotKept;
   }
-  if (mapper->GetFloatResultTime() <= since)
+  const vtkIdType pixels = static_cast<vtkIdType>(size[0]) * size[1];
+  if (mapper && mapper->GetFloatResultTime() > since)
   {
-    // Not drawn this frame (IceT did not ask this rank to draw, or its piece
-    // is outside the view): transparent, as its image in IceT's composite.
-    return Eligible;
+    // This frame's float result, copied once, into the array the gather sends.
+    int keptSize[2] = { 0, 0 };
+    if (!mapper->GetFloatResult(image, keptSize))
+    {
+      return StaleResult;
+    }
+    const bool fits = keptSize[0] == size[0] && keptSize[1] == size[1] &&
+      image->GetNumberOfComponents() == 4 && image->GetNumberOfTuples() == pixels;
+    return fits ? Eligible : SizeMismatch;
   }
-  vtkNew<vtkFloatArray> kept;
-  int keptSize[2] = { 0, 0 };
-  if (!mapper->GetFloatResult(kept, keptSize))
-  {
-    return StaleResult;
-  }
-  if (keptSize[0] != size[0] || keptSize[1] != size[1] ||
-    kept->GetNumberOfValues() != static_cast<vtkIdType>(values))
-  {
-    return SizeMismatch;
-  }
-  std::copy_n(kept->GetPointer(0), values, image.begin());
+  // No volume on this rank (an empty piece), or one not drawn this frame
+  // (IceT did not ask this rank to draw, or its piece is outside the view):
+  // transparent, as its image in IceT's composite.
+  image->SetNumberOfComponents(4);
+  image->SetNumberOfTuples(pixels);
+  image->Fill(0.0);
   return Eligible;
 }
 
@@ -239,7 +235,7 @@ void vtkHAVSRankCompositePass::Composite(const vtkRenderState* s, unsigned long 
   vtkRenderer* renderer = s->GetRenderer();
   const int* window = renderer->GetRenderWindow()->GetActualSize();
   const int size[2] = { window[0], window[1] };
-  std::vector<float> image;
+  vtkNew<vtkFloatArray> image;
   // Every rank's verdict and window size, in one reduce: {reason, w, h, -w, -h}.
   const int mine[5] = { this->RankImage(s, since, size, image), size[0], size[1], -size[0],
     -size[1] };
@@ -259,7 +255,7 @@ void vtkHAVSRankCompositePass::Composite(const vtkRenderState* s, unsigned long 
   const int rank = controller->GetLocalProcessId();
   const size_t pixels = static_cast<size_t>(size[0]) * size[1];
   std::vector<float> gathered(rank == 0 ? ranks * 4 * pixels : 0);
-  controller->Gather(image.data(), gathered.data(), static_cast<vtkIdType>(4 * pixels), 0);
+  controller->Gather(image->GetPointer(0), gathered.data(), static_cast<vtkIdType>(4 * pixels), 0);
   this->LastFloatComposite = 1;
   this->LastReason.clear();
   if (rank != 0)

@@ -43,11 +43,10 @@
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
 #include <string> // For std::string
-#include <vector> // For std::vector
 
 VTK_ABI_NAMESPACE_BEGIN
+class vtkFloatArray;
 class vtkIceTCompositePass;
-class vtkVolume;
 
 class VTKHAVSREPRESENTATIONS_EXPORT vtkHAVSRankCompositePass : public vtkRenderPass
 {
@@ -97,8 +96,8 @@ private:
 
   /// 0 when this rank's image can take part (its float image in `image`,
   /// zeros when it drew nothing); a reason code otherwise.
-  int RankImage(const vtkRenderState* s, unsigned long since, const int size[2],
-    std::vector<float>& image) const;
+  int RankImage(
+    const vtkRenderState* s, unsigned long since, const int size[2], vtkFloatArray* image) const;
   void Composite(const vtkRenderState* s, unsigned long since);
 
   vtkSmartPointer<vtkIceTCompositePass> IceTPass;
