@@ -43,7 +43,9 @@
 // opaque actor in the scene, so the opaque-depth cut runs), havs-default (the mapper with its
 // default settings: what a user gets; havs-default-noskip: with every cell drawn,
 // SkipInvisibleCells off; havs-default-sat: SkipSaturatedPixels on every path;
-// havs-default-nocull: every cell ordered and drawn, SkipOffscreenCells off), HAVS fragment lists
+// havs-default-nocull: every cell ordered and drawn, SkipOffscreenCells off;
+// havs-default-noclamp, with an iso- prefix: isosurface fragments not clamped to their
+// faces, NoFaceClampForTesting), HAVS fragment lists
 // (exact per-pixel sort), raster-bound (the same faces in the same order with a trivial shader: the
 // lower bound of any face-based method; sort-bound is the sort alone),
 // reference (the exact images, computed and cached in their own process before
@@ -1185,6 +1187,12 @@ int RunWorker(const Options& o)
         // The defaults with every cell ordered and drawn: what culling the
         // cells outside the view frustum buys.
         m->SkipOffscreenCellsOff();
+      }
+      else if (config == "havs-default-noclamp")
+      {
+        // The defaults with isosurface fragments not clamped to their faces
+        // (with an iso- prefix: what the clamp costs and buys).
+        m->SetNoFaceClampForTesting(true);
       }
       else if (config == "havs-default-sat")
       {

@@ -14,9 +14,10 @@
 // every pixel where both images show a surface: none of the size^2 / 2000
 // worst left out as edge pixels; a pixel one image leaves empty is the
 // silhouette's, a ray grazing the boundary; the rays through folded cells,
-// which have no exact image, are left out and counted; for the cell
-// projection, the control: its face scalars not snapped to the isovalues,
-// NoIsoSnapForTesting, must miss a pixel in one of the views).
+// which have no exact image, are left out and counted; the control, which
+// must miss a pixel in one of the views: for the cell projection its face
+// scalars not snapped to the isovalues, NoIsoSnapForTesting; for HAVS its
+// fragments not clamped to their faces, NoFaceClampForTesting).
 // 1. Analytic: the box [0, 1]^3 with s = z and the isovalue 0.55 (between
 //    the vertices' planes): every pixel is the surface's premultiplied
 //    colour at 0.55 (the ray crosses the plane z = 0.55 once) or empty.
@@ -230,7 +231,11 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
   auto s = havstest::MakeScene(grid, mapper, property, size, size);
   vtkCamera* camera = s.Renderer->GetActiveCamera();
   const size_t edge = static_cast<size_t>(size) * size / 2000;
-  int unsnappedMisses = 0, unsnappedViews = 0; // the cell projection's strict control
+  // The strict check's control (the cell projection, HAVS).
+  int controlMisses = 0, controlViews = 0;
+  const std::string controlName = vtkHAVSCellProjectionMapper::SafeDownCast(mapper)
+    ? "the face scalars not snapped"
+    : "the fragments not clamped to their faces";
   for (int v = 0; v < views; ++v)
   {
     havstest::PlaceStandardView(s.Renderer, grid, v, views, true);
@@ -267,19 +272,33 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
         all);
       havstest::Check(havstest::WithinExactBound(all),
         at + ": the isosurface pair is exact at every pixel both show");
-      if (auto* cells = vtkHAVSCellProjectionMapper::SafeDownCast(mapper))
+      // Control (some view must miss a pixel; counted over the views): the
+      // cell projection's face scalars not snapped to the isovalues; HAVS's
+      // fragments not clamped to their faces.
+      auto* cells = vtkHAVSCellProjectionMapper::SafeDownCast(mapper);
+      auto* havs = vtkHAVSVolumeMapper::SafeDownCast(mapper);
+      auto setControl = [&](bool on)
       {
-        // Control: the cell projection's face scalars not snapped to the
-        // isovalues (some view must miss a pixel; counted over the views).
-        cells->SetNoIsoSnapForTesting(true);
+        if (cells)
+        {
+          cells->SetNoIsoSnapForTesting(on);
+        }
+        if (havs)
+        {
+          havs->SetNoFaceClampForTesting(on);
+        }
+      };
+      if (cells || havs)
+      {
+        setControl(true);
         s.Window->Render();
-        const auto unsnapped = havstest::FloatResult(mapper);
-        cells->SetNoIsoSnapForTesting(false);
-        const auto u = havstest::Compare(
-          BothShow(unsnapped, exact, folded), BothShow(exact, unsnapped, folded), 0);
-        havstest::PrintDifference(at + ": control, the face scalars not snapped", u);
-        unsnappedMisses += havstest::WithinExactBound(u) ? 0 : 1;
-        ++unsnappedViews;
+        const auto unfixed = havstest::FloatResult(mapper);
+        setControl(false);
+        const auto u =
+          havstest::Compare(BothShow(unfixed, exact, folded), BothShow(exact, unfixed, folded), 0);
+        havstest::PrintDifference(at + ": control, " + controlName, u);
+        controlMisses += havstest::WithinExactBound(u) ? 0 : 1;
+        ++controlViews;
       }
     }
 
@@ -404,12 +423,12 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
       property->ShadeOff();
     }
   }
-  if (unsnappedViews > 0)
+  if (controlViews > 0)
   {
-    std::printf("%s %s: control: %d of %d views miss without the face scalars' snap\n",
-      name.c_str(), dataSet.c_str(), unsnappedMisses, unsnappedViews);
-    havstest::Check(unsnappedMisses > 0,
-      name + " " + dataSet + ": control: without the snap a view misses a pixel");
+    std::printf("%s %s: control: %d of %d views miss with %s\n", name.c_str(), dataSet.c_str(),
+      controlMisses, controlViews, controlName.c_str());
+    havstest::Check(controlMisses > 0,
+      name + " " + dataSet + ": control: " + controlName + ", a view misses a pixel");
   }
   return havstest::Result();
 }

@@ -742,6 +742,7 @@ void vtkHAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VisibilityOrder: " << orders[this->VisibilityOrder] << "\n";
   os << indent << "NonConvexMethod: " << methods[this->NonConvexMethod] << "\n";
   os << indent << "CountOrderViolations: " << this->CountOrderViolations << "\n";
+  os << indent << "NoFaceClampForTesting: " << this->NoFaceClampForTesting << "\n";
   static const char* const boundaryModes[] = { "Automatic", "Tagging", "Ignore", "GapLength" };
   os << indent << "BoundaryMode: " << boundaryModes[this->BoundaryMode] << "\n";
   os << indent << "Mesh data:\n";

@@ -358,6 +358,17 @@ public:
   vtkBooleanMacro(CountOrderViolations, bool);
   ///@}
 
+  ///@{
+  /// Testing aid (a negative control): isosurface frames without the face
+  /// clamp. There each fragment's scalar is kept within its face's vertex
+  /// scalars and its distance within the face's, since the rasterizer can
+  /// cover a pixel centre just outside a sliver seen edge-on, where the face's
+  /// plane extrapolated gives a scalar and a depth far from the face's
+  /// (vtkHAVSKBufferLib.glsl, havsClampToFace). Off by default.
+  vtkSetMacro(NoFaceClampForTesting, bool);
+  vtkGetMacro(NoFaceClampForTesting, bool);
+  ///@}
+
   enum BoundaryModes
   {
     BoundaryAutomatic = 0,
@@ -489,6 +500,7 @@ protected:
   int VisibilityOrder = VisibilityOrderMPVO;
   int NonConvexMethod = 1; // vtkHAVSVisibilityOrder::NonConvexBoundaryLayers
   bool CountOrderViolations = false;
+  bool NoFaceClampForTesting = false;
 
 private:
   vtkHAVSVolumeMapper(const vtkHAVSVolumeMapper&) = delete;

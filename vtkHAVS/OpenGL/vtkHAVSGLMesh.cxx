@@ -209,6 +209,23 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
 {
   const bool roles = program->IsUniformUsed("havsRole");
   const bool ownPlane = program->IsUniformUsed("havsOwnPlane");
+  // Isosurface frames clamp a fragment's scalar to its face's vertex range
+  // and its distance to the face's (vtkHAVSKBufferLib.glsl, havsClampToFace):
+  // the face's indices and the vertices' scalars and points read by
+  // gl_PrimitiveID + havsFaceBase (-1: a section,
+  // not clamped; so too where the scalars are not one float a vertex).
+  const bool faceBase = program->IsUniformUsed("havsFaceBase");
+  const bool clamp = faceBase && this->ClampFaces && this->Components == 1;
+  if (clamp)
+  {
+    this->IndexBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, 14);
+    this->ScalarBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, 15);
+    this->PointBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, 16);
+  }
+  if (faceBase)
+  {
+    program->SetUniformi("havsFaceBase", -1);
+  }
   auto drawSections = [&](bool entering)
   {
     for (const SectionDraw& d : this->SectionDraws)
@@ -249,12 +266,20 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
     this->VertexArray.Bind();
     // In pieces, at most two queued (a software rasterizer's queued scenes).
     vtkHAVSGLCapabilities::DrawInPieces(first, last, perFinish,
-      [](long long begin, long long end)
+      [&](long long begin, long long end)
       {
+        if (clamp)
+        {
+          program->SetUniformi("havsFaceBase", static_cast<int>(begin));
+        }
         glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(3 * (end - begin)), GL_UNSIGNED_INT,
           reinterpret_cast<const void*>(3 * sizeof(GLuint) * static_cast<size_t>(begin)));
       });
     glFrontFace(GL_CCW);
+    if (clamp)
+    {
+      program->SetUniformi("havsFaceBase", -1); // (the sections after the faces)
+    }
     if (b + 1 < batches)
     {
       betweenBatches(b);
@@ -368,7 +393,9 @@ void vtkHAVSGLMesh::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Faces uploaded: " << this->IndexCount / 3 << ", sections "
-     << this->SectionDraws.size() << "\n";
+     << this->SectionDraws.size()
+     << ", isosurface fragments clamped to their faces: " << (this->ClampFaces ? "yes" : "no")
+     << "\n";
 }
 
 VTK_ABI_NAMESPACE_END

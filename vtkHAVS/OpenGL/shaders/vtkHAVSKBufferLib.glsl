@@ -715,6 +715,116 @@ bool havsClipRay(vec3 originRC, vec3 dirRC, inout float tLow, inout float tHigh)
   return true;
 }
 
+#if HAVS_ISO && !HAVS_CELL_SCALARS && defined(HAVS_FACE_PASS)
+// Isosurfaces: a face's fragment kept on its face, its distance and scalar
+// clamped to the face's own ranges. At a pixel centre just outside a sliver
+// seen almost edge-on the rasterizer (vertices snapped to sub-pixel units)
+// can still cover the pixel, and the face's plane, extrapolated there, gives
+// a point far along the ray with a scalar far outside the face's (the
+// combustor, view 3 at 128^2: 0.443 at eye distance 51.2 from a face of
+// 0.194 to 0.290, between neighbours at 0.242 and 0.155: two crossings of an
+// isovalue the ray never meets; a composite frame weighs such a stretch by
+// its length, nothing). The face is gl_PrimitiveID + havsFaceBase of the draw
+// order (vtkHAVSGLMesh binds its index buffer and the vertices' scalars and
+// points here); -1 draws a plane's section, not clamped. Only in HAVS's face
+// passes (HAVS_FACE_PASS: the k-buffer paths' draw shaders).
+uniform int havsFaceBase;
+uniform mat4 havsMCRC;
+layout(std430, binding = 14) readonly buffer HAVSFaceIndices
+{
+  uint havsFaceIndices[];
+};
+layout(std430, binding = 15) readonly buffer HAVSVertexScalars
+{
+  float havsVertexScalars[];
+};
+layout(std430, binding = 16) readonly buffer HAVSVertexPoints
+{
+  float havsVertexPoints[];
+};
+
+vec3 havsVertexRC(uint v)
+{
+  vec3 p =
+    vec3(havsVertexPoints[3u * v], havsVertexPoints[3u * v + 1u], havsVertexPoints[3u * v + 2u]);
+  return (havsMCRC * vec4(p, 1.0)).xyz;
+}
+
+// The point of triangle abc nearest the eye (the origin; Ericson, Real-Time
+// Collision Detection, 5.1.5).
+vec3 havsNearestOnTriangle(vec3 a, vec3 b, vec3 c)
+{
+  vec3 ab = b - a, ac = c - a;
+  float d1 = dot(ab, -a), d2 = dot(ac, -a);
+  if (d1 <= 0.0 && d2 <= 0.0)
+  {
+    return a;
+  }
+  float d3 = dot(ab, -b), d4 = dot(ac, -b);
+  if (d3 >= 0.0 && d4 <= d3)
+  {
+    return b;
+  }
+  float vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
+  {
+    return a + d1 / (d1 - d3) * ab;
+  }
+  float d5 = dot(ab, -c), d6 = dot(ac, -c);
+  if (d6 >= 0.0 && d5 <= d6)
+  {
+    return c;
+  }
+  float vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
+  {
+    return a + d2 / (d2 - d6) * ac;
+  }
+  float va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
+  {
+    return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  }
+  float w = 1.0 / (va + vb + vc);
+  return a + ab * (vb * w) + ac * (vc * w);
+}
+
+// The entry e of a face's fragment with its distance and scalar clamped to
+// the face's ranges: the scalar's is its vertices'; the distance's top is a
+// vertex's (the distance is linear or convex over the face), its bottom a
+// vertex's too along a parallel view, the nearest point's along a perspective one.
+HAVS_ENTRY havsClampToFace(HAVS_ENTRY e)
+{
+  if (havsFaceBase < 0)
+  {
+    return e;
+  }
+  uint f = 3u * uint(gl_PrimitiveID + havsFaceBase);
+  uint i = havsFaceIndices[f], j = havsFaceIndices[f + 1u], k = havsFaceIndices[f + 2u];
+  float si = havsVertexScalars[i], sj = havsVertexScalars[j], sk = havsVertexScalars[k];
+  // (The code's boundary role, + 2 or + 4, kept: the vertices' scalars carry
+  // + 2 on a tagged boundary face, the role comes from the facing.)
+  float role = e.y - havsScalarOf(e.y);
+  float smin = min(si, min(sj, sk)), smax = max(si, max(sj, sk));
+  if (smin > 1.5)
+  {
+    smin -= 2.0;
+    smax -= 2.0;
+  }
+  e.y = role + clamp(havsScalarOf(e.y), clamp(smin, 0.0, 1.0), clamp(smax, 0.0, 1.0));
+  vec3 a = havsVertexRC(i), b = havsVertexRC(j), c = havsVertexRC(k);
+  float da = havsDistance(a), db = havsDistance(b), dc = havsDistance(c);
+  float top = max(da, max(db, dc));
+#if HAVS_PROJECTION == 1
+  float bottom = min(da, min(db, dc));
+#else
+  float bottom = havsParallel != 0 ? min(da, min(db, dc)) : length(havsNearestOnTriangle(a, b, c));
+#endif
+  e.x = clamp(e.x, bottom, top);
+  return e;
+}
+#endif
+
 // The k-buffer entry of the fragment being shaded: a mesh face's (tagged by
 // the facing of its outward-wound boundary face when tagging is on) or a
 // section's (an entry or an exit by its role). With tagging, a boundary face
@@ -741,7 +851,11 @@ HAVS_ENTRY havsFaceEntry(vec3 positionRC, float scalar)
       code += 2.0;
     }
   }
+#if HAVS_ISO && !HAVS_CELL_SCALARS && defined(HAVS_FACE_PASS)
+  return havsClampToFace(havsEntry(havsDistance(positionRC), code));
+#else
   return havsEntry(havsDistance(positionRC), code);
+#endif
 }
 
 // Back to front, for the fragment-list resolve: a pixel's list comes out in
