@@ -231,11 +231,25 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
   auto s = havstest::MakeScene(grid, mapper, property, size, size);
   vtkCamera* camera = s.Renderer->GetActiveCamera();
   const size_t edge = static_cast<size_t>(size) * size / 2000;
-  // The strict check's control (the cell projection, HAVS).
+  // The strict check's control (some view must miss a pixel; counted over the
+  // views): the cell projection's face scalars not snapped to the isovalues;
+  // HAVS's fragments not clamped to their faces.
+  auto* cells = vtkHAVSCellProjectionMapper::SafeDownCast(mapper);
+  auto* havs = vtkHAVSVolumeMapper::SafeDownCast(mapper);
+  const std::string controlName =
+    cells ? "the face scalars not snapped" : "the fragments not clamped to their faces";
+  auto setControl = [&](bool on)
+  {
+    if (cells)
+    {
+      cells->SetNoIsoSnapForTesting(on);
+    }
+    if (havs)
+    {
+      havs->SetNoFaceClampForTesting(on);
+    }
+  };
   int controlMisses = 0, controlViews = 0;
-  const std::string controlName = vtkHAVSCellProjectionMapper::SafeDownCast(mapper)
-    ? "the face scalars not snapped"
-    : "the fragments not clamped to their faces";
   for (int v = 0; v < views; ++v)
   {
     havstest::PlaceStandardView(s.Renderer, grid, v, views, true);
@@ -272,22 +286,6 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
         all);
       havstest::Check(havstest::WithinExactBound(all),
         at + ": the isosurface pair is exact at every pixel both show");
-      // Control (some view must miss a pixel; counted over the views): the
-      // cell projection's face scalars not snapped to the isovalues; HAVS's
-      // fragments not clamped to their faces.
-      auto* cells = vtkHAVSCellProjectionMapper::SafeDownCast(mapper);
-      auto* havs = vtkHAVSVolumeMapper::SafeDownCast(mapper);
-      auto setControl = [&](bool on)
-      {
-        if (cells)
-        {
-          cells->SetNoIsoSnapForTesting(on);
-        }
-        if (havs)
-        {
-          havs->SetNoFaceClampForTesting(on);
-        }
-      };
       if (cells || havs)
       {
         setControl(true);

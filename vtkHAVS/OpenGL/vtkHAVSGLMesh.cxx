@@ -212,8 +212,8 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
   // Isosurface frames clamp a fragment's scalar to its face's vertex range
   // and its distance to the face's (vtkHAVSKBufferLib.glsl, havsClampToFace):
   // the face's indices and the vertices' scalars and points read by
-  // gl_PrimitiveID + havsFaceBase (-1: a section,
-  // not clamped; so too where the scalars are not one float a vertex).
+  // gl_PrimitiveID + havsFaceBase, which every draw sets (-1: not clamped, a
+  // section, or scalars that are not one float a vertex).
   const bool faceBase = program->IsUniformUsed("havsFaceBase");
   const bool clamp = faceBase && this->ClampFaces && this->Components == 1;
   if (clamp)
@@ -222,10 +222,6 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
     this->ScalarBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, 15);
     this->PointBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, 16);
   }
-  if (faceBase)
-  {
-    program->SetUniformi("havsFaceBase", -1);
-  }
   auto drawSections = [&](bool entering)
   {
     for (const SectionDraw& d : this->SectionDraws)
@@ -233,6 +229,10 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
       if (d.Entering != entering)
       {
         continue;
+      }
+      if (faceBase)
+      {
+        program->SetUniformi("havsFaceBase", -1);
       }
       if (roles)
       {
@@ -268,18 +268,14 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
     vtkHAVSGLCapabilities::DrawInPieces(first, last, perFinish,
       [&](long long begin, long long end)
       {
-        if (clamp)
+        if (faceBase)
         {
-          program->SetUniformi("havsFaceBase", static_cast<int>(begin));
+          program->SetUniformi("havsFaceBase", clamp ? static_cast<int>(begin) : -1);
         }
         glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(3 * (end - begin)), GL_UNSIGNED_INT,
           reinterpret_cast<const void*>(3 * sizeof(GLuint) * static_cast<size_t>(begin)));
       });
     glFrontFace(GL_CCW);
-    if (clamp)
-    {
-      program->SetUniformi("havsFaceBase", -1); // (the sections after the faces)
-    }
     if (b + 1 < batches)
     {
       betweenBatches(b);
