@@ -44,13 +44,15 @@
 // default settings: what a user gets; havs-default-noskip: with every cell drawn,
 // SkipInvisibleCells off; havs-default-sat: SkipSaturatedPixels on every path;
 // havs-default-nocull: every cell ordered and drawn, SkipOffscreenCells off;
-// havs-default-noclamp, with an iso- prefix: isosurface fragments not clamped to their
-// faces, NoFaceClampForTesting), HAVS fragment lists
+// havs-default-noclamp, with an iso- prefix: isosurface fragments as the rasterizer gives
+// them, not placed on their faces, NoFaceClampForTesting), HAVS fragment lists
 // (exact per-pixel sort), raster-bound (the same faces in the same order with a trivial shader: the
 // lower bound of any face-based method; sort-bound is the sort alone),
 // reference (the exact images, computed and cached in their own process before
 // the timed configurations; always run first), cellproj (vtkHAVSCellProjectionMapper:
-// the exact MPVO cell order, boundary layers; cellproj-convex: the convexification),
+// the exact MPVO cell order, boundary layers; cellproj-convex: the convexification;
+// cellproj-floatiso, with an iso- prefix: the isosurface frames' stretches in float,
+// FloatIsoStretchesForTesting),
 // tetraycast (vtkHAVSRayCastMapper: GPU ray casting through the tetrahedra, re-entries
 // by depth peeling; its rows add the peeling passes, cells crossed per ray and
 // the screen tiles used, medians over the views; tetraycast-nofolds: without its
@@ -1278,7 +1280,7 @@ int RunWorker(const Options& o)
     {
       mapper = vtkSmartPointer<vtkProjectedTetrahedraMapper>::New();
     }
-    else if (config == "cellproj" || config == "cellproj-convex")
+    else if (config == "cellproj" || config == "cellproj-convex" || config == "cellproj-floatiso")
     {
       // vtkHAVSCellProjectionMapper (issue 22): the exact MPVO cell order.
       auto m = vtkSmartPointer<vtkHAVSCellProjectionMapper>::New();
@@ -1287,6 +1289,8 @@ int RunWorker(const Options& o)
       {
         m->SetNonConvexMethod(vtkHAVSVisibilityOrder::NonConvexConvexification);
       }
+      // (With an iso- prefix: what the exact stretches in double cost and buy.)
+      m->SetFloatIsoStretchesForTesting(config == "cellproj-floatiso");
       cellProjection = m;
       mapper = m;
     }
@@ -2405,7 +2409,11 @@ std::string IsoReport(const std::vector<Row>& allRows)
         "over the views); the ratios are against the same configuration's composite frame in "
         "the same run. Error: the float result against the exact reference of the same mode "
         "(vtkHAVSReferenceRenderer's isosurface events), RMSE / max (MISSION.md's exact: "
-        "RMSE < 5e-4, max < 0.01).\n\n"
+        "RMSE < 5e-4, max < 0.01). havs-default-noclamp and cellproj-floatiso, where present: "
+        "the testing controls `NoFaceClampForTesting` (HAVS's isosurface fragments as the "
+        "rasterizer gives them) and `FloatIsoStretchesForTesting` (the cell projection's "
+        "stretches and face scalars from its float planes and field): what taking the "
+        "crossings on the pixel's exact ray in double costs and buys.\n\n"
      << "| data set | size | configuration | composite ms | isosurfaces ms | iso / composite | "
         "iso float RMSE / max | composite with isosurfaces ms | mixed / composite | mixed "
         "float RMSE / max | shaded isosurfaces ms | shaded / composite | shaded float RMSE / "

@@ -15,9 +15,10 @@
 // worst left out as edge pixels; a pixel one image leaves empty is the
 // silhouette's, a ray grazing the boundary; the rays through folded cells,
 // which have no exact image, are left out and counted; the control, which
-// must miss a pixel in one of the views: for the cell projection its face
-// scalars not snapped to the isovalues, NoIsoSnapForTesting; for HAVS its
-// fragments not clamped to their faces, NoFaceClampForTesting).
+// must miss a pixel in one of the views: for the cell projection its
+// stretches and face scalars from the float planes and field,
+// FloatIsoStretchesForTesting; for HAVS its fragments' scalars and distances
+// the rasterizer's, not the exact ray's on the face, NoFaceClampForTesting).
 // 1. Analytic: the box [0, 1]^3 with s = z and the isovalue 0.55 (between
 //    the vertices' planes): every pixel is the surface's premultiplied
 //    colour at 0.55 (the ray crosses the plane z = 0.55 once) or empty.
@@ -232,17 +233,17 @@ int TestHAVSIsoSurfaces(int argc, char* argv[])
   vtkCamera* camera = s.Renderer->GetActiveCamera();
   const size_t edge = static_cast<size_t>(size) * size / 2000;
   // The strict check's control (some view must miss a pixel; counted over the
-  // views): the cell projection's face scalars not snapped to the isovalues;
-  // HAVS's fragments not clamped to their faces.
+  // views): the cell projection's stretches and face scalars in float; HAVS's
+  // fragments as the rasterizer gives them.
   auto* cells = vtkHAVSCellProjectionMapper::SafeDownCast(mapper);
   auto* havs = vtkHAVSVolumeMapper::SafeDownCast(mapper);
   const std::string controlName =
-    cells ? "the face scalars not snapped" : "the fragments not clamped to their faces";
+    cells ? "the stretches in float" : "the fragments the rasterizer's";
   auto setControl = [&](bool on)
   {
     if (cells)
     {
-      cells->SetNoIsoSnapForTesting(on);
+      cells->SetFloatIsoStretchesForTesting(on);
     }
     if (havs)
     {

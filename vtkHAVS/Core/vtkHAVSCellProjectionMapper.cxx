@@ -257,7 +257,7 @@ void vtkHAVSCellProjectionMapper::RenderView(
   frame.Opaque = this->NeedsOpaqueDepth(renderer);
   frame.KeepResult = this->KeepFloatResult;
   frame.WrongExit = this->WrongExitForTesting;
-  frame.NoIsoSnap = this->NoIsoSnapForTesting;
+  frame.FloatIsoStretches = this->FloatIsoStretchesForTesting;
   frame.MeasureStages = this->MeasureStageTimes;
   frame.RestoreCells = [this]() { this->ComputeCells(); };
   if (this->DrawCells(renderer, frame, &this->LastDrawSeconds))
@@ -277,7 +277,7 @@ void vtkHAVSCellProjectionMapper::PrintSelf(ostream& os, vtkIndent indent)
      << ", NonConvexMethod: " << this->NonConvexMethod << "\n";
   os << indent << "MeasureStageTimes: " << this->MeasureStageTimes << "\n";
   os << indent << "WrongExitForTesting: " << this->WrongExitForTesting
-     << ", NoIsoSnapForTesting: " << this->NoIsoSnapForTesting
+     << ", FloatIsoStretchesForTesting: " << this->FloatIsoStretchesForTesting
      << ", ReverseOrderForTesting: " << this->ReverseOrderForTesting
      << ", ShuffleOrderForTesting: " << this->ShuffleOrderForTesting << "\n";
   os << indent << "Last frame: " << this->LastCellsDrawn << " cells, " << this->LastCycleBreaks

@@ -105,15 +105,17 @@ public:
   ///@}
 
   ///@{
-  /// Testing aid (a negative control): the isosurfaces without the face
-  /// scalars' snap. A cell's entry and exit scalars come from its own field,
-  /// so the two cells that share a face give it values a rounding apart, and
-  /// an isovalue between them was crossed in both cells or in neither; the
-  /// shader takes a face scalar within 1e-6 (of the normalized range) of an
-  /// isovalue as the isovalue, which the half-open rule then counts once (the
-  /// cell behind the face). Off by default.
-  vtkSetMacro(NoIsoSnapForTesting, bool);
-  vtkGetMacro(NoIsoSnapForTesting, bool);
+  /// Testing aid (a negative control): the isosurfaces from the stretches
+  /// that composite frames use. In isosurface frames each cell's stretch of
+  /// the pixel's ray comes from the exact ray and the planes through its
+  /// corners in double, and the scalars where it enters and leaves from those
+  /// faces' corners, so the two cells of a face agree on its scalar and an
+  /// isovalue is crossed once. With this on, the float planes and the cell's
+  /// field give them: values a rounding apart across a face, crossed in both
+  /// cells or in neither, and thin cells seen nearly along their faces come
+  /// out empty. Off by default.
+  vtkSetMacro(FloatIsoStretchesForTesting, bool);
+  vtkGetMacro(FloatIsoStretchesForTesting, bool);
   ///@}
 
   ///@{
@@ -166,7 +168,7 @@ public:
     bool Opaque = false;                  ///< opaque geometry may end the rays
     bool KeepResult = false;
     bool WrongExit = false;
-    bool NoIsoSnap = false;
+    bool FloatIsoStretches = false;
     bool MeasureStages = false;
     /// Makes Cells again when they were freed after an upload and the GPU
     /// needs them (its buffers were released).
@@ -199,7 +201,7 @@ private:
   int CellOrder = CellOrderMPVO;
   int NonConvexMethod = 1; // vtkHAVSVisibilityOrder::NonConvexBoundaryLayers
   bool WrongExitForTesting = false;
-  bool NoIsoSnapForTesting = false;
+  bool FloatIsoStretchesForTesting = false;
   bool ReverseOrderForTesting = false;
   bool ShuffleOrderForTesting = false;
   bool MeasureStageTimes = false;

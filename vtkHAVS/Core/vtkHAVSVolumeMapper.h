@@ -359,12 +359,15 @@ public:
   ///@}
 
   ///@{
-  /// Testing aid (a negative control): isosurface frames without the face
-  /// clamp. There each fragment's scalar is kept within its face's vertex
-  /// scalars and its distance within the face's, since the rasterizer can
-  /// cover a pixel centre just outside a sliver seen edge-on, where the face's
-  /// plane extrapolated gives a scalar and a depth far from the face's
-  /// (vtkHAVSKBufferLib.glsl, havsClampToFace). Off by default.
+  /// Testing aid (a negative control): isosurface frames with the fragments
+  /// as the rasterizer gives them. There each face fragment takes its scalar
+  /// and distance where the pixel centre's ray meets the face, in double
+  /// (vtkHAVSKBufferLib.glsl, havsOnFace): the rasterizer interpolates at
+  /// vertices snapped to 1/256 pixel, and an isovalue within that of a face's
+  /// scalar came out on the wrong side of it; where that ray passes outside
+  /// the face (a pixel centre the rasterizer covers just outside a sliver seen
+  /// edge-on) the fragment's scalar is kept within its face's vertex scalars
+  /// and its distance within the face's (havsClampToFace). Off by default.
   vtkSetMacro(NoFaceClampForTesting, bool);
   vtkGetMacro(NoFaceClampForTesting, bool);
   ///@}

@@ -33,6 +33,7 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
+#include <utility>
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -180,6 +181,7 @@ void vtkHAVSGLMapperResources::SetViewUniforms(vtkShaderProgram* program,
   program->SetUniformMatrix4x4("havsMCRC", m);
   vtkHAVSViewFrame::ToColumnMajor(view.ClipToEyeRelative, m);
   program->SetUniformMatrix4x4("havsDCRC", m);
+  vtkHAVSGLMapperResources::SetDoubleViewUniforms(program, view);
   float eyeModel[3], direction[3], directionWorld[3];
   for (int i = 0; i < 3; ++i)
   {
@@ -220,6 +222,23 @@ void vtkHAVSGLMapperResources::SetViewUniforms(vtkShaderProgram* program,
       }
     }
     program->SetUniformMatrix3x3("havsRCMC", linear);
+  }
+}
+
+void vtkHAVSGLMapperResources::SetDoubleViewUniforms(
+  vtkShaderProgram* program, const vtkHAVSViewFrame& view)
+{
+  // (vtkShaderProgram sets float matrices only.)
+  const std::pair<const char*, const double*> matrices[] = {
+    { "havsMCRCd", view.ModelToEyeRelative }, { "havsDCRCd", view.ClipToEyeRelative }
+  };
+  for (const auto& m : matrices)
+  {
+    const GLint location = glGetUniformLocation(program->GetHandle(), m.first);
+    if (location >= 0)
+    {
+      glUniformMatrix4dv(location, 1, GL_TRUE, m.second); // (row-major)
+    }
   }
 }
 

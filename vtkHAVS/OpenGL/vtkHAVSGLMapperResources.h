@@ -138,6 +138,13 @@ public:
    */
   static void SetViewUniforms(vtkShaderProgram* program, const vtkHAVSViewFrame& view,
     vtkHAVSFramePlanes* planes, const double shift[3], bool eye);
+  /**
+   * Model to eye-relative world and clip to eye-relative world in double
+   * (havsMCRCd, havsDCRCd), where `program` declares them: the isosurface
+   * frames' rays and faces (the k-buffer library's havsPixelRayd). The
+   * program is bound.
+   */
+  static void SetDoubleViewUniforms(vtkShaderProgram* program, const vtkHAVSViewFrame& view);
   /// The table's uniforms, the additive nodes' and the opaque depth's units (textures active).
   void SetTextureUniforms(vtkShaderProgram* program);
   /**

@@ -209,11 +209,12 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
 {
   const bool roles = program->IsUniformUsed("havsRole");
   const bool ownPlane = program->IsUniformUsed("havsOwnPlane");
-  // Isosurface frames clamp a fragment's scalar to its face's vertex range
-  // and its distance to the face's (vtkHAVSKBufferLib.glsl, havsClampToFace):
-  // the face's indices and the vertices' scalars and points read by
-  // gl_PrimitiveID + havsFaceBase, which every draw sets (-1: not clamped, a
-  // section, or scalars that are not one float a vertex).
+  // Isosurface frames place a fragment on its face: its scalar and distance
+  // where the pixel centre's ray meets the face, in double, or clamped to the
+  // face's where that ray passes outside it (vtkHAVSKBufferLib.glsl,
+  // havsOnFace): the face's indices and the vertices' scalars and points read
+  // by gl_PrimitiveID + havsFaceBase, which every draw sets (-1: as the
+  // rasterizer gives it, a section, or scalars that are not one float a vertex).
   const bool faceBase = program->IsUniformUsed("havsFaceBase");
   const bool clamp = faceBase && this->ClampFaces && this->Components == 1;
   if (clamp)
@@ -390,7 +391,7 @@ void vtkHAVSGLMesh::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Faces uploaded: " << this->IndexCount / 3 << ", sections "
      << this->SectionDraws.size()
-     << ", isosurface fragments clamped to their faces: " << (this->ClampFaces ? "yes" : "no")
+     << ", isosurface fragments placed on their faces: " << (this->ClampFaces ? "yes" : "no")
      << "\n";
 }
 

@@ -136,8 +136,9 @@ public:
   void DrawFaces(vtkShaderProgram* program, bool flipFacing, int batches = 1,
     const std::function<void(int)>& betweenBatches = nullptr);
 
-  /// Whether isosurface frames clamp each face fragment to its face (the
-  /// shaders' havsClampToFace; on by default, off only as a testing control).
+  /// Whether isosurface frames place each face fragment on its face (the
+  /// shaders' havsOnFace and havsClampToFace; on by default, off only as a
+  /// testing control).
   void SetClampFaces(bool clamp) { this->ClampFaces = clamp; }
 
   void ReleaseGraphicsResources(vtkWindow* window);

@@ -11,6 +11,7 @@
 
 #include "vtkHAVSFramePlanes.h"
 #include "vtkHAVSGLFrameTargets.h"
+#include "vtkHAVSGLMapperResources.h"
 #include "vtkHAVSGLMesh.h"
 #include "vtkHAVSGLTable.h"
 #include "vtkHAVSOpenGL.h"
@@ -120,6 +121,7 @@ void vtkHAVSGLPassContext::SetCommonUniforms(vtkShaderProgram* program)
   program->SetUniform3f("havsDirectionOfProjection", this->Direction);
   program->SetUniformMatrix4x4("havsMCRC", this->ModelToEyeRelative);
   program->SetUniformMatrix4x4("havsMCDC", this->ModelToClip);
+  vtkHAVSGLMapperResources::SetDoubleViewUniforms(program, *r.View); // (havsOnFace)
   program->SetUniformi(
     "havsMinimum", r.BlendMode == vtkHAVSFrameRequest::MinimumIntensityBlend ? 1 : 0);
   program->SetUniformf("havsGapLength", r.GapLength);

@@ -51,6 +51,7 @@ constexpr GLuint OrderBinding = 5;    // the cell of each drawn position
 constexpr GLuint TetBinding = 6;      // the tetrahedra's point ids
 constexpr GLuint MirroredBinding = 7; // one bit a tetrahedron: its faces' windings
 constexpr GLuint PointBinding = 8;    // the points (3 floats each)
+constexpr GLuint ScalarBinding = 9;   // isosurface frames: the points' scalars (normalized)
 /// Segments longer than this contribute nothing: off (the cell projection has no gaps to skip).
 constexpr float NoGapLength = 3.0e38f;
 }
@@ -62,6 +63,7 @@ struct vtkOpenGLHAVSCellProjectionMapper::GLObjects : vtkHAVSGLOwnObjects
   vtkHAVSGLBuffer Pattern;    // the faces of PatternCells cells: corner ids 4 slot + k
   size_t PatternCells = 0;
   vtkHAVSGLBuffer PointBuffer;
+  vtkHAVSGLBuffer ScalarBuffer; // isosurface frames only (released otherwise)
   vtkHAVSGLBuffer TetBuffer;
   vtkHAVSGLBuffer MirroredBuffer;
   vtkHAVSGLCellRecords Records; // the cells' planes and fields (vtkHAVSCellGeometry)
@@ -70,8 +72,8 @@ struct vtkOpenGLHAVSCellProjectionMapper::GLObjects : vtkHAVSGLOwnObjects
 
   void Release(vtkOpenGLRenderWindow*) override
   {
-    for (vtkHAVSGLBuffer* b :
-      { &this->PointBuffer, &this->TetBuffer, &this->MirroredBuffer, &this->OrderBuffer })
+    for (vtkHAVSGLBuffer* b : { &this->PointBuffer, &this->ScalarBuffer, &this->TetBuffer,
+           &this->MirroredBuffer, &this->OrderBuffer })
     {
       b->Release();
     }
@@ -142,8 +144,6 @@ void vtkOpenGLHAVSCellProjectionMapper::SetUniforms(
   }
   program->SetUniformMatrix3x3("havsModelToWorld", linear);
   program->SetUniformi("havsWrongExit", frame.WrongExit ? 1 : 0);
-  // The face scalars' snap to the isovalues (only the isosurface variants read it).
-  program->SetUniformf("havsIsoSnap", frame.NoIsoSnap ? -1.0f : 1.0e-6f);
   this->GL->Records.SetUniforms(program);
   program->SetUniformf("havsGapLength", NoGapLength);
 }
@@ -219,6 +219,27 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
   gl.TetBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, TetBinding);
   gl.MirroredBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, MirroredBinding);
   gl.PointBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, PointBinding);
+  if (program->IsUniformUsed("havsFaceScalars"))
+  {
+    // Isosurface frames: each cell's stretch from the exact ray in double,
+    // and the scalars where it enters and leaves interpolated on those faces
+    // from the points' scalars (the shader's havsStretchd and
+    // havsFaceScalarAt), uploaded only for them.
+    const std::vector<float>& scalars = frame.Mesh->GetScalars();
+    const bool usable = !frame.FloatIsoStretches && !frame.Mesh->HasCellScalars() &&
+      scalars.size() == frame.Mesh->GetPoints().size() / 3 && !scalars.empty();
+    if (usable)
+    {
+      gl.ScalarBuffer.Update(GL_SHADER_STORAGE_BUFFER, scalars,
+        std::max(frame.Mesh->GetBuildTime(), frame.Mesh->GetScalarTime()));
+      gl.ScalarBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, ScalarBinding);
+    }
+    program->SetUniformi("havsFaceScalars", usable ? 1 : 0);
+  }
+  else if (gl.ScalarBuffer.GetHandle())
+  {
+    gl.ScalarBuffer.Release();
+  }
   program->SetUniformi("havsTrianglesPerCell", 4);
   program->SetUniformi("havsNearSectionDrawn", sectionTriangles > 0 ? 1 : 0);
   program->SetUniformi("havsPullVertices", 1);

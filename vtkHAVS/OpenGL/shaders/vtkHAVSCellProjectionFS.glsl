@@ -42,7 +42,6 @@ uniform mat3 havsRCMC;         // eye-relative world -> model, the linear part
 uniform vec3 havsDirectionMC;  // the direction of projection in model coordinates
 uniform mat3 havsModelToWorld; // the volume matrix's linear part (lengths in world units)
 uniform int havsWrongExit;     // testing aid: leave through the farthest plane
-uniform float havsIsoSnap;     // the face scalars' snap to the isovalues (below 0: none)
 uniform int havsTrianglesPerCell; // 4: the cells' faces; 1: near-plane sections
 uniform int havsFirstCell;        // the draw's first cell in the order (draws in pieces)
 uniform int havsNearSectionDrawn; // 1: the near plane's section was drawn this frame
@@ -51,6 +50,119 @@ uniform int havsNearSectionDrawn; // 1: the near plane's section was drawn this 
 #endif
 
 layout(location = 0) out vec4 havsSegmentColor;
+
+#if HAVS_ISO && !HAVS_CELL_SCALARS
+// Isosurfaces: the scalars where the ray enters and leaves the cell taken on
+// the faces it crosses, where the pixel centre's ray meets them in double
+// (havsTriangleWeightsd), from the corners' scalars, as the exact reference
+// takes them. The cell's field evaluated at the float crossing point o + t d
+// misses by the gradient along the ray times that point's rounding, up to
+// 1e-5 of the range at eye distance 50 (the combustor, view 7 at 128^2: an
+// isovalue 6.7e-6 below the scalar where the ray leaves the mesh, crossed by
+// the reference, missed by the field's value), and the two cells of a face
+// computed two values a rounding apart: an isovalue between them was crossed
+// in both or in neither. The corners are taken in ascending point id, so both
+// cells of a face compute the same double. havsFaceScalars 0: the scalars are
+// not uploaded (cell scalars, or the testing control), the field's value stays.
+uniform int havsFaceScalars;
+layout(std430, binding = 6) readonly buffer HAVSTetrahedra
+{
+  uint havsTetrahedra[]; // 4 point ids each
+};
+layout(std430, binding = 8) readonly buffer HAVSPoints
+{
+  float havsPoints[]; // 3 each
+};
+layout(std430, binding = 9) readonly buffer HAVSPointScalars
+{
+  float havsPointScalars[]; // normalized, one each
+};
+
+dvec3 havsPointRCd(uint id)
+{
+  return havsModelToRCd(
+    vec3(havsPoints[3u * id], havsPoints[3u * id + 1u], havsPoints[3u * id + 2u]));
+}
+
+// Face j of `cell` (the face opposite corner j): its corners in ascending
+// point id, so that both cells of a face compute the same doubles.
+void havsFaceCorners(int cell, int j, out uint lo, out uint mid, out uint hi)
+{
+  uint base = 4u * uint(cell);
+  uint i0 = havsTetrahedra[base + (j == 0 ? 1u : 0u)];
+  uint i1 = havsTetrahedra[base + (j <= 1 ? 2u : 1u)];
+  uint i2 = havsTetrahedra[base + (j <= 2 ? 3u : 2u)];
+  lo = min(i0, min(i1, i2));
+  hi = max(i0, max(i1, i2));
+  mid = i0 + i1 + i2 - lo - hi;
+}
+
+// Narrows the stretch [tEnter, tExit] of the ray o + t d to the inner side of
+// face j's plane; false where the ray runs exactly along it outside. The
+// plane through the face's corners in ascending id: the cell behind the face
+// gets the negated plane, the same t.
+bool havsBoundd(int cell, int j, dvec3 o, dvec3 d, inout double tEnter, inout double tExit,
+  inout int enterFace, inout int exitFace)
+{
+  uint lo, mid, hi;
+  havsFaceCorners(cell, j, lo, mid, hi);
+  dvec3 a = havsPointRCd(lo);
+  dvec3 n = cross(havsPointRCd(mid) - a, havsPointRCd(hi) - a);
+  n = dot(n, havsPointRCd(havsTetrahedra[4u * uint(cell) + uint(j)]) - a) < 0.0 ? -n : n;
+  double towards = dot(n, d); // > 0: the ray moves inwards
+  double f = dot(n, o - a);   // >= 0: o on the inner side
+  if (towards == 0.0)
+  {
+    return f >= 0.0;
+  }
+  double t = -f / towards;
+  enterFace = towards > 0.0 && t > tEnter ? j : enterFace;
+  tEnter = towards > 0.0 ? max(tEnter, t) : tEnter;
+  exitFace = towards < 0.0 && t < tExit ? j : exitFace;
+  tExit = towards < 0.0 ? min(tExit, t) : tExit;
+  return true;
+}
+
+// The cell's stretch of the pixel centre's ray o + t d in double and the
+// faces it enters and leaves by; false where the ray misses the cell.
+bool havsStretchd(int cell, dvec3 o, dvec3 d, out double tEnter, out double tExit,
+  out int enterFace, out int exitFace)
+{
+  tEnter = -1.0e300;
+  tExit = 1.0e300;
+  enterFace = -1;
+  exitFace = -1;
+  bool inside = havsBoundd(cell, 0, o, d, tEnter, tExit, enterFace, exitFace);
+  inside = havsBoundd(cell, 1, o, d, tEnter, tExit, enterFace, exitFace) && inside;
+  inside = havsBoundd(cell, 2, o, d, tEnter, tExit, enterFace, exitFace) && inside;
+  inside = havsBoundd(cell, 3, o, d, tEnter, tExit, enterFace, exitFace) && inside;
+  return inside && enterFace >= 0 && exitFace >= 0 && tExit >= tEnter;
+}
+
+// The scalar where the ray o + t d meets face j of `cell`, from its corners'
+// scalars (weights clamped to the face: a ray through an edge or a vertex
+// may pass a rounding outside; the same in both cells).
+float havsFaceScalarAt(int cell, int j, dvec3 o, dvec3 d, float fallback)
+{
+  uint lo, mid, hi;
+  havsFaceCorners(cell, j, lo, mid, hi);
+  dvec3 w;
+  bool inside;
+  if (!havsTriangleWeightsd(
+        o, d, havsPointRCd(lo), havsPointRCd(mid), havsPointRCd(hi), w, inside))
+  {
+    return fallback;
+  }
+  if (!inside)
+  {
+    w = max(w, dvec3(0.0));
+    w /= w.x + w.y + w.z;
+  }
+  double s = w.x * double(havsPointScalars[lo]) + w.y * double(havsPointScalars[mid]) +
+    w.z * double(havsPointScalars[hi]);
+  return float(clamp(s, 0.0, 1.0));
+}
+#endif
 
 // The stretch of the ray o + t d in the cell narrowed by `plane` unless the
 // ray runs almost along it (|n.d| below `grazing`: see havsBoundGrazing);
@@ -207,6 +319,39 @@ void main()
               enterBy, exitBy, tEnter, tExit, tFarthest) ||
     outside;
   }
+#if HAVS_ISO && !HAVS_CELL_SCALARS
+  // Isosurface frames: the stretch from the exact ray in double (havsStretchd:
+  // the planes through the cell's corners, the same t in both cells of a
+  // face; the float planes above left thin cells seen 1 to 4 degrees off
+  // their long faces empty, and lost the isovalues crossed in them: the LOX
+  // post near its axis, view 0 at 128^2, 0.14 off, 0.07 with this), and the
+  // scalars where it enters and leaves from those faces. (What stays: a ray
+  // through a needle cell whose projection the pixel centre lies inside by
+  // less than the rasterizer's 1/256 pixel gets no fragment of that cell: the
+  // LOX post, view 7, pixel (62, 61), 0.002 pixel inside a cell 0.05 pixel
+  // wide; HAVS, which draws faces, only joins two stretches there.)
+  bool exact = havsFaceScalars != 0;
+  dvec3 rayO = dvec3(0.0), rayD = dvec3(0.0);
+  double tEnterD = 0.0, tExitD = 0.0;
+  int enterFace = -1, exitFace = -1;
+  float tFace[2] = float[2](-HAVS_EMPTY, HAVS_EMPTY); // where the stretch meets its faces
+  if (exact)
+  {
+    // The ray as o + t d has it, in eye-relative world coordinates (the same t).
+    dvec4 nearD = havsDCRCd *
+      dvec4(dvec2(gl_FragCoord.xy) / dvec2(havsViewportSize) * 2.0 - 1.0, -1.0, 1.0);
+    rayO = havsParallel != 0 ? nearD.xyz / nearD.w : dvec3(0.0);
+    rayD = havsParallel != 0 ? dvec3(dRC) : nearD.xyz / nearD.w;
+    if (!havsStretchd(cell, rayO, rayD, tEnterD, tExitD, enterFace, exitFace))
+    {
+      discard; // (the exact ray misses the cell)
+    }
+    outside = false;
+    tEnter = float(tEnterD);
+    tExit = float(tExitD);
+    tFace = float[2](tEnter, tExit);
+  }
+#endif
   // A near-plane section: the ray starts on it (where the fragment is).
   tEnter = own < 0 ? max(tEnter, dot(havsPositionMC - o, d) / dot(d, d)) : tEnter;
   if (outside || tEnter <= -HAVS_EMPTY)
@@ -233,30 +378,30 @@ void main()
   // and clipping planes (eye-relative world coordinates, kept where
   // dot(n, x) + w >= 0): where a plane cuts the cell the ray starts (or
   // stops) on it, with no section to draw.
+#if HAVS_ISO && !HAVS_CELL_SCALARS
+  // (An exact stretch shorter than float's t keeps its crossings at length 0.)
+  if (!havsClipRay(oRC, dRC, tEnter, tExit) || !(tExit > tEnter || (exact && tExit == tEnter)))
+#else
   if (!havsClipRay(oRC, dRC, tEnter, tExit) || !(tExit > tEnter))
+#endif
   {
     discard;
   }
   vec4 field = havsCell(cell, 4);
   float sFront = clamp(dot(field.xyz, o + tEnter * d) + field.w, 0.0, 1.0);
   float sBack = clamp(dot(field.xyz, o + tExit * d) + field.w, 0.0, 1.0);
-  float len = (tExit - tEnter) * length(dRC);
 #if HAVS_ISO && !HAVS_CELL_SCALARS
-  // The isosurfaces: the scalars where the ray crosses this cell's faces come
-  // from its own field, and the neighbour across a face computes that face's
-  // scalar from its field, a rounding apart; an isovalue between the two was
-  // crossed in both cells or in neither. A face scalar within havsIsoSnap
-  // (1e-6 of the normalized range) of an isovalue is taken as the isovalue:
-  // both cells then give the face the same value, and the half-open rule
-  // ([sf, sb) rising, (sb, sf] falling) counts the crossing once, in the cell
-  // behind. (Measured, TestHAVSIsoSurfaces' strict check on the combustor's
-  // 14 standard views at 128^2: one surface missing or extra at a pixel of 4
-  // views without it, of 1 with it. 1e-5 made it worse, 5 of the first 7
-  // views off by a pixel: likely a touch of the isovalue, a local extremum
-  // of the scalar along the ray within 1e-5 of it, taken as two crossings.)
-  sFront = havsSnapToIso(sFront, havsIsoSnap);
-  sBack = havsSnapToIso(sBack, havsIsoSnap);
+  // (Where a plane clipped the stretch, or a near-plane section starts it,
+  // that end is not on a face: the field's value.)
+  // (Where a plane clipped the stretch or a near-plane section starts it,
+  // that end is not on a face: the field's value.)
+  if (exact)
+  {
+    sFront = tEnter == tFace[0] ? havsFaceScalarAt(cell, enterFace, rayO, rayD, sFront) : sFront;
+    sBack = tExit == tFace[1] ? havsFaceScalarAt(cell, exitFace, rayO, rayD, sBack) : sBack;
+  }
 #endif
+  float len = (tExit - tEnter) * length(dRC);
 #if HAVS_ISO_SHADE
   havsShadeCell = cell;
   havsShadeFrom = o + tEnter * d;
@@ -286,6 +431,10 @@ void main()
   havsSegmentColor = vec4(1.0 - min(sFront, sBack), 1.0, 0.0, 0.0);
 #elif HAVS_CELL_BLEND == 4
   havsSegmentColor = vec4(havsAdditiveSegment(sFront, sBack, len), 1.0, 0.0, 0.0);
+#elif HAVS_ISO && !HAVS_CELL_SCALARS
+  // (A stretch of length 0 still crosses what its scalars cross.)
+  havsSegmentColor = len > 0.0 ? havsSegment(vec2(0.0, sFront), vec2(len, sBack))
+                               : havsIsoSegment(sFront, sBack, 0.0);
 #else
   havsSegmentColor = havsSegment(vec2(0.0, sFront), vec2(len, sBack));
 #endif

@@ -8,7 +8,7 @@
 // race-free. Attachment 0: premultiplied colour; attachment 1 + i/2 holds
 // entries 2i', 2i'+1 (xy, zw).
 //HAVS::Defines
-#define HAVS_FACE_PASS 1 // (the k-buffer library: a face pass, havsClampToFace)
+#define HAVS_FACE_PASS 1 // (the k-buffer library: a face pass, havsOnFace)
 //HAVS::KBufferLib
 
 in vec3 havsPositionRC;

@@ -6,7 +6,7 @@
 // the read-modify-write runs inside an *ordered* pixel interlock, so fragments
 // of one pixel are processed one at a time in primitive order.
 //HAVS::Defines
-#define HAVS_FACE_PASS 1 // (the k-buffer library: a face pass, havsClampToFace)
+#define HAVS_FACE_PASS 1 // (the k-buffer library: a face pass, havsOnFace)
 //HAVS::KBufferLib
 
 //HAVS::InterlockLayout

@@ -188,7 +188,16 @@ float havsScalarOf(float code)
 float havsLeaveKey(HAVS_ENTRY e)
 {
   float rank = e.y > 3.5 ? 2.0 : (e.y > 1.5 ? 1.0 : 0.0);
+#if HAVS_ISO && !HAVS_CELL_SCALARS
+  // Isosurface frames: the distances are the exact ray's (havsOnFace), and a
+  // tie is 1e-7 apart; 4e-6 of the distance reordered a boundary entry and the
+  // thin cell's internal face behind it (1.4e-4 apart at eye distance 83 on
+  // the LOX post, view 1 unturned at 256^2: a crossing between them lost,
+  // 0.088 off; views 0 and 2: 0.12, 0.25 before the exact distances too).
+  return e.x + rank * 4.0e-7 * abs(e.x);
+#else
   return e.x + rank * 4.0e-6 * abs(e.x);
+#endif
 }
 
 // HAVS_PROJECTION: 0 perspective, 1 parallel (compiled in: a per-fragment
@@ -283,17 +292,6 @@ const int HAVS_MAX_ISO = 8;
 uniform int havsIsoCount;
 uniform float havsIsoValues[HAVS_MAX_ISO];
 uniform vec4 havsIsoColors[HAVS_MAX_ISO];
-
-// A scalar within `snap` of an isovalue taken as that isovalue (the cell
-// projection's face scalars, vtkHAVSCellProjectionFS).
-float havsSnapToIso(float s, float snap)
-{
-  for (int i = 0; i < havsIsoCount; ++i)
-  {
-    s = abs(s - havsIsoValues[i]) <= snap ? havsIsoValues[i] : s;
-  }
-  return s;
-}
 
 #if HAVS_ISO_SHADE
 // Shaded isosurfaces (the property's ShadeOn; vtkHAVSIsoSurfaces::Shade, here
@@ -715,6 +713,62 @@ bool havsClipRay(vec3 originRC, vec3 dirRC, inout float tLow, inout float tHigh)
   return true;
 }
 
+#if HAVS_ISO && !HAVS_CELL_SCALARS
+// Isosurface frames: where the pixel centre's ray meets a face, in double.
+// An isovalue within rounding of the scalar where a ray meets a face is
+// crossed on one side of the face or the other as the float point lies: the
+// rasterizer interpolates at vertices snapped to 1/256 pixel (4e-4 world at
+// eye distance 48 on the combustor at 256^2), a float ray's point errs by
+// about 1e-7 of the eye distance along it and across, and a steep field
+// multiplies either (the combustor, view 1 unturned at 256^2, pixel (178,
+// 107): the ray enters the mesh at 0.531012, the isovalue 0.531007; HAVS saw
+// a crossing there the exact ray does not, 0.19 off). In double, from the
+// view's matrices and the float points, the scalar errs by the points'
+// rounding alone.
+uniform dmat4 havsMCRCd; // model -> eye-relative world (havsMCRC in double)
+uniform dmat4 havsDCRCd; // clip -> eye-relative world (havsDCRC in double)
+
+// The pixel centre's ray o + t d, eye-relative world coordinates.
+void havsPixelRayd(out dvec3 o, out dvec3 d)
+{
+  dvec2 ndc = dvec2(gl_FragCoord.xy) / dvec2(havsViewportSize) * 2.0 - 1.0;
+  dvec4 near = havsDCRCd * dvec4(ndc, -1.0, 1.0);
+  dvec4 far = havsDCRCd * dvec4(ndc, 1.0, 1.0);
+  o = near.xyz / near.w;
+  d = far.xyz / far.w - o;
+}
+
+// A model-coordinate point in eye-relative world coordinates.
+dvec3 havsModelToRCd(vec3 p)
+{
+  return (havsMCRCd * dvec4(dvec3(p), 1.0)).xyz;
+}
+
+// The barycentric weights (of a, b, c) of the point where the ray o + t d
+// meets the plane of triangle abc (Moller and Trumbore); `inside`: whether
+// the point lies on the triangle. False where the ray lies within 1e-12 of
+// the plane.
+bool havsTriangleWeightsd(
+  dvec3 o, dvec3 d, dvec3 a, dvec3 b, dvec3 c, out dvec3 w, out bool inside)
+{
+  inside = false;
+  dvec3 e1 = b - a, e2 = c - a;
+  dvec3 pv = cross(d, e2);
+  double det = dot(e1, pv);
+  w = dvec3(1.0, 0.0, 0.0);
+  if (!(abs(det) > 1e-12 * length(d) * length(e1) * length(e2)))
+  {
+    return false;
+  }
+  dvec3 tv = o - a;
+  w.y = dot(tv, pv) / det;
+  w.z = dot(d, cross(tv, e1)) / det;
+  w.x = 1.0 - w.y - w.z;
+  inside = min(w.x, min(w.y, w.z)) >= 0.0;
+  return true;
+}
+#endif
+
 #if HAVS_ISO && !HAVS_CELL_SCALARS && defined(HAVS_FACE_PASS)
 // Isosurfaces: a face's fragment kept on its face, its distance and scalar
 // clamped to the face's own ranges. At a pixel centre just outside a sliver
@@ -743,11 +797,14 @@ layout(std430, binding = 16) readonly buffer HAVSVertexPoints
   float havsVertexPoints[];
 };
 
+vec3 havsVertexPoint(uint v)
+{
+  return vec3(havsVertexPoints[3u * v], havsVertexPoints[3u * v + 1u], havsVertexPoints[3u * v + 2u]);
+}
+
 vec3 havsVertexRC(uint v)
 {
-  vec3 p =
-    vec3(havsVertexPoints[3u * v], havsVertexPoints[3u * v + 1u], havsVertexPoints[3u * v + 2u]);
-  return (havsMCRC * vec4(p, 1.0)).xyz;
+  return (havsMCRC * vec4(havsVertexPoint(v), 1.0)).xyz;
 }
 
 // The point of triangle abc nearest the eye (the origin; Ericson, Real-Time
@@ -823,6 +880,39 @@ HAVS_ENTRY havsClampToFace(HAVS_ENTRY e)
   e.x = clamp(e.x, bottom, top);
   return e;
 }
+
+// In isosurface frames a face fragment takes its scalar and distance where
+// the pixel centre's ray meets the face, in double (havsTriangleWeightsd):
+// both decide which side of a face an isovalue lies on. Where that ray passes
+// outside the face (the rasterizer covered the pixel within its snapping) or
+// along its plane, the rasterizer's values stay, clamped (havsClampToFace).
+HAVS_ENTRY havsOnFace(HAVS_ENTRY e)
+{
+  if (havsFaceBase < 0)
+  {
+    return e;
+  }
+  uint f = 3u * uint(gl_PrimitiveID + havsFaceBase);
+  uint i = havsFaceIndices[f], j = havsFaceIndices[f + 1u], k = havsFaceIndices[f + 2u];
+  dvec3 o, d, w;
+  bool inside;
+  havsPixelRayd(o, d);
+  dvec3 a = havsModelToRCd(havsVertexPoint(i)), b = havsModelToRCd(havsVertexPoint(j)),
+        c = havsModelToRCd(havsVertexPoint(k));
+  if (!havsTriangleWeightsd(o, d, a, b, c, w, inside) || !inside)
+  {
+    return havsClampToFace(e);
+  }
+  float si = havsVertexScalars[i], sj = havsVertexScalars[j], sk = havsVertexScalars[k];
+  // (The code's boundary role kept, as havsClampToFace keeps it; a tagged
+  // boundary face's vertices carry + 2.)
+  float role = e.y - havsScalarOf(e.y);
+  double s = w.x * double(si) + w.y * double(sj) + w.z * double(sk);
+  s = min(si, min(sj, sk)) > 1.5 ? s - 2.0 : s;
+  e.y = role + float(clamp(s, 0.0, 1.0));
+  e.x = havsDistance(vec3(w.x * a + w.y * b + w.z * c));
+  return e;
+}
 #endif
 
 // The k-buffer entry of the fragment being shaded: a mesh face's (tagged by
@@ -852,7 +942,7 @@ HAVS_ENTRY havsFaceEntry(vec3 positionRC, float scalar)
     }
   }
 #if HAVS_ISO && !HAVS_CELL_SCALARS && defined(HAVS_FACE_PASS)
-  return havsClampToFace(havsEntry(havsDistance(positionRC), code));
+  return havsOnFace(havsEntry(havsDistance(positionRC), code));
 #else
   return havsEntry(havsDistance(positionRC), code);
 #endif

@@ -6,7 +6,7 @@
 // here, so the arbitrary order in which fragments arrive does not matter.
 // The resolve pass sorts each list exactly.
 //HAVS::Defines
-#define HAVS_FACE_PASS 1 // (the k-buffer library: a face pass, havsClampToFace)
+#define HAVS_FACE_PASS 1 // (the k-buffer library: a face pass, havsOnFace)
 //HAVS::KBufferLib
 
 in vec3 havsPositionRC;
