@@ -105,15 +105,14 @@ public:
   ///@}
 
   ///@{
-  /// Testing aid (a negative control): the isosurfaces from the stretches
-  /// that composite frames use. In isosurface frames each cell's stretch of
-  /// the pixel's ray comes from the exact ray and the planes through its
-  /// corners in double, and the scalars where it enters and leaves from those
-  /// faces' corners, so the two cells of a face agree on its scalar and an
-  /// isovalue is crossed once. With this on, the float planes and the cell's
-  /// field give them: values a rounding apart across a face, crossed in both
-  /// cells or in neither, and thin cells seen nearly along their faces come
-  /// out empty. Off by default.
+  /// Testing aid (a negative control): the isosurfaces from the scalars that
+  /// composite frames use. In isosurface frames the scalars where a cell's
+  /// stretch enters and leaves it come from the faces' corners where the
+  /// pixel centre's exact ray meets them, in double, so the two cells of a
+  /// face agree on its scalar and an isovalue is crossed once. With this on,
+  /// the cell's field at the float crossing points gives them: values a
+  /// rounding apart across a face, crossed in both cells or in neither (a
+  /// shader variant without the double code). Off by default.
   vtkSetMacro(FloatIsoStretchesForTesting, bool);
   vtkGetMacro(FloatIsoStretchesForTesting, bool);
   ///@}

@@ -89,6 +89,9 @@ struct vtkHAVSFrameRequest
   /// The isosurfaces lit (the fragment-list path only): each vertex carries its point's
   /// gradient (PointGradients, 3 floats a point, model coordinates; its version).
   bool IsoShade = false;
+  /// Isosurface fragments placed on the pixel's exact ray (the shaders'
+  /// HAVS_ISO_EXACT; false only for NoFaceClampForTesting).
+  bool IsoExact = true;
   const std::vector<float>* PointGradients = nullptr;
   vtkMTimeType PointGradientsVersion = 0;
   bool Opaque = true;        ///< opaque geometry may be in the depth buffer (rays end there)

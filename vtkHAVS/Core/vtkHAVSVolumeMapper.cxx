@@ -379,6 +379,7 @@ vtkHAVSVolumeMapper::FrameRequest vtkHAVSVolumeMapper::MakeRequest(
   r.CellScalars = this->Mesh->HasCellScalars();
   r.IsoSurfaces = this->FrameIsoSurfaces.ShaderMode(this->BlendMode);
   r.IsoShade = this->FrameIsoSurfaces.Shaded; // (the fragment-list path: see RenderView)
+  r.IsoExact = !this->NoFaceClampForTesting;
   if (r.IsoShade)
   {
     r.PointGradients = &this->GetIsoPointGradients(r.PointGradientsVersion);

@@ -360,14 +360,16 @@ public:
 
   ///@{
   /// Testing aid (a negative control): isosurface frames with the fragments
-  /// as the rasterizer gives them. There each face fragment takes its scalar
-  /// and distance where the pixel centre's ray meets the face, in double
-  /// (vtkHAVSKBufferLib.glsl, havsOnFace): the rasterizer interpolates at
-  /// vertices snapped to 1/256 pixel, and an isovalue within that of a face's
-  /// scalar came out on the wrong side of it; where that ray passes outside
-  /// the face (a pixel centre the rasterizer covers just outside a sliver seen
-  /// edge-on) the fragment's scalar is kept within its face's vertex scalars
-  /// and its distance within the face's (havsClampToFace). Off by default.
+  /// as the rasterizer gives them (a shader variant without the code below).
+  /// There a face fragment whose face's scalars come within 1e-2 of an
+  /// isovalue takes its scalar and distance where the pixel centre's ray
+  /// meets the face, in double (vtkHAVSKBufferLib.glsl, havsOnFace): the
+  /// rasterizer interpolates at vertices snapped to 1/256 pixel, and an
+  /// isovalue within that of a face's scalar came out on the wrong side of
+  /// it; elsewhere, and where that ray passes outside the face (a pixel centre
+  /// the rasterizer covers just outside a sliver seen edge-on), the fragment's
+  /// scalar is kept within its face's vertex scalars and its distance within
+  /// the face's (havsClampToFace). Off by default.
   vtkSetMacro(NoFaceClampForTesting, bool);
   vtkGetMacro(NoFaceClampForTesting, bool);
   ///@}

@@ -33,7 +33,6 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
-#include <utility>
 
 VTK_ABI_NAMESPACE_BEGIN
 
@@ -228,17 +227,23 @@ void vtkHAVSGLMapperResources::SetViewUniforms(vtkShaderProgram* program,
 void vtkHAVSGLMapperResources::SetDoubleViewUniforms(
   vtkShaderProgram* program, const vtkHAVSViewFrame& view)
 {
-  // (vtkShaderProgram sets float matrices only.)
-  const std::pair<const char*, const double*> matrices[] = {
-    { "havsMCRCd", view.ModelToEyeRelative }, { "havsDCRCd", view.ClipToEyeRelative }
-  };
-  for (const auto& m : matrices)
+  // (vtkShaderProgram sets float uniforms only.)
+  const GLint clipToModel = glGetUniformLocation(program->GetHandle(), "havsDCMCd");
+  if (clipToModel >= 0)
   {
-    const GLint location = glGetUniformLocation(program->GetHandle(), m.first);
-    if (location >= 0)
-    {
-      glUniformMatrix4dv(location, 1, GL_TRUE, m.second); // (row-major)
-    }
+    double inverse[16];
+    vtkMatrix4x4::Invert(view.ModelToClip, inverse);
+    glUniformMatrix4dv(clipToModel, 1, GL_TRUE, inverse); // (row-major)
+  }
+  const GLint eye = glGetUniformLocation(program->GetHandle(), "havsEyeMCd");
+  if (eye >= 0)
+  {
+    // The eye-relative origin in model coordinates.
+    double inverse[16];
+    vtkMatrix4x4::Invert(view.ModelToEyeRelative, inverse);
+    const double eyeModel[3] = { inverse[3] / inverse[15], inverse[7] / inverse[15],
+      inverse[11] / inverse[15] };
+    glUniform3dv(eye, 1, eyeModel);
   }
 }
 

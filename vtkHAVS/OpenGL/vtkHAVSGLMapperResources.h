@@ -139,9 +139,9 @@ public:
   static void SetViewUniforms(vtkShaderProgram* program, const vtkHAVSViewFrame& view,
     vtkHAVSFramePlanes* planes, const double shift[3], bool eye);
   /**
-   * Model to eye-relative world and clip to eye-relative world in double
-   * (havsMCRCd, havsDCRCd), where `program` declares them: the isosurface
-   * frames' rays and faces (the k-buffer library's havsPixelRayd). The
+   * Clip to model coordinates and the eye in model coordinates, in double
+   * (havsDCMCd, havsEyeMCd), where `program` declares them: the isosurface
+   * frames' pixel rays (the k-buffer library's havsPixelRayMCd). The
    * program is bound.
    */
   static void SetDoubleViewUniforms(vtkShaderProgram* program, const vtkHAVSViewFrame& view);

@@ -216,7 +216,7 @@ void vtkHAVSGLMesh::DrawFaces(vtkShaderProgram* program, bool flipFacing, int ba
   // by gl_PrimitiveID + havsFaceBase, which every draw sets (-1: as the
   // rasterizer gives it, a section, or scalars that are not one float a vertex).
   const bool faceBase = program->IsUniformUsed("havsFaceBase");
-  const bool clamp = faceBase && this->ClampFaces && this->Components == 1;
+  const bool clamp = faceBase && this->Components == 1;
   if (clamp)
   {
     this->IndexBuffer.BindBase(GL_SHADER_STORAGE_BUFFER, 14);
@@ -390,9 +390,7 @@ void vtkHAVSGLMesh::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Faces uploaded: " << this->IndexCount / 3 << ", sections "
-     << this->SectionDraws.size()
-     << ", isosurface fragments placed on their faces: " << (this->ClampFaces ? "yes" : "no")
-     << "\n";
+     << this->SectionDraws.size() << "\n";
 }
 
 VTK_ABI_NAMESPACE_END

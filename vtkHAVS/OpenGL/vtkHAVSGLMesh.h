@@ -136,11 +136,6 @@ public:
   void DrawFaces(vtkShaderProgram* program, bool flipFacing, int batches = 1,
     const std::function<void(int)>& betweenBatches = nullptr);
 
-  /// Whether isosurface frames place each face fragment on its face (the
-  /// shaders' havsOnFace and havsClampToFace; on by default, off only as a
-  /// testing control).
-  void SetClampFaces(bool clamp) { this->ClampFaces = clamp; }
-
   void ReleaseGraphicsResources(vtkWindow* window);
 
 protected:
@@ -157,7 +152,6 @@ private:
   vtkHAVSGLBuffer ScalarBuffer;
   vtkHAVSGLBuffer IndexBuffer;
   GLsizei IndexCount = 0;
-  bool ClampFaces = true;
   std::vector<float> Points; // as uploaded, for the boundary vertices
   std::vector<float> Scalars;
   size_t VertexCapacity = 0;      // vertices the point and scalar buffers hold

@@ -76,6 +76,7 @@ vtkHAVSShaders::Features vtkHAVSGLPassContext::ShaderFeatures() const
   f.Projection = this->Request.View ? (this->Request.View->Parallel ? 1 : 0) : -1;
   f.IsoSurfaces = this->Request.IsoSurfaces;
   f.IsoShade = this->Request.IsoShade ? 2 : 0;
+  f.IsoExact = this->Request.IsoExact;
   return f;
 }
 

@@ -76,7 +76,8 @@ std::string Compose(const char* templ, int k, int pixelStride,
           << "#define HAVS_CLIPPING " << (features.Clipping ? 1 : 0) << "\n"
           << "#define HAVS_PROJECTION " << features.Projection << "\n"
           << "#define HAVS_ISO " << features.IsoSurfaces << "\n"
-          << "#define HAVS_ISO_SHADE " << features.IsoShade << "\n";
+          << "#define HAVS_ISO_SHADE " << features.IsoShade << "\n"
+          << "#define HAVS_ISO_EXACT " << (features.IsoExact ? 1 : 0) << "\n";
   Replace(source, "//HAVS::Defines", defines.str());
   Replace(source, "//HAVS::KBufferLib", vtkHAVSKBufferLib);
   Replace(source, "//HAVS::CellOpticsLib", CellOpticsLib());
@@ -87,9 +88,10 @@ std::string Compose(const char* templ, int k, int pixelStride,
 /// the ray caster's): no k-buffer, no violation counter, no tagging; its blend
 /// and the additive blend's library in.
 std::string CellSegmentShader(const char* templ, bool opaque, int blend, bool cellScalars,
-  int cellBuffers, int isoSurfaces, bool isoShade)
+  int cellBuffers, int isoSurfaces, bool isoShade, bool isoExact = true)
 {
   vtkHAVSShaders::Features features;
+  features.IsoExact = isoExact;
   features.IsoSurfaces = isoSurfaces;
   features.IsoShade = isoShade && isoSurfaces != 0 ? 1 : 0;
   features.CountViolations = false;
@@ -385,11 +387,11 @@ std::string vtkHAVSShaders::CellProjectionVertexShader()
   return vtkHAVSCellProjectionVS;
 }
 
-std::string vtkHAVSShaders::CellProjectionShader(
-  bool opaque, int blend, bool cellScalars, int cellBuffers, int isoSurfaces, bool isoShade)
+std::string vtkHAVSShaders::CellProjectionShader(bool opaque, int blend, bool cellScalars,
+  int cellBuffers, int isoSurfaces, bool isoShade, bool isoExact)
 {
-  return CellSegmentShader(
-    vtkHAVSCellProjectionFS, opaque, blend, cellScalars, cellBuffers, isoSurfaces, isoShade);
+  return CellSegmentShader(vtkHAVSCellProjectionFS, opaque, blend, cellScalars, cellBuffers,
+    isoSurfaces, isoShade, isoExact);
 }
 
 std::string vtkHAVSShaders::RayCastPeelShader()

@@ -50,6 +50,10 @@ struct vtkHAVSKBufferShaderFeatures
   /// fields (the cell mappers), 2 by the gradients the entries carry (HAVS's
   /// fragment lists).
   int IsoShade = 0;
+  /// Isosurface crossings on the pixel's exact ray in double (HAVS_ISO_EXACT:
+  /// HAVS's havsOnFace, the cell projection's face scalars); false only for
+  /// the testing controls (the float path as the rasterizer gives it).
+  bool IsoExact = true;
 };
 
 class VTKHAVSOPENGL_EXPORT vtkHAVSShaders
@@ -139,10 +143,10 @@ public:
   /// fields are cell codes, their segments read the cell optics;
   /// `cellBuffers`: the storage buffers the cell records lie in,
   /// vtkHAVSGLCellRecords; `isoSurfaces`: Features::IsoSurfaces; `isoShade`:
-  /// Features::IsoShade).
+  /// Features::IsoShade; `isoExact`: Features::IsoExact).
   static std::string CellProjectionVertexShader();
   static std::string CellProjectionShader(bool opaque, int blend = 0, bool cellScalars = false,
-    int cellBuffers = 1, int isoSurfaces = 0, bool isoShade = false);
+    int cellBuffers = 1, int isoSurfaces = 0, bool isoShade = false, bool isoExact = true);
   ///@}
 
   ///@{

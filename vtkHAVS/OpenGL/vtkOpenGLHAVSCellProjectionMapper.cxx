@@ -173,7 +173,8 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
     vtkHAVSShaders::CellProjectionVertexShader().c_str(),
     vtkHAVSShaders::CellProjectionShader(opaque, frame.Blend,
       this->Resources->GetTable()->HasCellOptics(), gl.Records.GetBufferCount(),
-      this->GetFrameIsoSurfaces().ShaderMode(this->GetBlendMode()), isoShade)
+      this->GetFrameIsoSurfaces().ShaderMode(this->GetBlendMode()), isoShade,
+      !frame.FloatIsoStretches)
       .c_str(),
     "");
   if (!program || !program->GetCompiled())
@@ -226,7 +227,7 @@ bool vtkOpenGLHAVSCellProjectionMapper::DrawCells(
     // from the points' scalars (the shader's havsStretchd and
     // havsFaceScalarAt), uploaded only for them.
     const std::vector<float>& scalars = frame.Mesh->GetScalars();
-    const bool usable = !frame.FloatIsoStretches && !frame.Mesh->HasCellScalars() &&
+    const bool usable = !frame.Mesh->HasCellScalars() &&
       scalars.size() == frame.Mesh->GetPoints().size() / 3 && !scalars.empty();
     if (usable)
     {

@@ -187,7 +187,6 @@ bool vtkOpenGLHAVSVolumeMapper::DrawFrame(
     return false;
   }
   this->GLMesh->SetContext(window);
-  this->GLMesh->SetClampFaces(!this->NoFaceClampForTesting);
   vtkHAVSGLFrameTargets* targets = this->Resources->GetTargets();
   vtkHAVSGLTable* glTable = this->Resources->GetTable();
   const bool measure = request.MeasureStages;

@@ -51,7 +51,7 @@ uniform int havsNearSectionDrawn; // 1: the near plane's section was drawn this 
 
 layout(location = 0) out vec4 havsSegmentColor;
 
-#if HAVS_ISO && !HAVS_CELL_SCALARS
+#if HAVS_ISO && !HAVS_CELL_SCALARS && HAVS_ISO_EXACT
 // Isosurfaces: the scalars where the ray enters and leaves the cell taken on
 // the faces it crosses, where the pixel centre's ray meets them in double
 // (havsTriangleWeightsd), from the corners' scalars, as the exact reference
@@ -62,8 +62,18 @@ layout(location = 0) out vec4 havsSegmentColor;
 // the reference, missed by the field's value), and the two cells of a face
 // computed two values a rounding apart: an isovalue between them was crossed
 // in both or in neither. The corners are taken in ascending point id, so both
-// cells of a face compute the same double. havsFaceScalars 0: the scalars are
-// not uploaded (cell scalars, or the testing control), the field's value stays.
+// cells of a face compute the same double. havsFaceScalars 0: the scalars
+// could not be uploaded, the field's value stays. (HAVS_ISO_EXACT 0, the
+// testing control FloatIsoStretchesForTesting, compiles none of this.) What
+// stays float: the stretch, from the cell's float planes; computing it in
+// double too made the isosurface frame 1.26x slower on llvmpipe (combustor,
+// 256^2) and changed one view of the LOX post's 14 (a thin cell seen 1 to 4
+// degrees off its long faces comes out empty: view 0, 0.14, then 0.07). And a cell is drawn at a pixel only where the rasterizer
+// covers the pixel centre with one of its faces (vertices snapped to 1/256
+// pixel): on the LOX post's view 7, pixel (62, 61), the exact ray crosses an
+// isovalue in a needle cell along the post's axis 0.05 pixel wide, 0.002
+// pixel inside its edge, and the cell is not drawn there (HAVS, which draws
+// faces, only joins two stretches where it misses a face).
 uniform int havsFaceScalars;
 layout(std430, binding = 6) readonly buffer HAVSTetrahedra
 {
@@ -78,10 +88,9 @@ layout(std430, binding = 9) readonly buffer HAVSPointScalars
   float havsPointScalars[]; // normalized, one each
 };
 
-dvec3 havsPointRCd(uint id)
+dvec3 havsPointd(uint id)
 {
-  return havsModelToRCd(
-    vec3(havsPoints[3u * id], havsPoints[3u * id + 1u], havsPoints[3u * id + 2u]));
+  return dvec3(vec3(havsPoints[3u * id], havsPoints[3u * id + 1u], havsPoints[3u * id + 2u]));
 }
 
 // Face j of `cell` (the face opposite corner j): its corners in ascending
@@ -97,46 +106,38 @@ void havsFaceCorners(int cell, int j, out uint lo, out uint mid, out uint hi)
   mid = i0 + i1 + i2 - lo - hi;
 }
 
-// Narrows the stretch [tEnter, tExit] of the ray o + t d to the inner side of
-// face j's plane; false where the ray runs exactly along it outside. The
-// plane through the face's corners in ascending id: the cell behind the face
-// gets the negated plane, the same t.
-bool havsBoundd(int cell, int j, dvec3 o, dvec3 d, inout double tEnter, inout double tExit,
-  inout int enterFace, inout int exitFace)
+// The plane (0 to 3) that gives the ray's parameter t as havsBound computes
+// it (the same expression: the same float), moving towards it (`sign` > 0)
+// or away from it; -1 when none does (a near-plane section or a clipping
+// plane starts or ends the stretch there).
+int havsPlaneAt(vec4 planes[4], vec3 o, vec3 d, float t, float sign)
 {
-  uint lo, mid, hi;
-  havsFaceCorners(cell, j, lo, mid, hi);
-  dvec3 a = havsPointRCd(lo);
-  dvec3 n = cross(havsPointRCd(mid) - a, havsPointRCd(hi) - a);
-  n = dot(n, havsPointRCd(havsTetrahedra[4u * uint(cell) + uint(j)]) - a) < 0.0 ? -n : n;
-  double towards = dot(n, d); // > 0: the ray moves inwards
-  double f = dot(n, o - a);   // >= 0: o on the inner side
-  if (towards == 0.0)
+  int found = -1;
+  for (int j = 0; j < 4; ++j)
   {
-    return f >= 0.0;
+    float towards = dot(planes[j].xyz, d);
+    float tj = -(dot(planes[j].xyz, o) + planes[j].w) / towards;
+    found = found < 0 && towards * sign > 0.0 && tj == t ? j : found;
   }
-  double t = -f / towards;
-  enterFace = towards > 0.0 && t > tEnter ? j : enterFace;
-  tEnter = towards > 0.0 ? max(tEnter, t) : tEnter;
-  exitFace = towards < 0.0 && t < tExit ? j : exitFace;
-  tExit = towards < 0.0 ? min(tExit, t) : tExit;
-  return true;
+  return found;
 }
 
-// The cell's stretch of the pixel centre's ray o + t d in double and the
-// faces it enters and leaves by; false where the ray misses the cell.
-bool havsStretchd(int cell, dvec3 o, dvec3 d, out double tEnter, out double tExit,
-  out int enterFace, out int exitFace)
+// The cell's corner scalars' range, and whether an isovalue lies within it
+// or within 1e-4 of it (the float path's scalars err by up to 1e-5).
+bool havsNearIsovalue(int cell, out vec2 range)
 {
-  tEnter = -1.0e300;
-  tExit = 1.0e300;
-  enterFace = -1;
-  exitFace = -1;
-  bool inside = havsBoundd(cell, 0, o, d, tEnter, tExit, enterFace, exitFace);
-  inside = havsBoundd(cell, 1, o, d, tEnter, tExit, enterFace, exitFace) && inside;
-  inside = havsBoundd(cell, 2, o, d, tEnter, tExit, enterFace, exitFace) && inside;
-  inside = havsBoundd(cell, 3, o, d, tEnter, tExit, enterFace, exitFace) && inside;
-  return inside && enterFace >= 0 && exitFace >= 0 && tExit >= tEnter;
+  uint base = 4u * uint(cell);
+  float s0 = havsPointScalars[havsTetrahedra[base]];
+  float s1 = havsPointScalars[havsTetrahedra[base + 1u]];
+  float s2 = havsPointScalars[havsTetrahedra[base + 2u]];
+  float s3 = havsPointScalars[havsTetrahedra[base + 3u]];
+  range = vec2(min(min(s0, s1), min(s2, s3)), max(max(s0, s1), max(s2, s3)));
+  bool near = false;
+  for (int i = 0; i < havsIsoCount; ++i)
+  {
+    near = near || (havsIsoValues[i] >= range.x - 1e-4 && havsIsoValues[i] <= range.y + 1e-4);
+  }
+  return near;
 }
 
 // The scalar where the ray o + t d meets face j of `cell`, from its corners'
@@ -149,7 +150,7 @@ float havsFaceScalarAt(int cell, int j, dvec3 o, dvec3 d, float fallback)
   dvec3 w;
   bool inside;
   if (!havsTriangleWeightsd(
-        o, d, havsPointRCd(lo), havsPointRCd(mid), havsPointRCd(hi), w, inside))
+        o, d, havsPointd(lo), havsPointd(mid), havsPointd(hi), w, inside))
   {
     return fallback;
   }
@@ -319,39 +320,6 @@ void main()
               enterBy, exitBy, tEnter, tExit, tFarthest) ||
     outside;
   }
-#if HAVS_ISO && !HAVS_CELL_SCALARS
-  // Isosurface frames: the stretch from the exact ray in double (havsStretchd:
-  // the planes through the cell's corners, the same t in both cells of a
-  // face; the float planes above left thin cells seen 1 to 4 degrees off
-  // their long faces empty, and lost the isovalues crossed in them: the LOX
-  // post near its axis, view 0 at 128^2, 0.14 off, 0.07 with this), and the
-  // scalars where it enters and leaves from those faces. (What stays: a ray
-  // through a needle cell whose projection the pixel centre lies inside by
-  // less than the rasterizer's 1/256 pixel gets no fragment of that cell: the
-  // LOX post, view 7, pixel (62, 61), 0.002 pixel inside a cell 0.05 pixel
-  // wide; HAVS, which draws faces, only joins two stretches there.)
-  bool exact = havsFaceScalars != 0;
-  dvec3 rayO = dvec3(0.0), rayD = dvec3(0.0);
-  double tEnterD = 0.0, tExitD = 0.0;
-  int enterFace = -1, exitFace = -1;
-  float tFace[2] = float[2](-HAVS_EMPTY, HAVS_EMPTY); // where the stretch meets its faces
-  if (exact)
-  {
-    // The ray as o + t d has it, in eye-relative world coordinates (the same t).
-    dvec4 nearD = havsDCRCd *
-      dvec4(dvec2(gl_FragCoord.xy) / dvec2(havsViewportSize) * 2.0 - 1.0, -1.0, 1.0);
-    rayO = havsParallel != 0 ? nearD.xyz / nearD.w : dvec3(0.0);
-    rayD = havsParallel != 0 ? dvec3(dRC) : nearD.xyz / nearD.w;
-    if (!havsStretchd(cell, rayO, rayD, tEnterD, tExitD, enterFace, exitFace))
-    {
-      discard; // (the exact ray misses the cell)
-    }
-    outside = false;
-    tEnter = float(tEnterD);
-    tExit = float(tExitD);
-    tFace = float[2](tEnter, tExit);
-  }
-#endif
   // A near-plane section: the ray starts on it (where the fragment is).
   tEnter = own < 0 ? max(tEnter, dot(havsPositionMC - o, d) / dot(d, d)) : tEnter;
   if (outside || tEnter <= -HAVS_EMPTY)
@@ -378,27 +346,44 @@ void main()
   // and clipping planes (eye-relative world coordinates, kept where
   // dot(n, x) + w >= 0): where a plane cuts the cell the ray starts (or
   // stops) on it, with no section to draw.
-#if HAVS_ISO && !HAVS_CELL_SCALARS
-  // (An exact stretch shorter than float's t keeps its crossings at length 0.)
-  if (!havsClipRay(oRC, dRC, tEnter, tExit) || !(tExit > tEnter || (exact && tExit == tEnter)))
-#else
-  if (!havsClipRay(oRC, dRC, tEnter, tExit) || !(tExit > tEnter))
+#if HAVS_ISO && !HAVS_CELL_SCALARS && HAVS_ISO_EXACT
+  // Isosurface frames: the faces the stretch starts and ends on (before a
+  // clipping plane cuts it), for their scalars below; only in a cell whose
+  // corner scalars come within 1e-4 of an isovalue, the only cells that can
+  // cross one.
+  vec2 cellRange = vec2(0.0, 1.0);
+  bool exact = havsFaceScalars != 0 && havsNearIsovalue(cell, cellRange);
+  float tFace[2] = float[2](tEnter, tExit);
+  int enterFace = exact ? havsPlaneAt(planes, o, d, tEnter, -1.0) : -1;
+  int exitFace = exact ? havsPlaneAt(planes, o, d, tExit, 1.0) : -1;
 #endif
+  if (!havsClipRay(oRC, dRC, tEnter, tExit) || !(tExit > tEnter))
   {
     discard;
   }
   vec4 field = havsCell(cell, 4);
   float sFront = clamp(dot(field.xyz, o + tEnter * d) + field.w, 0.0, 1.0);
   float sBack = clamp(dot(field.xyz, o + tExit * d) + field.w, 0.0, 1.0);
-#if HAVS_ISO && !HAVS_CELL_SCALARS
-  // (Where a plane clipped the stretch, or a near-plane section starts it,
-  // that end is not on a face: the field's value.)
-  // (Where a plane clipped the stretch or a near-plane section starts it,
-  // that end is not on a face: the field's value.)
+#if HAVS_ISO && !HAVS_CELL_SCALARS && HAVS_ISO_EXACT
+  // The scalars where the stretch meets its faces from the pixel centre's ray
+  // in double (where a clipping plane cut it, or a near-plane section starts
+  // it, that end is not on a face: the field's value). A cell far from every
+  // isovalue keeps its field's values within its corners' range: no crossing.
   if (exact)
   {
-    sFront = tEnter == tFace[0] ? havsFaceScalarAt(cell, enterFace, rayO, rayD, sFront) : sFront;
-    sBack = tExit == tFace[1] ? havsFaceScalarAt(cell, exitFace, rayO, rayD, sBack) : sBack;
+    dvec3 rayO, rayD;
+    havsPixelRayMCd(rayO, rayD);
+    sFront = enterFace >= 0 && tEnter == tFace[0]
+      ? havsFaceScalarAt(cell, enterFace, rayO, rayD, sFront)
+      : sFront;
+    sBack = exitFace >= 0 && tExit == tFace[1]
+      ? havsFaceScalarAt(cell, exitFace, rayO, rayD, sBack)
+      : sBack;
+  }
+  else
+  {
+    sFront = clamp(sFront, cellRange.x, cellRange.y);
+    sBack = clamp(sBack, cellRange.x, cellRange.y);
   }
 #endif
   float len = (tExit - tEnter) * length(dRC);
@@ -432,9 +417,9 @@ void main()
 #elif HAVS_CELL_BLEND == 4
   havsSegmentColor = vec4(havsAdditiveSegment(sFront, sBack, len), 1.0, 0.0, 0.0);
 #elif HAVS_ISO && !HAVS_CELL_SCALARS
-  // (A stretch of length 0 still crosses what its scalars cross.)
-  havsSegmentColor = len > 0.0 ? havsSegment(vec2(0.0, sFront), vec2(len, sBack))
-                               : havsIsoSegment(sFront, sBack, 0.0);
+  // (havsSegment's isosurfaces; a stretch of length 0 still crosses what its
+  // scalars cross.)
+  havsSegmentColor = havsIsoSegment(sFront, sBack, max(len, 0.0));
 #else
   havsSegmentColor = havsSegment(vec2(0.0, sFront), vec2(len, sBack));
 #endif

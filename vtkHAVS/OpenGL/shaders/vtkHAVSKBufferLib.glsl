@@ -65,6 +65,9 @@
 #ifndef HAVS_ISO_SHADE
 #define HAVS_ISO_SHADE 0
 #endif
+#ifndef HAVS_ISO_EXACT
+#define HAVS_ISO_EXACT 1
+#endif
 
 // An entry (see the top): vec2(distance, code). HAVS_ISO_SHADE 2 (HAVS's
 // fragment lists shading isosurfaces) adds the fragment's interpolated point
@@ -188,7 +191,7 @@ float havsScalarOf(float code)
 float havsLeaveKey(HAVS_ENTRY e)
 {
   float rank = e.y > 3.5 ? 2.0 : (e.y > 1.5 ? 1.0 : 0.0);
-#if HAVS_ISO && !HAVS_CELL_SCALARS
+#if HAVS_ISO && !HAVS_CELL_SCALARS && HAVS_ISO_EXACT
   // Isosurface frames: the distances are the exact ray's (havsOnFace), and a
   // tie is 1e-7 apart; 4e-6 of the distance reordered a boundary entry and the
   // thin cell's internal face behind it (1.4e-4 apart at eye distance 83 on
@@ -713,7 +716,7 @@ bool havsClipRay(vec3 originRC, vec3 dirRC, inout float tLow, inout float tHigh)
   return true;
 }
 
-#if HAVS_ISO && !HAVS_CELL_SCALARS
+#if HAVS_ISO && !HAVS_CELL_SCALARS && HAVS_ISO_EXACT
 // Isosurface frames: where the pixel centre's ray meets a face, in double.
 // An isovalue within rounding of the scalar where a ray meets a face is
 // crossed on one side of the face or the other as the float point lies: the
@@ -724,24 +727,26 @@ bool havsClipRay(vec3 originRC, vec3 dirRC, inout float tLow, inout float tHigh)
 // 107): the ray enters the mesh at 0.531012, the isovalue 0.531007; HAVS saw
 // a crossing there the exact ray does not, 0.19 off). In double, from the
 // view's matrices and the float points, the scalar errs by the points'
-// rounding alone.
-uniform dmat4 havsMCRCd; // model -> eye-relative world (havsMCRC in double)
-uniform dmat4 havsDCRCd; // clip -> eye-relative world (havsDCRC in double)
+// rounding alone. In model coordinates, where the points are (the weights do
+// not change under the volume's matrix): no point is transformed.
+uniform dmat4 havsDCMCd; // clip -> model, in double
+uniform dvec3 havsEyeMCd; // the eye in model coordinates (perspective), in double
 
-// The pixel centre's ray o + t d, eye-relative world coordinates.
-void havsPixelRayd(out dvec3 o, out dvec3 d)
+// The pixel centre's point on the near plane, model coordinates.
+dvec3 havsPixelNearMCd()
 {
   dvec2 ndc = dvec2(gl_FragCoord.xy) / dvec2(havsViewportSize) * 2.0 - 1.0;
-  dvec4 near = havsDCRCd * dvec4(ndc, -1.0, 1.0);
-  dvec4 far = havsDCRCd * dvec4(ndc, 1.0, 1.0);
-  o = near.xyz / near.w;
-  d = far.xyz / far.w - o;
+  dvec4 near = havsDCMCd * dvec4(ndc, -1.0, 1.0);
+  return near.xyz / near.w;
 }
 
-// A model-coordinate point in eye-relative world coordinates.
-dvec3 havsModelToRCd(vec3 p)
+// The pixel centre's ray o + t d, model coordinates.
+void havsPixelRayMCd(out dvec3 o, out dvec3 d)
 {
-  return (havsMCRCd * dvec4(dvec3(p), 1.0)).xyz;
+  dvec2 ndc = dvec2(gl_FragCoord.xy) / dvec2(havsViewportSize) * 2.0 - 1.0;
+  dvec4 far = havsDCMCd * dvec4(ndc, 1.0, 1.0);
+  o = havsPixelNearMCd();
+  d = far.xyz / far.w - o;
 }
 
 // The barycentric weights (of a, b, c) of the point where the ray o + t d
@@ -769,7 +774,7 @@ bool havsTriangleWeightsd(
 }
 #endif
 
-#if HAVS_ISO && !HAVS_CELL_SCALARS && defined(HAVS_FACE_PASS)
+#if HAVS_ISO && !HAVS_CELL_SCALARS && HAVS_ISO_EXACT && defined(HAVS_FACE_PASS)
 // Isosurfaces: a face's fragment kept on its face, its distance and scalar
 // clamped to the face's own ranges. At a pixel centre just outside a sliver
 // seen almost edge-on the rasterizer (vertices snapped to sub-pixel units)
@@ -894,23 +899,39 @@ HAVS_ENTRY havsOnFace(HAVS_ENTRY e)
   }
   uint f = 3u * uint(gl_PrimitiveID + havsFaceBase);
   uint i = havsFaceIndices[f], j = havsFaceIndices[f + 1u], k = havsFaceIndices[f + 2u];
-  dvec3 o, d, w;
-  bool inside;
-  havsPixelRayd(o, d);
-  dvec3 a = havsModelToRCd(havsVertexPoint(i)), b = havsModelToRCd(havsVertexPoint(j)),
-        c = havsModelToRCd(havsVertexPoint(k));
-  if (!havsTriangleWeightsd(o, d, a, b, c, w, inside) || !inside)
+  float si = havsVertexScalars[i], sj = havsVertexScalars[j], sk = havsVertexScalars[k];
+  // Only a face whose scalars come within 1e-2 of an isovalue (of the
+  // normalized range: far beyond any rounding or snapping) decides a crossing
+  // by a hair; the others keep the rasterizer's values, clamped.
+  // (A tagged boundary face's vertices carry + 2.)
+  bool tagged = min(si, min(sj, sk)) > 1.5;
+  float smin = min(si, min(sj, sk)) - (tagged ? 2.0 : 0.0);
+  float smax = max(si, max(sj, sk)) - (tagged ? 2.0 : 0.0);
+  bool near = false;
+  for (int n = 0; n < havsIsoCount; ++n)
+  {
+    near = near || (havsIsoValues[n] >= smin - 1e-2 && havsIsoValues[n] <= smax + 1e-2);
+  }
+  if (!near)
   {
     return havsClampToFace(e);
   }
-  float si = havsVertexScalars[i], sj = havsVertexScalars[j], sk = havsVertexScalars[k];
-  // (The code's boundary role kept, as havsClampToFace keeps it; a tagged
-  // boundary face's vertices carry + 2.)
+  dvec3 o, d, w;
+  bool inside;
+  havsPixelRayMCd(o, d);
+  vec3 a = havsVertexPoint(i), b = havsVertexPoint(j), c = havsVertexPoint(k);
+  if (!havsTriangleWeightsd(o, d, dvec3(a), dvec3(b), dvec3(c), w, inside) || !inside)
+  {
+    return havsClampToFace(e);
+  }
+  // (The code's boundary role kept, as havsClampToFace keeps it.)
   float role = e.y - havsScalarOf(e.y);
-  double s = w.x * double(si) + w.y * double(sj) + w.z * double(sk);
-  s = min(si, min(sj, sk)) > 1.5 ? s - 2.0 : s;
+  double s = w.x * double(si) + w.y * double(sj) + w.z * double(sk) - (tagged ? 2.0 : 0.0);
   e.y = role + float(clamp(s, 0.0, 1.0));
-  e.x = havsDistance(vec3(w.x * a + w.y * b + w.z * c));
+  // (The distance from the float point in eye-relative coordinates: 1e-7 of
+  // it, far below the face fragments' spacing.)
+  vec3 p = vec3(w.x * dvec3(a) + w.y * dvec3(b) + w.z * dvec3(c));
+  e.x = havsDistance((havsMCRC * vec4(p, 1.0)).xyz);
   return e;
 }
 #endif
@@ -941,7 +962,7 @@ HAVS_ENTRY havsFaceEntry(vec3 positionRC, float scalar)
       code += 2.0;
     }
   }
-#if HAVS_ISO && !HAVS_CELL_SCALARS && defined(HAVS_FACE_PASS)
+#if HAVS_ISO && !HAVS_CELL_SCALARS && HAVS_ISO_EXACT && defined(HAVS_FACE_PASS)
   return havsOnFace(havsEntry(havsDistance(positionRC), code));
 #else
   return havsEntry(havsDistance(positionRC), code);
