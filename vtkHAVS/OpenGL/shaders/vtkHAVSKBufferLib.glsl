@@ -855,26 +855,40 @@ vec3 havsNearestOnTriangle(vec3 a, vec3 b, vec3 c)
 // the face's ranges: the scalar's is its vertices'; the distance's top is a
 // vertex's (the distance is linear or convex over the face), its bottom a
 // vertex's too along a parallel view, the nearest point's along a perspective one.
-HAVS_ENTRY havsClampToFace(HAVS_ENTRY e)
+// The fragment's face (gl_PrimitiveID + havsFaceBase in the draw order): its
+// vertices, their scalars and the scalars' range (a tagged boundary face's
+// vertices carry + 2, taken off the range).
+struct HavsFace
 {
-  if (havsFaceBase < 0)
-  {
-    return e;
-  }
+  uint i, j, k;
+  float si, sj, sk;
+  bool tagged;
+  float smin, smax;
+};
+
+HavsFace havsFragmentFace()
+{
+  HavsFace face;
   uint f = 3u * uint(gl_PrimitiveID + havsFaceBase);
-  uint i = havsFaceIndices[f], j = havsFaceIndices[f + 1u], k = havsFaceIndices[f + 2u];
-  float si = havsVertexScalars[i], sj = havsVertexScalars[j], sk = havsVertexScalars[k];
-  // (The code's boundary role, + 2 or + 4, kept: the vertices' scalars carry
-  // + 2 on a tagged boundary face, the role comes from the facing.)
+  face.i = havsFaceIndices[f];
+  face.j = havsFaceIndices[f + 1u];
+  face.k = havsFaceIndices[f + 2u];
+  face.si = havsVertexScalars[face.i];
+  face.sj = havsVertexScalars[face.j];
+  face.sk = havsVertexScalars[face.k];
+  face.tagged = min(face.si, min(face.sj, face.sk)) > 1.5;
+  face.smin = min(face.si, min(face.sj, face.sk)) - (face.tagged ? 2.0 : 0.0);
+  face.smax = max(face.si, max(face.sj, face.sk)) - (face.tagged ? 2.0 : 0.0);
+  return face;
+}
+
+HAVS_ENTRY havsClampToFace(HAVS_ENTRY e, HavsFace face)
+{
+  // (The code's boundary role, + 2 or + 4, kept: it comes from the facing.)
   float role = e.y - havsScalarOf(e.y);
-  float smin = min(si, min(sj, sk)), smax = max(si, max(sj, sk));
-  if (smin > 1.5)
-  {
-    smin -= 2.0;
-    smax -= 2.0;
-  }
-  e.y = role + clamp(havsScalarOf(e.y), clamp(smin, 0.0, 1.0), clamp(smax, 0.0, 1.0));
-  vec3 a = havsVertexRC(i), b = havsVertexRC(j), c = havsVertexRC(k);
+  e.y = role +
+    clamp(havsScalarOf(e.y), clamp(face.smin, 0.0, 1.0), clamp(face.smax, 0.0, 1.0));
+  vec3 a = havsVertexRC(face.i), b = havsVertexRC(face.j), c = havsVertexRC(face.k);
   float da = havsDistance(a), db = havsDistance(b), dc = havsDistance(c);
   float top = max(da, max(db, dc));
 #if HAVS_PROJECTION == 1
@@ -897,36 +911,32 @@ HAVS_ENTRY havsOnFace(HAVS_ENTRY e)
   {
     return e;
   }
-  uint f = 3u * uint(gl_PrimitiveID + havsFaceBase);
-  uint i = havsFaceIndices[f], j = havsFaceIndices[f + 1u], k = havsFaceIndices[f + 2u];
-  float si = havsVertexScalars[i], sj = havsVertexScalars[j], sk = havsVertexScalars[k];
+  HavsFace face = havsFragmentFace();
   // Only a face whose scalars come within 1e-2 of an isovalue (of the
   // normalized range: far beyond any rounding or snapping) decides a crossing
   // by a hair; the others keep the rasterizer's values, clamped.
-  // (A tagged boundary face's vertices carry + 2.)
-  bool tagged = min(si, min(sj, sk)) > 1.5;
-  float smin = min(si, min(sj, sk)) - (tagged ? 2.0 : 0.0);
-  float smax = max(si, max(sj, sk)) - (tagged ? 2.0 : 0.0);
   bool near = false;
   for (int n = 0; n < havsIsoCount; ++n)
   {
-    near = near || (havsIsoValues[n] >= smin - 1e-2 && havsIsoValues[n] <= smax + 1e-2);
+    near = near ||
+      (havsIsoValues[n] >= face.smin - 1e-2 && havsIsoValues[n] <= face.smax + 1e-2);
   }
   if (!near)
   {
-    return havsClampToFace(e);
+    return havsClampToFace(e, face);
   }
   dvec3 o, d, w;
   bool inside;
   havsPixelRayMCd(o, d);
-  vec3 a = havsVertexPoint(i), b = havsVertexPoint(j), c = havsVertexPoint(k);
+  vec3 a = havsVertexPoint(face.i), b = havsVertexPoint(face.j), c = havsVertexPoint(face.k);
   if (!havsTriangleWeightsd(o, d, dvec3(a), dvec3(b), dvec3(c), w, inside) || !inside)
   {
-    return havsClampToFace(e);
+    return havsClampToFace(e, face);
   }
   // (The code's boundary role kept, as havsClampToFace keeps it.)
   float role = e.y - havsScalarOf(e.y);
-  double s = w.x * double(si) + w.y * double(sj) + w.z * double(sk) - (tagged ? 2.0 : 0.0);
+  double s = w.x * double(face.si) + w.y * double(face.sj) + w.z * double(face.sk) -
+    (face.tagged ? 2.0 : 0.0);
   e.y = role + float(clamp(s, 0.0, 1.0));
   // (The distance from the float point in eye-relative coordinates: 1e-7 of
   // it, far below the face fragments' spacing.)
