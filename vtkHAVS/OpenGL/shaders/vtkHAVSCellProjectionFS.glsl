@@ -124,7 +124,7 @@ int havsPlaneAt(vec4 planes[4], vec3 o, vec3 d, float t, float sign)
 
 // The cell's corner scalars' range, and whether an isovalue lies within it
 // or within 1e-4 of it (the float path's scalars err by up to 1e-5).
-bool havsNearIsovalue(int cell, out vec2 range)
+bool havsCellNearIsovalue(int cell, out vec2 range)
 {
   uint base = 4u * uint(cell);
   float s0 = havsPointScalars[havsTetrahedra[base]];
@@ -132,12 +132,7 @@ bool havsNearIsovalue(int cell, out vec2 range)
   float s2 = havsPointScalars[havsTetrahedra[base + 2u]];
   float s3 = havsPointScalars[havsTetrahedra[base + 3u]];
   range = vec2(min(min(s0, s1), min(s2, s3)), max(max(s0, s1), max(s2, s3)));
-  bool near = false;
-  for (int i = 0; i < havsIsoCount; ++i)
-  {
-    near = near || (havsIsoValues[i] >= range.x - 1e-4 && havsIsoValues[i] <= range.y + 1e-4);
-  }
-  return near;
+  return havsNearIsovalue(range.x, range.y, 1e-4);
 }
 
 // The scalar where the ray o + t d meets face j of `cell`, from its corners'
@@ -352,7 +347,7 @@ void main()
   // corner scalars come within 1e-4 of an isovalue, the only cells that can
   // cross one.
   vec2 cellRange = vec2(0.0, 1.0);
-  bool exact = havsFaceScalars != 0 && havsNearIsovalue(cell, cellRange);
+  bool exact = havsFaceScalars != 0 && havsCellNearIsovalue(cell, cellRange);
   float tFace[2] = float[2](tEnter, tExit);
   int enterFace = exact ? havsPlaneAt(planes, o, d, tEnter, -1.0) : -1;
   int exitFace = exact ? havsPlaneAt(planes, o, d, tExit, 1.0) : -1;

@@ -732,21 +732,36 @@ bool havsClipRay(vec3 originRC, vec3 dirRC, inout float tLow, inout float tHigh)
 uniform dmat4 havsDCMCd; // clip -> model, in double
 uniform dvec3 havsEyeMCd; // the eye in model coordinates (perspective), in double
 
-// The pixel centre's point on the near plane, model coordinates.
-dvec3 havsPixelNearMCd()
+// The pixel centre's point at normalized depth z (-1: the near plane, 1:
+// the far plane), model coordinates.
+dvec3 havsPixelPointMCd(double z)
 {
   dvec2 ndc = dvec2(gl_FragCoord.xy) / dvec2(havsViewportSize) * 2.0 - 1.0;
-  dvec4 near = havsDCMCd * dvec4(ndc, -1.0, 1.0);
-  return near.xyz / near.w;
+  dvec4 p = havsDCMCd * dvec4(ndc, z, 1.0);
+  return p.xyz / p.w;
+}
+
+dvec3 havsPixelNearMCd()
+{
+  return havsPixelPointMCd(-1.0);
 }
 
 // The pixel centre's ray o + t d, model coordinates.
 void havsPixelRayMCd(out dvec3 o, out dvec3 d)
 {
-  dvec2 ndc = dvec2(gl_FragCoord.xy) / dvec2(havsViewportSize) * 2.0 - 1.0;
-  dvec4 far = havsDCMCd * dvec4(ndc, 1.0, 1.0);
   o = havsPixelNearMCd();
-  d = far.xyz / far.w - o;
+  d = havsPixelPointMCd(1.0) - o;
+}
+
+// Whether an isovalue lies within `margin` of the scalar range [lo, hi].
+bool havsNearIsovalue(float lo, float hi, float margin)
+{
+  bool near = false;
+  for (int n = 0; n < havsIsoCount; ++n)
+  {
+    near = near || (havsIsoValues[n] >= lo - margin && havsIsoValues[n] <= hi + margin);
+  }
+  return near;
 }
 
 // The barycentric weights (of a, b, c) of the point where the ray o + t d
@@ -915,13 +930,7 @@ HAVS_ENTRY havsOnFace(HAVS_ENTRY e)
   // Only a face whose scalars come within 1e-2 of an isovalue (of the
   // normalized range: far beyond any rounding or snapping) decides a crossing
   // by a hair; the others keep the rasterizer's values, clamped.
-  bool near = false;
-  for (int n = 0; n < havsIsoCount; ++n)
-  {
-    near = near ||
-      (havsIsoValues[n] >= face.smin - 1e-2 && havsIsoValues[n] <= face.smax + 1e-2);
-  }
-  if (!near)
+  if (!havsNearIsovalue(face.smin, face.smax, 1e-2))
   {
     return havsClampToFace(e, face);
   }
